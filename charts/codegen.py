@@ -1,0 +1,134 @@
+"""Code generator: SymPy chart geometry → plain-Python kernels in ``generated/``.
+
+Design note.  For each N one module ``rotor_n{N}.py`` is written for the
+*canonical* chart, the one that eliminates the last angle.  Any other chart k
+is the same formulas with the local angles (θ without θₖ, in order) and the
+masses reordered as (m without mₖ, then mₖ): the metric (eq 13) is symmetric
+under that relabelling, and ``tests/test_generated.py`` proves it by comparing
+against a live SymPy derivation of every chart.  Masses are run-time
+arguments.  Each function works on scalars with ``math`` (so numba compiles it
+and plain CPython runs it), reads 1-D arrays, and writes into a caller-given
+``out`` array (no allocation in hot loops).
+
+Output is deterministic: ``sympy.cse(order='canonical')`` with numbered
+symbols and no dates; the header records the command and SymPy version.
+"""
+from __future__ import annotations
+
+import sympy as sp
+from sympy.printing.pycode import PythonCodePrinter
+
+from .symbolic import ChartGeometry
+
+__all__ = ["module_source", "module_name", "GENERATED_FUNCTIONS", "SHIPPED_N"]
+
+SHIPPED_N = (3, 4, 5, 6)
+GENERATOR_COMMAND = "python scripts/generate.py"
+
+GENERATED_FUNCTIONS = (
+    "metric", "metric_inverse", "christoffel", "riemann",
+    "geodesic_acceleration", "transport_rate", "curvature_operator",
+    "eliminated_component",
+)
+
+
+def module_name(n: int) -> str:
+    return f"rotor_n{n}"
+
+
+class _Printer(PythonCodePrinter):
+    def __init__(self, names):
+        super().__init__({"fully_qualified_modules": True, "standard": "python3"})
+        self._names = names
+
+    def _print_Symbol(self, expr):
+        return self._names.get(expr, super()._print_Symbol(expr))
+
+
+def _shape(nested):
+    shape = []
+    while isinstance(nested, list):
+        shape.append(len(nested))
+        nested = nested[0]
+    return tuple(shape)
+
+
+def _flatten(nested, prefix=()):
+    if isinstance(nested, list):
+        for i, x in enumerate(nested):
+            yield from _flatten(x, prefix + (i,))
+    else:
+        yield prefix, nested
+
+
+def _function(name, args, doc, outputs, printer, scalar=False):
+    """Source of one function; ``outputs`` is a nested list (written to ``out``)
+    or a single expression (returned) when ``scalar``."""
+    flat = [(None, outputs)] if scalar else list(_flatten(outputs))
+    exprs = [e for _, e in flat]
+    reps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("x"), order="canonical")
+    lines = [f"def {name}({', '.join(args)}):", f'    """{doc}"""']
+    for sym, e in reps:
+        lines.append(f"    {sym} = {printer.doprint(e)}")
+    if scalar:
+        lines.append(f"    return {printer.doprint(reduced[0])}")
+    else:
+        for (index, _), e in zip(flat, reduced):
+            lines.append(f"    out[{', '.join(map(str, index))}] = {printer.doprint(e)}")
+        lines.append("    return out")
+    return "\n".join(lines) + "\n"
+
+
+def module_source(n: int) -> str:
+    """Full text of ``generated/rotor_n{n}.py`` (canonical chart k = n−1)."""
+    G = ChartGeometry(n, n - 1)
+    d = G.dim
+    names = {G.theta[a]: f"q[{a}]" for a in range(d)}
+    names.update({G.m[i]: f"m[{i}]" for i in range(n)})
+    x = list(sp.symbols(f"x_0:{d}", real=True))
+    y = list(sp.symbols(f"y_0:{d}", real=True))
+    names.update({G.v[a]: f"v[{a}]" for a in range(d)})
+    names.update({G.w[a]: f"p[{a}]" for a in range(d)})
+    names.update({x[a]: f"x[{a}]" for a in range(d)})
+    names.update({y[a]: f"y[{a}]" for a in range(d)})
+    sin_k = sp.Symbol("sin_k", real=True)
+    P = _Printer(names)
+
+    shape = lambda t: "x".join(map(str, _shape(t)))
+    parts = [
+        f'"""Rotor manifold, N = {n}: geometry of the canonical chart (eliminates θ_{n - 1}).\n\n'
+        f"Arguments: q = local angles, shape ({d},); m = masses, shape ({n},), local order with the\n"
+        f"eliminated rotor's mass last; v, p, x, y = local vector components, shape ({d},).\n"
+        f'Index conventions: see charts/symbolic.py.\n"""\n'
+        "import math\n\nN = {n}\nDIM = {d}\n".format(n=n, d=d),
+        _function("metric", ["q", "m", "out"],
+                  f"g_ab, eq (13); out shape ({shape(G.metric)}).", G.metric, P),
+        _function("metric_inverse", ["q", "m", "out"],
+                  f"g^ab (Sherman-Morrison); out shape ({shape(G.metric)}).", G.metric_inverse, P),
+        _function("christoffel", ["q", "m", "out"],
+                  f"Gamma^a_bc, upper index first, eq (15); out shape ({shape(G.christoffel)}).",
+                  G.christoffel, P),
+        _function("riemann", ["q", "m", "out"],
+                  f"R_abcd = <R(d_c, d_d) d_b, d_a>; out shape ({shape(G.riemann)}).", G.riemann, P),
+        _function("geodesic_acceleration", ["q", "v", "m", "out"],
+                  "dv^a/dt = -Gamma^a_bc v^b v^c, eq (14).",
+                  [-e for e in G.connection_contract(G.v, G.v)], P),
+        _function("transport_rate", ["q", "v", "p", "m", "out"],
+                  "dp^a/dt = -Gamma^a_bc v^b p^c, eq (16).",
+                  [-e for e in G.connection_contract(G.v, G.w)], P),
+        _function("curvature_operator", ["q", "x", "y", "m", "out"],
+                  "(R(x, y) y)^a; the Jacobi equation is J'' + R(J, v) v = 0.",
+                  G.curvature_operator(x, y), P),
+        _function("eliminated_component", ["q", "x", "sin_k"],
+                  "Ambient component of the eliminated angle of tangent vector x (tangency).",
+                  G.eliminated_velocity(x, sin_k), P, scalar=True),
+    ]
+    header = (f"# Generated by `{GENERATOR_COMMAND}` (SymPy {sp.__version__}) from charts/symbolic.py.\n"
+              "# Do not edit by hand: regenerate, and `python scripts/generate.py --check` must pass.\n")
+    return header + "\n\n".join(parts)
+
+
+def init_source() -> str:
+    return (f"# Generated by `{GENERATOR_COMMAND}`. Do not edit by hand.\n"
+            '"""Generated chart kernels, one module per N (see charts/codegen.py)."""\n'
+            f"SHIPPED_N = {tuple(SHIPPED_N)}\n")

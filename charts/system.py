@@ -1,0 +1,207 @@
+"""``RotorSystem``: the constraint manifold Σ cos θᵢ = 0 with metric Σ mᵢ dθᵢ² (eqs 1-13).
+
+Points are ambient angle vectors ``theta``, shape (n,); tangent vectors are
+ambient velocity vectors ``u``, shape (n,), with Σ uᵢ sin θᵢ = 0 (eq 10).
+Chart ``k`` uses the local coordinates θ without θₖ (see ``charts.symbolic``);
+its domain is sin θₖ ≠ 0 and the sign of sin θₖ is the chart's branch.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .chartfuncs import chart_module
+
+__all__ = ["RotorSystem", "TOL"]
+
+#: Tolerances used to decide whether input lies on the manifold.  Points produced by
+#: the integrators satisfy the constraint to ~1e-13; 1e-8 accepts user input rounded
+#: to ~8 digits and rejects anything visibly off the manifold.
+TOL = {"constraint": 1e-8, "tangency": 1e-8, "chart_domain": 1e-10}
+
+
+class RotorSystem:
+    """N rotors with moments of inertia ``masses`` (default all 1, the paper's case)."""
+
+    def __init__(self, n: int, masses=None):
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
+            raise ValueError(f"n must be an integer number of rotors, got {n!r}")
+        if n < 3:
+            raise ValueError(f"n must be >= 3 (n=2 has no 1-dimensional smooth manifold), got n={n}")
+        self.n = int(n)
+        if masses is None:
+            masses = np.ones(self.n)
+        masses = np.asarray(masses, dtype=float)
+        if masses.shape != (self.n,):
+            raise ValueError(f"masses must have length n={self.n}, got shape {masses.shape}")
+        if not np.all(np.isfinite(masses)) or np.any(masses <= 0):
+            raise ValueError(f"masses must be finite and positive, got {masses.tolist()}")
+        self.masses = masses
+        self.minv = 1.0 / masses
+        self.dim = self.n - 1
+        self._gen = chart_module(self.n)
+
+    def __repr__(self):
+        return f"RotorSystem(n={self.n}, masses={self.masses.tolist()})"
+
+    # -- validation --------------------------------------------------------------------
+    def check_point(self, theta) -> np.ndarray:
+        theta = np.asarray(theta, dtype=float)
+        if theta.shape != (self.n,):
+            raise ValueError(f"theta must have shape ({self.n},), got {theta.shape}")
+        if not np.all(np.isfinite(theta)):
+            raise ValueError(f"theta has non-finite entries: {theta.tolist()}")
+        F = np.cos(theta).sum()
+        if abs(F) > TOL["constraint"]:
+            raise ValueError(f"theta is off the manifold: sum(cos theta) = {F:.3e} "
+                             f"(tolerance {TOL['constraint']:g}); use RotorSystem.project_point")
+        return theta
+
+    def check_tangent(self, theta, u, name="u") -> np.ndarray:
+        u = np.asarray(u, dtype=float)
+        if u.shape != (self.n,):
+            raise ValueError(f"{name} must have shape ({self.n},), got {u.shape}")
+        if not np.all(np.isfinite(u)):
+            raise ValueError(f"{name} has non-finite entries: {u.tolist()}")
+        G = float(u @ np.sin(theta))
+        scale = max(1.0, float(np.linalg.norm(u)))
+        if abs(G) > TOL["tangency"] * scale:
+            raise ValueError(f"{name} is not tangent to the manifold: sum({name} sin theta) = {G:.3e} "
+                             f"(tolerance {TOL['tangency']:g}); use RotorSystem.project_tangent")
+        return u
+
+    def check_state(self, theta, u):
+        theta = self.check_point(theta)
+        return theta, self.check_tangent(theta, u)
+
+    # -- invariants and projections ----------------------------------------------------
+    def energy(self, u):
+        return 0.5 * np.sum(self.masses * np.asarray(u) ** 2, axis=-1)
+
+    def speed(self, u):
+        """|u|_g = √(Σ mᵢ uᵢ²)."""
+        return np.sqrt(2.0 * self.energy(u))
+
+    def inner(self, theta, a, b):
+        """Metric inner product of ambient tangent vectors: Σ mᵢ aᵢ bᵢ."""
+        return float(np.sum(self.masses * np.asarray(a) * np.asarray(b)))
+
+    def project_point(self, theta, iterations=50):
+        """Nearest-ish point on the manifold (Newton along M⁻¹∇F)."""
+        theta = np.array(theta, dtype=float)
+        for _ in range(iterations):
+            s = np.sin(theta)
+            B = np.sum(s * s * self.minv)
+            if B < 1e-300:
+                raise ValueError("cannot project: the point is a critical point of sum(cos theta)")
+            F = np.cos(theta).sum()
+            theta += F / B * s * self.minv
+            if abs(F) < 1e-15:
+                break
+        return theta
+
+    def project_tangent(self, theta, u):
+        """M-orthogonal projection of an ambient vector onto the tangent space."""
+        s = np.sin(np.asarray(theta, dtype=float))
+        u = np.asarray(u, dtype=float)
+        return u - (u @ s) / np.sum(s * s * self.minv) * s * self.minv
+
+    def random_state(self, seed=0, speed=1.0):
+        """Random (theta, u) on the manifold with Σ mᵢuᵢ² = speed²."""
+        if not np.isfinite(speed) or speed <= 0:
+            raise ValueError(f"speed must be positive and finite, got {speed}")
+        rng = np.random.default_rng(seed)
+        while True:
+            theta = rng.uniform(-np.pi, np.pi, self.n)
+            k = rng.integers(self.n)
+            C = np.cos(theta).sum() - np.cos(theta[k])
+            if abs(C) < 0.999:
+                theta[k] = np.sign(theta[k]) * np.arccos(-C)
+                if abs(np.sin(theta).max()) > 0.05 or self.n > 3:
+                    break
+        u = self.project_tangent(theta, rng.normal(size=self.n))
+        u *= speed / self.speed(u)
+        return theta, u
+
+    # -- charts --------------------------------------------------------------------------
+    def best_chart(self, theta) -> int:
+        """The chart with the largest |sin θₖ| (the best conditioned metric)."""
+        return int(np.argmax(np.abs(np.sin(theta))))
+
+    def _chart(self, theta, chart):
+        theta = self.check_point(theta)
+        k = self.best_chart(theta) if chart is None else chart
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= k < self.n:
+            raise ValueError(f"chart must be an integer in 0..{self.n - 1}, got {chart!r}")
+        sk = np.sin(theta[k])
+        if abs(sk) < TOL["chart_domain"]:
+            raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = {sk:.2e}; "
+                             f"use chart={self.best_chart(theta)} (the best conditioned) or chart=None")
+        idx = [i for i in range(self.n) if i != k]
+        return int(k), idx, theta[idx], np.concatenate([self.masses[idx], self.masses[k:k + 1]])
+
+    def to_chart(self, theta, u, chart):
+        """Local coordinates and velocity components of (theta, u) in ``chart``."""
+        k, idx, q, _ = self._chart(theta, chart)
+        return q, np.asarray(u, dtype=float)[idx]
+
+    def from_chart(self, q, v, chart, branch):
+        """Ambient (theta, u) from local (q, v) of ``chart`` on sign branch ``branch`` = ±1."""
+        q = np.asarray(q, dtype=float)
+        v = np.asarray(v, dtype=float)
+        C = np.cos(q).sum()
+        if abs(C) >= 1.0:
+            raise ValueError(f"q is outside the domain of chart {chart}: |sum cos q| = {abs(C):.6f} >= 1")
+        sk = np.copysign(np.sqrt(1.0 - C * C), branch)
+        theta = np.insert(q, chart, np.arctan2(sk, -C))
+        u = np.insert(v, chart, self._gen.eliminated_component(q, v, sk))
+        return theta, u
+
+    def metric(self, theta, chart=None):
+        """g_ab (eq 13) in ``chart`` (default: best conditioned), shape (n−1, n−1)."""
+        _, _, q, m = self._chart(theta, chart)
+        return self._gen.metric(q, m, np.empty((self.dim, self.dim)))
+
+    def metric_inverse(self, theta, chart=None):
+        _, _, q, m = self._chart(theta, chart)
+        return self._gen.metric_inverse(q, m, np.empty((self.dim, self.dim)))
+
+    def christoffel(self, theta, chart=None):
+        """Γ^a_bc (eq 15), upper index first, shape (n−1,)*3."""
+        _, _, q, m = self._chart(theta, chart)
+        return self._gen.christoffel(q, m, np.empty((self.dim,) * 3))
+
+    def riemann(self, theta, chart=None):
+        """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩, all indices down, shape (n−1,)*4.
+
+        Sectional curvature: K(X, Y) = R_abcd X^a Y^b X^c Y^d / (|X|²|Y|² − ⟨X,Y⟩²)."""
+        _, _, q, m = self._chart(theta, chart)
+        return self._gen.riemann(q, m, np.empty((self.dim,) * 4))
+
+    def sectional_curvature(self, theta, v, w, chart=None):
+        """Exact sectional curvature of the plane spanned by ambient tangent vectors v, w
+        at theta, from the generated Riemann tensor in the best-conditioned chart."""
+        theta = self.check_point(theta)
+        v = self.check_tangent(theta, v, "v")
+        w = self.check_tangent(theta, w, "w")
+        k, idx, q, m = self._chart(theta, chart)
+        x, y = v[idx], w[idx]
+        g = self._gen.metric(q, m, np.empty((self.dim, self.dim)))
+        R = self._gen.riemann(q, m, np.empty((self.dim,) * 4))
+        area2 = (x @ g @ x) * (y @ g @ y) - (x @ g @ y) ** 2
+        if not area2 > 1e-28 * max(1.0, (x @ g @ x) * (y @ g @ y)):
+            raise ValueError("v and w are (nearly) parallel: they do not span a 2-plane")
+        return float(np.einsum("abcd,a,b,c,d->", R, x, y, x, y) / area2)
+
+    def sectional_curvature_gauss(self, theta, v, w):
+        """Sectional curvature by the Gauss equation of the hypersurface F = Σcos θ = 0 in
+        (Rᴺ, diag m): K = [h(v,v)h(w,w) − h(v,w)²] / (|∇F|² (|v|²|w|² − ⟨v,w⟩²)) with
+        h = Hess F = −diag(cos θ) and |∇F|² = Σ sin²θ/m.  An independent route to K."""
+        theta = self.check_point(theta)
+        v = self.check_tangent(theta, v, "v")
+        w = self.check_tangent(theta, w, "w")
+        c = np.cos(theta)
+        h = lambda a, b: -np.sum(c * a * b)
+        grad2 = np.sum(np.sin(theta) ** 2 * self.minv)
+        ip = lambda a, b: self.inner(theta, a, b)
+        area2 = ip(v, v) * ip(w, w) - ip(v, w) ** 2
+        return float((h(v, v) * h(w, w) - h(v, w) ** 2) / (grad2 * area2))
