@@ -1,0 +1,499 @@
+"""Scenes: declarative TOML descriptions of one run, validated before anything runs.
+
+A scene names the system (N, masses, speed), the initial state (a seed, or explicit θ and
+u), the integrator, the duration and sampling, and the **effects** wanted (waveforms, power
+spectrum, Lyapunov spectrum, curvature, hyperbolicity angles, chart-switch log, invariant
+drift).  ``load_scene(path)`` / ``parse_scene(dict)`` return a frozen :class:`Scene`; every
+problem is reported as one :class:`SceneError` naming the key, the value and what is allowed
+(a misspelt key suggests the right one).  Every key is documented in ``docs/scenes.md``,
+whose content is checked against :data:`SCHEMA` by the tests.
+
+Layout (all tables optional except ``[system]`` and ``[run]``)::
+
+    name = "fig2-n5"                  # optional, defaults to the file name
+    description = "..."
+    [system]     n, masses, speed
+    [initial]    seed | theta + u
+    [integrator] formulation, method, dt | rtol + atol, project
+    [run]        t_final, t_transient, sample_dt, checkpoint_every
+    [effects.<name>]  one table per effect; ``<name> = true`` is the table with defaults
+"""
+from __future__ import annotations
+
+import difflib
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+__all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
+           "scene_to_dict", "MAX_N"]
+
+#: Largest N a scene may ask for: N = 3..6 ship generated code, 7..10 derive it on demand.
+MAX_N = 10
+#: Relative slack when checking that one time is an integer multiple of another (dt grid).
+GRID_RTOL = 1e-9
+
+
+class SceneError(ValueError):
+    """A scene that cannot run.  The message names the key, the value and what is allowed."""
+
+
+# ---------------------------------------------------------------------------------------
+# Schema: one Key per leaf.  ``check`` returns None when fine, else "what is allowed".
+# ---------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Key:
+    kind: str                      # "int", "float", "str", "bool", "floats", "ints"
+    default: Any = None            # None: no default (optional, or required if required=True)
+    doc: str = ""
+    choices: tuple = ()
+    check: Callable[[Any], str | None] | None = None
+    required: bool = False
+
+
+def _gt(lo):
+    return lambda v: None if v > lo else f"a number > {lo:g}"
+
+
+def _ge(lo):
+    return lambda v: None if v >= lo else f"a number >= {lo:g}"
+
+
+def _between(lo, hi):
+    return lambda v: None if lo <= v <= hi else f"a number in [{lo:g}, {hi:g}]"
+
+
+_TOP = {
+    "name": Key("str", None, "Run name used in outputs (default: the file name without .toml)."),
+    "description": Key("str", "", "Free text copied into result.json."),
+}
+
+SCHEMA: dict[str, dict[str, Key]] = {
+    "system": {
+        "n": Key("int", None, "Number of rotors N (3..10; the manifold has dimension N−1).",
+                 check=_between(3, MAX_N), required=True),
+        "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
+                      "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
+                      else "a list of numbers, each > 0"),
+        "speed": Key("float", 1.0, "Speed along the geodesic |u|_g = √(Σ mᵢuᵢ²) of a seeded "
+                     "initial state (the paper uses 1). Not allowed with an explicit u.",
+                     check=_gt(0)),
+    },
+    "initial": {
+        "seed": Key("int", 0, "Seed of RotorSystem.random_state (used when theta/u are not "
+                    "given).", check=_ge(0)),
+        "theta": Key("floats", None, "Explicit initial angles, length N, on Σ cos θᵢ = 0 "
+                     "(to 1e-8). Requires u; excludes seed."),
+        "u": Key("floats", None, "Explicit initial angular velocities, length N, tangent: "
+                 "Σ uᵢ sin θᵢ = 0 (to 1e-8). Requires theta."),
+    },
+    "integrator": {
+        "formulation": Key("str", "ambient", "\"ambient\": the Lagrange equations (8) in N "
+                           "angles; \"chart\": the intrinsic geodesic equation (14) in N−1 "
+                           "chart coordinates with chart switching.", choices=("ambient", "chart")),
+        "method": Key("str", "rk4", "\"rk4\": classical fixed-step Runge–Kutta (the paper's); "
+                      "\"dop853\": adaptive embedded 8(5,3) with rtol/atol.",
+                      choices=("rk4", "dop853")),
+        "dt": Key("float", None, "RK4 step (default 0.01, the paper's). rk4 only.", check=_gt(0)),
+        "rtol": Key("float", None, "Relative tolerance (default 1e-10). dop853 only.",
+                    check=_between(1e-15, 1e-1)),
+        "atol": Key("float", None, "Absolute tolerance (default 1e-12). dop853 only.",
+                    check=_between(1e-18, 1e-1)),
+        "project": Key("bool", False, "Project back onto the constraint and tangency after "
+                       "each step (ambient formulation)."),
+    },
+    "run": {
+        "t_final": Key("float", None, "Simulated time after the transient.", check=_gt(0),
+                       required=True),
+        "t_transient": Key("float", 0.0, "Time integrated first and discarded (also settles "
+                           "the Lyapunov vectors).", check=_ge(0)),
+        "sample_dt": Key("float", None, "Interval between stored samples (default: dt for "
+                         "rk4, 0.01 for dop853); a multiple of dt for rk4.", check=_gt(0)),
+        "checkpoint_every": Key("float", None, "Simulated time between checkpoints / progress "
+                                "updates (default: t_final/20, rounded to samples); a "
+                                "multiple of sample_dt.", check=_gt(0)),
+    },
+}
+
+#: Effects and their options.  Each is requested by its table (or ``name = true``).
+EFFECTS: dict[str, dict[str, Key]] = {
+    "waveforms": {
+        "rotors": Key("ints", None, "Rotors whose velocity uᵢ(t) is stored and plotted "
+                      "(0-based; default: all)."),
+        "t_window": Key("float", 100.0, "Length of the stored window, from the end of the "
+                        "transient (capped at t_final).", check=_gt(0)),
+    },
+    "spectrum": {
+        "rotor": Key("int", 0, "Rotor whose velocity is analysed (0-based).", check=_ge(0)),
+        "nperseg": Key("int", 4096, "Welch segment length in samples (scipy.signal.welch).",
+                       check=_ge(16)),
+    },
+    "lyapunov": {
+        "n_exponents": Key("int", None, "Number of exponents (default N−2, the positive "
+                           "ones; at most 2N).", check=_ge(1)),
+        "inner_product": Key("str", "theta", "\"theta\": the paper's θ-only product (sec. 2); "
+                             "\"full\": all 2N components.", choices=("theta", "full")),
+        "n_batches": Key("int", 10, "Batches for the batch-means standard error.",
+                         check=_ge(2)),
+    },
+    "curvature": {
+        "route": Key("str", "both", "\"numerical\": eqs (19)–(21); \"exact\": from the "
+                     "generated Riemann tensor; \"both\" at the same points.",
+                     choices=("numerical", "exact", "both")),
+        "n_directions": Key("int", None, "Diagonal elements K_ii (planes velocity × i-th "
+                            "Lyapunov vector) to record (default N−2, at most N−2).",
+                            check=_ge(1)),
+        "sample_every": Key("float", 0.1, "Simulated time between curvature samples; a "
+                            "multiple of dt.", check=_gt(0)),
+    },
+    "angles": {
+        "variant": Key("str", "both", "\"full\": the paper's 2N-dimensional tangent space; "
+                       "\"restricted\": the constraint-preserving subspace; or \"both\".",
+                       choices=("full", "restricted", "both")),
+        "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2).",
+                         check=_ge(1)),
+        "sample_every": Key("float", 0.1, "Simulated time between angle samples; a multiple "
+                            "of dt.", check=_gt(0)),
+    },
+    "switches": {},
+    "drift": {
+        "sample_every": Key("float", 1.0, "Simulated time between recorded invariant values; "
+                            "a multiple of sample_dt.", check=_gt(0)),
+    },
+}
+
+#: Effects that need tangent vectors (variational eq 17), integrated with ambient RK4.
+TANGENT_EFFECTS = ("lyapunov", "curvature", "angles")
+
+
+# ---------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Scene:
+    """A validated scene.  ``effects`` maps each requested effect to its full option dict."""
+
+    name: str
+    description: str
+    system: dict
+    initial: dict
+    integrator: dict
+    run: dict
+    effects: dict = field(default_factory=dict)
+    source: str = "<dict>"
+
+    def wants(self, effect: str) -> bool:
+        return effect in self.effects
+
+
+def scene_to_dict(scene: Scene) -> dict:
+    """The scene as run (every default filled in), JSON/TOML-serialisable."""
+    return {"name": scene.name, "description": scene.description, "system": dict(scene.system),
+            "initial": dict(scene.initial), "integrator": dict(scene.integrator),
+            "run": dict(scene.run), "effects": {k: dict(v) for k, v in scene.effects.items()}}
+
+
+def load_scene(path) -> Scene:
+    """Read and validate a TOML scene file.  Raises :class:`SceneError`."""
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise SceneError(f"{path}: no such scene file (bundled scenes: `charts scenes`)") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SceneError(f"{path}: cannot read the scene: {exc}") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+    return parse_scene(data, source=str(path), default_name=path.stem)
+
+
+# ---------------------------------------------------------------------------------------
+def _where(source, section, key):
+    loc = f"[{section}] {key}" if section else key
+    return f"{source}: {loc}"
+
+
+def _unknown(source, section, key, allowed):
+    hint = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+    did = f" — did you mean {hint[0]!r}?" if hint else ""
+    sect = f"[{section}]" if section else "the top level"
+    return SceneError(f"{source}: unknown key {key!r} in {sect}{did} "
+                      f"(allowed: {', '.join(sorted(allowed)) or 'none'})")
+
+
+def _is_num(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _coerce(source, section, key, spec: Key, value):
+    """Type-check one value; return it converted (int → float where a float is wanted)."""
+    where = _where(source, section, key)
+    kind = spec.kind
+    bad = None
+    if kind == "int":
+        if not isinstance(value, int) or isinstance(value, bool):
+            bad = "an integer"
+    elif kind == "float":
+        if not _is_num(value):
+            bad = "a number"
+        elif not math.isfinite(value):
+            bad = "a finite number"
+        else:
+            value = float(value)
+    elif kind == "str":
+        if not isinstance(value, str):
+            bad = "a string"
+    elif kind == "bool":
+        if not isinstance(value, bool):
+            bad = "true or false"
+    elif kind == "floats":
+        if not isinstance(value, list) or not all(_is_num(x) for x in value):
+            bad = "a list of numbers"
+        elif not all(math.isfinite(x) for x in value):
+            bad = "a list of finite numbers (no nan or inf)"
+        else:
+            value = [float(x) for x in value]
+    elif kind == "ints":
+        if not isinstance(value, list) or not all(isinstance(x, int) and not isinstance(x, bool)
+                                                  for x in value):
+            bad = "a list of integers"
+    if bad is None and spec.choices and value not in spec.choices:
+        hint = difflib.get_close_matches(str(value), spec.choices, n=1, cutoff=0.6)
+        did = f" — did you mean {hint[0]!r}?" if hint else ""
+        raise SceneError(f"{where} = {value!r} is not allowed{did} "
+                         f"(allowed: {', '.join(repr(c) for c in spec.choices)})")
+    if bad is None and spec.check is not None:
+        bad = spec.check(value)
+    if bad is not None:
+        raise SceneError(f"{where} = {value!r} is not allowed: expected {bad}")
+    return value
+
+
+def _section(source, data, section, schema, label=None):
+    raw = data.get(section, {})
+    section = label or section
+    if not isinstance(raw, dict):
+        raise SceneError(f"{source}: [{section}] must be a table, got {raw!r}")
+    for key in raw:
+        if key not in schema:
+            raise _unknown(source, section, key, schema)
+    out = {}
+    for key, spec in schema.items():
+        if key in raw:
+            out[key] = _coerce(source, section, key, spec, raw[key])
+        elif spec.required:
+            raise SceneError(f"{_where(source, section, key)} is required ({spec.doc})")
+        else:
+            out[key] = spec.default
+    return out, raw
+
+
+def _multiple(source, section, key, value, base, base_name):
+    """Require value to be an integer multiple of base; return the integer ratio."""
+    k = value / base
+    r = round(k)
+    if r < 1 or abs(k - r) > GRID_RTOL * max(1.0, k):
+        near = max(1, r) * base
+        raise SceneError(f"{_where(source, section, key)} = {value!r} is not allowed: expected "
+                         f"a positive multiple of {base_name} = {base!r} (nearest: {near:.10g})")
+    return int(r)
+
+
+def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "scene") -> Scene:
+    """Validate a scene given as a dict (as read from TOML).  Raises :class:`SceneError`."""
+    if not isinstance(data, dict):
+        raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
+    allowed_top = set(_TOP) | set(SCHEMA) | {"effects"}
+    for key in data:
+        if key not in allowed_top:
+            raise _unknown(source, None, key, allowed_top)
+    top = {}
+    for key, spec in _TOP.items():
+        top[key] = _coerce(source, None, key, spec, data[key]) if key in data else spec.default
+    name = top["name"] or default_name
+
+    system, _ = _section(source, data, "system", SCHEMA["system"])
+    initial, raw_init = _section(source, data, "initial", SCHEMA["initial"])
+    integ, raw_int = _section(source, data, "integrator", SCHEMA["integrator"])
+    run, raw_run = _section(source, data, "run", SCHEMA["run"])
+    raw_sys = data.get("system", {})
+    n = system["n"]
+
+    # -- system --------------------------------------------------------------------------
+    if system["masses"] is not None and len(system["masses"]) != n:
+        raise SceneError(f"{_where(source, 'system', 'masses')} = {system['masses']!r} is not "
+                         f"allowed: expected a list of n = {n} positive numbers")
+    masses = system["masses"] if system["masses"] is not None else [1.0] * n
+    system["masses"] = masses
+
+    # -- initial state ---------------------------------------------------------------------
+    explicit = ("theta" in raw_init) or ("u" in raw_init)
+    if explicit:
+        if "seed" in raw_init:
+            raise SceneError(f"{_where(source, 'initial', 'seed')} = {raw_init['seed']!r} is not "
+                             "allowed together with an explicit theta/u: give one or the other")
+        for key in ("theta", "u"):
+            if key not in raw_init:
+                other = "u" if key == "theta" else "theta"
+                raise SceneError(f"{_where(source, 'initial', key)} is required when "
+                                 f"[initial] {other} is given (an explicit state needs both)")
+            if len(initial[key]) != n:
+                raise SceneError(f"{_where(source, 'initial', key)} = {initial[key]!r} is not "
+                                 f"allowed: expected a list of n = {n} numbers")
+        if "speed" in raw_sys:
+            raise SceneError(f"{_where(source, 'system', 'speed')} = {raw_sys['speed']!r} is not "
+                             "allowed with an explicit [initial] u (the speed is that of u)")
+        _check_state(source, n, masses, initial["theta"], initial["u"])
+        initial["seed"] = None
+        system["speed"] = float(math.sqrt(sum(m * x * x for m, x in zip(masses, initial["u"]))))
+        if not system["speed"] > 0:
+            raise SceneError(f"{_where(source, 'initial', 'u')} = {initial['u']!r} is not "
+                             "allowed: the velocity must be nonzero (a geodesic needs a speed)")
+
+    # -- integrator --------------------------------------------------------------------------
+    method = integ["method"]
+    if method == "rk4":
+        for key in ("rtol", "atol"):
+            if key in raw_int:
+                raise SceneError(f"{_where(source, 'integrator', key)} = {raw_int[key]!r} is not "
+                                 "allowed with method = 'rk4' (fixed step: set dt, or use "
+                                 "method = 'dop853')")
+        integ["dt"] = integ["dt"] if integ["dt"] is not None else 0.01
+    else:
+        if "dt" in raw_int:
+            raise SceneError(f"{_where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "
+                             "allowed with method = 'dop853' (adaptive: set rtol/atol, or use "
+                             "method = 'rk4')")
+        integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
+        integ["atol"] = integ["atol"] if integ["atol"] is not None else 1e-12
+
+    # -- run: times on the grids ---------------------------------------------------------------
+    grid = integ["dt"] if method == "rk4" else None
+    if run["sample_dt"] is None:
+        run["sample_dt"] = grid if grid is not None else 0.01
+    elif grid is not None:
+        _multiple(source, "run", "sample_dt", run["sample_dt"], grid, "[integrator] dt")
+    sdt = run["sample_dt"]
+    if run["t_transient"] > 0:
+        _multiple(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
+    n_samples = _multiple(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
+    if run["checkpoint_every"] is None:
+        per = max(1, n_samples // 20)
+        run["checkpoint_every"] = per * sdt
+    else:
+        _multiple(source, "run", "checkpoint_every", run["checkpoint_every"], sdt,
+                  "[run] sample_dt")
+
+    # -- effects -----------------------------------------------------------------------------------
+    raw_eff = data.get("effects", {})
+    if not isinstance(raw_eff, dict):
+        raise SceneError(f"{source}: [effects] must be a table of effect tables, got {raw_eff!r}")
+    effects = {}
+    for ename, eraw in raw_eff.items():
+        if ename not in EFFECTS:
+            raise _unknown(source, "effects", ename, EFFECTS)
+        if eraw is False:
+            continue
+        if eraw is True:
+            eraw = {}
+        if not isinstance(eraw, dict):
+            raise SceneError(f"{source}: [effects] {ename} = {eraw!r} is not allowed: expected "
+                             f"true, false or a table [effects.{ename}]")
+        effects[ename] = _section(source, {ename: eraw}, ename, EFFECTS[ename],
+                                  label=f"effects.{ename}")[0]
+    _check_effects(source, n, integ, run, effects)
+    if not effects:
+        raise SceneError(f"{source}: the scene requests no effect: add at least one "
+                         f"[effects.<name>] table (effects: {', '.join(EFFECTS)})")
+
+    return Scene(name=name, description=top["description"], system=system, initial=initial,
+                 integrator=integ, run=run, effects=effects, source=source)
+
+
+def _check_state(source, n, masses, theta, u):
+    import numpy as np
+
+    from .system import RotorSystem
+
+    sys_ = RotorSystem(n, masses)
+    try:
+        sys_.check_point(np.array(theta))
+    except ValueError as exc:
+        raise SceneError(f"{_where(source, 'initial', 'theta')} = {theta!r} is not allowed: "
+                         f"{exc}") from None
+    try:
+        sys_.check_tangent(np.array(theta), np.array(u))
+    except ValueError as exc:
+        raise SceneError(f"{_where(source, 'initial', 'u')} = {u!r} is not allowed: "
+                         f"{exc}") from None
+
+
+def _check_effects(source, n, integ, run, effects):
+    sect = "effects.{}".format
+    tangent = [e for e in TANGENT_EFFECTS if e in effects]
+    if tangent and (integ["formulation"] != "ambient" or integ["method"] != "rk4"):
+        raise SceneError(
+            f"{source}: [effects] {', '.join(tangent)} is not allowed with formulation = "
+            f"{integ['formulation']!r}, method = {integ['method']!r}: tangent vectors follow the "
+            "variational equations (17) with fixed-step RK4 and re-orthonormalisation (18); "
+            "set [integrator] formulation = 'ambient', method = 'rk4'")
+    if "switches" in effects and integ["formulation"] != "chart":
+        raise SceneError(f"{source}: [effects] switches is not allowed with formulation = "
+                         f"{integ['formulation']!r}: only the chart formulation switches charts; "
+                         "set [integrator] formulation = 'chart'")
+    if "waveforms" in effects:
+        w = effects["waveforms"]
+        rotors = w["rotors"] if w["rotors"] is not None else list(range(n))
+        if not rotors or any(not 0 <= r < n for r in rotors) or len(set(rotors)) != len(rotors):
+            raise SceneError(f"{_where(source, sect('waveforms'), 'rotors')} = {rotors!r} is not "
+                             f"allowed: expected distinct rotor indices in 0..{n - 1}")
+        w["rotors"] = list(rotors)
+        w["t_window"] = min(w["t_window"], run["t_final"])
+        _multiple(source, sect("waveforms"), "t_window", w["t_window"], run["sample_dt"],
+                  "[run] sample_dt")
+    if "spectrum" in effects:
+        s = effects["spectrum"]
+        if not 0 <= s["rotor"] < n:
+            raise SceneError(f"{_where(source, sect('spectrum'), 'rotor')} = {s['rotor']!r} is not "
+                             f"allowed: expected a rotor index in 0..{n - 1}")
+        n_samples = round(run["t_final"] / run["sample_dt"])
+        if s["nperseg"] > n_samples:
+            raise SceneError(f"{_where(source, sect('spectrum'), 'nperseg')} = {s['nperseg']!r} is "
+                             f"not allowed: expected at most the number of samples, {n_samples} "
+                             "(lengthen [run] t_final or shorten the segments)")
+    if "lyapunov" in effects:
+        ly = effects["lyapunov"]
+        if ly["n_exponents"] is None:
+            ly["n_exponents"] = n - 2
+        if ly["n_exponents"] > 2 * n:
+            raise SceneError(f"{_where(source, sect('lyapunov'), 'n_exponents')} = "
+                             f"{ly['n_exponents']!r} is not allowed: expected 1..{2 * n} (2N)")
+    if "curvature" in effects:
+        c = effects["curvature"]
+        if c["n_directions"] is None:
+            c["n_directions"] = n - 2
+        if c["n_directions"] > n - 2:
+            raise SceneError(f"{_where(source, sect('curvature'), 'n_directions')} = "
+                             f"{c['n_directions']!r} is not allowed: expected 1..{n - 2} (N−2 "
+                             "directions orthogonal to the velocity in the N−1-dim. manifold)")
+        _multiple(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
+                  "[integrator] dt")
+    if "angles" in effects:
+        a = effects["angles"]
+        if a["n_vectors"] is None:
+            a["n_vectors"] = n - 2
+        if a["n_vectors"] > 2 * n - 3:
+            raise SceneError(f"{_where(source, sect('angles'), 'n_vectors')} = {a['n_vectors']!r} "
+                             f"is not allowed: expected 1..{2 * n - 3}")
+        _multiple(source, sect("angles"), "sample_every", a["sample_every"], integ["dt"],
+                  "[integrator] dt")
+    if "drift" in effects:
+        d = effects["drift"]
+        _multiple(source, sect("drift"), "sample_every", d["sample_every"], run["sample_dt"],
+                  "[run] sample_dt")
