@@ -6,6 +6,9 @@ mechanically coupled rotators".  Public surface:
 * ``RotorSystem(n, masses=None)`` — the manifold Σ cos θᵢ = 0, its charts and curvature.
 """
 from .system import RotorSystem
+from .lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spectrum
+from .curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
 
-__all__ = ["RotorSystem"]
+__all__ = ["RotorSystem", "lyapunov_spectrum", "lyapunov_ensemble", "LyapunovResult",
+           "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22"]
 __version__ = "0.1.0"
