@@ -1,0 +1,266 @@
+"""The ``charts`` command line.
+
+    charts run SCENE -o DIR [--resume] [--quiet]   run a scene (a .toml file or a bundled name)
+    charts scenes [NAME]                          list the bundled scenes, or print one
+    charts reproduce ...                          the paper's figures and table (issue 4)
+    charts generate [--check]                     regenerate generated/ (code generator)
+    charts bench accuracy | integrators           what accuracy costs in time; integrator cost
+
+Every subcommand has ``--help``.  Errors in the input are reported in one line on stderr
+with exit status 2; an interrupted run exits with 130 and says how to resume it.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import sys
+from importlib import resources
+from pathlib import Path
+
+__all__ = ["main", "bundled_scenes", "resolve_scene"]
+
+EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130
+
+
+def _checkout_root() -> Path | None:
+    """The source checkout holding this package (None for a plain installation)."""
+    root = Path(__file__).resolve().parent.parent
+    return root if (root / "scripts" / "generate.py").exists() else None
+
+
+def bundled_scenes() -> dict[str, Path]:
+    """Name -> path of every scene shipped in ``charts/scenes``."""
+    folder = resources.files("charts.scenes")
+    return {p.name[:-5]: Path(str(p)) for p in sorted(folder.iterdir(), key=lambda p: p.name)
+            if p.name.endswith(".toml")}
+
+
+def resolve_scene(arg: str) -> Path:
+    """A scene argument is a path to a .toml file or the name of a bundled scene."""
+    p = Path(arg)
+    if p.exists() or p.suffix == ".toml":
+        return p
+    scenes = bundled_scenes()
+    if arg in scenes:
+        return scenes[arg]
+    import difflib
+    hint = difflib.get_close_matches(arg, list(scenes), n=1)
+    did = f" — did you mean {hint[0]!r}?" if hint else ""
+    raise SystemExit(_fail(f"{arg!r} is neither a scene file nor a bundled scene{did} "
+                           "(list them with `charts scenes`)"))
+
+
+def _fail(msg: str) -> int:
+    print(f"charts: error: {msg}", file=sys.stderr)
+    return EXIT_USAGE
+
+
+# ------------------------------------------------------------------------------- run
+def _cmd_run(args) -> int:
+    from .runner import RunError, run_scene
+    from .scene import SceneError, load_scene
+
+    path = resolve_scene(args.scene)
+    try:
+        scene = load_scene(path)
+        result = run_scene(scene, args.output, resume=args.resume, quiet=args.quiet)
+    except (SceneError, RunError) as exc:
+        return _fail(str(exc))
+    except KeyboardInterrupt as exc:
+        res = exc.args[0] if exc.args and isinstance(exc.args[0], dict) else None
+        if res is not None:
+            p = res["progress"]
+            print(f"\ninterrupted at t = {p['t_done']:g} of {p['t_final']:g} "
+                  f"({p['chunks_done']}/{p['chunks']} chunks kept in {args.output}); "
+                  f"continue with:\n  charts run {args.scene} -o {args.output} --resume",
+                  file=sys.stderr)
+        return EXIT_INTERRUPTED
+    if not args.quiet:
+        _summary(result, args.output)
+    return 0
+
+
+def _summary(result: dict, outdir) -> None:
+    comp, res = result["computation"], result["results"]
+    print(f"{result['scene']['name']}: done in {result['timings']['integration_wall_s']:.2f} s "
+          f"-> {outdir}")
+    print(f"  integrated: {comp['state_dimension']} state variables, "
+          f"{comp['tangent_vectors']} tangent vectors, {comp['rhs_evaluations']} rhs evaluations")
+    d = result["drift"]
+    print(f"  final drift: constraint {d['constraint']:.1e}, tangency {d['tangency']:.1e}, "
+          f"energy {d['energy_relative']:.1e}")
+    if "lyapunov" in res and "exponents" in res["lyapunov"]:
+        ly = res["lyapunov"]
+        se = ly.get("stderr", [float("nan")] * len(ly["exponents"]))
+        txt = ", ".join(f"{e:.4f} ± {s:.4f}" for e, s in zip(ly["exponents"], se))
+        print(f"  Lyapunov exponents: {txt}" + (f"  (paper: {ly['paper']})" if "paper" in ly else ""))
+    if "curvature" in res:
+        for route in ("numerical", "exact"):
+            if route in res["curvature"]:
+                fp = res["curvature"][route]["fraction_positive"]
+                print(f"  curvature ({route}): fraction of K_ii > 0: "
+                      + ", ".join(f"{x:.3f}" for x in fp))
+    if "switches" in res:
+        print(f"  chart switches: {res['switches']['count']}")
+    print(f"  files: {', '.join(result['files'])}")
+
+
+# ------------------------------------------------------------------------------- scenes
+def _cmd_scenes(args) -> int:
+    scenes = bundled_scenes()
+    if args.name:
+        if args.name not in scenes:
+            return _fail(f"no bundled scene {args.name!r} (one of: {', '.join(scenes)})")
+        print(scenes[args.name].read_text(), end="")
+        return 0
+    from .scene import SceneError, load_scene
+    width = max(len(n) for n in scenes) if scenes else 0
+    for name, path in scenes.items():
+        try:
+            desc = load_scene(path).description.strip().splitlines()[0]
+        except (SceneError, IndexError) as exc:
+            desc = f"(invalid: {exc})" if isinstance(exc, SceneError) else ""
+        print(f"{name:<{width}}  {desc}")
+    print(f"\nrun one with: charts run NAME -o DIR   (print it: charts scenes NAME)")
+    return 0
+
+
+# ------------------------------------------------------------------------------- delegation
+def _load_script(name: str):
+    root = _checkout_root()
+    path = root / "scripts" / f"{name}.py" if root else None
+    if path is None or not path.exists():
+        return None
+    spec = importlib.util.spec_from_file_location(f"charts_script_{name}", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def _cmd_reproduce(args) -> int:
+    try:
+        from .reproduce import main as reproduce_main
+    except ImportError:
+        return _fail("`charts reproduce` needs charts.reproduce (issue 4), which this "
+                     "installation does not have yet")
+    return int(reproduce_main(args.rest) or 0)
+
+
+def _cmd_generate(args) -> int:
+    script = _load_script("generate")
+    argv = ["--check"] if args.check else []
+    if script is not None:
+        return int(script.main(argv) or 0)
+    return _generate_installed(args.check)
+
+
+def _generate_installed(check: bool) -> int:
+    """Without a checkout: compare (or rewrite) the installed ``charts.generated``."""
+    import charts.generated as gen
+    from .codegen import SHIPPED_N, init_source, module_name, module_source
+
+    folder = Path(gen.__file__).resolve().parent
+    stale = []
+    for n in SHIPPED_N:
+        path = folder / f"{module_name(n)}.py"
+        src = module_source(n)
+        if not path.exists() or path.read_text() != src:
+            stale.append(path.name)
+            if not check:
+                path.write_text(src)
+    if not check:
+        (folder / "__init__.py").write_text(init_source())
+        print(f"wrote {folder}")
+        return 0
+    if stale:
+        print(f"{folder}: stale: {', '.join(stale)}; run `charts generate` to rewrite")
+        return 1
+    print(f"{folder} is up to date")
+    return 0
+
+
+def _cmd_bench(args) -> int:
+    if args.what == "integrators":
+        script = _load_script("bench_integrators")
+        if script is None:
+            return _fail("`charts bench integrators` runs scripts/bench_integrators.py (issue 3) "
+                         "from a source checkout; it was not found")
+        return int(script.main(args.rest) or 0)
+    from .accuracy import main as accuracy_main
+    return int(accuracy_main(args.rest, quiet=args.quiet) or 0)
+
+
+# ------------------------------------------------------------------------------- parser
+def build_parser() -> argparse.ArgumentParser:
+    from . import __version__
+
+    ap = argparse.ArgumentParser(
+        prog="charts", description="Geodesic flows of coupled rotators (Kuznetsov): run scenes, "
+        "reproduce the paper, regenerate code, benchmark.",
+        epilog="`charts COMMAND --help` describes each command.")
+    ap.add_argument("--version", action="version", version=f"charts {__version__}")
+    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+
+    p = sub.add_parser("run", help="run a scene (TOML file or bundled name) into a folder",
+                       description="Run a scene: validate it, integrate only what its effects "
+                       "need, write result.json, arrays.npz and PNG figures into DIR. Ctrl-C "
+                       "keeps the finished chunks; --resume continues.")
+    p.add_argument("scene", metavar="SCENE", help="path to a .toml scene, or a bundled scene "
+                   "name (see `charts scenes`)")
+    p.add_argument("-o", "--output", required=True, type=Path, metavar="DIR",
+                   help="output folder (created if missing)")
+    p.add_argument("--resume", action="store_true",
+                   help="continue an interrupted run from DIR/checkpoint.npz")
+    p.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
+    p.set_defaults(func=_cmd_run)
+
+    p = sub.add_parser("scenes", help="list the bundled scenes, or print one",
+                       description="List the scenes shipped with charts (one per figure of "
+                       "the paper, the table of exponents, the integrators' hard cases).")
+    p.add_argument("name", nargs="?", help="print this scene's TOML")
+    p.set_defaults(func=_cmd_scenes)
+
+    p = sub.add_parser("reproduce", help="reproduce the paper's figures and table (issue 4)",
+                       description="Dispatch to charts.reproduce; the options after "
+                       "`reproduce` are passed through (try `charts reproduce --help`).",
+                       add_help=False)
+    p.add_argument("rest", nargs=argparse.REMAINDER)
+    p.set_defaults(func=_cmd_reproduce)
+
+    p = sub.add_parser("generate", help="regenerate the chart kernels in generated/",
+                       description="Run the code generator (scripts/generate.py in a checkout) "
+                       "for N = 3..6.")
+    p.add_argument("--check", action="store_true",
+                   help="regenerate into a temporary place and exit 1 if generated/ is stale")
+    p.set_defaults(func=_cmd_generate)
+
+    p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision) or `integrators`",
+                       description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
+                       "diagrams and table (see docs/accuracy.md). `charts bench integrators`: "
+                       "cost per unit time against solve_ivp (scripts/bench_integrators.py).")
+    p.add_argument("what", choices=("accuracy", "integrators"))
+    p.add_argument("--quiet", "-q", action="store_true", help="no progress bars")
+    p.add_argument("rest", nargs=argparse.REMAINDER,
+                   help="options of the benchmark (e.g. `charts bench accuracy --help`)")
+    p.set_defaults(func=_cmd_bench)
+    return ap
+
+
+def main(argv=None) -> int:
+    ap = build_parser()
+    args = ap.parse_args(argv)
+    if args.command is None:
+        ap.print_help()
+        return EXIT_USAGE
+    try:
+        return int(args.func(args) or 0)
+    except SystemExit as exc:            # resolve_scene and delegated parsers
+        return exc.code if isinstance(exc.code, int) else EXIT_USAGE
+    except BrokenPipeError:              # `charts scenes | head`
+        return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
