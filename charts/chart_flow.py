@@ -1,0 +1,272 @@
+"""Intrinsic formulation: the geodesic equation (14) and parallel transport (16) in charts.
+
+Chart ``k`` (of N) eliminates θₖ; its local coordinates are q = θ without θₖ, and the
+sign ``branch`` = ±1 of sin θₖ selects one of the two sheets (atlas: N charts × 2
+branches).  State ``y = (q, v, p¹, …, pᵏ)``, shape ((1 + 1 + k)·(N − 1),):
+
+    q̇ᵃ = vᵃ,   v̇ᵃ = −Γᵃ_bc vᵇ vᶜ   (eq 14),   ṗᵃ = −Γᵃ_bc vᵇ pᶜ   (eq 16)
+
+with Γ from the generated kernels ``charts.generated.rotor_nN`` (canonical chart; chart k
+is the canonical one after moving θₖ last, which is why the local masses are
+``(m without mₖ, mₖ)``).
+
+Switching (:func:`leave_chart`): after every accepted step the chart is left when
+|sin θₖ| < τ · maxᵢ |sin θᵢ| for the chart with the largest |sin θᵢ| (ties: lowest index).
+The new chart has ratio 1 ≥ τ, so the rule cannot flip back at once (hysteresis by
+construction); the metric condition number in chart k is 1 + Σ_{α≠k} m_k sin²θ_α /
+(m_α sin²θₖ) ≤ 1 + (N − 1)·max(m)/(τ² min(m)), see docs/integrators.md for the choice of
+τ = :data:`DEFAULT_TAU`.  The point, velocity and transported vectors go through their
+ambient representation (θₖ = atan2(branch·√(1 − C²), −C), uₖ = −Σ v_α sin q_α / sin θₖ);
+the switch happens at the step's end time and integration resumes from exactly there with
+the same step-size controller state.  Every switch is logged as (t, from, to).
+
+Parameters: ``par = (N, local masses (N), masses (N), offset of θₖ, τ, speed, project,
+cap fraction)``, ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
+the multiple of 2π that keeps the reconstructed θₖ continuous with the ambient angle.
+"""
+from __future__ import annotations
+
+import math
+from functools import cache
+
+import numpy as np
+from numba import njit
+
+from .chartfuncs import compiled
+from .driver import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from .rk import RHS_SIG
+
+__all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
+
+#: Default switching threshold τ (see docs/integrators.md, "Switching threshold").
+DEFAULT_TAU = 0.5
+
+# par layout (N = par[0])
+_OFF, _TAU, _SPEED, _PROJ, _CAP = range(5)  # offsets after the 2N mass entries, + 1
+
+
+@njit(cache=True)
+def should_leave(sin_k_abs, sin_max, tau):
+    """The switching test: True when |sin θₖ| < τ·maxᵢ |sin θᵢ|."""
+    return sin_k_abs < tau * sin_max
+
+
+@njit(cache=True)
+def leave_chart(sin_abs, k, tau):
+    """The chart to switch to from chart ``k``, or −1 to stay.
+
+    ``sin_abs`` : |sin θᵢ|, shape (N,).  Leave when :func:`should_leave`, for the argmax
+    of ``sin_abs`` (lowest index on ties).  Pure function of its arguments."""
+    j = 0
+    for i in range(1, sin_abs.size):
+        if sin_abs[i] > sin_abs[j]:
+            j = i
+    if should_leave(sin_abs[k], sin_abs[j], tau):
+        return j
+    return -1
+
+
+def chart_condition_bound(n, tau, masses=None):
+    """Upper bound on the 2-norm condition number of g in a chart that the rule keeps."""
+    m = np.ones(n) if masses is None else np.asarray(masses, float)
+    return 1.0 + (n - 1) * m.max() / (tau * tau * m.min())
+
+
+@njit(cache=True)
+def _sin_k(y, n, branch):
+    C = 0.0
+    for a in range(n - 1):
+        C += math.cos(y[a])
+    s2 = 1.0 - C * C
+    return C, math.copysign(math.sqrt(max(s2, 0.0)), branch), s2
+
+
+@njit(cache=True)
+def _to_ambient_impl(y, par, ipar, row):
+    n = ipar[0]
+    d = n - 1
+    nv = ipar[1]
+    k = ipar[2]
+    C, sk, _ = _sin_k(y, n, ipar[3])
+    row[k] = math.atan2(sk, -C) + par[1 + 2 * n + _OFF]
+    for b in range(1 + nv):  # velocity and transported vectors
+        o = (1 + b) * d
+        acc = 0.0
+        for a in range(d):
+            acc += y[o + a] * math.sin(y[a])
+        row[(1 + b) * n + k] = -acc / sk
+    for a in range(d):
+        i = a if a < k else a + 1
+        row[i] = y[a]
+        for b in range(1 + nv):
+            row[(1 + b) * n + i] = y[(1 + b) * d + a]
+    return 0.0
+
+
+def _to_ambient(y, par, ipar, row):
+    return _to_ambient_impl(y, par, ipar, row)
+
+
+@njit(cache=True)
+def enter_chart(row, n, nv, j, masses, y, par, ipar):
+    """Chart ``j`` representation of the ambient ``row`` = (θ, u, p¹…pᵏ): fills ``y``,
+    the local masses and θⱼ offset in ``par``, and chart/branch in ``ipar``."""
+    d = n - 1
+    thj = row[j]
+    sj = math.sin(thj)
+    ipar[2] = j
+    ipar[3] = 1 if sj >= 0.0 else -1
+    par[1 + 2 * n + _OFF] = thj - math.atan2(sj, math.cos(thj))
+    for a in range(d):
+        i = a if a < j else a + 1
+        par[1 + a] = masses[i]
+        for b in range(2 + nv):
+            y[b * d + a] = row[b * n + i]
+    par[n] = masses[j]
+
+
+def _post(y, par, ipar, t, log):
+    n = ipar[0]
+    d = n - 1
+    k = ipar[2]
+    C, sk, _ = _sin_k(y, n, ipar[3])
+    code = POST_OK
+    if par[1 + 2 * n + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
+        acc = 0.0
+        E = 0.0
+        for a in range(d):
+            acc += y[d + a] * math.sin(y[a])
+            E += par[1 + a] * y[d + a] ** 2
+        E += par[n] * (acc / sk) ** 2
+        f = par[1 + 2 * n + _SPEED] / math.sqrt(E)
+        for a in range(d):
+            y[d + a] *= f
+        code = POST_CHANGED
+    # argmax of |sin θᵢ| over the ambient angles, ties to the lowest index (as leave_chart)
+    j = -1
+    smax = -1.0
+    for i in range(n):
+        s = abs(sk) if i == k else abs(math.sin(y[i if i < k else i - 1]))
+        if s > smax:
+            smax = s
+            j = i
+    if not should_leave(abs(sk), smax, par[1 + 2 * n + _TAU]):
+        return code
+    nv = ipar[1]
+    row = np.empty((2 + nv) * n)  # allocation only at a switch, never per step
+    _to_ambient_impl(y, par, ipar, row)
+    enter_chart(row, n, nv, j, par[1 + n:1 + 2 * n], y, par, ipar)
+    c = ipar[4]
+    log[c, 0] = t
+    log[c, 1] = k
+    log[c, 2] = j
+    ipar[4] = c + 1
+    return POST_LOG_FULL if c + 1 >= log.shape[0] else POST_CHANGED
+
+
+def _cap(y, par, ipar):
+    n = ipar[0]
+    d = n - 1
+    C, sk, s2 = _sin_k(y, n, ipar[3])
+    S = s2
+    U = 0.0
+    acc = 0.0
+    for a in range(d):
+        s = math.sin(y[a])
+        S += s * s
+        U += y[d + a] ** 2
+        acc += y[d + a] * s
+    if s2 <= 0.0:
+        return 0.0
+    U += (acc / sk) ** 2
+    if U == 0.0:
+        return np.inf
+    return par[1 + 2 * n + _CAP] * min(math.sqrt(S), abs(sk)) / math.sqrt(U)
+
+
+@cache
+def _common_hooks():
+    return (njit(CAP_SIG, cache=True)(_cap), njit(POST_SIG, cache=True)(_post),
+            njit(OUT_SIG, cache=True)(_to_ambient))
+
+
+@cache
+def chart_rhs(n: int):
+    """Compiled right-hand side of eqs (14) + (16) for N = ``n`` (any chart: the local
+    masses in ``par`` select it).  Returns S = Σ sin²θ, or −1 outside the chart."""
+    kern = compiled(n)
+    ga = kern.geodesic_acceleration
+    tr = kern.transport_rate
+    d = n - 1
+
+    def rhs(y, par, dy):
+        nv = (y.size - 2 * d) // d
+        C = 0.0
+        S = 0.0
+        for a in range(d):
+            C += math.cos(y[a])
+            S += math.sin(y[a]) ** 2
+        s2 = 1.0 - C * C
+        if s2 <= 0.0:
+            for i in range(y.size):
+                dy[i] = 0.0
+            return -1.0
+        m = par[1:1 + n]
+        q = y[:d]
+        v = y[d:2 * d]
+        ga(q, v, m, dy[d:2 * d])
+        for a in range(d):
+            dy[a] = y[d + a]
+        for r in range(nv):
+            o = (2 + r) * d
+            tr(q, v, y[o:o + d], m, dy[o:o + d])
+        return S + s2
+
+    return njit(RHS_SIG)(rhs)
+
+
+class ChartFlow(Formulation):
+    """Eqs (14) + (16) in the atlas of N charts × 2 branches, switching by :func:`leave_chart`."""
+
+    name = "chart"
+
+    def __init__(self, system, *, project: bool, tau: float = DEFAULT_TAU, chart=None, **kw):
+        super().__init__(system, project=project, **kw)
+        if not (isinstance(tau, (int, float, np.floating)) and 0.0 < tau < 1.0):
+            raise ValueError(f"tau must be a number in (0, 1) (hysteresis needs tau < 1), got {tau!r}")
+        self.tau = float(tau)
+        if chart is not None and (isinstance(chart, bool) or not isinstance(chart, (int, np.integer))
+                                  or not 0 <= chart < self.n):
+            raise ValueError(f"chart must be None or an integer in 0..{self.n - 1}, got {chart!r}")
+        self.chart = chart
+
+    def hooks(self):
+        return (chart_rhs(self.n),) + _common_hooks()
+
+    def initial(self, theta, u, P):
+        n = self.n
+        sys = self.system
+        k = sys.best_chart(theta) if self.chart is None else int(self.chart)
+        nv = P.shape[0]
+        row = np.concatenate([theta, u, P.ravel()])
+        y = np.empty((2 + nv) * (n - 1))
+        par = np.zeros(1 + 2 * n + 5)
+        par[0] = n
+        par[1 + n:1 + 2 * n] = sys.masses
+        par[1 + 2 * n + _TAU] = self.tau
+        par[1 + 2 * n + _SPEED] = float(sys.speed(u))
+        par[1 + 2 * n + _PROJ] = float(self.project)
+        par[1 + 2 * n + _CAP] = self.cap_fraction
+        ipar = np.array([n, nv, 0, 1, 0], dtype=np.int64)
+        self.initial_switches = []
+        j = leave_chart(np.abs(np.sin(theta)), k, self.tau)
+        if j >= 0:  # a requested chart that the rule would leave: switch at t = 0
+            self.initial_switches.append((0.0, k, j))
+            k = j
+        enter_chart(row, n, nv, k, sys.masses.copy(), y, par, ipar)
+        return y, par, ipar
+
+    def drain_log(self, log, ipar):
+        recs = [(float(log[i, 0]), int(log[i, 1]), int(log[i, 2])) for i in range(ipar[4])]
+        ipar[4] = 0
+        return recs

@@ -1,0 +1,302 @@
+"""The integration loop shared by both formulations, compiled once and driven in chunks.
+
+A *formulation* (``charts.ambient_flow``, ``charts.chart_flow``) supplies four compiled
+hooks; the loop here supplies everything else (stepping, step-size control, output at the
+requested times, invariant monitoring, counters, status codes).  The contract:
+
+``rhs(y, par, dy) -> health``  (:data:`charts.rk.RHS_SIG`)
+    Time derivative of the formulation's state ``y``, shape (ny,).  ``health`` is
+    S = Σᵢ sin²θᵢ at the point (S → 0 only at the N = 4 singular points), or a negative
+    number if ``y`` is outside the domain of the formulation's coordinates.
+``cap(y, par, ipar) -> hmax``  (:data:`CAP_SIG`)
+    Largest step the formulation accepts from ``y`` (resolution of the geometry near
+    singular points and chart boundaries; see :data:`CAP_FRACTION`).
+``post(y, par, ipar, t, log) -> code``  (:data:`POST_SIG`)
+    Called after every accepted step, may change ``y`` in place (projection, chart switch)
+    and append rows to ``log``, shape (capacity, 3).  Returns :data:`POST_OK`,
+    :data:`POST_CHANGED` (``y`` changed: the loop re-evaluates ``rhs``), :data:`POST_LOG_FULL`
+    (changed, and the log must be drained before continuing) or a negative status.
+``to_ambient(y, par, ipar, row) -> 0.0``  (:data:`OUT_SIG`)
+    Ambient representation ``row = (θ, u, p¹, …, pᵏ)``, shape ((2 + k)·n,), of ``y``.
+
+All loop state lives in two small arrays so that a chunk can stop and resume exactly:
+``st`` (floats, indices ``S_*``) and ``ist`` (ints, indices ``I_*``).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, types
+
+from .rk import (RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense, dop853_step, initial_step,
+                 rk4_step, step_factor)
+
+__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "drive", "new_state", "STATUS_MESSAGES"]
+
+_f8 = types.float64
+_i8 = types.int64
+_v = types.float64[::1]
+_iv = types.int64[::1]
+_m = types.float64[:, ::1]
+
+CAP_SIG = _f8(_v, _v, _iv)
+POST_SIG = _i8(_v, _v, _iv, _f8, _m)
+OUT_SIG = _f8(_v, _v, _iv, _v)
+
+#: Steps are limited to move the point by at most this fraction of its distance to the
+#: nearest singular point (≈ √S) or chart boundary (≈ |sin θₖ|).  Within one step
+#: |Δ sin θₖ| ≤ |u|·h, so 0.5 keeps every stage strictly inside the chart, and a
+#: trajectory aimed at a singular point approaches it geometrically until it is caught by
+#: the singular-point test instead of stepping over it.
+CAP_FRACTION = 0.5
+
+# float state
+S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
+# int state
+(I_METHOD, I_NOUT, I_IEVAL, I_USE_EVAL, I_STATUS, I_NSTEPS, I_NREJ, I_NRHS, I_CHUNK,
+ I_FRESH) = range(10)
+
+METHOD_RK4, METHOD_DOP853 = 0, 1
+
+POST_OK, POST_CHANGED, POST_LOG_FULL = 0, 1, 3
+
+RUNNING, FINISHED, OUT_FULL, LOG_FULL = 0, 1, 2, 3
+SINGULAR, DOMAIN, UNDERFLOW, NONFINITE = -1, -2, -3, -4
+
+STATUS_MESSAGES = {
+    SINGULAR: "the trajectory reached a singular point of the manifold (N = 4: all θᵢ ∈ {0, π}, "
+              "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
+              "through it. Start from a different state (the samples up to t are in err.result).",
+    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}; reduce dt "
+            "(or use method='dop853', which shrinks such steps automatically).",
+    UNDERFLOW: "the step size underflowed at t = {t:.17g}; the solution is not resolvable at "
+               "this tolerance. Loosen rtol/atol or check the initial state.",
+    NONFINITE: "the state became non-finite at t = {t:.17g}; reduce dt or tighten rtol.",
+}
+
+
+def new_state(method: int, t_final: float, dt: float, rtol: float, atol: float, e0: float,
+              s_sing: float, use_eval: bool, chunk_steps: int):
+    """Fresh ``(st, ist)`` for :func:`drive` at t = 0."""
+    st = np.zeros(9)
+    st[S_TFINAL], st[S_DT], st[S_RTOL], st[S_ATOL] = t_final, dt, rtol, atol
+    st[S_E0], st[S_SSING], st[S_HEALTH] = e0, s_sing, 1.0
+    st[S_H] = -1.0  # DOP853: choose the initial step on first use
+    ist = np.zeros(10, dtype=np.int64)
+    ist[I_METHOD], ist[I_USE_EVAL], ist[I_CHUNK], ist[I_FRESH] = method, use_eval, chunk_steps, 1
+    return st, ist
+
+
+@njit(cache=True)
+def _monitor(row, n, masses, e0, mon):
+    F = 0.0
+    G = 0.0
+    E = 0.0
+    for i in range(n):
+        F += math.cos(row[i])
+        G += row[n + i] * math.sin(row[i])
+        E += 0.5 * masses[i] * row[n + i] ** 2
+    dE = abs(E - e0) / e0
+    if not (math.isfinite(F) and math.isfinite(G) and math.isfinite(E)):
+        return False
+    mon[0] = max(mon[0], abs(F))
+    mon[1] = max(mon[1], abs(G))
+    mon[2] = max(mon[2], dE)
+    return True
+
+
+def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_out, log, mon,
+           masses, K, F, ytmp, ynew, arow):
+    """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
+    accepted steps.  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
+    times ``t_eval`` (if ``ist[I_USE_EVAL]``; ``Y_out`` then has a row for every one of
+    them) or after every step (until ``Y_out`` is full).  Returns the status code, also
+    stored in ``ist[I_STATUS]``.
+
+    Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); arow (na,);
+    mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
+    n = masses.size
+    ny = y.size
+    method = ist[I_METHOD]
+    use_eval = ist[I_USE_EVAL] != 0
+    ne = t_eval.size
+    t = st[S_T]
+    t_final = st[S_TFINAL]
+    s_sing = st[S_SSING]
+    rtol = st[S_RTOL]
+    atol = st[S_ATOL]
+    status = RUNNING
+    steps = 0
+    while True:
+        if t >= t_final:
+            status = FINISHED
+            break
+        if steps >= ist[I_CHUNK]:
+            break
+        if not use_eval and ist[I_NOUT] >= Y_out.shape[0]:
+            status = OUT_FULL
+            break
+        hcap = cap(y, par, ipar)
+        t_next = t_final
+        if use_eval and ist[I_IEVAL] < ne:
+            t_next = min(t_next, t_eval[ist[I_IEVAL]])
+        if method == METHOD_RK4:
+            h = min(st[S_DT], hcap)
+            if h >= t_next - t:
+                h = t_next - t
+                t_new = t_next
+            else:
+                t_new = t + h
+            hs = rk4_step(rhs, y, h, par, K, ytmp, ynew)
+            ist[I_NRHS] += 4
+            if hs < 0.0:
+                status = DOMAIN
+                break
+            if hs < s_sing:
+                status = SINGULAR
+                break
+        else:
+            if ist[I_FRESH] != 0:
+                st[S_HEALTH] = rhs(y, par, K[0])
+                ist[I_NRHS] += 1
+                ist[I_FRESH] = 0
+            if st[S_HEALTH] < s_sing:
+                status = SINGULAR if st[S_HEALTH] >= 0.0 else DOMAIN
+                break
+            if st[S_H] <= 0.0:
+                st[S_H] = initial_step(rhs, y, K[0], par, t_final - t, hcap, rtol, atol,
+                                       ytmp, K[1])
+                ist[I_NRHS] += 1
+            h = min(st[S_H], hcap)
+            rejected = False
+            status = RUNNING
+            while True:
+                min_step = 10.0 * (np.nextafter(t, np.inf) - t)
+                if h < min_step:
+                    status = UNDERFLOW
+                    break
+                if t + h >= t_final:
+                    t_new = t_final
+                    h = t_final - t
+                else:
+                    t_new = t + h
+                err, hs = dop853_step(rhs, y, h, par, K, ytmp, ynew, rtol, atol)
+                ist[I_NRHS] += 12
+                if hs < 0.0 or not math.isfinite(err):
+                    h *= MIN_FACTOR  # a stage left the chart: shrink and retry
+                    rejected = True
+                    ist[I_NREJ] += 1
+                    continue
+                if hs < s_sing:
+                    status = SINGULAR
+                    break
+                fac = step_factor(err, rejected)
+                if err < 1.0:
+                    st[S_H] = h * fac
+                    break
+                h *= fac
+                rejected = True
+                ist[I_NREJ] += 1
+            if status != RUNNING:
+                break
+            st[S_HEALTH] = hs
+            # samples strictly inside the step, from the 7th-order interpolant
+            if use_eval and ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
+                dop853_dense(rhs, y, ynew, h, par, K, ytmp, F)
+                ist[I_NRHS] += 3
+                while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
+                    te = t_eval[ist[I_IEVAL]]
+                    dense_eval(F, y, (te - t) / h, ytmp)
+                    to_ambient(ytmp, par, ipar, Y_out[ist[I_NOUT]])
+                    T_out[ist[I_NOUT]] = te
+                    ist[I_NOUT] += 1
+                    ist[I_IEVAL] += 1
+        # accept the step
+        for i in range(ny):
+            y[i] = ynew[i]
+        if method == METHOD_DOP853:
+            for i in range(ny):
+                K[0, i] = K[12, i]  # first-same-as-last
+        t = t_new
+        steps += 1
+        ist[I_NSTEPS] += 1
+        code = post(y, par, ipar, t, log)
+        if code < 0:
+            status = code
+            break
+        if code != POST_OK:
+            ist[I_FRESH] = 1
+        # samples at the end of the step (after projection / chart switch)
+        if use_eval:
+            while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] <= t:
+                to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
+                T_out[ist[I_NOUT]] = t_eval[ist[I_IEVAL]]
+                ist[I_NOUT] += 1
+                ist[I_IEVAL] += 1
+        else:
+            to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
+            T_out[ist[I_NOUT]] = t
+            ist[I_NOUT] += 1
+        to_ambient(y, par, ipar, arow)
+        if not _monitor(arow, n, masses, st[S_E0], mon):
+            status = NONFINITE
+            break
+        if code == POST_LOG_FULL:
+            status = LOG_FULL
+            break
+    st[S_T] = t
+    ist[I_STATUS] = status
+    return status
+
+
+_CAP_TYPE = types.FunctionType(CAP_SIG)
+_POST_TYPE = types.FunctionType(POST_SIG)
+_OUT_TYPE = types.FunctionType(OUT_SIG)
+DRIVE_SIG = _i8(RHS_TYPE, _CAP_TYPE, _POST_TYPE, _OUT_TYPE, _v, _v, _iv, _v, _iv, _v, _v, _m, _m,
+                _v, _v, _m, _m, _v, _v, _v)
+
+_compiled = None
+
+
+def drive(*args):
+    """Compiled :func:`_drive` (compiled on first use, cached on disk)."""
+    global _compiled
+    if _compiled is None:
+        _compiled = njit(DRIVE_SIG, cache=True)(_drive)
+    return _compiled(*args)
+
+
+class Formulation:
+    """Base of the formulations driven by :func:`drive`.  A subclass supplies
+
+    * ``hooks()`` → ``(rhs, cap, post, to_ambient)``, compiled with :data:`charts.rk.RHS_SIG`,
+      :data:`CAP_SIG`, :data:`POST_SIG`, :data:`OUT_SIG` (see the module docstring);
+    * ``initial(theta, u, P)`` → ``(y, par, ipar)``: the formulation's state, float
+      parameters and int parameters for the ambient start (θ, u, transported vectors P,
+      shape (k, n)).
+
+    It may override ``drain_log(log, ipar)`` to turn the rows its ``post`` hook wrote into
+    records (default: no records), and set ``initial_switches`` in ``initial``.  The run bookkeeping (chunks, outputs, counters, status)
+    lives in ``charts.integrate``.
+    """
+
+    name = "abstract"
+
+    def __init__(self, system, *, project: bool, cap_fraction: float = CAP_FRACTION):
+        self.system = system
+        self.n = system.n
+        self.project = bool(project)
+        self.cap_fraction = float(cap_fraction)
+
+    def hooks(self):  # pragma: no cover - contract
+        raise NotImplementedError
+
+    def initial(self, theta, u, P):  # pragma: no cover - contract
+        raise NotImplementedError
+
+    initial_switches: list = []
+
+    def drain_log(self, log, ipar):
+        """Records for the rows ``post`` appended to ``log`` since the last drain."""
+        return []
