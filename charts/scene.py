@@ -81,7 +81,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
                       "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
                       else "a list of numbers, each > 0"),
-        "speed": Key("float", 1.0, "Speed along the geodesic |u|_g = √(Σ mᵢuᵢ²) of a seeded "
+        "speed": Key("float", 1.0, "Speed along the geodesic ‖u‖_g = √(Σ mᵢuᵢ²) of a seeded "
                      "initial state (the paper uses 1). Not allowed with an explicit u.",
                      check=_gt(0)),
     },
