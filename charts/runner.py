@@ -196,6 +196,8 @@ class _RunState:
         self.tick = 0                  # units done after the transient (negative: transient)
         self.rhs = 0                   # evaluations of the (augmented) vector field
         self.rhs_frame = 0             # extra evaluations for the curvature frame steps
+        self.steps = 0                 # accepted integrator steps
+        self.chart = -1                # chart in use (chart formulation), -1: not yet chosen
         self.rec = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature_num",
                                           "curvature_exact", "curvature_y", "switches")}
         self.rec_t = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature")}
@@ -216,7 +218,7 @@ class _RunState:
     def to_arrays(self) -> dict:
         a = {"y": self.y, "X": self.X, "logsum": self.logsum,
              "scalars": np.array([self.tick, self.rhs, self.rhs_frame, self.chunk_index,
-                                  self.elapsed, float(self.done)]),
+                                  self.elapsed, float(self.done), self.steps, self.chart]),
              "lyap_ticks": np.array([m[0] for m in self.lyap_marks], dtype=np.int64),
              "lyap_logsums": np.array([m[1] for m in self.lyap_marks]).reshape(
                  len(self.lyap_marks), self.plan.tangent_vectors)}
@@ -228,7 +230,8 @@ class _RunState:
 
     def load_arrays(self, a):
         self.y, self.X, self.logsum = a["y"].copy(), a["X"].copy(), a["logsum"].copy()
-        tick, rhs, rhs_frame, chunk, elapsed, done = a["scalars"]
+        tick, rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]
+        self.steps, self.chart = int(steps), int(chart)
         self.tick, self.rhs, self.rhs_frame = int(tick), int(rhs), int(rhs_frame)
         self.chunk_index, self.elapsed, self.done = int(chunk), float(elapsed), bool(done)
         self.lyap_marks = [(int(t), l.copy()) for t, l in zip(a["lyap_ticks"], a["lyap_logsums"])]
@@ -282,6 +285,7 @@ class _KernelEngine:
                              space="restricted", reorth_every=1,
                              project_every=self.project_every, logsum=st.logsum)
         st.rhs += 4 * nsteps
+        st.steps += nsteps
 
     def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
         """Advance from unit ``start`` to ``end``, stopping at every multiple of the
@@ -298,57 +302,48 @@ class _KernelEngine:
 
 class _IntegrateEngine:
     """``charts.integrate`` (issue 3) for the chart formulation and adaptive methods,
-    called once per chunk with output at the sample times of that chunk."""
+    called once per chunk with output at the sample times of that chunk.  The chart in use
+    at the end of a chunk is the one the next chunk starts in (no spurious switch)."""
 
     def __init__(self, st: _RunState):
-        try:
-            from .integrate import integrate
-        except ImportError:
-            sc = st.scene
-            raise RunError(f"formulation = {sc.integrator['formulation']!r}, method = "
-                           f"{sc.integrator['method']!r} needs charts.integrate (the integrators "
-                           "of issue 3), which this installation does not have; use "
-                           "formulation = 'ambient', method = 'rk4'") from None
+        from .integrate import integrate
+
         self.st = st
         self.integrate = integrate
         self.sdt = st.scene.run["sample_dt"]
 
     def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
+        from .integrate import IntegrationError
+
         st, sc = self.st, self.st.scene
         n = st.system.n
         integ = sc.integrator
-        span = (end - start) * self.sdt
+        m = end - start
         kw = dict(formulation=integ["formulation"], method=integ["method"],
-                  project=integ["project"], t_eval=np.arange(1, end - start + 1) * self.sdt)
+                  project=integ["project"], t_eval=np.arange(1, m + 1) * self.sdt)
         if integ["method"] == "rk4":
             kw["dt"] = integ["dt"]
         else:
             kw.update(rtol=integ["rtol"], atol=integ["atol"])
-        res = self.integrate(st.system, st.y[:n], st.y[n:], span, **kw)
-        st.rhs += int(_count(res, ("n_rhs", "nfev", "rhs_evaluations", "n_fev")))
-        t0 = (start - _ticks(sc.run["t_transient"], self.sdt)) * self.sdt
-        for sw in getattr(res, "switches", None) or []:
-            row = list(sw) if not isinstance(sw, dict) else [sw.get("t"), sw.get("from"), sw.get("to")]
-            st.rec["switches"].append([float(row[0]) + t0 + sc.run["t_transient"]] +
-                                      [float(x) for x in row[1:3]])
-        theta, u = np.asarray(res.theta), np.asarray(res.u)
-        for i in range(end - start):
-            st.y = np.concatenate([theta[-(end - start) + i], u[-(end - start) + i]])
+        if integ["formulation"] == "chart" and st.chart >= 0:
+            kw["chart"] = st.chart
+        t_start = start * self.sdt
+        try:
+            res = self.integrate(st.system, st.y[:n], st.y[n:], m * self.sdt, **kw)
+        except IntegrationError as exc:
+            raise RunError(f"the integration failed in the chunk starting at t = {t_start:g}: "
+                           f"{exc}") from None
+        except ValueError as exc:  # e.g. the state reached a singular point exactly
+            raise RunError(f"the integration could not continue at t = {t_start:g}: {exc}") from None
+        st.rhs += int(res.n_rhs)
+        st.steps += int(res.n_steps)
+        for t_sw, a, b in res.switches:
+            st.rec["switches"].append([t_start + float(t_sw), float(a), float(b)])
+            st.chart = int(b)
+        for i in range(m):
+            st.y = np.concatenate([res.theta[i], res.u[i]])
             for rec in recorders:
                 rec(start + i + 1)
-
-
-def _count(res, names):
-    for nm in names:
-        v = getattr(res, nm, None)
-        if v is not None:
-            return v
-    stats = getattr(res, "stats", None)
-    if isinstance(stats, dict):
-        for nm in names:
-            if nm in stats:
-                return stats[nm]
-    return 0
 
 
 # ------------------------------------------------------------------------------- recorders
@@ -608,6 +603,7 @@ def _finalize(st: _RunState, status, ends, transient, unit, outdir: Path) -> dic
     comp["stored_samples"] = {k: v[0] for k, v in stored.items()}
     comp["stored_values"] = int(sum(v[1] for v in stored.values()))
     comp["rhs_evaluations"] = st.rhs
+    comp["steps"] = st.steps
     comp["frame_rhs_evaluations"] = st.rhs_frame
     comp["tangent_vector_evaluations"] = st.rhs * plan.tangent_vectors
     files = ["result.json", CHECKPOINT] + (["arrays.npz"] if arrays else []) + sorted(figures)
