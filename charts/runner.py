@@ -3,8 +3,12 @@
 Plan.  :func:`plan_scene` decides, from the requested effects alone, what is integrated:
 
 * the state — 2N ambient variables (eq 8) or 2(N−1) chart variables (eq 14);
-* tangent vectors (eq 17) — none unless ``lyapunov``, ``curvature`` or ``angles`` is
-  requested, then max(n_exponents, n_directions) forward vectors;
+* tangent vectors (eq 17) — none unless ``lyapunov`` or ``curvature`` is requested, then
+  max(n_exponents, n_directions) forward vectors, shared by both;
+* the angles pass (``charts.hyperbolicity``) — only for ``angles``: m forward vectors, then
+  the backward adjoint pass (m vectors) along the trajectory re-integrated from sparse
+  checkpoints; it runs as one unit after the main pass (which is skipped when nothing
+  else needs it);
 * the parallel-transport frame (eq 19) — only for the numerical curvature route, N−1
   vectors moved one step back and forth at each curvature sample;
 * stored samples — only the window of the requested waveforms, the one rotor of the
@@ -47,6 +51,9 @@ __all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS", "at
 #: Lyapunov exponents printed in section 2 (unit speed, equal masses), largest first.
 PAPER_EXPONENTS = {3: [0.500], 4: [0.385, 0.230], 5: [0.298, 0.227, 0.121]}
 CHECKPOINT = "checkpoint.npz"
+#: Steps between the stored trajectory checkpoints of the angles pass (its memory bound:
+#: one state per checkpoint; the backward pass re-integrates each segment from it).
+ANGLES_CHECKPOINT_STEPS = 100
 
 
 class RunError(RuntimeError):
@@ -63,7 +70,10 @@ class Plan:
     state_dim : int   number of integrated state variables.
     tangent_vectors : int   forward tangent vectors (eq 17), 0 if none needed.
     transport_vectors : int   frame vectors transported (eq 19) at curvature samples.
-    adjoint_vectors : int   vectors of the backward adjoint pass (angles only).
+    adjoint_vectors : int   vectors of the backward adjoint pass (angles pass only).
+    angles : dict   the angles pass (forward/adjoint vectors, steps, stored checkpoints and
+        samples), empty when not requested.
+    main_pass : bool   whether the chunked main pass runs (False for an angles-only scene).
     stored : dict   name -> number of stored samples (rows).
     steps : dict   name -> recording interval in integrator steps (kernel engine) or
         samples (integrate engine).
@@ -78,6 +88,8 @@ class Plan:
     stored: dict = field(default_factory=dict)
     every: dict = field(default_factory=dict)
     needs_trajectory_store: bool = False
+    angles: dict = field(default_factory=dict)
+    main_pass: bool = True
 
     def as_dict(self):
         return {"engine": self.engine, "formulation": self.formulation, "method": self.method,
@@ -85,7 +97,8 @@ class Plan:
                 "transport_vectors": self.transport_vectors,
                 "adjoint_vectors": self.adjoint_vectors,
                 "stored_samples": dict(self.stored),
-                "stored_trajectory": self.needs_trajectory_store}
+                "stored_trajectory": self.needs_trajectory_store,
+                "main_pass": self.main_pass, "angles_pass": dict(self.angles)}
 
 
 def _ticks(t, unit):
@@ -126,12 +139,19 @@ def plan_scene(scene: Scene) -> Plan:
             plan.transport_vectors = c["n_directions"] + 1
     if "angles" in eff:
         a = eff["angles"]
-        k = max(k, a["n_vectors"])
-        plan.adjoint_vectors = a["n_vectors"]
+        dt = integ["dt"]
+        m = a["n_vectors"]
+        n_tr = _ticks(run["t_transient"], dt)
+        ce = ANGLES_CHECKPOINT_STEPS
+        nseg = -(-(2 * n_tr + _ticks(run["t_final"], dt)) // ce)
+        plan.adjoint_vectors = m
         plan.needs_trajectory_store = True
-        plan.every["angles"] = _ticks(a["sample_every"], unit)
-        plan.stored["angles"] = _ticks(run["t_final"], a["sample_every"])
+        plan.angles = {"forward_vectors": m, "adjoint_vectors": m, "steps": nseg * ce,
+                       "rhs_evaluations": 2 * 4 * nseg * ce,
+                       "stored_trajectory_checkpoints": nseg + 1,
+                       "stored_samples": _ticks(run["t_final"], a["sample_every"])}
     plan.tangent_vectors = k
+    plan.main_pass = any(e != "angles" for e in eff)
     return plan
 
 
@@ -199,7 +219,8 @@ class _RunState:
         self.steps = 0                 # accepted integrator steps
         self.chart = -1                # chart in use (chart formulation), -1: not yet chosen
         self.rec = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature_num",
-                                          "curvature_exact", "curvature_y", "switches")}
+                                          "curvature_exact", "curvature_y", "switches", "angles",
+                                          "angles_exponents")}
         self.rec_t = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature")}
         self.elapsed = 0.0
         self.done = False
@@ -450,9 +471,6 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     outdir.mkdir(parents=True, exist_ok=True)
     system = RotorSystem(scene.system["n"], scene.system["masses"])
     plan = plan_scene(scene)
-    if "angles" in scene.effects:
-        raise RunError("[effects] angles needs the hyperbolicity analysis of issue 4 "
-                       "(charts.hyperbolicity), which this installation does not have yet")
     st = _RunState(scene, plan, system)
     ck = outdir / CHECKPOINT
     digest = _scene_hash(scene)
@@ -483,30 +501,41 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         nb = scene.effects["lyapunov"]["n_batches"]
         lyap_ends = {transient + int(round(total * (b + 1) / nb)) for b in range(nb)}
 
+    n_main = len(ends) if plan.main_pass else 0
+    n_units = n_main + (1 if plan.angles else 0)
+    st.n_main = n_main
+
     from tqdm.auto import tqdm
-    t_total = scene.run["t_transient"] + scene.run["t_final"]
+    t_total = (scene.run["t_transient"] + scene.run["t_final"]) * (1 if plan.main_pass else 0)
+    if plan.angles:
+        t_total += plan.angles["steps"] * scene.integrator["dt"]
     bar = tqdm(total=round(t_total, 10), unit="t", desc=scene.name, disable=quiet,
                leave=False, initial=round(_pos_of(st, ends) * unit, 10))
     status = "complete"
     try:
-        for idx in range(st.chunk_index, len(ends)):
-            start = ends[idx - 1] if idx else 0
+        for idx in range(st.chunk_index, n_units):
             t_wall = time.perf_counter()
-            engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
-                             transient)
-            if ends[idx] == transient:          # the transient does not count for exponents
-                st.logsum[:] = 0.0
-            if ends[idx] in lyap_ends:
-                st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
+            if idx < n_main:
+                start = ends[idx - 1] if idx else 0
+                engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
+                                 transient)
+                if ends[idx] == transient:      # the transient does not count for exponents
+                    st.logsum[:] = 0.0
+                if ends[idx] in lyap_ends:
+                    st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
+                advanced = (ends[idx] - start) * unit
+            else:
+                _angles_pass(st)
+                advanced = plan.angles["steps"] * scene.integrator["dt"]
             st.chunk_index = idx + 1
             st.elapsed += time.perf_counter() - t_wall
-            st.done = st.chunk_index == len(ends)
+            st.done = st.chunk_index == n_units
             arr = st.to_arrays()
             arr["scene_hash"] = np.array(digest)
             atomic_write(ck, _npz_bytes(arr))
-            bar.update((ends[idx] - start) * unit)
+            bar.update(advanced)
             if on_chunk is not None:
-                on_chunk(idx, len(ends))
+                on_chunk(idx, n_units)
     except KeyboardInterrupt:
         status = "interrupted"
         # roll back to the last checkpoint: the chunk in flight is discarded
@@ -515,6 +544,7 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
                 st.load_arrays(a)
         else:
             st = _RunState(scene, plan, system)
+        st.n_main = n_main
     finally:
         bar.close()
     result = _finalize(st, status, ends, transient, unit, outdir)
@@ -524,7 +554,30 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
 
 
 def _pos_of(st, ends):
-    return ends[st.chunk_index - 1] if st.chunk_index else 0
+    """Units of the main pass done."""
+    k = min(st.chunk_index, getattr(st, "n_main", len(ends)))
+    return ends[k - 1] if k else 0
+
+
+def _angles_pass(st: _RunState):
+    """The hyperbolicity test (section 4) from the initial state: forward tangent vectors,
+    backward adjoint vectors along the re-integrated trajectory (``charts.hyperbolicity``)."""
+    from .hyperbolicity import hyperbolicity_angles
+
+    sc, sys_ = st.scene, st.system
+    a = sc.effects["angles"]
+    dt = sc.integrator["dt"]
+    n = sys_.n
+    res = hyperbolicity_angles(sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
+                               n_unstable=a["n_vectors"], t_transient=sc.run["t_transient"],
+                               sample_every=_ticks(a["sample_every"], dt),
+                               checkpoint_every=ANGLES_CHECKPOINT_STEPS,
+                               seed=sc.initial["seed"] or 0)
+    st.rec["angles"] = [list(r) for r in np.column_stack([res.t, res.phi_full,
+                                                          res.phi_restricted])]
+    st.rec["angles_exponents"] = [list(res.forward_exponents), list(res.adjoint_exponents)]
+    st.rhs += st.plan.angles["rhs_evaluations"]
+    st.steps += 2 * st.plan.angles["steps"]
 
 
 def _read_status(outdir):
@@ -541,6 +594,9 @@ def _finalize(st: _RunState, status, ends, transient, unit, outdir: Path) -> dic
     eff = sc.effects
     pos = _pos_of(st, ends)
     t_done = max(0, pos - transient) * unit
+    angles_done = bool(st.rec["angles"])
+    if not plan.main_pass:
+        t_done = sc.run["t_final"] if angles_done else 0.0
     arrays, results, figures = {}, {}, {}
     stored = {}
     if "waveforms" in eff:
@@ -586,6 +642,13 @@ def _finalize(st: _RunState, status, ends, transient, unit, outdir: Path) -> dic
                                 int(sum(v.size for v in curv_arrays.values())))
         if len(st.rec_t["curvature"]):
             figures["curvature.png"] = _fig_curvature(sc, curv_arrays)
+    if "angles" in eff:
+        results["angles"], ang_arrays = _angles_result(st)
+        arrays.update(ang_arrays)
+        if angles_done:
+            stored["angles"] = (len(ang_arrays["angles_t"]),
+                                int(sum(v.size for v in ang_arrays.values())))
+            figures["angles.png"] = _fig_angles(sc, ang_arrays)
     if "switches" in eff:
         S = np.array(st.rec["switches"]).reshape(-1, 3)
         arrays["switches"] = S
@@ -664,6 +727,26 @@ def _lyapunov_result(st, t_done, arrays):
         res["paper_note"] = "section 2, unit speed, equal masses; scaled by the speed"
     arrays.update(lyapunov_history_t=T, lyapunov_history=L / T[:, None])
     return res
+
+
+def _angles_result(st):
+    from .hyperbolicity import SMALL_ANGLE, angle_statistics
+
+    a = st.scene.effects["angles"]
+    res = {"variant": a["variant"], "n_vectors": a["n_vectors"]}
+    if not st.rec["angles"]:
+        res["note"] = "the angles pass has not run yet"
+        return res, {}
+    A = np.array(st.rec["angles"])
+    arr = {"angles_t": A[:, 0]}
+    for j, variant in ((1, "full"), (2, "restricted")):
+        if a["variant"] in (variant, "both"):
+            arr[f"angles_{variant}"] = A[:, j]
+            res[variant] = angle_statistics(A[:, j], SMALL_ANGLE)
+    fwd, adj = st.rec["angles_exponents"]
+    res["forward_exponents"] = list(fwd)
+    res["adjoint_exponents"] = list(adj)
+    return res, arr
 
 
 def _curvature_result(st):
@@ -756,6 +839,17 @@ def _fig_lyapunov(sc, arrays, res):
     ax.set_ylabel("running estimate")
     ax.legend()
     ax.set_title(f"{sc.name}: Lyapunov exponents (dotted: paper)")
+    return _png(fig)
+
+
+def _fig_angles(sc, arr):
+    variants = [v for v in ("full", "restricted") if f"angles_{v}" in arr]
+    fig, axes = _subplots(1, len(variants), figsize=(4.5 * len(variants), 3.2), squeeze=False)
+    for ax, v in zip(axes[0], variants):
+        ax.hist(arr[f"angles_{v}"], bins=60, range=(0, np.pi / 2), density=True)
+        ax.set_xlabel("φ (rad)")
+        ax.set_title(f"{v} tangent space")
+    fig.suptitle(f"{sc.name}: angles between E_u and E_cs, N = {sc.system['n']}")
     return _png(fig)
 
 

@@ -156,7 +156,8 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "variant": Key("str", "both", "\"full\": the paper's 2N-dimensional tangent space; "
                        "\"restricted\": the constraint-preserving subspace; or \"both\".",
                        choices=("full", "restricted", "both")),
-        "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2).",
+        "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2, at "
+                         "most N−2).",
                          check=_ge(1)),
         "sample_every": Key("float", 0.1, "Simulated time between angle samples; a multiple "
                             "of dt.", check=_gt(0)),
@@ -488,9 +489,10 @@ def _check_effects(source, n, integ, run, effects):
         a = effects["angles"]
         if a["n_vectors"] is None:
             a["n_vectors"] = n - 2
-        if a["n_vectors"] > 2 * n - 3:
+        if a["n_vectors"] > n - 2:
             raise SceneError(f"{_where(source, sect('angles'), 'n_vectors')} = {a['n_vectors']!r} "
-                             f"is not allowed: expected 1..{2 * n - 3}")
+                             f"is not allowed: expected 1..{n - 2} (at most the number of "
+                             "positive exponents)")
         _multiple(source, sect("angles"), "sample_every", a["sample_every"], integ["dt"],
                   "[integrator] dt")
     if "drift" in effects:
