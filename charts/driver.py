@@ -48,8 +48,10 @@ OUT_SIG = _f8(_v, _v, _iv, _v)
 #: nearest singular point (≈ √S) or chart boundary (≈ |sin θₖ|).  Within one step
 #: |Δ sin θₖ| ≤ |u|·h, so 0.5 keeps every stage strictly inside the chart, and a
 #: trajectory aimed at a singular point approaches it geometrically until it is caught by
-#: the singular-point test instead of stepping over it.
-CAP_FRACTION = 0.5
+#: the singular-point test instead of stepping over it.  DOP853 controls its own error, so
+#: the cap only serves safety; RK4 has no error control, and near a singular point (where
+#: the path turns by ~|u|h/√S per step) 0.1 keeps it resolved: sub-steps, not a new dt.
+CAP_FRACTION = {"dop853": 0.5, "rk4": 0.1}
 
 # float state
 S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
@@ -65,7 +67,7 @@ RUNNING, FINISHED, OUT_FULL, LOG_FULL = 0, 1, 2, 3
 SINGULAR, DOMAIN, UNDERFLOW, NONFINITE = -1, -2, -3, -4
 
 STATUS_MESSAGES = {
-    SINGULAR: "the trajectory reached a singular point of the manifold (N = 4: all θᵢ ∈ {0, π}, "
+    SINGULAR: "the trajectory reached a singular point of the manifold (N = 4: all θᵢ ∈ {{0, π}}, "
               "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
               "through it. Start from a different state (the samples up to t are in err.result).",
     DOMAIN: "a step left the domain of the current chart at t = {t:.17g}; reduce dt "
@@ -143,7 +145,7 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
             t_next = min(t_next, t_eval[ist[I_IEVAL]])
         if method == METHOD_RK4:
             h = min(st[S_DT], hcap)
-            if h >= t_next - t:
+            if h * (1.0 + 1e-9) >= t_next - t:  # land exactly; no sliver step from t += h rounding
                 h = t_next - t
                 t_new = t_next
             else:
@@ -283,7 +285,7 @@ class Formulation:
 
     name = "abstract"
 
-    def __init__(self, system, *, project: bool, cap_fraction: float = CAP_FRACTION):
+    def __init__(self, system, *, project: bool, cap_fraction: float = CAP_FRACTION["dop853"]):
         self.system = system
         self.n = system.n
         self.project = bool(project)

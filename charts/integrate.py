@@ -227,7 +227,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     kw = {"tau": tau, "chart": chart} if formulation == "chart" else {}
     if formulation == "ambient" and (chart is not None or tau != DEFAULT_TAU):
         raise ValueError("tau and chart apply to formulation='chart'")
-    form = form_cls(system, project=project, **kw)
+    form = form_cls(system, project=project, cap_fraction=D.CAP_FRACTION[method], **kw)
     y, par, ipar = form.initial(theta0, u0, P)
     rhs, cap, post, to_amb = form.hooks()
     st, ist = D.new_state(_METHODS[method], t_final, dt, rtol_v, atol_v, float(system.energy(u0)),
@@ -244,8 +244,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     masses = system.masses.copy()
 
     ts, rows = [], []
-    row0 = np.zeros(na)
-    to_amb(y, par, ipar, row0)
+    row0 = np.concatenate([theta0, u0, P.ravel()])  # the t = 0 sample is the input, exactly
     if use_eval:
         first = 1 if te[0] == 0.0 else 0
         if first:
@@ -315,7 +314,7 @@ def _make_result(system, t, Y, k, mon, switches, ist, status, formulation, metho
     if k:
         V = np.concatenate([u[:, None, :], transported], axis=1)  # (m, k+1, n)
         G = np.einsum("tin,tjn,n->tij", V, V, system.masses)
-        norms = np.sqrt(np.diagonal(G[0]))
+        norms = np.maximum(np.sqrt(np.diagonal(G[0])), 1e-300)
         drift["transport"] = float(np.max(np.abs(G - G[0]) / np.outer(norms, norms)))
     return IntegrationResult(t=t, theta=theta, u=u, transported=transported, switches=switches,
                              drift=drift, n_steps=int(ist[D.I_NSTEPS]), n_rejected=int(ist[D.I_NREJ]),

@@ -136,7 +136,8 @@ EFFECTS: dict[str, dict[str, Key]] = {
     },
     "lyapunov": {
         "n_exponents": Key("int", None, "Number of exponents (default N−2, the positive "
-                           "ones; at most 2N).", check=_ge(1)),
+                           "ones; at most N−1 with the θ product, 2N−2 with the full one).",
+                           check=_ge(1)),
         "inner_product": Key("str", "theta", "\"theta\": the paper's θ-only product (sec. 2); "
                              "\"full\": all 2N components.", choices=("theta", "full")),
         "n_batches": Key("int", 10, "Batches for the batch-means standard error.",
@@ -472,9 +473,14 @@ def _check_effects(source, n, integ, run, effects):
         ly = effects["lyapunov"]
         if ly["n_exponents"] is None:
             ly["n_exponents"] = n - 2
-        if ly["n_exponents"] > 2 * n:
+        # the vectors stay in the 2N−2-dim. constraint-preserving subspace; the θ-only
+        # product sees only its N−1 θ-directions (more vectors would be degenerate)
+        kmax = n - 1 if ly["inner_product"] == "theta" else 2 * n - 2
+        if ly["n_exponents"] > kmax:
+            more = " (use inner_product = 'full' for up to 2N−2)" if kmax == n - 1 else ""
             raise SceneError(f"{_where(source, sect('lyapunov'), 'n_exponents')} = "
-                             f"{ly['n_exponents']!r} is not allowed: expected 1..{2 * n} (2N)")
+                             f"{ly['n_exponents']!r} is not allowed with inner_product = "
+                             f"{ly['inner_product']!r}: expected 1..{kmax}{more}")
     if "curvature" in effects:
         c = effects["curvature"]
         if c["n_directions"] is None:

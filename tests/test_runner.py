@@ -1,0 +1,234 @@
+"""The runner simulates only what a scene asks for (checked from the metadata), its numbers
+agree with the library's direct routes, and an interrupted run resumes to the same numbers."""
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from charts import RotorSystem
+from charts.runner import RunError, plan_scene, run_scene
+from charts.scene import parse_scene
+
+#: Same RK4 arithmetic through two kernels: rounding differences (~1e-15) amplified by the
+#: chaos, e^{λt} with λ ≈ 0.4 over t ≤ 6, stay far below this.
+SAME_RK4 = 1e-10
+
+
+def scene(n=3, effects=None, t_final=2.0, t_transient=0.0, sample_dt=0.05, **sections):
+    d = {"system": {"n": n}, "run": {"t_final": t_final, "t_transient": t_transient,
+                                     "sample_dt": sample_dt},
+         "effects": effects or {"waveforms": {}}}
+    d.update(sections)
+    return parse_scene(d)
+
+
+def run(sc, tmp_path, name="out", **kw):
+    return run_scene(sc, tmp_path / name, quiet=True, **kw)
+
+
+# ----------------------------------------------------------------- only what is asked for
+def test_waveform_only_n5_integrates_10_variables_no_tangent_vectors(tmp_path):
+    sc = scene(n=5, effects={"waveforms": {"rotors": [0, 2], "t_window": 1.0}}, t_final=3.0,
+               t_transient=0.5)
+    comp = run(sc, tmp_path)["computation"]
+    assert comp["state_dimension"] == 10
+    assert comp["tangent_vectors"] == 0 and comp["transport_vectors"] == 0
+    assert comp["adjoint_vectors"] == 0 and comp["stored_trajectory"] is False
+    # only the window (1.0 / 0.05 = 20 samples) of the two rotors is stored
+    assert comp["stored_samples"] == {"waveforms": 20}
+    assert comp["stored_values"] == 40
+    # RK4: 4 evaluations per step, (0.5 + 3.0) / 0.01 steps
+    assert comp["steps"] == 350 and comp["rhs_evaluations"] == 1400
+    assert comp["tangent_vector_evaluations"] == 0
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        assert set(a.files) == {"waveforms_t", "waveforms_u"}
+        assert a["waveforms_u"].shape == (20, 2)
+        np.testing.assert_allclose(a["waveforms_t"], 0.5 + 0.05 * np.arange(1, 21))
+
+
+@pytest.mark.parametrize("effects, expect", [
+    ({"spectrum": {"nperseg": 16}}, dict(tangent=0, transport=0, stored={"spectrum": 40})),
+    ({"drift": {"sample_every": 0.5}}, dict(tangent=0, transport=0, stored={"drift": 4})),
+    ({"lyapunov": {"n_batches": 2}}, dict(tangent=1, transport=0, stored={})),
+    ({"lyapunov": {"n_exponents": 3, "n_batches": 2, "inner_product": "full"}},
+     dict(tangent=3, transport=0, stored={})),
+    ({"curvature": {"route": "exact", "sample_every": 0.5}},
+     dict(tangent=1, transport=0, stored={"curvature": 4})),
+    ({"curvature": {"route": "numerical", "sample_every": 0.5}},
+     dict(tangent=1, transport=2, stored={"curvature": 4})),
+    # combinations share one pass: the larger number of tangent vectors serves both
+    ({"lyapunov": {"n_exponents": 2, "n_batches": 2}, "curvature": {"sample_every": 1.0},
+      "drift": {"sample_every": 1.0}},
+     dict(tangent=2, transport=2, stored={"curvature": 2, "drift": 2})),
+    ({"waveforms": {"t_window": 0.5}, "spectrum": {"nperseg": 16}},
+     dict(tangent=0, transport=0, stored={"waveforms": 10, "spectrum": 40})),
+])
+def test_each_effect_alone_and_combined(tmp_path, effects, expect):
+    sc = scene(n=3, effects=effects)
+    res = run(sc, tmp_path)
+    comp = res["computation"]
+    assert comp["state_dimension"] == 6
+    assert comp["tangent_vectors"] == expect["tangent"]
+    assert comp["transport_vectors"] == expect["transport"]
+    assert comp["stored_samples"] == expect["stored"]
+    assert comp["rhs_evaluations"] == 4 * 200
+    assert comp["tangent_vector_evaluations"] == 4 * 200 * expect["tangent"]
+    assert comp["main_pass"] and comp["angles_pass"] == {}
+    # the numerical route costs 2 frame steps (8 evaluations) per curvature sample
+    n_curv = expect["stored"].get("curvature", 0)
+    assert comp["frame_rhs_evaluations"] == (8 * n_curv if expect["transport"] else 0)
+    assert set(res["results"]) == set(effects) - {"drift"}
+
+
+def test_angles_only_skips_the_main_pass(tmp_path):
+    sc = scene(n=4, effects={"angles": {"sample_every": 0.5}}, t_final=2.0, t_transient=1.0)
+    res = run(sc, tmp_path)
+    comp = res["computation"]
+    assert comp["main_pass"] is False and comp["rhs_evaluations"] == comp["angles_pass"][
+        "rhs_evaluations"]
+    assert comp["angles_pass"]["forward_vectors"] == 2 == comp["adjoint_vectors"]
+    assert comp["stored_samples"] == {"angles": 4}
+    ang = res["results"]["angles"]
+    assert ang["full"]["n"] == ang["restricted"]["n"] == 4
+    assert 0 <= ang["full"]["min"] <= np.pi / 2
+
+
+def test_chart_formulation_state_dimension_and_switch_log(tmp_path):
+    sc = scene(n=4, effects={"switches": {}}, t_final=4.0,
+               integrator={"formulation": "chart", "method": "dop853"})
+    res = run(sc, tmp_path)
+    comp = res["computation"]
+    assert comp["engine"] == "integrate" and comp["state_dimension"] == 6
+    assert comp["tangent_vectors"] == 0 and comp["stored_samples"] == {}
+    assert comp["rhs_evaluations"] > 0
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        S = a["switches"]
+    assert res["results"]["switches"]["count"] == len(S)
+    if len(S):
+        assert np.all(np.diff(S[:, 0]) >= 0) and np.all(S[:, 1] != S[:, 2])
+
+
+# ----------------------------------------------------------------- agreement with direct routes
+def test_waveforms_match_charts_integrate(tmp_path):
+    """The fused kernel route and ``charts.integrate`` (ambient RK4, same dt) are the same
+    method: their samples agree to rounding amplified by the chaos."""
+    from charts.integrate import integrate
+
+    sc = scene(n=5, effects={"waveforms": {"t_window": 5.0}}, t_final=5.0, sample_dt=0.1)
+    run(sc, tmp_path)
+    system = RotorSystem(5)
+    theta0, u0 = system.random_state(seed=0, speed=1.0)
+    ref = integrate(system, theta0, u0, 5.0, formulation="ambient", method="rk4", dt=0.01,
+                    t_eval=0.1 * np.arange(1, 51))
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        np.testing.assert_allclose(a["waveforms_u"], ref.u, rtol=0, atol=SAME_RK4)
+
+
+def test_lyapunov_matches_lyapunov_spectrum(tmp_path):
+    """Chunked and checkpointed, the scene's exponent equals ``charts.lyapunov_spectrum``
+    run in one go from the same state, vectors and settings."""
+    from charts import lyapunov_spectrum
+
+    sc = scene(n=4, effects={"lyapunov": {"n_exponents": 2, "n_batches": 4}}, t_final=8.0,
+               t_transient=2.0, initial={"seed": 3})
+    res = run(sc, tmp_path)["results"]["lyapunov"]
+    system = RotorSystem(4)
+    theta0, u0 = system.random_state(seed=3, speed=1.0)
+    ref = lyapunov_spectrum(system, theta0, u0, 8.0, dt=0.01, n_exponents=2, t_transient=2.0,
+                            n_batches=4, project_every=1 << 40, record_every=1.0, seed=3)
+    np.testing.assert_allclose(res["exponents"], ref.exponents, rtol=0, atol=1e-12)
+    assert len(res["stderr"]) == 2 and res["batches"] == 4
+    assert res["paper"] == [0.385, 0.23]
+
+
+def test_n3_curvature_routes_against_eq22(tmp_path):
+    """N = 3: the exact route reproduces eq (22) (up to the ~1e-9 drift of the unprojected
+    state off the manifold); the numerical route to the paper's 'five digits' in the median."""
+    sc = scene(n=3, effects={"curvature": {"route": "both", "sample_every": 0.1}}, t_final=5.0,
+               t_transient=1.0)
+    c = run(sc, tmp_path)["results"]["curvature"]
+    assert c["exact"]["median_rel_error_vs_eq22"] < 1e-7
+    assert c["numerical"]["median_rel_error_vs_eq22"] < 1e-4
+    assert c["exact"]["max"][0] <= 0 and c["numerical"]["fraction_positive"] == [0.0]
+
+
+# ----------------------------------------------------------------- interrupt and resume
+class Stop(Exception):
+    pass
+
+
+@pytest.mark.parametrize("over", [
+    {"effects": {"waveforms": {"t_window": 3.0}, "drift": {"sample_every": 0.5},
+                 "lyapunov": {"n_exponents": 2, "n_batches": 3},
+                 "curvature": {"sample_every": 0.2}}},
+    {"effects": {"waveforms": {"t_window": 3.0}, "spectrum": {"nperseg": 16}, "switches": {}},
+     "integrator": {"formulation": "chart", "method": "dop853"}},
+])
+def test_interrupt_then_resume_gives_the_same_numbers(tmp_path, over):
+    d = {"system": {"n": 4}, "run": {"t_final": 6.0, "t_transient": 0.5, "sample_dt": 0.05,
+                                     "checkpoint_every": 0.5}}
+    d.update(over)
+    sc = parse_scene(d, source="s.toml")
+    full = run(sc, tmp_path, "full")
+
+    def stop(idx, total):
+        if idx == 5:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt) as exc:
+        run(sc, tmp_path, "cut", on_chunk=stop)
+    partial = exc.value.args[0]
+    out = tmp_path / "cut"
+    on_disk = json.loads((out / "result.json").read_text())
+    assert on_disk["status"] == partial["status"] == "interrupted"
+    assert on_disk["progress"]["chunks_done"] == 6 < on_disk["progress"]["chunks"]
+    assert 0 < on_disk["progress"]["t_done"] < 6.0
+    assert "--resume" in on_disk["resume"]
+    with np.load(out / "arrays.npz") as a:        # a valid, readable partial result
+        assert len(a["waveforms_t"]) == round(on_disk["progress"]["t_done"] / 0.05)
+    # starting afresh over an interrupted run is refused; resuming finishes it
+    with pytest.raises(RunError, match="--resume"):
+        run(sc, tmp_path, "cut")
+    done = run(sc, tmp_path, "cut", resume=True)
+    assert done["status"] == "complete"
+    assert done["results"] == full["results"]
+    assert done["computation"] == full["computation"]
+    with np.load(tmp_path / "full" / "arrays.npz") as a, np.load(out / "arrays.npz") as b:
+        assert a.files == b.files
+        for k in a.files:
+            np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+
+
+def test_interrupt_in_the_first_chunk_leaves_an_empty_valid_result(tmp_path):
+    sc = scene(n=3, effects={"lyapunov": {"n_batches": 2}})
+
+    def stop(idx, total):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run(sc, tmp_path, on_chunk=stop)
+    res = json.loads((tmp_path / "out" / "result.json").read_text())
+    assert res["status"] == "interrupted" and res["progress"]["chunks_done"] == 1
+
+
+def test_resume_errors(tmp_path):
+    sc = scene(n=3)
+    with pytest.raises(RunError, match="no checkpoint"):
+        run(sc, tmp_path, resume=True)
+    run(sc, tmp_path)
+    other = scene(n=3, t_final=3.0)
+    with pytest.raises(RunError, match="different scene"):
+        run(other, tmp_path, resume=True)
+
+
+def test_plan_is_pure_and_matches_run(tmp_path):
+    sc = scene(n=5, effects={"lyapunov": {"n_exponents": 2, "n_batches": 2},
+                             "curvature": {"n_directions": 3, "route": "exact",
+                                           "sample_every": 1.0}})
+    plan = plan_scene(sc)
+    assert (plan.state_dim, plan.tangent_vectors, plan.transport_vectors) == (10, 3, 0)
+    assert not (tmp_path / "out").exists()
+    comp = run(sc, tmp_path)["computation"]
+    assert comp["tangent_vectors"] == 3 and comp["stored_samples"] == {"curvature": 2}
