@@ -11,4 +11,5 @@ from .curvature import CurvatureResult, curvature_along_trajectory, gaussian_cur
 
 __all__ = ["RotorSystem", "lyapunov_spectrum", "lyapunov_ensemble", "LyapunovResult",
            "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22"]
+from .integrate import IntegrationError, IntegrationResult, integrate; __all__ += ["integrate", "IntegrationResult", "IntegrationError"]  # noqa: E402,E702
 __version__ = "0.1.0"
