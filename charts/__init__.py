@@ -8,8 +8,12 @@ mechanically coupled rotators".  Public surface:
 from .system import RotorSystem
 from .lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spectrum
 from .curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
+from .hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
+from .spectra import power_spectrum, waveform
 
 __all__ = ["RotorSystem", "lyapunov_spectrum", "lyapunov_ensemble", "LyapunovResult",
-           "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22"]
+           "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22",
+           "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
+           "waveform", "power_spectrum"]
 from .integrate import IntegrationError, IntegrationResult, integrate; __all__ += ["integrate", "IntegrationResult", "IntegrationError"]  # noqa: E402,E702
 __version__ = "0.1.0"
