@@ -1,0 +1,320 @@
+"""What accuracy costs in time: work–precision study behind ``charts bench accuracy``.
+
+Three questions, each answered by error against wall time (log–log), one point per setting:
+
+(a) **trajectory** — the state (θ, u) at a fixed time T from one initial state, against a
+    reference from ambient DOP853 at rtol = 1e-14 (its own error is estimated by the
+    distance to the chart DOP853 run at the same tolerance, and shown as a floor).  Methods:
+    ambient RK4 over a range of dt, ambient DOP853 over a range of rtol, the intrinsic chart
+    RK4 and DOP853 — each with and without projection — and, as a baseline,
+    ``scipy.integrate.solve_ivp`` (DOP853) on eq (8);
+(b) **leading Lyapunov exponent** (N = 3) — |λ₁(dt) − λ₁(dt_ref)| over the same averaging
+    time and initial state, next to the batch-means standard error of that averaging time:
+    below the standard error, a smaller step buys nothing;
+(c) **N = 3 curvature** — the numerical route of eqs (19)–(21) against the closed form of
+    eq (22) at the same points (median relative error), against its cost; the exact route
+    (generated Riemann tensor) as one point.
+
+Wall time is the best of ``repeat`` runs after a warm-up run (compilation excluded).  In
+(a) the runs to T last milliseconds, so the cost is timed on a run ``COST_FACTOR`` times
+longer from the same state and scaled back to T (the error is that of the run to T).
+Outputs in the output folder: ``accuracy.png`` (three panels), ``accuracy.md`` (the
+table), ``accuracy.json`` (every number).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .system import RotorSystem
+
+__all__ = ["Point", "trajectory_study", "lyapunov_study", "curvature_study", "run_study", "main"]
+
+#: Reference tolerance of the trajectory study (the smallest rtol the DOP853 estimate
+#: still tracks, one decade above rounding).
+REFERENCE_RTOL = 1e-14
+#: (a): the cost is timed over COST_FACTOR·T and divided by COST_FACTOR (less timer noise).
+COST_FACTOR = 10
+
+PRESETS = {
+    "quick": dict(T=10.0, dts=(0.04, 0.02, 0.01, 0.005), rtols=(1e-5, 1e-7, 1e-9, 1e-11, 1e-13),
+                  lyap_T=400.0, lyap_dts=(0.16, 0.08, 0.04, 0.02, 0.01), lyap_ref=0.005,
+                  curv_T=10.0, curv_dts=(0.04, 0.02, 0.01, 0.005), repeat=2),
+    "full": dict(T=20.0, dts=(0.04, 0.02, 0.01, 0.005, 0.0025, 0.00125),
+                 rtols=(1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13),
+                 lyap_T=2000.0, lyap_dts=(0.16, 0.08, 0.04, 0.02, 0.01, 0.005), lyap_ref=0.0025,
+                 curv_T=20.0, curv_dts=(0.04, 0.02, 0.01, 0.005, 0.0025), repeat=5),
+}
+
+
+@dataclass
+class Point:
+    """One setting of one method: its error, wall time (s) and work."""
+    study: str
+    method: str
+    setting: str
+    value: float
+    error: float
+    wall: float
+    rhs: int = 0
+    note: str = ""
+
+
+def _timed(fn, repeat):
+    fn()                                   # warm-up: compilation, caches
+    best, out = np.inf, None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+# ------------------------------------------------------------------------------- (a)
+def trajectory_study(n=4, seed=0, T=20.0, dts=(0.02, 0.01), rtols=(1e-8, 1e-11), repeat=1,
+                     progress=None):
+    """Error of the state at time T against the DOP853 reference, for every method.
+
+    Returns (points, info) with info = {"reference_error": ..., "T": T, ...}."""
+    from scipy.integrate import solve_ivp
+
+    from .ambient import flow_rhs
+    from .integrate import integrate
+
+    system = RotorSystem(n)
+    theta0, u0 = system.random_state(seed=seed, speed=1.0)
+
+    def state(res):
+        return np.concatenate([res.theta[-1], res.u[-1]])
+
+    ref_amb = state(integrate(system, theta0, u0, T, formulation="ambient", method="dop853",
+                              rtol=REFERENCE_RTOL, atol=REFERENCE_RTOL * 1e-2))
+    ref_chart = state(integrate(system, theta0, u0, T, formulation="chart", method="dop853",
+                                rtol=REFERENCE_RTOL, atol=REFERENCE_RTOL * 1e-2))
+    ref_err = float(np.max(np.abs(ref_amb - ref_chart)))
+    jobs = []
+    for form in ("ambient", "chart"):
+        for proj in (False, True):
+            tag = f"{form} RK4" + (" + projection" if proj else "")
+            for dt in dts:
+                jobs.append((tag, f"dt={dt:g}", dt, dict(formulation=form, method="rk4", dt=dt,
+                                                          project=proj)))
+            tag = f"{form} DOP853" + (" + projection" if proj else "")
+            for rtol in rtols:
+                jobs.append((tag, f"rtol={rtol:g}", rtol,
+                             dict(formulation=form, method="dop853", rtol=rtol,
+                                  atol=rtol * 1e-2, project=proj)))
+    points = []
+    for tag, setting, value, kw in jobs:
+        res = integrate(system, theta0, u0, T, **kw)
+        wall, _ = _timed(lambda kw=kw: integrate(system, theta0, u0, COST_FACTOR * T, **kw),
+                         repeat)
+        wall /= COST_FACTOR
+        err = float(np.max(np.abs(state(res) - ref_amb)))
+        points.append(Point("trajectory", tag, setting, value, err, wall, res.n_rhs))
+        if progress:
+            progress()
+    minv = system.minv
+
+    def f(t, y):
+        dy = np.empty_like(y)
+        flow_rhs(y, minv, dy)
+        return dy
+
+    y0 = np.concatenate([theta0, u0])
+    for rtol in rtols:
+        res = solve_ivp(f, (0.0, T), y0, method="DOP853", rtol=rtol, atol=rtol * 1e-2)
+        wall, _ = _timed(lambda r=rtol: solve_ivp(f, (0.0, COST_FACTOR * T), y0, method="DOP853",
+                                                  rtol=r, atol=r * 1e-2), repeat)
+        wall /= COST_FACTOR
+        err = float(np.max(np.abs(res.y[:, -1] - ref_amb)))
+        points.append(Point("trajectory", "scipy solve_ivp DOP853 (ambient)", f"rtol={rtol:g}",
+                            rtol, err, wall, int(res.nfev)))
+        if progress:
+            progress()
+    return points, {"n": n, "seed": seed, "T": T, "reference": f"ambient DOP853 rtol="
+                    f"{REFERENCE_RTOL:g}", "reference_error": ref_err}
+
+
+# ------------------------------------------------------------------------------- (b)
+def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, progress=None):
+    """|λ₁(dt) − λ₁(ref_dt)| for N = 3 over averaging time T, and the batch-means standard
+    error at that T."""
+    from .lyapunov import lyapunov_spectrum
+
+    system = RotorSystem(3)
+    theta0, u0 = system.random_state(seed=seed, speed=1.0)
+    kw = dict(n_exponents=1, t_transient=50.0, n_batches=10, seed=seed)
+    ref = lyapunov_spectrum(system, theta0, u0, T, dt=ref_dt, **kw)
+    lam_ref, se = float(ref.exponents[0]), float(ref.stderr[0])
+    points = []
+    for dt in dts:
+        wall, res = _timed(lambda dt=dt: lyapunov_spectrum(system, theta0, u0, T, dt=dt, **kw),
+                           repeat)
+        lam = float(res.exponents[0])
+        steps = int(round((T + 50.0) / dt))
+        points.append(Point("lyapunov", "RK4 + QR (eq 17, 18)", f"dt={dt:g}", dt,
+                            abs(lam - lam_ref), wall, 4 * steps, note=f"lambda1={lam:.5f}"))
+        if progress:
+            progress()
+    return points, {"T": T, "reference_dt": ref_dt, "lambda1_reference": lam_ref,
+                    "stderr_at_T": se, "paper": 0.500}
+
+
+# ------------------------------------------------------------------------------- (c)
+def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
+    """N = 3 numerical curvature (route a) against eq (22) at the same points; exact route
+    (b) timed at the same points."""
+    from .curvature import (curvature_along_trajectory, exact_curvature_matrix,
+                            gaussian_curvature_eq22)
+
+    system = RotorSystem(3)
+    theta0, u0 = system.random_state(seed=seed, speed=1.0)
+    points = []
+    last = None
+    for dt in dts:
+        every = max(1, int(round(0.1 / dt)))
+        wall, res = _timed(lambda dt=dt, every=every: curvature_along_trajectory(
+            system, theta0, u0, T, dt=dt, sample_every=every, t_transient=10.0, exact=False,
+            seed=seed), repeat)
+        K = res.K_numeric[:, 0, 0]
+        K22 = gaussian_curvature_eq22(res.theta)
+        err = float(np.median(np.abs(K - K22) / np.abs(K22)))
+        steps = int(round((T + 10.0) / dt))
+        points.append(Point("curvature", "numerical route (eqs 19-21)", f"dt={dt:g}", dt, err,
+                            wall, 4 * steps + 8 * K.size, note=f"{K.size} samples"))
+        last = res
+        if progress:
+            progress()
+    # exact route at the last run's points and frames: cost on top of the trajectory
+    th, fr = last.theta, last.frames
+
+    def exact():
+        return np.array([exact_curvature_matrix(system, th[i], fr[i])[0, 0]
+                         for i in range(len(th))])
+
+    wall, Ke = _timed(exact, repeat)
+    err = float(np.median(np.abs(Ke - gaussian_curvature_eq22(th)) /
+                          np.abs(gaussian_curvature_eq22(th))))
+    points.append(Point("curvature", "exact route (Riemann tensor), added cost",
+                        f"{len(th)} points", float("nan"), err, wall, 0,
+                        note="evaluated at the points of the smallest dt"))
+    return points, {"T": T, "seed": seed}
+
+
+# ------------------------------------------------------------------------------- driver
+def run_study(preset="quick", n=4, seed=0, progress=True):
+    p = PRESETS[preset]
+    total = (4 * (len(p["dts"]) + len(p["rtols"])) + len(p["rtols"]) + len(p["lyap_dts"])
+             + len(p["curv_dts"]))
+    from tqdm.auto import tqdm
+    bar = tqdm(total=total, desc=f"accuracy ({preset})", disable=not progress, leave=False)
+    tick = bar.update
+    a, ia = trajectory_study(n, seed, p["T"], p["dts"], p["rtols"], p["repeat"], tick)
+    b, ib = lyapunov_study(seed, p["lyap_T"], p["lyap_dts"], p["lyap_ref"], p["repeat"], tick)
+    c, ic = curvature_study(seed, p["curv_T"], p["curv_dts"], p["repeat"], tick)
+    bar.close()
+    return {"preset": preset, "trajectory": ia, "lyapunov": ib, "curvature": ic,
+            "points": [asdict(x) for x in a + b + c]}
+
+
+def table(study: dict) -> str:
+    """The markdown table of every point."""
+    rows = ["| study | method | setting | error | wall time (ms) | rhs evaluations |",
+            "|---|---|---|---|---|---|"]
+    for q in study["points"]:
+        rows.append(f"| {q['study']} | {q['method']} | {q['setting']} | {q['error']:.2e} | "
+                    f"{1e3 * q['wall']:.1f} | {q['rhs'] or '—'} |")
+    return "\n".join(rows)
+
+
+def figure(study: dict, path: Path) -> None:
+    from matplotlib.figure import Figure
+
+    pts = study["points"]
+    fig = Figure(figsize=(15, 4.6))
+    axes = fig.subplots(1, 3)
+    floor = 1e-16
+    ax = axes[0]
+    methods = sorted({q["method"] for q in pts if q["study"] == "trajectory"})
+    for m in methods:
+        qs = [q for q in pts if q["method"] == m and q["study"] == "trajectory"]
+        style = "--" if "projection" in m else "-"
+        marker = "s" if "RK4" in m else ("x" if "scipy" in m else "o")
+        ax.loglog([q["wall"] for q in qs], [max(q["error"], floor) for q in qs], style,
+                  marker=marker, ms=4, label=m)
+    ref = study["trajectory"]["reference_error"]
+    ax.axhline(max(ref, floor), color="k", lw=0.6, ls=":", label="reference uncertainty")
+    ax.set_xlabel("wall time (s)")
+    ax.set_ylabel(f"max |state − reference| at t = {study['trajectory']['T']:g}")
+    ax.set_title(f"(a) trajectory, N = {study['trajectory']['n']}")
+    ax.legend(fontsize=6.5)
+    ax = axes[1]
+    qs = [q for q in pts if q["study"] == "lyapunov"]
+    ax.loglog([q["wall"] for q in qs], [max(q["error"], floor) for q in qs], "-o", ms=4,
+              label="|λ₁(dt) − λ₁(dt_ref)|")
+    for q in qs:
+        ax.annotate(q["setting"], (q["wall"], max(q["error"], floor)), fontsize=7)
+    ax.axhline(study["lyapunov"]["stderr_at_T"], color="r", ls="--", lw=0.8,
+               label=f"standard error at T = {study['lyapunov']['T']:g}")
+    ax.set_xlabel("wall time (s)")
+    ax.set_ylabel("error of λ₁")
+    ax.set_title("(b) leading Lyapunov exponent, N = 3")
+    ax.legend(fontsize=7)
+    ax = axes[2]
+    qs = [q for q in pts if q["study"] == "curvature" and "numerical" in q["method"]]
+    ax.loglog([q["wall"] for q in qs], [q["error"] for q in qs], "-o", ms=4,
+              label="numerical route (19)–(21)")
+    for q in qs:
+        ax.annotate(q["setting"], (q["wall"], q["error"]), fontsize=7)
+    ex = [q for q in pts if q["study"] == "curvature" and "exact" in q["method"]]
+    if ex:
+        ax.loglog([ex[0]["wall"]], [max(ex[0]["error"], floor)], "k*", ms=9,
+                  label="exact route (added cost)")
+    ax.set_xlabel("wall time (s)")
+    ax.set_ylabel("median |K − K_eq22| / |K_eq22|")
+    ax.set_title("(c) N = 3 curvature vs eq (22)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main(argv=None, quiet=False) -> int:
+    ap = argparse.ArgumentParser(
+        prog="charts bench accuracy",
+        description="Work–precision diagrams: error against wall time for the trajectory "
+        "(every formulation and method, with and without projection), the leading Lyapunov "
+        "exponent and the N = 3 curvature. Writes accuracy.png, accuracy.md, accuracy.json.")
+    ap.add_argument("--quick", action="store_true",
+                    help="fewer settings, shorter times, one timing repeat (about a minute)")
+    ap.add_argument("-o", "--output", type=Path, default=Path("bench-accuracy"), metavar="DIR",
+                    help="output folder (default: ./bench-accuracy)")
+    ap.add_argument("--n", type=int, default=4, help="N of the trajectory study (default 4)")
+    ap.add_argument("--seed", type=int, default=0, help="seed of the initial states")
+    ap.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    args = ap.parse_args(argv)
+    if not 3 <= args.n <= 6:
+        ap.error(f"--n {args.n}: expected 3..6")
+    quiet = quiet or args.quiet
+    from .runner import atomic_write
+    study = run_study("quick" if args.quick else "full", args.n, args.seed, progress=not quiet)
+    out = args.output
+    out.mkdir(parents=True, exist_ok=True)
+    tmp = out / ".accuracy.png.tmp.png"
+    figure(study, tmp)
+    tmp.replace(out / "accuracy.png")
+    md = table(study)
+    atomic_write(out / "accuracy.md", (md + "\n").encode())
+    atomic_write(out / "accuracy.json", json.dumps(study, indent=1).encode())
+    if not quiet:
+        print(md)
+        print(f"\nreference uncertainty (a): {study['trajectory']['reference_error']:.1e}; "
+              f"λ₁ reference {study['lyapunov']['lambda1_reference']:.5f} ± "
+              f"{study['lyapunov']['stderr_at_T']:.5f} (paper 0.500)")
+        print(f"wrote {out}/accuracy.png, accuracy.md, accuracy.json")
+    return 0
