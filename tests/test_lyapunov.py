@@ -191,3 +191,15 @@ def test_rejects_bad_arguments():
         lyapunov_spectrum(system, theta, u, 10.0, inner="euclid")
     with pytest.raises(ValueError, match="t_final"):
         lyapunov_spectrum(system, theta, u, 0.05)
+
+
+def test_ensemble_runs_independent_trajectories_in_parallel():
+    from charts.lyapunov import lyapunov_ensemble
+    system = RotorSystem(3)
+    mean, se, members = lyapunov_ensemble(system, 2, 500.0, workers=2, n_batches=5)
+    assert len(members) == 2 and mean.shape == (1,) and se.shape == (1,)
+    # independent seeds give different trajectories, hence different estimates
+    assert members[0].exponents[0] != members[1].exponents[0]
+    assert se[0] > 0
+    # over t = 500 the N = 3 exponent is 0.50 within ~0.03 (stderr ≈ 0.01 per run)
+    assert abs(mean[0] - 0.5) < 0.05
