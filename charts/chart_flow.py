@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from .chartfuncs import compiled
-from .driver import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from .driver import DOMAIN_CAP_FRACTION, CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
 from .rk import RHS_SIG
 
 __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
@@ -181,7 +181,7 @@ def _cap(y, par, ipar):
     U += (acc / sk) ** 2
     if U == 0.0:
         return np.inf
-    return par[1 + 2 * n + _CAP] * min(math.sqrt(S), abs(sk)) / math.sqrt(U)
+    return min(par[1 + 2 * n + _CAP] * math.sqrt(S), DOMAIN_CAP_FRACTION * abs(sk)) / math.sqrt(U)
 
 
 @cache
