@@ -145,7 +145,10 @@ def _cmd_reproduce(args) -> int:
     except ImportError:
         return _fail("`charts reproduce` needs charts.reproduce (issue 4), which this "
                      "installation does not have yet")
-    return int(reproduce_main(args.rest) or 0)
+    try:
+        return int(reproduce_main(args.rest) or 0)
+    except SystemExit as exc:            # its argparse: --help, usage errors
+        return exc.code if isinstance(exc.code, int) else EXIT_USAGE
 
 
 def _cmd_generate(args) -> int:
@@ -249,7 +252,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
     ap = build_parser()
+    if argv[:1] == ["reproduce"]:        # pass everything through, --help included
+        return _cmd_reproduce(argparse.Namespace(rest=argv[1:]))
     args = ap.parse_args(argv)
     if args.command is None:
         ap.print_help()

@@ -1,0 +1,162 @@
+"""The ``charts`` command line: help everywhere, one-line errors (never a traceback), bundled
+scenes, and a real Ctrl-C (SIGINT) followed by ``--resume``."""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+from charts.cli import bundled_scenes, main
+from charts.runner import run_scene
+from charts.scene import load_scene
+
+CHARTS = [sys.executable, "-m", "charts.cli"]
+
+MALFORMED = {
+    "unknown key": ("[system]\nn = 3\ncolour = 1\n[run]\nt_final = 1\n[effects.drift]\n",
+                    "unknown key 'colour' in [system]"),
+    "typo": ("[system]\nn = 3\n[run]\nt_finl = 1\n[effects.drift]\n",
+             "did you mean 't_final'"),
+    "wrong type": ("[system]\nn = \"three\"\n[run]\nt_final = 1\n[effects.drift]\n",
+                   "[system] n = 'three' is not allowed: expected an integer"),
+    "N = 2": ("[system]\nn = 2\n[run]\nt_final = 1\n[effects.drift]\n",
+              "[system] n = 2 is not allowed: expected a number in [3, 10]"),
+    "negative mass": ("[system]\nn = 3\nmasses = [1, -2, 1]\n[run]\nt_final = 1\n"
+                      "[effects.drift]\n", "[system] masses = [1.0, -2.0, 1.0] is not allowed"),
+    "off-manifold": ("[system]\nn = 3\n[initial]\ntheta = [0.1, 0.2, 0.3]\nu = [1, 0, 0]\n"
+                     "[run]\nt_final = 1\n[effects.drift]\n", "theta is off the manifold"),
+    "NaN": ("[system]\nn = 3\n[run]\nt_final = nan\n[effects.drift]\n",
+            "[run] t_final = nan is not allowed: expected a finite number"),
+    "bad TOML": ("[system\nn = 3\n", "not valid TOML"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(MALFORMED))
+def test_malformed_scene_one_line_error(tmp_path, capsys, case):
+    text, expected = MALFORMED[case]
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    rc = main(["run", str(path), "-o", str(tmp_path / "out"), "--quiet"])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert err.startswith("charts: error: ") and err.count("\n") == 1, err
+    assert expected in err, err
+    assert not (tmp_path / "out").exists(), "nothing runs before validation passes"
+
+
+def test_malformed_scene_through_the_console_entry_has_no_traceback(tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(MALFORMED["N = 2"][0])
+    p = subprocess.run(CHARTS + ["run", str(path), "-o", str(tmp_path / "o")],
+                       capture_output=True, text=True)
+    assert p.returncode == 2
+    assert "Traceback" not in p.stderr and "expected a number in [3, 10]" in p.stderr
+
+
+def test_unknown_scene_name_suggests_a_bundled_one(tmp_path, capsys):
+    rc = main(["run", "fig2-n6", "-o", str(tmp_path / "o")])
+    err = capsys.readouterr().err
+    assert rc == 2 and "did you mean 'fig2-n" in err and "charts scenes" in err
+
+
+@pytest.mark.parametrize("argv", [[], ["run"], ["scenes"], ["generate"], ["bench"]])
+def test_help_everywhere(capsys, argv):
+    with pytest.raises(SystemExit) as exc:
+        main(argv + ["--help"])
+    assert exc.value.code == 0
+    assert "usage: charts" in capsys.readouterr().out
+
+
+def test_no_command_prints_help(capsys):
+    assert main([]) == 2
+    assert "COMMAND" in capsys.readouterr().out
+
+
+def test_scenes_lists_and_prints(capsys):
+    assert main(["scenes"]) == 0
+    out = capsys.readouterr().out
+    for name in bundled_scenes():
+        assert name in out
+    assert main(["scenes", "table-n4"]) == 0
+    assert "[effects.lyapunov]" in capsys.readouterr().out
+    assert main(["scenes", "nope"]) == 2
+
+
+def test_run_bundled_scene_writes_outputs(tmp_path, capsys):
+    out = tmp_path / "fig2"
+    assert main(["run", "fig2-n3", "-o", str(out)]) == 0
+    summary = capsys.readouterr().out
+    assert "6 state variables, 0 tangent vectors" in summary
+    res = json.loads((out / "result.json").read_text())
+    assert res["status"] == "complete" and res["scene"]["name"] == "fig2-n3"
+    assert set(res["versions"]) >= {"charts", "numpy", "numba", "python"}
+    assert (out / "waveforms.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert not list(out.glob(".*tmp*")), "no temporary files left behind"
+
+
+def test_reproduce_dispatch(capsys):
+    try:
+        import charts.reproduce  # noqa: F401
+    except ImportError:
+        assert main(["reproduce"]) == 2
+        assert "charts.reproduce" in capsys.readouterr().err
+    else:
+        assert main(["reproduce", "--help"]) == 0
+        assert "usage" in capsys.readouterr().out
+
+
+def test_bench_accuracy_help(capsys):
+    assert main(["bench", "accuracy", "--help"]) == 0
+    assert "--quick" in capsys.readouterr().out
+    assert main(["bench", "accuracy", "--n", "2", "-q"]) == 2
+    assert "--n 2: expected 3..6" in capsys.readouterr().err
+
+
+LONG = """name = "long"
+[system]
+n = 3
+[run]
+t_final = 20000.0
+sample_dt = 1.0
+checkpoint_every = 500.0
+[effects.lyapunov]
+n_batches = 4
+[effects.drift]
+sample_every = 100.0
+"""
+
+
+def test_ctrl_c_keeps_a_valid_result_and_resume_finishes_it(tmp_path):
+    scene_file = tmp_path / "long.toml"
+    scene_file.write_text(LONG)
+    out = tmp_path / "out"
+    proc = subprocess.Popen(CHARTS + ["run", str(scene_file), "-o", str(out), "--quiet"],
+                            stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 300          # only guards against a hang
+    while not (out / "checkpoint.npz").exists() and proc.poll() is None:
+        assert time.monotonic() < deadline
+        time.sleep(0.005)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate()
+    assert proc.returncode == 130, err
+    assert "--resume" in err and "Traceback" not in err
+    partial = json.loads((out / "result.json").read_text())
+    assert partial["status"] == "interrupted"
+    assert 0 < partial["progress"]["t_done"] < 20000.0
+    with np.load(out / "arrays.npz") as a:
+        assert len(a["drift_t"]) == round(partial["progress"]["t_done"] / 100.0)
+
+    p = subprocess.run(CHARTS + ["run", str(scene_file), "-o", str(out), "--resume", "--quiet"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    resumed = json.loads((out / "result.json").read_text())
+    whole = run_scene(load_scene(scene_file), tmp_path / "whole", quiet=True)
+    assert resumed["status"] == "complete"
+    assert resumed["results"] == json.loads(json.dumps(whole["results"]))
+    assert resumed["drift"] == json.loads(json.dumps(whole["drift"]))
