@@ -16,4 +16,6 @@ __all__ = ["RotorSystem", "lyapunov_spectrum", "lyapunov_ensemble", "LyapunovRes
            "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
            "waveform", "power_spectrum"]
 from .integrate import IntegrationError, IntegrationResult, integrate; __all__ += ["integrate", "IntegrationResult", "IntegrationError"]  # noqa: E402,E702
+from .scene import Scene, SceneError, load_scene, parse_scene; __all__ += ["Scene", "SceneError", "load_scene", "parse_scene"]  # noqa: E402,E702
+from .runner import RunError, plan_scene, run_scene; __all__ += ["run_scene", "plan_scene", "RunError"]  # noqa: E402,E702
 __version__ = "0.1.0"
