@@ -70,10 +70,10 @@ def _cap(y, par, ipar):
     return par[2 * n + 3] * math.sqrt(S / U)
 
 
-def _post(y, par, ipar, t, log):
+@njit(cache=True)
+def _project(y, par, ipar):
+    """Project (θ, u) onto the invariants and each p onto the tangent space, in place."""
     n = ipar[0]
-    if par[2 * n + 2] == 0.0:
-        return POST_OK
     nv = ipar[1]
     project_state(y[:2 * n], par[1 + n:1 + 2 * n], par[2 * n + 1])
     Bm = 0.0
@@ -86,12 +86,20 @@ def _post(y, par, ipar, t, log):
             G += y[o + j] * math.sin(y[j])
         for j in range(n):
             y[o + j] -= G / Bm * math.sin(y[j]) * par[1 + j]
+
+
+def _post(y, par, ipar, t, log):
+    if par[2 * ipar[0] + 2] == 0.0:
+        return POST_OK
+    _project(y, par, ipar)
     return POST_CHANGED
 
 
 def _to_ambient(y, par, ipar, row):
     for i in range(y.size):
         row[i] = y[i]
+    if par[2 * ipar[0] + 2] != 0.0:  # samples from the dense output are projected as well
+        _project(row, par, ipar)
     return 0.0
 
 

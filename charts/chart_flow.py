@@ -100,6 +100,13 @@ def _to_ambient_impl(y, par, ipar, row):
         row[i] = y[a]
         for b in range(1 + nv):
             row[(1 + b) * n + i] = y[(1 + b) * d + a]
+    if par[1 + 2 * n + _PROJ] != 0.0:  # samples from the dense output get the energy too
+        E = 0.0
+        for i in range(n):
+            E += par[1 + n + i] * row[n + i] ** 2
+        f = par[1 + 2 * n + _SPEED] / math.sqrt(E)
+        for i in range(n):
+            row[n + i] *= f
     return 0.0
 
 
