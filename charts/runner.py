@@ -536,8 +536,9 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
             bar.update(advanced)
             if on_chunk is not None:
                 on_chunk(idx, n_units)
-    except KeyboardInterrupt:
-        status = "interrupted"
+    except (KeyboardInterrupt, RunError) as exc:
+        status = "interrupted" if isinstance(exc, KeyboardInterrupt) else "failed"
+        failure = None if status == "interrupted" else str(exc)
         # roll back to the last checkpoint: the chunk in flight is discarded
         if st.chunk_index and ck.exists():
             with np.load(ck) as a:
@@ -550,6 +551,11 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     result = _finalize(st, status, ends, transient, unit, outdir)
     if status == "interrupted":
         raise KeyboardInterrupt(result)
+    if status == "failed":
+        result["error"] = failure
+        atomic_write(outdir / "result.json",
+                     json.dumps(result, indent=2, default=_json_default).encode())
+        raise RunError(f"{failure} (the finished part is in {outdir}/result.json)")
     return result
 
 

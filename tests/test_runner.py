@@ -232,3 +232,21 @@ def test_plan_is_pure_and_matches_run(tmp_path):
     assert not (tmp_path / "out").exists()
     comp = run(sc, tmp_path)["computation"]
     assert comp["tangent_vectors"] == 3 and comp["stored_samples"] == {"curvature": 2}
+
+
+def test_run_through_a_singular_point_fails_clearly_and_keeps_the_finished_part(tmp_path):
+    """N = 4: the straight line θ(t) = S + (t − 1)v through the singular point
+    S = (0, 0, π, π), v = (a, b, a, b), lies on the manifold; the run must stop with a clear
+    error at t ≈ 1, keeping the chunks finished before."""
+    v = np.array([0.6, 0.8, 0.6, 0.8]) / np.sqrt(2.0)
+    theta = np.array([0.0, 0.0, np.pi, np.pi]) - v
+    sc = parse_scene({"system": {"n": 4}, "initial": {"theta": theta.tolist(), "u": v.tolist()},
+                      "integrator": {"formulation": "chart", "method": "dop853"},
+                      "run": {"t_final": 2.0, "sample_dt": 0.01, "checkpoint_every": 0.1},
+                      "effects": {"drift": {"sample_every": 0.1}}})
+    with pytest.raises(RunError, match="singular point"):
+        run(sc, tmp_path)
+    res = json.loads((tmp_path / "out" / "result.json").read_text())
+    assert res["status"] == "failed" and "singular point" in res["error"]
+    assert res["progress"]["t_done"] == pytest.approx(0.9)
+    assert res["computation"]["stored_samples"] == {"drift": 9}
