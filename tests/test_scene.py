@@ -174,6 +174,8 @@ def test_reference_page_documents_every_key():
         assert f"[{section}]" in text, section
         for key in keys:
             assert re.search(rf"`{key}`", text), f"[{section}] {key} missing from docs/scenes.md"
+    for name in bundled_scenes():
+        assert f"`{name}`" in text, f"bundled scene {name} missing from docs/scenes.md"
     for effect, keys in EFFECTS.items():
         assert f"[effects.{effect}]" in text, effect
         for key in keys:
