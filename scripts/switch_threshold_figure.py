@@ -63,13 +63,14 @@ def main(out="docs/figures/switch_threshold.png"):
             print(f"{n:>2} {row[0]:>5.2f} {row[1]:>13.2f} {row[2]:>8.2f} {row[3]:>11.1f} {row[4]:>8.1f} "
                   f"{row[5]:>8.0f} {row[6]:>9.0f}")
     fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
-    for n, rows in table.items():
+    for i, (n, rows) in enumerate(table.items()):
         r = np.array(rows)
-        ax[0].semilogy(r[:, 0], r[:, 3], "o-", label=f"N={n} measured")
-        ax[0].semilogy(r[:, 0], r[:, 4], "k:", lw=0.8)
-        ax[1].semilogy(r[:, 0], r[:, 1], "o-", label=f"N={n} median")
-        ax[1].semilogy(r[:, 0], r[:, 2], "x--", alpha=0.5, label=f"N={n} max")
-        ax[2].plot(r[:, 0], r[:, 5], "o-", label=f"N={n}")
+        c = f"C{i}"
+        ax[0].semilogy(r[:, 0], r[:, 3], "o-", color=c, label=f"N={n} measured")
+        ax[0].semilogy(r[:, 0], r[:, 4], ":", color=c, lw=0.8)
+        ax[1].semilogy(r[:, 0], r[:, 1], "o-", color=c, label=f"N={n} median")
+        ax[1].semilogy(r[:, 0], r[:, 2], "x--", color=c, alpha=0.5, label=f"N={n} max")
+        ax[2].plot(r[:, 0], r[:, 5], "o-", color=c, label=f"N={n}")
     ax[0].set(xlabel="threshold τ", ylabel="max cond(g) in the chart in use",
               title="conditioning (dotted: 1+(N−1)/τ², at step ends)")
     ax[1].set(xlabel="threshold τ", ylabel="chart error / ambient error (same rtol)",
