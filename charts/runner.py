@@ -36,7 +36,6 @@ import json
 import math
 import os
 import platform
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -213,7 +212,6 @@ class _RunState:
         self.X = self._initial_vectors(plan.tangent_vectors)
         self.logsum = np.zeros(plan.tangent_vectors)
         self.lyap_marks = []           # (tick, logsum) at Lyapunov batch boundaries
-        self.tick = 0                  # units done after the transient (negative: transient)
         self.rhs = 0                   # evaluations of the (augmented) vector field
         self.rhs_frame = 0             # extra evaluations for the curvature frame steps
         self.steps = 0                 # accepted integrator steps
@@ -238,7 +236,7 @@ class _RunState:
     # -- checkpoint ------------------------------------------------------------------------
     def to_arrays(self) -> dict:
         a = {"y": self.y, "X": self.X, "logsum": self.logsum,
-             "scalars": np.array([self.tick, self.rhs, self.rhs_frame, self.chunk_index,
+             "scalars": np.array([self.rhs, self.rhs_frame, self.chunk_index,
                                   self.elapsed, float(self.done), self.steps, self.chart]),
              "lyap_ticks": np.array([m[0] for m in self.lyap_marks], dtype=np.int64),
              "lyap_logsums": np.array([m[1] for m in self.lyap_marks]).reshape(
@@ -251,9 +249,9 @@ class _RunState:
 
     def load_arrays(self, a):
         self.y, self.X, self.logsum = a["y"].copy(), a["X"].copy(), a["logsum"].copy()
-        tick, rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]
+        rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]
         self.steps, self.chart = int(steps), int(chart)
-        self.tick, self.rhs, self.rhs_frame = int(tick), int(rhs), int(rhs_frame)
+        self.rhs, self.rhs_frame = int(rhs), int(rhs_frame)
         self.chunk_index, self.elapsed, self.done = int(chunk), float(elapsed), bool(done)
         self.lyap_marks = [(int(t), l.copy()) for t, l in zip(a["lyap_ticks"], a["lyap_logsums"])]
         for name in self.rec:

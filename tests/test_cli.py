@@ -3,7 +3,6 @@ scenes, and a real Ctrl-C (SIGINT) followed by ``--resume``."""
 from __future__ import annotations
 
 import json
-import os
 import signal
 import subprocess
 import sys
