@@ -7,7 +7,9 @@
     charts bench accuracy | integrators           what accuracy costs in time; integrator cost
 
 Every subcommand has ``--help``.  Errors in the input are reported in one line on stderr
-with exit status 2; an interrupted run exits with 130 and says how to resume it.
+with exit status 2; a run that started and failed (e.g. a trajectory through a singular
+point) exits with 1 and keeps its finished part; an interrupted run exits with 130 and
+says how to resume it.
 """
 from __future__ import annotations
 
@@ -65,8 +67,12 @@ def _cmd_run(args) -> int:
     try:
         scene = load_scene(path)
         result = run_scene(scene, args.output, resume=args.resume, quiet=args.quiet)
-    except (SceneError, RunError) as exc:
+    except SceneError as exc:
         return _fail(str(exc))
+    except RunError as exc:
+        _fail(str(exc))
+        # a run that started and failed (status "failed" in result.json) exits with 1
+        return 1 if _status(args.output) == "failed" else EXIT_USAGE
     except KeyboardInterrupt as exc:
         res = exc.args[0] if exc.args and isinstance(exc.args[0], dict) else None
         if res is not None:
@@ -79,6 +85,14 @@ def _cmd_run(args) -> int:
     if not args.quiet:
         _summary(result, args.output)
     return 0
+
+
+def _status(outdir) -> str | None:
+    import json
+    try:
+        return json.loads((Path(outdir) / "result.json").read_text()).get("status")
+    except (OSError, ValueError):
+        return None
 
 
 def _summary(result: dict, outdir) -> None:

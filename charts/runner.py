@@ -350,8 +350,8 @@ class _IntegrateEngine:
         try:
             res = self.integrate(st.system, st.y[:n], st.y[n:], m * self.sdt, **kw)
         except IntegrationError as exc:
-            raise RunError(f"the integration failed in the chunk starting at t = {t_start:g}: "
-                           f"{exc}") from None
+            raise RunError(f"the integration failed in the chunk starting at t = {t_start:g} "
+                           f"(the times below count from that chunk's start): {exc}") from None
         except ValueError as exc:  # e.g. the state reached a singular point exactly
             raise RunError(f"the integration could not continue at t = {t_start:g}: {exc}") from None
         st.rhs += int(res.n_rhs)

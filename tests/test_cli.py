@@ -169,3 +169,12 @@ def test_generate_check_delegates_to_the_generator(capsys):
     out = capsys.readouterr().out
     assert (rc, "generated/ is up to date" in out) in ((0, True), (1, False))
     assert rc == 0 or "Run: python scripts/generate.py" in out
+
+
+def test_bundled_run_through_a_singular_point_exits_1_with_the_finished_part(tmp_path, capsys):
+    out = tmp_path / "sing"
+    assert main(["run", "hard-n4-through-singular", "-o", str(out), "--quiet"]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("charts: error: ") and "singular point" in err
+    res = json.loads((out / "result.json").read_text())
+    assert res["status"] == "failed" and res["progress"]["t_done"] == pytest.approx(0.9)
