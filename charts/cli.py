@@ -5,6 +5,7 @@
     charts reproduce ...                          the paper's figures and table (issue 4)
     charts generate [--check]                     regenerate generated/ (code generator)
     charts bench accuracy | integrators           what accuracy costs in time; integrator cost
+    charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask (issue 7)
 
 Every subcommand has ``--help``.  Errors in the input are reported in one line on stderr
 with exit status 2; a run that started and failed (e.g. a trajectory through a singular
@@ -261,6 +262,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("rest", nargs=argparse.REMAINDER,
                    help="options of the benchmark (e.g. `charts bench accuracy --help`)")
     p.set_defaults(func=_cmd_bench)
+
+    from .sweep import add_parser as add_sweep_parser   # `charts sweep` (issue 7)
+    add_sweep_parser(sub)
     return ap
 
 
