@@ -12,7 +12,7 @@ from types import SimpleNamespace
 
 import numba
 
-from .codegen import GENERATED_FUNCTIONS, SHIPPED_N, module_name
+from .layout import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 
 __all__ = ["chart_module", "compiled"]
 

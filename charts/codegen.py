@@ -18,22 +18,12 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
+from .layout import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 from .symbolic import ChartGeometry
 
 __all__ = ["module_source", "module_name", "GENERATED_FUNCTIONS", "SHIPPED_N"]
 
-SHIPPED_N = (3, 4, 5, 6)
 GENERATOR_COMMAND = "python scripts/generate.py"
-
-GENERATED_FUNCTIONS = (
-    "metric", "metric_inverse", "christoffel", "riemann",
-    "geodesic_acceleration", "transport_rate", "curvature_operator",
-    "eliminated_component",
-)
-
-
-def module_name(n: int) -> str:
-    return f"rotor_n{n}"
 
 
 class _Printer(PythonCodePrinter):

@@ -12,7 +12,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
-from scipy.signal import welch
 
 from .ambient import project_state
 from .lyapunov import _initial_state, _rk4_step
@@ -75,5 +74,7 @@ def power_spectrum(signal, dt_sample, *, segment_time=200.0):
     if nper > signal.size // 4:
         raise ValueError(f"signal of {signal.size * dt_sample:g} time units is too short for "
                          f"Welch segments of {segment_time:g}; need at least 4 segments")
+    from scipy.signal import welch  # imported here: scipy.signal costs seconds at import
+
     f, p = welch(signal, fs=1.0 / dt_sample, window="hann", nperseg=nper, detrend="constant")
     return 2 * np.pi * f, p / (2 * np.pi)
