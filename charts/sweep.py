@@ -323,7 +323,7 @@ def _digest(obj) -> str:
 def sweep_points(sweep: Sweep) -> list[SweepPoint]:
     """Every point of the sweep, in a deterministic order (parameter combinations, then
     seeds), each with its validated scene.  Raises :class:`SweepError` naming the point."""
-    points, seen = [], {}
+    points = []
     for combo in _combinations(sweep):
         for seed in sweep.seeds:
             params = dict(combo, seed=seed)
@@ -338,12 +338,10 @@ def sweep_points(sweep: Sweep) -> list[SweepPoint]:
             except SceneError as exc:
                 raise SweepError(str(exc)) from None
             d = scene_to_dict(scene)
-            pid = _digest({k: v for k, v in d.items() if k not in ("name", "description")})
-            if pid in seen:
-                raise SweepError(f"{sweep.source}: points {seen[pid]} and {index} ({desc}) run "
-                                 "the same scene; remove the duplicate (e.g. a mass pattern "
-                                 "that does not use a swept symbol)")
-            seen[pid] = index
+            # the parameters are part of the identity: two families that meet (e.g. equal
+            # masses in both) are two points, each with its own row
+            pid = _digest([params, {k: v for k, v in d.items()
+                                    if k not in ("name", "description")}])
             points.append(SweepPoint(index, params, raw, scene, pid))
     if not points:
         raise SweepError(f"{sweep.source}: the sweep has no points")

@@ -1,0 +1,162 @@
+"""Sweeps (issue 7, item 3): validation of sweep files, the points and their scenes, and a
+sweep on a local Dask cluster (2 workers) that is killed midway (SIGKILL to the whole
+process group), resumed without recomputing finished points, and ends with the same table
+as an uninterrupted run on an existing cluster (``--scheduler``)."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from charts.sweep import (LOG, SUMMARY, TABLE, SweepError, load_sweep, parse_sweep,
+                          point_columns, read_table, run_sweep, sweep_points)
+
+BASE = {"system": {"n": 4}, "integrator": {"dt": 0.01}, "run": {"t_final": 30.0, "t_transient": 5.0},
+        "effects": {"lyapunov": {"n_batches": 3}, "curvature": {"route": "exact"},
+                    "angles": {"variant": "both"}}}
+SMALL = """\
+name = "tiny"
+description = "four masses x two seeds, N = 4, short runs"
+[scene.integrator]
+dt = 0.01
+[scene.run]
+t_final = 30.0
+t_transient = 5.0
+[scene.effects.lyapunov]
+n_batches = 3
+[scene.effects.curvature]
+route = "exact"
+[scene.effects.angles]
+variant = "both"
+[sweep]
+seeds = [1, 2]
+[sweep.parameters]
+n = [4]
+m = [0.5, 1.0, 2.0, 4.0]
+[sweep.masses]
+"1,1,1,m" = [1, 1, 1, "m"]
+"""
+#: a polling guard only (the test fails instead of hanging if the sweep never writes)
+WAIT_S = 600
+
+
+def _sweep(**over):
+    data = {"name": "t", "scene": BASE, "sweep": {"seeds": [1], "parameters": {"m": [0.5, 2.0]},
+                                                   "masses": {"p": [1, 1, "m", 1]}}}
+    data["sweep"].update(over)
+    return parse_sweep(data, source="t.toml")
+
+
+@pytest.mark.parametrize("change, message", [
+    ({"seed": [1]}, "unknown key 'seed' in [sweep] — did you mean 'seeds'?"),
+    ({"parameters": {"m": [0.5], "k": [1.0]}}, "k is not used"),
+    ({"parameters": {"m": {"min": 0.25, "max": 4.0}}}, "needs mode = \"random\""),
+    ({"masses": {"p": [1, 1, "m", "q"]}}, "uses q, which is not a parameter"),
+    ({"masses": {"p": [1, 1, "m", "import os"]}}, "is not an arithmetic expression"),
+    ({"mode": "latin"}, "mode = 'latin' is not allowed"),
+    ({"seeds": [1, 1]}, "repeats a seed"),
+])
+def test_malformed_sweeps_are_named(change, message):
+    with pytest.raises(SweepError) as exc:
+        _sweep(**change)
+    assert message in str(exc.value)
+
+
+def test_each_point_scene_is_validated_before_running():
+    sw = _sweep(masses={"p": [1, 1, "m"]})           # three masses for N = 4
+    with pytest.raises(SweepError, match=r"point 0 \(masses=p, m=0.5, seed=1\): \[system\] "
+                                         r"masses = \[1.0, 1.0, 0.5\] is not allowed"):
+        sweep_points(sw)
+
+
+def test_grid_and_random_points():
+    sw = _sweep(seeds=[3, 4], parameters={"m": [0.5, 2.0], "run.t_final": [10.0, 20.0]},
+                masses={"p": [1, 1, "m", 1], "q": [1, "m", 1, "1/m"]})
+    pts = sweep_points(sw)
+    assert len(pts) == 2 * 2 * 2 * 2
+    p = pts[-1]
+    assert p.params == {"masses": "q", "m": 2.0, "run.t_final": 20.0, "seed": 4}
+    assert p.scene.system["masses"] == [1.0, 2.0, 1.0, 0.5]
+    assert p.scene.run["t_final"] == 20.0 and p.scene.initial["seed"] == 4
+    assert len({q.point_id for q in pts}) == len(pts)
+    assert point_columns(pts)[:8] == ["index", "point_id", "status", "masses", "m",
+                                      "run.t_final", "seed", "lambda_1"]
+    # random sample: reproducible, inside the ranges, log-uniform when asked
+    data = {"name": "r", "scene": BASE,
+            "sweep": {"mode": "random", "n_points": 50, "sample_seed": 9,
+                      "parameters": {"m": {"min": 0.25, "max": 4.0, "log": True},
+                                     "speed": [0.5, 2.0]},
+                      "masses": {"p": [1, "m", 1, "m"]}}}
+    a, b = sweep_points(parse_sweep(data)), sweep_points(parse_sweep(data))
+    assert [x.params for x in a] == [x.params for x in b]
+    ms = [x.params["m"] for x in a]
+    assert min(ms) >= 0.25 and max(ms) <= 4.0
+    assert sum(m < 1.0 for m in ms) > 10 and sum(m > 1.0 for m in ms) > 10   # log-uniform
+    assert {x.params["speed"] for x in a} == {0.5, 2.0}
+
+
+def test_bundled_sweeps_validate():
+    from charts.sweep import bundled_sweeps
+    sweeps = bundled_sweeps()
+    assert "masses-n4" in sweeps
+    for path in sweeps.values():
+        assert len(sweep_points(load_sweep(path))) > 0
+
+
+def _rows(path):
+    return read_table(path)[1] if path.exists() else []
+
+
+def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
+    from dask.distributed import LocalCluster
+
+    spec = tmp_path / "tiny.toml"
+    spec.write_text(SMALL)
+    sweep = load_sweep(spec)
+    ids = [p.point_id for p in sweep_points(sweep)]
+
+    # 1. uninterrupted, on an existing cluster (the --scheduler route)
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster:
+        ref = run_sweep(sweep, tmp_path / "ref", scheduler=cluster.scheduler_address,
+                        quiet=True)
+    assert ref["skipped"] == 0 and sorted(ref["computed"]) == sorted(ids)
+    assert not ref["failed"] and not ref["lost"]
+    header, rows = read_table(tmp_path / "ref" / TABLE)
+    assert [r["point_id"] for r in rows] == ids               # point order at the end
+    assert all(float(r["lambda_1"]) > 0 for r in rows)
+    assert {r["mass_vector"] for r in rows} >= {"[1.0, 1.0, 1.0, 0.5]", "[1.0, 1.0, 1.0, 4.0]"}
+    assert json.loads(rows[0]["scene"])["system"]["masses"] == [1.0, 1.0, 1.0, 0.5]
+    assert len(read_table(tmp_path / "ref" / SUMMARY)[1]) == 4   # mean over the 2 seeds
+    assert (tmp_path / "ref" / "figures" / "lambda_1.png").exists()
+
+    # 2. the command line on a local cluster of 2 workers, killed after two points
+    out = tmp_path / "cut"
+    proc = subprocess.Popen([sys.executable, "-m", "charts.cli", "sweep", str(spec), "-o",
+                             str(out), "--workers", "2", "--quiet", "--no-plots"],
+                            start_new_session=True, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE)
+    t0 = time.monotonic()
+    while len(_rows(out / TABLE)) < 2 and proc.poll() is None and time.monotonic() - t0 < WAIT_S:
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)                      # the sweep and its workers
+    proc.wait()
+    before = {r["point_id"] for r in _rows(out / TABLE)}
+    assert 2 <= len(before) < len(ids), "the sweep was not killed midway"
+
+    # 3. resume: only the missing points are computed; the table equals the uninterrupted one
+    with pytest.raises(SweepError, match="--resume"):
+        run_sweep(sweep, out, workers=2, quiet=True)
+    res = run_sweep(sweep, out, workers=2, resume=True, quiet=True, plots=False)
+    assert res["skipped"] == len(before)
+    assert set(res["computed"]).isdisjoint(before)
+    assert set(res["computed"]) | before == set(ids)
+    assert (out / TABLE).read_bytes() == (tmp_path / "ref" / TABLE).read_bytes()
+    log = [json.loads(x) for x in (out / LOG).read_text().splitlines()]
+    resumed = [x["point_id"] for x in log if x["run_id"] == res["run_id"]]
+    assert sorted(resumed) == sorted(res["computed"])
+    # 4. a finished sweep resumed again computes nothing
+    again = run_sweep(sweep, out, resume=True, quiet=True, plots=False)
+    assert again["computed"] == [] and again["skipped"] == len(ids)
