@@ -697,9 +697,10 @@ def _label(stat: str) -> str:
     if parts[0] == "lambda":
         return f"λ{parts[1]}"
     if parts[0] in ("Kpos", "Kmean"):
-        what = "fraction K>0" if parts[0] == "Kpos" else "mean K"
-        d = "any direction" if parts[2] == "any" else f"velocity×LV{parts[2]}"
-        return f"{what}, {d} ({parts[1]})"
+        d = "some K_ii" if parts[2] == "any" else f"K_{parts[2]}{parts[2]}"
+        if parts[0] == "Kpos":
+            return f"fraction of samples with {d} > 0 ({parts[1]})"
+        return f"mean {d} ({parts[1]})"
     if parts[0] == "phi":
         return f"φ {'_'.join(parts[2:])} ({parts[1]} space) [rad]"
     return stat
@@ -786,7 +787,47 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
         fig.savefig(path, dpi=110)
         plt.close(fig)
         files.append(str(path))
+    if len(numeric) == 1:
+        files.append(_overview(summary, folder, title, numeric[0], groups, gkey, glabel))
     return files
+
+
+def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
+    """One figure with a panel per headline statistic (exponents, fraction of positive
+    curvature in any velocity plane, minimum angles) over the one numeric parameter."""
+    import matplotlib.pyplot as plt
+
+    stats = [c for c in summary["stats"] if c.startswith("lambda_")
+             or (c.startswith("Kpos_") and c.endswith("_any")) or c.endswith("_min")]
+    exact = [c for c in stats if c.startswith("Kpos_exact")]
+    stats = [c for c in stats if not (c.startswith("Kpos_numerical") and exact)]
+    ncol = min(3, len(stats))
+    nrow = -(-len(stats) // ncol)
+    fig, axs = plt.subplots(nrow, ncol, figsize=(4.0 * ncol, 2.9 * nrow), layout="constrained",
+                            squeeze=False)
+    for ax, stat in zip(axs.flat, stats):
+        for g in groups:
+            rs = sorted((r for r in summary["rows"] if gkey(r) == g and stat in r),
+                        key=lambda r: r[x])
+            ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
+                        yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs], marker="o", ms=3,
+                        capsize=2, label=glabel(g))
+        xs = [r[x] for r in summary["rows"]]
+        if min(xs) > 0 and max(xs) / min(xs) >= 8:
+            ax.set_xscale("log")
+        if stat.endswith("_min"):
+            ax.set_yscale("log")
+        ax.set_title(_label(stat), fontsize=8)
+        ax.set_xlabel(x, fontsize=8)
+    for ax in list(axs.flat)[len(stats):]:
+        ax.set_visible(False)
+    if len(groups) > 1:
+        axs.flat[0].legend(fontsize=7)
+    fig.suptitle(title, fontsize=10)
+    path = folder / "overview.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return str(path)
 
 
 # --------------------------------------------------------------------------- command line
