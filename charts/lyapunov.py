@@ -114,33 +114,176 @@ def orthonormalize(X, w, logs):
             X[r, i] /= nrm
 
 
+#: |δ| up to which sin/cos(θ + δ) of the RK4 stages 2–4 come from the angle-addition
+#: formula with the Taylor polynomials below instead of libm (beyond it: libm).  At
+#: |δ| = 0.25 the first omitted terms, δ¹⁵/15! and δ¹⁶/16!, are < 1e-21 of the result,
+#: so the polynomials are exact to rounding; stage shifts are |δ| ≤ dt·|u|, ~0.01.
+_SHIFT_MAX = 0.25
+_S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0, -1.0 / 39916800.0,
+      1.0 / 6227020800.0)
+_C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0, -1.0 / 3628800.0, 1.0 / 479001600.0,
+      -1.0 / 87178291200.0)
+
+
+@njit(cache=True, inline="always")
+def _project_tangent_sc(y, X, minv, s, c):
+    """`charts.ambient.project_tangent` given s, c = sin, cos of y[:N] (same arithmetic)."""
+    n = y.size // 2
+    B = 0.0
+    for j in range(n):
+        B += s[j] * s[j] * minv[j]
+    for r in range(X.shape[0]):
+        dF = 0.0
+        for j in range(n):
+            dF += s[j] * X[r, j]
+        for j in range(n):
+            X[r, j] -= dF / B * s[j] * minv[j]
+        dG = 0.0
+        for j in range(n):
+            dG += s[j] * X[r, n + j] + y[n + j] * c[j] * X[r, j]
+        for j in range(n):
+            X[r, n + j] -= dG / B * s[j] * minv[j]
+
+
+@njit(cache=True)
+def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
+              project_every, rec_every, logsum, hist, exact_trig):
+    """`_lyap_kernel` with a choice of stage trigonometry (``exact_trig``: libm at every
+    stage).  The time loop is written out in one function on purpose: every array-valued
+    call or view inside it costs two atomic reference-count updates (they took over half
+    of the time of the previous kernel); only the projections and eq (18), every
+    ``reorth_every`` / ``project_every`` steps, are calls.
+
+    Per step:
+      * State and vectors are stacked in Z = [y; X], shape (1+k, 2N), so the RK4
+        combinations run over one contiguous (1+k)·2N buffer.
+      * Eq (8) at stage point Zt[0] and eq (17) at Zt[1:] share sin/cos and the factors
+        fᵢ = sᵢ/mᵢ, gᵢ = λcᵢ/mᵢ, pᵢ = 2uᵢcᵢ, qᵢ = sᵢ(uᵢ² + 2gᵢ), so that eq (17) reads
+        δλ = Σ(pⱼũⱼ − qⱼθ̃ⱼ)/B, dθ̃ᵢ/dt = ũᵢ, dũᵢ/dt = −(δλ fᵢ + gᵢθ̃ᵢ) (= `_stage` to rounding).
+      * sin/cos of stage 1 are those of the step's start, s0, c0 (kept from the end of
+        the previous step); stages 2–4 are θ + δ with δ = a·θ̇ small, and take
+        sin(θ+δ) = s0 + (s0 (cos δ − 1) + c0 sin δ) with degree-13/14 Taylor polynomials
+        (a few ulp from libm; libm where |δ| > _SHIFT_MAX): 10 libm calls per step, not 40.
+    """
+    n = y.size // 2
+    d = 2 * n
+    k = X.shape[0]
+    R = 1 + k
+    L = R * d
+    Z = np.empty((R, d))
+    Z[0] = y
+    Z[1:] = X
+    Zt = np.empty((R, d))
+    K = np.empty((4, R, d))
+    Zf = Z.reshape(L)
+    Ztf = Zt.reshape(L)
+    Kf = K.reshape((4, L))
+    y_ = Z[0]
+    X_ = Z[1:]
+    s0 = np.empty(n)
+    c0 = np.empty(n)
+    s = np.empty(n)
+    c = np.empty(n)
+    f = np.empty(n)
+    g = np.empty(n)
+    p = np.empty(n)
+    q = np.empty(n)
+    for j in range(n):
+        s0[j] = sin(Z[0, j])
+        c0[j] = cos(Z[0, j])
+    h = dt
+    h6 = h / 6.0
+    row = 0
+    to_proj = project_every
+    to_reorth = reorth_every
+    to_rec = rec_every
+    for _ in range(nsteps):
+        for st in range(4):
+            # ---- stage point Zt and its sin/cos s, c
+            if st == 0:
+                for i in range(L):
+                    Ztf[i] = Zf[i]
+                for j in range(n):
+                    s[j] = s0[j]
+                    c[j] = c0[j]
+            else:
+                a = 0.5 * h if st < 3 else h
+                for i in range(L):
+                    Ztf[i] = Zf[i] + a * Kf[st - 1, i]
+                for j in range(n):
+                    dl = a * K[st - 1, 0, j]
+                    d2 = dl * dl
+                    sd = dl + dl * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * (
+                        _S[3] + d2 * (_S[4] + d2 * _S[5])))))
+                    cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * (_C[3] + d2 * (
+                        _C[4] + d2 * (_C[5] + d2 * _C[6]))))))
+                    s[j] = s0[j] + (s0[j] * cm + c0[j] * sd)
+                    c[j] = c0[j] + (c0[j] * cm - s0[j] * sd)
+                for j in range(n):
+                    if exact_trig or abs(a * K[st - 1, 0, j]) > _SHIFT_MAX:
+                        s[j] = sin(Zt[0, j])
+                        c[j] = cos(Zt[0, j])
+            # ---- eq (8) into K[st, 0], eq (17) into K[st, 1:]
+            A = 0.0
+            B = 0.0
+            for j in range(n):
+                u = Zt[0, n + j]
+                A += u * u * c[j]
+                B += s[j] * s[j] * minv[j]
+            lam = A / B
+            for j in range(n):
+                u = Zt[0, n + j]
+                f[j] = s[j] * minv[j]
+                g[j] = lam * c[j] * minv[j]
+                p[j] = 2.0 * u * c[j]
+                q[j] = s[j] * (u * u + 2.0 * g[j])
+                K[st, 0, j] = u
+                K[st, 0, n + j] = -lam * f[j]
+            for r in range(1, R):
+                acc = 0.0
+                for j in range(n):
+                    acc += p[j] * Zt[r, n + j] - q[j] * Zt[r, j]
+                dlam = acc / B
+                for i in range(n):
+                    K[st, r, i] = Zt[r, n + i]
+                    K[st, r, n + i] = -(dlam * f[i] + g[i] * Zt[r, i])
+        for i in range(L):
+            Zf[i] += h6 * (Kf[0, i] + 2.0 * Kf[1, i] + 2.0 * Kf[2, i] + Kf[3, i])
+        # ---- projection of y, then of X with re-orthonormalisation (eq 18)
+        to_proj -= 1
+        if to_proj == 0:
+            to_proj = project_every
+            project_state(y_, m, speed)
+        for j in range(n):
+            s0[j] = sin(Z[0, j])
+            c0[j] = cos(Z[0, j])
+        to_reorth -= 1
+        if to_reorth == 0:
+            to_reorth = reorth_every
+            if restricted:
+                _project_tangent_sc(y_, X_, minv, s0, c0)
+            orthonormalize(X_, w, logsum)
+        if rec_every > 0:
+            to_rec -= 1
+            if to_rec == 0:
+                to_rec = rec_every
+                if row < hist.shape[0]:
+                    for r in range(k):
+                        hist[row, r] = logsum[r]
+                    row += 1
+    y[:] = Z[0]
+    X[:] = Z[1:]
+
+
 @njit(cache=True)
 def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                  project_every, rec_every, logsum, hist):
     """Advance (y, X) by ``nsteps`` RK4 steps; every ``reorth_every`` steps project X onto
     T_r (if ``restricted``) and re-orthonormalise, adding log-norms to ``logsum``; every
-    ``rec_every`` steps copy ``logsum`` into the next row of ``hist``."""
-    n = y.size // 2
-    k = X.shape[0]
-    s = np.empty(n)
-    c = np.empty(n)
-    ky = np.empty((4, 2 * n))
-    kX = np.empty((4, k, 2 * n))
-    yt = np.empty(2 * n)
-    Xt = np.empty((k, 2 * n))
-    row = 0
-    for step in range(1, nsteps + 1):
-        _rk4_step(y, X, minv, dt, s, c, ky, kX, yt, Xt)
-        if step % project_every == 0:
-            project_state(y, m, speed)
-        if step % reorth_every == 0:
-            if restricted:
-                project_tangent(y, X, minv)
-            orthonormalize(X, w, logsum)
-        if rec_every > 0 and step % rec_every == 0 and row < hist.shape[0]:
-            for r in range(k):
-                hist[row, r] = logsum[r]
-            row += 1
+    ``rec_every`` steps copy ``logsum`` into the next row of ``hist``.  The fast path:
+    `_lyap_run` with shifted stage trigonometry."""
+    _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
+              project_every, rec_every, logsum, hist, False)
 
 
 # ----------------------------------------------------------------------------- helpers
