@@ -422,7 +422,16 @@ def evaluate_point(raw: dict) -> dict:
         if (Path(td) / "arrays.npz").exists():
             with np.load(Path(td) / "arrays.npz") as a:
                 arrays = {k: a[k] for k in a.files if k.startswith("curvature_")}
-    return {"status": status, "error": error, "stats": _statistics(result, arrays),
+    stats = _statistics(result, arrays)
+    bad = sorted(k for k, v in stats.items() if v is not None and not math.isfinite(v))
+    drift = result.get("drift", {})
+    if status == "complete" and (bad or not all(math.isfinite(v) for v in drift.values())):
+        # the runner's ambient kernel does not stop on a non-finite state (e.g. N = 4 close
+        # to a singular point without projection): such a point failed
+        status = "failed"
+        error = (f"non-finite results ({', '.join(bad) or 'drift'}): the trajectory left the "
+                 "manifold; set [scene.integrator] project = true or a smaller dt")
+    return {"status": status, "error": error, "stats": stats,
             "t_final": result.get("progress", {}).get("t_done"),
             "wall_s": round(time.perf_counter() - t0, 3),
             "worker": f"{socket.gethostname()}:{os.getpid()}"}

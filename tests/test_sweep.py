@@ -160,3 +160,20 @@ def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
     # 4. a finished sweep resumed again computes nothing
     again = run_sweep(sweep, out, resume=True, quiet=True, plots=False)
     assert again["computed"] == [] and again["skipped"] == len(ids)
+
+
+def test_a_point_with_non_finite_results_is_failed(monkeypatch):
+    """The ambient kernel can run off the manifold without stopping (N = 4 near a singular
+    point, no projection); the sweep must not record such numbers as a finished point."""
+    import charts.runner
+    from charts.sweep import evaluate_point
+
+    def fake(scene, outdir, **kw):
+        return {"results": {"lyapunov": {"exponents": [float("nan"), 0.2],
+                                         "stderr": [0.01, 0.01]}},
+                "drift": {"constraint": float("nan")}, "progress": {"t_done": 30.0}}
+
+    monkeypatch.setattr(charts.runner, "run_scene", fake)
+    raw = sweep_points(_sweep())[0].raw
+    out = evaluate_point(raw)
+    assert out["status"] == "failed" and "lambda_1" in out["error"] and "project" in out["error"]
