@@ -180,6 +180,7 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
     Kf = K.reshape((4, L))
     y_ = Z[0]
     X_ = Z[1:]
+    th = np.empty(n)
     s0 = np.empty(n)
     c0 = np.empty(n)
     s = np.empty(n)
@@ -230,7 +231,8 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                 u = Zt[0, n + j]
                 A += u * u * c[j]
                 B += s[j] * s[j] * minv[j]
-            lam = A / B
+            iB = 1.0 / B
+            lam = A * iB
             for j in range(n):
                 u = Zt[0, n + j]
                 f[j] = s[j] * minv[j]
@@ -243,20 +245,38 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                 acc = 0.0
                 for j in range(n):
                     acc += p[j] * Zt[r, n + j] - q[j] * Zt[r, j]
-                dlam = acc / B
+                dlam = acc * iB
                 for i in range(n):
                     K[st, r, i] = Zt[r, n + i]
                     K[st, r, n + i] = -(dlam * f[i] + g[i] * Zt[r, i])
+        for j in range(n):
+            th[j] = Z[0, j]
         for i in range(L):
             Zf[i] += h6 * (Kf[0, i] + 2.0 * Kf[1, i] + 2.0 * Kf[2, i] + Kf[3, i])
-        # ---- projection of y, then of X with re-orthonormalisation (eq 18)
+        # ---- sin/cos of the new θ: shifted by δ = θ_new − θ_old, libm after projections
         to_proj -= 1
         if to_proj == 0:
             to_proj = project_every
             project_state(y_, m, speed)
-        for j in range(n):
-            s0[j] = sin(Z[0, j])
-            c0[j] = cos(Z[0, j])
+            for j in range(n):
+                s0[j] = sin(Z[0, j])
+                c0[j] = cos(Z[0, j])
+        else:
+            for j in range(n):
+                dl = Z[0, j] - th[j]
+                d2 = dl * dl
+                sd = dl + dl * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * (
+                    _S[3] + d2 * (_S[4] + d2 * _S[5])))))
+                cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * (_C[3] + d2 * (
+                    _C[4] + d2 * (_C[5] + d2 * _C[6]))))))
+                sj = s0[j]
+                s0[j] = sj + (sj * cm + c0[j] * sd)
+                c0[j] = c0[j] + (c0[j] * cm - sj * sd)
+            for j in range(n):
+                if exact_trig or abs(Z[0, j] - th[j]) > _SHIFT_MAX:
+                    s0[j] = sin(Z[0, j])
+                    c0[j] = cos(Z[0, j])
+        # ---- projection of X and re-orthonormalisation (eq 18)
         to_reorth -= 1
         if to_reorth == 0:
             to_reorth = reorth_every
@@ -373,7 +393,7 @@ class LyapunovResult:
 
 def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
                       inner="theta", space="restricted", t_transient=50.0, n_batches=20,
-                      reorth_every=1, project_every=100, record_every=1.0, seed=0,
+                      reorth_every=10, project_every=100, record_every=1.0, seed=0,
                       progress=False):
     """Lyapunov exponents of eq (8) along the trajectory from (theta0, u0), eqs (17)-(18).
 
@@ -400,7 +420,9 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
         Number of blocks for the batch-means standard error.
     reorth_every, project_every : int
         Steps between re-orthonormalisations and between projections of y onto the
-        manifold.
+        manifold.  The trajectory does not depend on ``reorth_every``, and the log-norm
+        sums of eq (18) telescope, so every 10 steps (default) gives the exponents of
+        every step to ~1e-10 (tests/test_lyapunov.py) at a quarter less cost.
     record_every : float
         Time between rows of the convergence history.
 
