@@ -4,7 +4,7 @@
     charts scenes [NAME]                          list the bundled scenes, or print one
     charts reproduce ...                          the paper's figures and table (issue 4)
     charts generate [--check]                     regenerate generated/ (code generator)
-    charts bench accuracy | integrators           what accuracy costs in time; integrator cost
+    charts bench accuracy | integrators | performance   accuracy vs time; integrators; peers (issue 6)
     charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask (issue 7)
 
 Every subcommand has ``--help``.  Errors in the input are reported in one line on stderr
@@ -199,10 +199,13 @@ def _generate_installed(check: bool) -> int:
 
 
 def _cmd_bench(args) -> int:
-    if args.what == "integrators":
-        script = _load_script("bench_integrators")
+    scripts = {"integrators": ("bench_integrators", "issue 3"),
+               "performance": ("bench_performance", "issue 6")}
+    if args.what in scripts:
+        name, issue = scripts[args.what]
+        script = _load_script(name)
         if script is None:
-            return _fail("`charts bench integrators` runs scripts/bench_integrators.py (issue 3) "
+            return _fail(f"`charts bench {args.what}` runs scripts/{name}.py ({issue}) "
                          "from a source checkout; it was not found")
         return int(script.main(args.rest) or 0)
     from .accuracy import main as accuracy_main
@@ -253,11 +256,14 @@ def build_parser() -> argparse.ArgumentParser:
                    help="regenerate into a temporary place and exit 1 if generated/ is stale")
     p.set_defaults(func=_cmd_generate)
 
-    p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision) or `integrators`",
+    p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision), `integrators` "
+                       "or `performance` (against JiTCODE and SciPy)",
                        description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
                        "diagrams and table (see docs/accuracy.md). `charts bench integrators`: "
-                       "cost per unit time against solve_ivp (scripts/bench_integrators.py).")
-    p.add_argument("what", choices=("accuracy", "integrators"))
+                       "cost per unit time against solve_ivp (scripts/bench_integrators.py). "
+                       "`charts bench performance [--quick]`: the Lyapunov kernel against "
+                       "JiTCODE and SciPy, cold start, both cores (docs/performance.md).")
+    p.add_argument("what", choices=("accuracy", "integrators", "performance"))
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bars")
     p.add_argument("rest", nargs=argparse.REMAINDER,
                    help="options of the benchmark (e.g. `charts bench accuracy --help`)")
