@@ -666,8 +666,9 @@ def _num(s):
 
 def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> dict:
     """Average over seeds: one entry per parameter combination.  Each statistic ``c`` gets
-    ``c`` (mean over seeds; the minimum for ``*_min``) and ``c_se`` (standard error over
-    seeds when there are several, else the point's own ``lambda_i_se``)."""
+    ``c`` (mean over seeds; the minimum for ``*_min``) and ``c_se``: the larger of the
+    standard error from the spread over seeds and the one propagated from the points' own
+    errors (``lambda_i_se``, batch means), as either alone can be too small."""
     params = [c for c in header[len(HEAD):] if c in points[0].params and c != "seed"]
     stats = [c for c in header if c not in HEAD + TAIL + params + ["seed"]
              and not c.endswith("_se")]
@@ -685,10 +686,14 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
             if not vals.size:
                 continue
             entry[c] = float(vals.min() if c.endswith("_min") else vals.mean())
+            ses = []
             if vals.size >= 2 and not c.endswith("_min"):
-                entry[c + "_se"] = float(vals.std(ddof=1) / np.sqrt(vals.size))
-            elif c + "_se" in header and rs[0].get(c + "_se", "") != "":
-                entry[c + "_se"] = float(rs[0][c + "_se"])
+                ses.append(vals.std(ddof=1) / np.sqrt(vals.size))
+            own = [float(r[c + "_se"]) for r in rs if r.get(c + "_se", "") != ""]
+            if own and len(own) == vals.size:       # the points' own (batch-means) errors
+                ses.append(np.sqrt(np.sum(np.square(own))) / len(own))
+            if ses:                                 # two seeds alone underestimate often
+                entry[c + "_se"] = float(max(ses))
         out.append(entry)
     return {"params": params, "stats": stats, "rows": out}
 
@@ -757,9 +762,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
                 ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
                             yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs],
                             marker="o", ms=3.5, capsize=2.5, label=glabel(g))
-            xs = [r[x] for r in have]
-            if min(xs) > 0 and max(xs) / min(xs) >= 8:
-                ax.set_xscale("log")
+            _log_x(ax, [r[x] for r in have])
             ax.set_xlabel(x)
             if len(groups) > 1:
                 ax.legend(fontsize=7)
@@ -806,13 +809,24 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
     return files
 
 
+def _log_x(ax, xs) -> None:
+    """Log x axis labelled at the data values when they span a decade or so."""
+    from matplotlib.ticker import NullFormatter
+    if min(xs) > 0 and max(xs) / min(xs) >= 8:
+        ax.set_xscale("log")
+        ticks = sorted(set(xs))
+        ax.set_xticks(ticks, [f"{v:g}" for v in ticks], fontsize=7)
+        ax.xaxis.set_minor_formatter(NullFormatter())
+
+
 def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
     """One figure with a panel per headline statistic (exponents, fraction of positive
     curvature in any velocity plane, minimum angles) over the one numeric parameter."""
     import matplotlib.pyplot as plt
 
     stats = [c for c in summary["stats"] if c.startswith("lambda_")
-             or (c.startswith("Kpos_") and c.endswith("_any")) or c.endswith("_min")]
+             or (c.startswith("Kpos_") and c.endswith("_any")) or c.endswith("_min")
+             or c == "phi_restricted_p001"]
     exact = [c for c in stats if c.startswith("Kpos_exact")]
     stats = [c for c in stats if not (c.startswith("Kpos_numerical") and exact)]
     ncol = min(3, len(stats))
@@ -826,10 +840,8 @@ def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
             ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
                         yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs], marker="o", ms=3,
                         capsize=2, label=glabel(g))
-        xs = [r[x] for r in summary["rows"]]
-        if min(xs) > 0 and max(xs) / min(xs) >= 8:
-            ax.set_xscale("log")
-        if stat.endswith("_min"):
+        _log_x(ax, [r[x] for r in summary["rows"]])
+        if stat.startswith("phi_") and not stat.endswith("frac_small"):
             ax.set_yscale("log")
         ax.set_title(_label(stat), fontsize=8)
         ax.set_xlabel(x, fontsize=8)
