@@ -153,3 +153,49 @@ def test_every_analysis_runs_with_masses_from_the_command_line(tmp_path):
     u0 = np.array(r["initial_state"]["u"])
     assert np.sqrt(np.sum(np.array([1.0, 0.5, 1.0, 2.5]) * u0 ** 2)) == pytest.approx(1.3)
     assert abs(r["drift"]["energy_relative"]) < 1e-8
+
+
+#: masses from equal to strongly unequal, and one random draw
+SIGN_MASSES = {3: [None, [1.0, 1.0, 4.0], [0.25, 3.0, 1.0], "random"],
+               4: [None, [1.0, 1.0, 1.0, 4.0], [1.0, 0.25, 1.0, 0.25], "random"],
+               5: [None, [0.25, 1.0, 3.0, 1.0, 0.6], "random"]}
+
+
+def _tangent_basis(theta):
+    """Euclidean-orthonormal basis of T = {v : Σ sin θᵢ vᵢ = 0}, shape (N, N−1); T does
+    not depend on the masses."""
+    s = np.sin(theta)[:, None]
+    q, _ = np.linalg.qr(np.hstack([s, np.eye(len(theta))[:, : len(theta) - 1]]))
+    return q[:, 1:]
+
+
+@pytest.mark.parametrize("n", [3, 4, 5])
+def test_sign_of_sectional_curvature_does_not_depend_on_masses(n):
+    """Gauss equation: K(v, w) = [h(v,v)h(w,w) − h(v,w)²] / (|∇F|²_{M⁻¹} (|v|²|w|² −
+    ⟨v,w⟩²)_M) with h = Hess F = −diag(cos θ), so sign K(v, w) = sign det(h on the plane)
+    and no mass enters it.  Consequences checked here with the generated Riemann tensor:
+    N = 3 is negatively curved for every mass distribution (h on the 2-plane T is
+    indefinite); for N ≥ 4, h on T (dimension ≥ 3) has two eigenvalues of one sign, and the
+    plane of their eigenvectors has K > 0 — for every mass distribution."""
+    rng = np.random.default_rng(n)
+    systems = [RotorSystem(n, rng.uniform(0.2, 5.0, n) if m == "random" else m)
+               for m in SIGN_MASSES[n]]
+    for trial in range(12):
+        theta, _ = systems[0].random_state(seed=100 + trial)
+        B = _tangent_basis(theta)
+        ev, V = np.linalg.eigh(B.T @ np.diag(-np.cos(theta)) @ B)
+        if n == 3:
+            assert ev[0] < 0 < ev[1]                          # indefinite on the surface
+            planes = [(B[:, 0], B[:, 1])]
+        else:
+            pos, neg = np.flatnonzero(ev > 0), np.flatnonzero(ev < 0)
+            pair = pos[:2] if len(pos) >= 2 else neg[:2]
+            assert len(pair) == 2                             # pigeonhole in dimension ≥ 3
+            planes = [(B @ V[:, pair[0]], B @ V[:, pair[1]])]
+        x = B @ rng.normal(size=(n - 1, 3))
+        planes += [(x[:, 0], x[:, 1]), (x[:, 0], x[:, 2])]   # random planes too
+        for p, (v, w) in enumerate(planes):
+            K = np.array([S.sectional_curvature(theta, v, w) for S in systems])
+            assert np.all(np.sign(K) == np.sign(K[0])), K
+            if p == 0:
+                assert np.all(K < 0) if n == 3 else np.all(K > 0), K
