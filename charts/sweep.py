@@ -704,6 +704,34 @@ def _write_summary(path: Path, summary: dict) -> None:
         cols += [c, c + "_se"]
     text = _line(cols) + "".join(_line([_fmt(e.get(c)) for c in cols]) for e in summary["rows"])
     _atomic_text(path, text)
+    _atomic_text(path.with_suffix(".md"), summary_markdown(summary))
+
+
+def summary_markdown(summary: dict) -> str:
+    """The headline statistics as a markdown table (exponents ± s.e., fractions of positive
+    curvature, angle minima and 0.1 % quantiles); every column is in summary.csv."""
+    stats = [c for c in summary["stats"] if c.startswith("lambda_")
+             or (c.startswith("Kpos_exact") or (c.startswith("Kpos_numerical")
+                                                and not any(x.startswith("Kpos_exact")
+                                                            for x in summary["stats"])))
+             or c.endswith("_min") or c == "phi_restricted_p001"]
+    head = summary["params"] + ["seeds"] + stats
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for e in summary["rows"]:
+        cells = [f"{e[p]:g}" if isinstance(e[p], float) else str(e[p]) for p in summary["params"]]
+        cells.append(str(e["n_seeds"]))
+        for c in stats:
+            v, se = e.get(c), e.get(c + "_se")
+            if v is None:
+                cells.append("")
+            elif c.startswith("lambda_"):
+                cells.append(f"{v:.4f} ± {se:.4f}" if se is not None else f"{v:.4f}")
+            elif c.startswith("phi_"):
+                cells.append(f"{v:.1e}")
+            else:
+                cells.append(f"{v:.3f}")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
 
 
 # --------------------------------------------------------------------------- plots
