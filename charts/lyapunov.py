@@ -146,12 +146,15 @@ def _project_tangent_sc(y, X, minv, s, c):
 
 
 @njit(cache=True)
-def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
-              project_every, rec_every, logsum, hist, exact_trig):
-    """`_lyap_kernel` with a choice of stage trigonometry (``exact_trig``: libm at every
-    stage).  The time loop is written out in one function on purpose: every array-valued
-    call or view inside it costs two atomic reference-count updates (they took over half
-    of the time of the previous kernel); only the projections and eq (18), every
+def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
+                 project_every, rec_every, logsum, hist):
+    """Advance (y, X) by ``nsteps`` RK4 steps; every ``reorth_every`` steps project X onto
+    T_r (if ``restricted``) and re-orthonormalise, adding log-norms to ``logsum``; every
+    ``rec_every`` steps copy ``logsum`` into the next row of ``hist``.
+
+    The time loop is written out in one function on purpose: every array-valued call or
+    view inside it costs two atomic reference-count updates (they took over half of the
+    time of the previous kernel); only the projections and eq (18), every
     ``reorth_every`` / ``project_every`` steps, are calls.
 
     Per step:
@@ -163,7 +166,10 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
       * sin/cos of stage 1 are those of the step's start, s0, c0 (kept from the end of
         the previous step); stages 2–4 are θ + δ with δ = a·θ̇ small, and take
         sin(θ+δ) = s0 + (s0 (cos δ − 1) + c0 sin δ) with degree-13/14 Taylor polynomials
-        (a few ulp from libm; libm where |δ| > _SHIFT_MAX): 10 libm calls per step, not 40.
+        (a few ulp from libm; libm where |δ| > _SHIFT_MAX), and so do those of the new θ
+        from the old (δ = θ_new − θ_old), refreshed from libm after each projection of y,
+        every ``project_every`` steps: 1 libm sin/cos pair per angle per 100 steps, not 4
+        per step.  (libm at every stage instead: 2× the cost per step, same exponents.)
     """
     n = y.size // 2
     d = 2 * n
@@ -221,7 +227,7 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                     s[j] = s0[j] + (s0[j] * cm + c0[j] * sd)
                     c[j] = c0[j] + (c0[j] * cm - s0[j] * sd)
                 for j in range(n):
-                    if exact_trig or abs(a * K[st - 1, 0, j]) > _SHIFT_MAX:
+                    if abs(a * K[st - 1, 0, j]) > _SHIFT_MAX:
                         s[j] = sin(Zt[0, j])
                         c[j] = cos(Zt[0, j])
             # ---- eq (8) into K[st, 0], eq (17) into K[st, 1:]
@@ -273,7 +279,7 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                 s0[j] = sj + (sj * cm + c0[j] * sd)
                 c0[j] = c0[j] + (c0[j] * cm - sj * sd)
             for j in range(n):
-                if exact_trig or abs(Z[0, j] - th[j]) > _SHIFT_MAX:
+                if abs(Z[0, j] - th[j]) > _SHIFT_MAX:
                     s0[j] = sin(Z[0, j])
                     c0[j] = cos(Z[0, j])
         # ---- projection of X and re-orthonormalisation (eq 18)
@@ -293,17 +299,6 @@ def _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                     row += 1
     y[:] = Z[0]
     X[:] = Z[1:]
-
-
-@njit(cache=True)
-def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
-                 project_every, rec_every, logsum, hist):
-    """Advance (y, X) by ``nsteps`` RK4 steps; every ``reorth_every`` steps project X onto
-    T_r (if ``restricted``) and re-orthonormalise, adding log-norms to ``logsum``; every
-    ``rec_every`` steps copy ``logsum`` into the next row of ``hist``.  The fast path:
-    `_lyap_run` with shifted stage trigonometry."""
-    _lyap_run(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
-              project_every, rec_every, logsum, hist, False)
 
 
 # ----------------------------------------------------------------------------- helpers
