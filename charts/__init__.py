@@ -19,3 +19,4 @@ from .integrate import IntegrationError, IntegrationResult, integrate; __all__ +
 from .scene import Scene, SceneError, load_scene, parse_scene; __all__ += ["Scene", "SceneError", "load_scene", "parse_scene"]  # noqa: E402,E702
 from .runner import RunError, plan_scene, run_scene; __all__ += ["run_scene", "plan_scene", "RunError"]  # noqa: E402,E702
 __version__ = "0.1.0"
+from .sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep; __all__ += ["Sweep", "SweepError", "load_sweep", "parse_sweep", "run_sweep"]  # noqa: E402,E702

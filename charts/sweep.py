@@ -36,7 +36,8 @@ Layout of a sweep file::
 With ``[sweep.masses]`` the pattern name is one more axis, ``masses``.  The table has one
 row per point (parameters, seed, the resolved mass vector, the statistics, the full scene as
 run in JSON) — see :func:`point_columns`.  ``DIR/summary.csv`` averages over seeds and
-``DIR/figures/`` holds one curve or heat map per statistic over the swept parameters.
+``DIR/figures/`` holds one curve or heat map per statistic over the swept parameters
+(``charts.sweep_report``).
 """
 from __future__ import annotations
 
@@ -65,8 +66,8 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
 from .scene import Scene, SceneError, parse_scene, scene_to_dict
 
 __all__ = ["Sweep", "SweepError", "SweepPoint", "load_sweep", "parse_sweep", "sweep_points",
-           "evaluate_point", "point_columns", "run_sweep", "read_table", "summarize",
-           "plot_sweep", "TABLE", "SUMMARY", "LOG"]
+           "evaluate_point", "point_columns", "run_sweep", "read_table", "bundled_sweeps",
+           "TABLE", "SUMMARY", "LOG"]
 
 TABLE, SUMMARY, LOG, META = "sweep.csv", "summary.csv", "log.jsonl", "sweep.json"
 MODES = ("grid", "random")
@@ -599,8 +600,9 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
         rows.sort(key=lambda r: int(r["index"]))
         _atomic_text(outdir / TABLE, _line(header) + "".join(_line([r[c] for c in header])
                                                             for r in rows))
+        from .sweep_report import plot_sweep, summarize, write_summary
         summary = summarize(header, rows, points)
-        _write_summary(outdir / SUMMARY, summary)
+        write_summary(outdir / SUMMARY, summary)
         info["summary"] = str(outdir / SUMMARY)
         info["figures"] = plot_sweep(summary, outdir / "figures", sweep.name) if plots else []
     return info
@@ -654,234 +656,6 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
         client.close()
         if cluster is not None:
             cluster.close()
-
-
-# --------------------------------------------------------------------------- summary
-def _num(s):
-    try:
-        return float(s)
-    except (TypeError, ValueError):
-        return s
-
-
-def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> dict:
-    """Average over seeds: one entry per parameter combination.  Each statistic ``c`` gets
-    ``c`` (mean over seeds; the minimum for ``*_min``) and ``c_se``: the larger of the
-    standard error from the spread over seeds and the one propagated from the points' own
-    errors (``lambda_i_se``, batch means), as either alone can be too small."""
-    params = [c for c in header[len(HEAD):] if c in points[0].params and c != "seed"]
-    stats = [c for c in header if c not in HEAD + TAIL + params + ["seed"]
-             and not c.endswith("_se")]
-    groups: dict = {}
-    for r in rows:
-        if r["status"] != "complete":
-            continue
-        groups.setdefault(tuple(r[c] for c in params), []).append(r)
-    out = []
-    for key, rs in groups.items():
-        entry = {c: _num(v) for c, v in zip(params, key)}
-        entry["n_seeds"] = len(rs)
-        for c in stats:
-            vals = np.array([float(r[c]) for r in rs if r.get(c, "") != ""])
-            if not vals.size:
-                continue
-            entry[c] = float(vals.min() if c.endswith("_min") else vals.mean())
-            ses = []
-            if vals.size >= 2 and not c.endswith("_min"):
-                ses.append(vals.std(ddof=1) / np.sqrt(vals.size))
-            own = [float(r[c + "_se"]) for r in rs if r.get(c + "_se", "") != ""]
-            if own and len(own) == vals.size:       # the points' own (batch-means) errors
-                ses.append(np.sqrt(np.sum(np.square(own))) / len(own))
-            if ses:                                 # two seeds alone underestimate often
-                entry[c + "_se"] = float(max(ses))
-        out.append(entry)
-    return {"params": params, "stats": stats, "rows": out}
-
-
-def _write_summary(path: Path, summary: dict) -> None:
-    cols = summary["params"] + ["n_seeds"]
-    for c in summary["stats"]:
-        cols += [c, c + "_se"]
-    text = _line(cols) + "".join(_line([_fmt(e.get(c)) for c in cols]) for e in summary["rows"])
-    _atomic_text(path, text)
-    _atomic_text(path.with_suffix(".md"), summary_markdown(summary))
-
-
-def summary_markdown(summary: dict) -> str:
-    """The headline statistics as a markdown table (exponents ± s.e., fractions of positive
-    curvature, angle minima and 0.1 % quantiles); every column is in summary.csv."""
-    stats = [c for c in summary["stats"] if c.startswith("lambda_")
-             or (c.startswith("Kpos_exact") or (c.startswith("Kpos_numerical")
-                                                and not any(x.startswith("Kpos_exact")
-                                                            for x in summary["stats"])))
-             or c.endswith("_min") or c == "phi_restricted_p001"]
-    head = summary["params"] + ["seeds"] + stats
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for e in summary["rows"]:
-        cells = [f"{e[p]:g}" if isinstance(e[p], float) else str(e[p]) for p in summary["params"]]
-        cells.append(str(e["n_seeds"]))
-        for c in stats:
-            v, se = e.get(c), e.get(c + "_se")
-            if v is None:
-                cells.append("")
-            elif c.startswith("lambda_"):
-                cells.append(f"{v:.4f} ± {se:.4f}" if se is not None else f"{v:.4f}")
-            elif c.startswith("phi_"):
-                cells.append(f"{v:.1e}")
-            else:
-                cells.append(f"{v:.3f}")
-        lines.append("| " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n"
-
-
-# --------------------------------------------------------------------------- plots
-#: Statistics that get a figure (the others are in the tables only).
-PLOTTED = ("lambda_", "Kpos_", "phi_full_min", "phi_restricted_min", "phi_full_frac",
-           "phi_restricted_frac")
-
-def _label(stat: str) -> str:
-    parts = stat.split("_")
-    if parts[0] == "lambda":
-        return f"λ{parts[1]}"
-    if parts[0] in ("Kpos", "Kmean"):
-        d = "some K_ii" if parts[2] == "any" else f"K_{parts[2]}{parts[2]}"
-        if parts[0] == "Kpos":
-            return f"fraction of samples with {d} > 0 ({parts[1]})"
-        return f"mean {d} ({parts[1]})"
-    if parts[0] == "phi":
-        return f"φ {'_'.join(parts[2:])} ({parts[1]} space) [rad]"
-    return stat
-
-
-def plot_sweep(summary: dict, folder, title="") -> list[str]:
-    """One PNG per statistic: curves over the one numeric swept parameter (one line per
-    value of the others, error bars = ``_se``), a heat map over the first two numeric
-    parameters (one panel per value of the others), or bars when nothing numeric varies."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    rows, params = summary["rows"], summary["params"]
-    if not rows:
-        return []
-    varying = [p for p in params if len({str(r[p]) for r in rows}) > 1]
-    numeric = [p for p in varying if all(isinstance(r[p], float) for r in rows)]
-    groups_by = [p for p in varying if p not in numeric[:2]]
-    gkey = lambda r: tuple(r[p] for p in groups_by)
-    glabel = lambda k: ", ".join(f"{p}={v:g}" if isinstance(v, float) else f"{p}={v}"
-                                 for p, v in zip(groups_by, k)) or "all"
-    groups = sorted({gkey(r) for r in rows}, key=str)
-    files = []
-    for stat in summary["stats"]:
-        if not stat.startswith(PLOTTED):
-            continue
-        have = [r for r in rows if stat in r]
-        if not have:
-            continue
-        logy = stat.startswith("phi_") and not stat.endswith("frac_small") and \
-            all(r[stat] > 0 for r in have)
-        if len(numeric) == 1:
-            x = numeric[0]
-            fig, ax = plt.subplots(figsize=(5.2, 3.6), layout="constrained")
-            for g in groups:
-                rs = sorted((r for r in have if gkey(r) == g), key=lambda r: r[x])
-                ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
-                            yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs],
-                            marker="o", ms=3.5, capsize=2.5, label=glabel(g))
-            _log_x(ax, [r[x] for r in have])
-            ax.set_xlabel(x)
-            if len(groups) > 1:
-                ax.legend(fontsize=7)
-        elif len(numeric) >= 2:
-            x, y = numeric[:2]
-            fig, axs = plt.subplots(1, len(groups), figsize=(4.2 * len(groups), 3.6),
-                                    layout="constrained", squeeze=False)
-            vals = [r[stat] for r in have]
-            norm = matplotlib.colors.LogNorm() if logy else \
-                matplotlib.colors.Normalize(min(vals), max(vals))
-            for ax, g in zip(axs[0], groups):
-                rs = [r for r in have if gkey(r) == g]
-                xs, ys = sorted({r[x] for r in rs}), sorted({r[y] for r in rs})
-                if len(xs) * len(ys) == len(rs):          # a full grid: a heat map
-                    Z = np.full((len(ys), len(xs)), np.nan)
-                    for r in rs:
-                        Z[ys.index(r[y]), xs.index(r[x])] = r[stat]
-                    im = ax.imshow(Z, origin="lower", aspect="auto", norm=norm, cmap="viridis")
-                    ax.set_xticks(range(len(xs)), [f"{v:g}" for v in xs], fontsize=7)
-                    ax.set_yticks(range(len(ys)), [f"{v:g}" for v in ys], fontsize=7)
-                else:                                      # a random sample: a scatter
-                    im = ax.scatter([r[x] for r in rs], [r[y] for r in rs],
-                                    c=[r[stat] for r in rs], norm=norm, cmap="viridis", s=25)
-                ax.set_xlabel(x)
-                ax.set_ylabel(y)
-                ax.set_title(glabel(g), fontsize=8)
-            fig.colorbar(im, ax=axs[0].tolist(), shrink=0.9)
-            ax = axs[0][0]
-        else:
-            fig, ax = plt.subplots(figsize=(5.2, 3.6), layout="constrained")
-            ax.bar(range(len(have)), [r[stat] for r in have],
-                   yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in have])
-            ax.set_xticks(range(len(have)), [glabel(gkey(r)) for r in have], rotation=30,
-                          fontsize=7)
-        if logy and len(numeric) < 2:
-            ax.set_yscale("log")
-        fig.suptitle(f"{title}: {_label(stat)}", fontsize=9)
-        path = folder / f"{stat}.png"
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        files.append(str(path))
-    if len(numeric) == 1:
-        files.append(_overview(summary, folder, title, numeric[0], groups, gkey, glabel))
-    return files
-
-
-def _log_x(ax, xs) -> None:
-    """Log x axis labelled at the data values when they span a decade or so."""
-    from matplotlib.ticker import NullFormatter
-    if min(xs) > 0 and max(xs) / min(xs) >= 8:
-        ax.set_xscale("log")
-        ticks = sorted(set(xs))
-        ax.set_xticks(ticks, [f"{v:g}" for v in ticks], fontsize=7)
-        ax.xaxis.set_minor_formatter(NullFormatter())
-
-
-def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
-    """One figure with a panel per headline statistic (exponents, fraction of positive
-    curvature in any velocity plane, minimum angles) over the one numeric parameter."""
-    import matplotlib.pyplot as plt
-
-    stats = [c for c in summary["stats"] if c.startswith("lambda_")
-             or (c.startswith("Kpos_") and c.endswith("_any")) or c.endswith("_min")
-             or c == "phi_restricted_p001"]
-    exact = [c for c in stats if c.startswith("Kpos_exact")]
-    stats = [c for c in stats if not (c.startswith("Kpos_numerical") and exact)]
-    ncol = min(3, len(stats))
-    nrow = -(-len(stats) // ncol)
-    fig, axs = plt.subplots(nrow, ncol, figsize=(4.0 * ncol, 2.9 * nrow), layout="constrained",
-                            squeeze=False)
-    for ax, stat in zip(axs.flat, stats):
-        for g in groups:
-            rs = sorted((r for r in summary["rows"] if gkey(r) == g and stat in r),
-                        key=lambda r: r[x])
-            ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
-                        yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs], marker="o", ms=3,
-                        capsize=2, label=glabel(g))
-        _log_x(ax, [r[x] for r in summary["rows"]])
-        if stat.startswith("phi_") and not stat.endswith("frac_small"):
-            ax.set_yscale("log")
-        ax.set_title(_label(stat), fontsize=8)
-        ax.set_xlabel(x, fontsize=8)
-    for ax in list(axs.flat)[len(stats):]:
-        ax.set_visible(False)
-    if len(groups) > 1:
-        axs.flat[0].legend(fontsize=7)
-    fig.suptitle(title, fontsize=10)
-    path = folder / "overview.png"
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return str(path)
 
 
 # --------------------------------------------------------------------------- command line
