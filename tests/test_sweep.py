@@ -131,6 +131,8 @@ def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
     assert json.loads(rows[0]["scene"])["system"]["masses"] == [1.0, 1.0, 1.0, 0.5]
     assert len(read_table(tmp_path / "ref" / SUMMARY)[1]) == 4   # mean over the 2 seeds
     assert (tmp_path / "ref" / "figures" / "lambda_1.png").exists()
+    assert (tmp_path / "ref" / "figures" / "overview.png").exists()
+    assert "| masses | n | m | seeds | lambda_1 |" in (tmp_path / "ref" / "summary.md").read_text()
 
     # 2. the command line on a local cluster of 2 workers, killed after two points
     out = tmp_path / "cut"
