@@ -490,6 +490,9 @@ def _prepare_table(outdir: Path, columns, points, resume: bool, source: str) -> 
         _atomic_text(table, _line(columns))
         return {}
     header, rows = read_table(table)
+    if not rows:                      # only a header (a sweep that never got a point in)
+        _atomic_text(table, _line(columns))
+        return {}
     if not resume:
         raise SweepError(f"{table} already holds a sweep ({len(rows)} points): continue it with "
                          "--resume, or choose another output folder")
