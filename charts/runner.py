@@ -305,6 +305,11 @@ class _KernelEngine:
                              project_every=self.project_every, logsum=st.logsum)
         st.rhs += 4 * nsteps
         st.steps += nsteps
+        if not (np.all(np.isfinite(st.y)) and np.all(np.isfinite(st.X)) and np.all(np.isfinite(st.logsum))):
+            raise RunError(f"the state became non-finite within {nsteps} steps before step {st.steps}: "
+                           "the trajectory came too close to a singular point of the manifold "
+                           "(all sin θ ≈ 0) and left the constraint; set [integrator] project = true "
+                           "or a smaller dt")
 
     def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
         """Advance from unit ``start`` to ``end``, stopping at every multiple of the

@@ -6,6 +6,7 @@ import json
 import signal
 import subprocess
 import sys
+import textwrap
 import time
 
 import numpy as np
@@ -178,3 +179,36 @@ def test_bundled_run_through_a_singular_point_exits_1_with_the_finished_part(tmp
     assert err.startswith("charts: error: ") and "singular point" in err
     res = json.loads((out / "result.json").read_text())
     assert res["status"] == "failed" and res["progress"]["t_done"] == pytest.approx(0.9)
+
+
+def test_tangent_run_through_a_singular_point_fails_clearly_not_nan(tmp_path, capsys):
+    """The Lyapunov engine (ambient RK4 + tangent vectors, no projection) driven exactly
+    through the N = 4 singular point must stop with a clear error and keep the finished
+    part, never report a 'complete' run with NaN exponents."""
+    scene = tmp_path / "sing-lyap.toml"
+    scene.write_text(textwrap.dedent("""
+        [system]
+        n = 4
+        [initial]
+        theta = [-0.42426406871192845, -0.565685424949238, 2.7173285848778646, 2.5759072286405553]
+        u = [0.42426406871192845, 0.565685424949238, 0.42426406871192845, 0.565685424949238]
+        [integrator]
+        formulation = "ambient"
+        method = "rk4"
+        dt = 0.01
+        [run]
+        t_final = 2.0
+        t_transient = 0.0
+        sample_dt = 0.01
+        checkpoint_every = 0.1
+        [effects.lyapunov]
+        n_exponents = 2
+    """))
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "-o", str(out), "--quiet"]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("charts: error: ") and "non-finite" in err and "singular point" in err
+    res = json.loads((out / "result.json").read_text())
+    assert res["status"] == "failed"
+    assert 0.5 <= res["progress"]["t_done"] < 1.1
+    assert np.all(np.isfinite(res["results"]["lyapunov"]["exponents"]))
