@@ -84,10 +84,11 @@ def ours(t_final, dt=0.01, reorth_every=10):
 
     S = charts.RotorSystem(N)
     th, u = fixed_state()
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     r = charts.lyapunov_spectrum(S, th, u, t_final, dt=dt, n_exponents=K, t_transient=TRANSIENT,
                                  reorth_every=reorth_every)
-    return time.perf_counter() - t0, np.asarray(r.exponents), np.asarray(r.stderr)
+    return (time.perf_counter() - t0, np.asarray(r.exponents), np.asarray(r.stderr),
+            time.process_time() - c0)
 
 
 _COLD = """
@@ -135,13 +136,13 @@ def jitcode_setup():
 def jitcode_run(ode, t_final):
     th, u = fixed_state()
     ode.set_initial_value(np.concatenate([th, u]), 0.0)
-    t1 = time.perf_counter()
+    t1, c1 = time.perf_counter(), time.process_time()
     sums = np.zeros(K)
     for t in np.arange(1.0, TRANSIENT + t_final + 0.5):
         _, lyaps, _ = ode.integrate(t)
         if t > TRANSIENT:
             sums += lyaps
-    return time.perf_counter() - t1, sums / t_final
+    return time.perf_counter() - t1, sums / t_final, None, time.process_time() - c1
 
 
 def jitcode_state(ode, t):
@@ -280,34 +281,42 @@ def main(argv=None):
     cold_filled = med[1] + med[2]
     print(load(), flush=True)
 
-    # -- warm, this process
-    ours(20.0)
-    ours(20.0, reorth_every=1)
-    warm = [ours(T) for _ in range(rep)]
-    t_ours = statistics.median(w[0] for w in warm)
-    lam_ours, err_ours = warm[0][1], warm[0][2]
-    warm1 = [ours(T, reorth_every=1) for _ in range(rep)]
-    t_ours1 = statistics.median(w[0] for w in warm1)
-    print(f"charts warm: {t_ours:.3f} s -> {total / t_ours:,.0f} time units per wall-second (1 core), "
-          f"{t_ours / nsteps * 1e6:.3f} µs per RK4 step (eq 18 every 10 steps); every step: "
-          f"{t_ours1:.3f} s, {t_ours1 / nsteps * 1e6:.3f} µs per step", flush=True)
-    rows = [("charts RK4 dt=0.01, eq 18 every 10 steps (default), warm", t_ours, lam_ours),
-            ("charts RK4 dt=0.01, eq 18 every step, warm", t_ours1, warm1[0][1]),
-            ("charts, new process, cache filled (load + task)", cold_filled, None),
-            ("charts, new process, empty cache (compile + task)", cold_empty, None)]
-
+    # -- warm, this process; the implementations take turns, so that the load of other jobs
+    #    falls on all of them alike
     jit = jitcode_setup()
-    ode = None
+    ode = None if jit is None else jit[1]
     if jit is None:
         print("JiTCODE not installed (pip install -e '.[bench]'): skipped")
-    else:
-        t_gen, ode = jit
-        runs = [jitcode_run(ode, T) for _ in range(rep)]
-        t_jit = statistics.median(r[0] for r in runs)
-        rows.append(("JiTCODE jitcode_lyap dopri5 1e-8/1e-10, warm", t_jit, runs[0][1]))
+    impls = {"default": lambda: ours(T), "every": lambda: ours(T, reorth_every=1)}
+    if ode is not None:
+        impls["jitcode"] = lambda: jitcode_run(ode, T)
+    ours(20.0)
+    ours(20.0, reorth_every=1)
+    runs = {name: [] for name in impls}
+    for _ in range(rep):
+        for name, f in impls.items():
+            runs[name].append(f())
+    wall = {name: statistics.median(r[0] for r in rr) for name, rr in runs.items()}
+    cpu = {name: statistics.median(r[3] for r in rr) for name, rr in runs.items()}
+    t_ours, t_ours1 = wall["default"], wall["every"]
+    lam_ours, err_ours = runs["default"][0][1], runs["default"][0][2]
+    print(f"charts warm: {t_ours:.3f} s -> {total / t_ours:,.0f} time units per wall-second (1 core), "
+          f"{t_ours / nsteps * 1e6:.3f} µs per RK4 step (eq 18 every 10 steps; CPU time "
+          f"{cpu['default'] / nsteps * 1e6:.3f} µs); every step: {t_ours1:.3f} s, "
+          f"{t_ours1 / nsteps * 1e6:.3f} µs per step (CPU {cpu['every'] / nsteps * 1e6:.3f} µs)",
+          flush=True)
+    rows = [("charts RK4 dt=0.01, eq 18 every 10 steps (default), warm", t_ours, lam_ours),
+            ("charts RK4 dt=0.01, eq 18 every step, warm", t_ours1, runs["every"][0][1]),
+            ("charts, new process, cache filled (load + task)", cold_filled, None),
+            ("charts, new process, empty cache (compile + task)", cold_empty, None)]
+    if ode is not None:
+        t_gen, t_jit = jit[0], wall["jitcode"]
+        rows.append(("JiTCODE jitcode_lyap dopri5 1e-8/1e-10, warm", t_jit, runs["jitcode"][0][1]))
         rows.append(("JiTCODE code generation + compilation", t_gen, None))
         rows.append(("JiTCODE code generation + compilation + task", t_gen + t_jit, None))
-        print(f"JiTCODE: code generation + compilation {t_gen:.2f} s; warm {t_jit:.3f} s", flush=True)
+        print(f"JiTCODE: code generation + compilation {t_gen:.2f} s; warm {t_jit:.3f} s (CPU "
+              f"{cpu['jitcode']:.3f} s; CPU-time ratio to charts {cpu['jitcode'] / cpu['default']:.2f})",
+              flush=True)
 
     try:
         sp_time, lam_sp = scipy_run(t_sp)
