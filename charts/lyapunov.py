@@ -176,8 +176,10 @@ def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
     R = 1 + k
     L = R * d
     Z = np.empty((R, d))
-    Z[0] = y
-    Z[1:] = X
+    for i in range(d):          # explicit loops: a slice assignment would compile Numba's
+        Z[0, i] = y[i]          # shape-mismatch error message (string formatting), which
+        for r in range(k):      # was 40 % of this kernel's first-ever compile time
+            Z[1 + r, i] = X[r, i]
     Zt = np.empty((R, d))
     K = np.empty((4, R, d))
     Zf = Z.reshape(L)
@@ -292,8 +294,10 @@ def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
                     for r in range(k):
                         hist[row, r] = logsum[r]
                     row += 1
-    y[:] = Z[0]
-    X[:] = Z[1:]
+    for i in range(d):
+        y[i] = Z[0, i]
+        for r in range(k):
+            X[r, i] = Z[1 + r, i]
 
 
 # ----------------------------------------------------------------------------- helpers
