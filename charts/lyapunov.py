@@ -124,7 +124,7 @@ _S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
 _C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _project_tangent_sc(y, X, minv, s, c):
     """`charts.ambient.project_tangent` given s, c = sin, cos of y[:N] (same arithmetic)."""
     n = y.size // 2
