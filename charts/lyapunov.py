@@ -152,9 +152,10 @@ def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
     ``rec_every`` steps copy ``logsum`` into the next row of ``hist``.
 
     The time loop is written out in one function on purpose: every array-valued call or
-    view inside it costs two atomic reference-count updates (they took over half of the
-    time of the previous kernel); only the projections and eq (18), every
-    ``reorth_every`` / ``project_every`` steps, are calls.
+    view inside it costs two atomic reference-count updates per array (a first rewrite
+    with stage helpers taking views spent over half of its time on them); only the
+    projections and eq (18), every ``reorth_every`` / ``project_every`` steps, are calls.
+    See docs/performance.md for the profile.
 
     Per step:
       * State and vectors are stacked in Z = [y; X], shape (1+k, 2N), so the RK4
