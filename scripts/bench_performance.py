@@ -264,7 +264,9 @@ def main(argv=None):
     nsteps = total / 0.01
     print(f"date: {datetime.date.today().isoformat()}")
     print(f"machine: {machine()}")
-    print(f"command: {' '.join([Path(sys.argv[0]).name] + (argv if argv is not None else sys.argv[1:]))}")
+    cmd = (["charts bench performance"] + list(argv) if argv is not None
+           else ["python scripts/bench_performance.py"] + sys.argv[1:])
+    print(f"command: {' '.join(cmd)}")
     print(f"task: N={N}, {K} exponents, unit speed, t={T:g} after a transient of {TRANSIENT:g}; "
           f"medians of {rep}\n{load()}\n", flush=True)
 
@@ -346,12 +348,19 @@ def main(argv=None):
 
     # -- both cores
     n_members = 4 * (os.cpu_count() or 1)
-    times = ensemble_speedup(T / 2, n_members)
-    w = max(times)
-    print(f"\n{n_members} independent trajectories of t={T / 2:g} (warm worker pools): 1 worker "
-          f"{times[1][0]:.2f} s, {w} workers {times[w][0]:.2f} s -> speed-up "
-          f"{times[1][0] / times[w][0]:.2f}x; CPU time per trajectory {times[1][1]:.3f} s alone, "
-          f"{times[w][1]:.3f} s with {w} workers; " + load(), flush=True)
+    sp, eff = [], []
+    for _ in range(rep):
+        times = ensemble_speedup(T / 2, n_members)
+        w = max(times)
+        sp.append(times[1][0] / times[w][0])
+        eff.append(n_members * times[w][1] / (w * times[w][0]))
+        print(f"{n_members} independent trajectories of t={T / 2:g} (warm worker pools): 1 worker "
+              f"{times[1][0]:.2f} s, {w} workers {times[w][0]:.2f} s -> speed-up {sp[-1]:.2f}x; "
+              f"CPU time per trajectory {times[1][1]:.3f} s alone, {times[w][1]:.3f} s with {w} "
+              f"workers; parallel efficiency {eff[-1]:.2f}; " + load(), flush=True)
+    print(f"two-core speed-up: median {statistics.median(sp):.2f}x (range {min(sp):.2f}-{max(sp):.2f}); "
+          f"parallel efficiency (CPU time of the trajectories / (workers x wall)): median "
+          f"{statistics.median(eff):.2f}\n", flush=True)
 
     if not args.skip_codegen:
         sys.path.insert(0, str(ROOT / "scripts"))
