@@ -51,23 +51,13 @@ def _flatten(nested, prefix=()):
         yield prefix, nested
 
 
-def _function(name, args, doc, outputs, printer, scalar=False, stage=None):
+def _function(name, args, doc, outputs, printer, scalar=False):
     """Source of one function; ``outputs`` is a nested list (written to ``out``)
-    or a single expression (returned) when ``scalar``.  ``stage`` = (symbols, exprs)
-    computes intermediate values first (e.g. the Riemann components) that the outputs
-    are written in, which keeps CSE fast for contractions of big tensors."""
+    or a single expression (returned) when ``scalar``."""
     flat = [(None, outputs)] if scalar else list(_flatten(outputs))
     exprs = [e for _, e in flat]
     lines = [f"def {name}({', '.join(args)}):", f'    """{doc}"""']
-    prefix = "x"
-    if stage is not None:
-        reps0, reduced0 = sp.cse(stage[1], symbols=sp.numbered_symbols("x"), order="canonical")
-        for sym, e in reps0:
-            lines.append(f"    {sym} = {printer.doprint(e)}")
-        for sym, e in zip(stage[0], reduced0):
-            lines.append(f"    {sym} = {printer.doprint(e)}")
-        prefix = "z"
-    reps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
+    reps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("x"), order="canonical")
     for sym, e in reps:
         lines.append(f"    {sym} = {printer.doprint(e)}")
     if scalar:
@@ -77,21 +67,6 @@ def _function(name, args, doc, outputs, printer, scalar=False, stage=None):
             lines.append(f"    out[{', '.join(map(str, index))}] = {printer.doprint(e)}")
         lines.append("    return out")
     return "\n".join(lines) + "\n"
-
-
-def _curvature_operator(G, x, y, printer):
-    """(R(x,y)y)^a = g^ae R_ebcd y^b x^c y^d, contracted over named Riemann components."""
-    d = G.dim
-    flat = list(_flatten(G.riemann))
-    rsym = [sp.Symbol("r_" + "".join(map(str, i))) for i, _ in flat]
-    R = {i: s for (i, _), s in zip(flat, rsym)}
-    gi = G.metric_inverse
-    low = [sp.Add(*[R[(e, b, c, f)] * y[b] * x[c] * y[f]
-                    for b in range(d) for c in range(d) for f in range(d)]) for e in range(d)]
-    out = [sp.Add(*[gi[a][e] * low[e] for e in range(d)]) for a in range(d)]
-    return _function("curvature_operator", ["q", "x", "y", "m", "out"],
-                     "(R(x, y) y)^a; the Jacobi equation is J'' + R(J, v) v = 0.",
-                     out, printer, stage=(rsym, [e for _, e in flat]))
 
 
 def module_source(n: int) -> str:
@@ -131,7 +106,9 @@ def module_source(n: int) -> str:
         _function("transport_rate", ["q", "v", "p", "m", "out"],
                   "dp^a/dt = -Gamma^a_bc v^b p^c, eq (16).",
                   [-e for e in G.connection_contract(G.v, G.w)], P),
-        _curvature_operator(G, x, y, P),
+        _function("curvature_operator", ["q", "x", "y", "m", "out"],
+                  "(R(x, y) y)^a; the Jacobi equation is J'' + R(J, v) v = 0.",
+                  G.curvature_operator(x, y), P),
         _function("eliminated_component", ["q", "x", "sin_k"],
                   "Ambient component of the eliminated angle of tangent vector x (tangency).",
                   G.eliminated_velocity(x, sin_k), P, scalar=True),

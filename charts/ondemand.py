@@ -2,7 +2,8 @@
 
 The same generator (``charts.codegen.module_source``) writes the same bytes that
 ``scripts/generate.py`` would; the module is stored under the cache folder
-(``$CHARTS_CACHE_DIR``, default ``~/.cache/charts``) keyed by N and SymPy version,
+(``$CHARTS_CACHE_DIR``, default ``~/.cache/charts``) keyed by N, the SymPy version and a
+hash of the generator's source,
 and imported from there.  The first derivation's cost is reported on stderr.
 """
 from __future__ import annotations
@@ -20,9 +21,20 @@ from .codegen import module_name, module_source
 __all__ = ["cache_dir", "load_or_generate"]
 
 
+def _generator_digest() -> str:
+    """Hash of the generator's source: a changed derivation never reuses a stale cache."""
+    import hashlib
+
+    here = Path(__file__).resolve().parent
+    h = hashlib.sha256()
+    for name in ("symbolic.py", "codegen.py", "layout.py"):
+        h.update((here / name).read_bytes())
+    return h.hexdigest()[:12]
+
+
 def cache_dir() -> Path:
     root = os.environ.get("CHARTS_CACHE_DIR") or Path.home() / ".cache" / "charts"
-    return Path(root) / f"generated-sympy{sympy.__version__}"
+    return Path(root) / f"generated-sympy{sympy.__version__}-{_generator_digest()}"
 
 
 def load_or_generate(n: int):
