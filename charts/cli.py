@@ -149,6 +149,7 @@ def _load_script(name: str):
         return None
     spec = importlib.util.spec_from_file_location(f"charts_script_{name}", path)
     mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod  # so that its functions pickle for worker processes
     spec.loader.exec_module(mod)
     return mod
 
