@@ -22,7 +22,7 @@ from numba import njit
 
 __all__ = [
     "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs", "project_state",
-    "project_tangent", "invariants",
+    "project_tangent", "project_tangent_sc", "invariants",
 ]
 
 
@@ -101,22 +101,21 @@ def adjoint_rhs(y, W, minv, dW):
 
 
 @njit(cache=True)
-def transport_rhs(y, P, minv, dP):
-    """Eq (19), parallel transport of the rows of P, shape (k, N), along the flow:
+def transport_rhs(y, P, minv, s, c, dP):
+    """Eq (19), parallel transport of the rows of P, shape (k, N), along the flow, given
+    s, c = sin θ, cos θ of y (shared with the caller's other right-hand sides):
     ṗᵢ = −(Σ p_j u_j cos θ_j / B) sin θᵢ / mᵢ."""
     n = y.size // 2
     B = 0.0
     for j in range(n):
-        s = sin(y[j])
-        B += s * s * minv[j]
+        B += s[j] * s[j] * minv[j]
     for r in range(P.shape[0]):
         a = 0.0
         for j in range(n):
-            a += P[r, j] * y[n + j] * cos(y[j])
+            a += P[r, j] * y[n + j] * c[j]
         a /= B
         for i in range(n):
-            dP[r, i] = -a * sin(y[i]) * minv[i]
-    return B
+            dP[r, i] = -a * s[i] * minv[i]
 
 
 @njit(cache=True)
@@ -154,26 +153,38 @@ def project_state(y, m, speed):
 
 
 @njit(cache=True)
-def project_tangent(y, X, minv):
+def project_tangent_sc(y, X, minv, s, c):
     """Remove from each row of X, shape (k, 2N), its components that change the
     constraint F = Σcos θ and the tangency G = Σ u sin θ to first order, i.e.
-    make δF = −Σ sin θ θ̃ = 0 and δG = Σ(sin θ ũ + u cos θ θ̃) = 0 (M-orthogonally)."""
+    make δF = −Σ sin θ θ̃ = 0 and δG = Σ(sin θ ũ + u cos θ θ̃) = 0 (M-orthogonally),
+    given s, c = sin θ, cos θ of y."""
     n = y.size // 2
     B = 0.0
     for j in range(n):
-        s = sin(y[j])
-        B += s * s * minv[j]
+        B += s[j] * s[j] * minv[j]
     for r in range(X.shape[0]):
         dF = 0.0
         for j in range(n):
-            dF += sin(y[j]) * X[r, j]
+            dF += s[j] * X[r, j]
         for j in range(n):
-            X[r, j] -= dF / B * sin(y[j]) * minv[j]
+            X[r, j] -= dF / B * s[j] * minv[j]
         dG = 0.0
         for j in range(n):
-            dG += sin(y[j]) * X[r, n + j] + y[n + j] * cos(y[j]) * X[r, j]
+            dG += s[j] * X[r, n + j] + y[n + j] * c[j] * X[r, j]
         for j in range(n):
-            X[r, n + j] -= dG / B * sin(y[j]) * minv[j]
+            X[r, n + j] -= dG / B * s[j] * minv[j]
+
+
+@njit(cache=True)
+def project_tangent(y, X, minv):
+    """`project_tangent_sc` computing sin θ and cos θ itself (allocates two (N,) arrays)."""
+    n = y.size // 2
+    s = np.empty(n)
+    c = np.empty(n)
+    for j in range(n):
+        s[j] = sin(y[j])
+        c[j] = cos(y[j])
+    project_tangent_sc(y, X, minv, s, c)
 
 
 def invariants(theta, u, masses):

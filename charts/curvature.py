@@ -25,12 +25,12 @@ For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import sqrt
+from math import cos, sin, sqrt
 
 import numpy as np
 from numba import njit
 
-from .ambient import project_state, project_tangent
+from .ambient import project_state, project_tangent_sc, transport_rhs
 from .chartfuncs import compiled
 from .lyapunov import (_initial_state, _initial_vectors, _lyap_kernel, _rk4_step, _stage,
                        inner_weights, orthonormalize)
@@ -43,22 +43,6 @@ def gaussian_curvature_eq22(theta):
     """Eq (22): Gaussian curvature of the N = 3 surface (equal masses), theta (..., 3)."""
     theta = np.asarray(theta, dtype=float)
     return -(np.cos(theta) ** 2).sum(-1) / (2.0 * ((np.sin(theta) ** 2).sum(-1)) ** 2)
-
-
-@njit(cache=True)
-def _transport_stage(y, P, minv, s, c, dP):
-    """Eq (19) for the rows of P, shape (k, N), reusing s = sin θ, c = cos θ of y."""
-    n = y.size // 2
-    B = 0.0
-    for j in range(n):
-        B += s[j] * s[j] * minv[j]
-    for r in range(P.shape[0]):
-        a = 0.0
-        for j in range(n):
-            a += P[r, j] * y[n + j] * c[j]
-        a /= B
-        for i in range(n):
-            dP[r, i] = -a * s[i] * minv[i]
 
 
 @njit(cache=True)
@@ -88,7 +72,7 @@ def _rk4_frame_step(y, X, P, minv, h):
                 for i in range(n):
                     Pt[r, i] = P[r, i] + a * kP[st - 1, r, i]
         _stage(yt, Xt, minv, s, c, ky[st], kX[st])
-        _transport_stage(yt, Pt, minv, s, c, kP[st])
+        transport_rhs(yt, Pt, minv, s, c, kP[st])
     h6 = h / 6.0
     for i in range(d):
         y[i] += h6 * (ky[0, i] + 2.0 * ky[1, i] + 2.0 * ky[2, i] + ky[3, i])
@@ -157,7 +141,10 @@ def _curvature_kernel(y, X, minv, m, speed, dt, sample_every, w, project_every, 
             step += 1
             if step % project_every == 0:
                 project_state(y, m, speed)
-            project_tangent(y, X, minv)
+            for j in range(n):
+                s[j] = sin(y[j])
+                c[j] = cos(y[j])
+            project_tangent_sc(y, X, minv, s, c)
             orthonormalize(X, w, logs)
         uu = _frame(y, X, minv, m, Xj, P)
         Ys[smp] = y

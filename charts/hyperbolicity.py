@@ -35,7 +35,7 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-from .ambient import adjoint_rhs, flow_rhs, project_state, project_tangent
+from .ambient import adjoint_rhs, flow_rhs, project_state, project_tangent, project_tangent_sc
 from .lyapunov import _initial_state, _rk4_step, orthonormalize
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
@@ -67,7 +67,10 @@ def _forward_kernel(y, V, minv, m, speed, dt, nsteps, ck_every, ck, first_sample
         _rk4_step(y, V, minv, dt, s, c, ky, kX, yt, Xt)
         if step % 100 == 0:
             project_state(y, m, speed)
-        project_tangent(y, V, minv)
+        for j in range(n):
+            s[j] = sin(y[j])
+            c[j] = cos(y[j])
+        project_tangent_sc(y, V, minv, s, c)
         orthonormalize(V, w, logs)
         if step % ck_every == 0:
             ck[step // ck_every] = y

@@ -34,7 +34,7 @@ from math import cos, log, sin, sqrt
 import numpy as np
 from numba import njit
 
-from .ambient import project_state, project_tangent
+from .ambient import project_state, project_tangent, project_tangent_sc
 
 __all__ = ["LyapunovResult", "lyapunov_spectrum", "lyapunov_ensemble", "reconstruct_spectrum",
            "identify_nonphysical", "advance_tangent", "orthonormalize", "inner_weights"]
@@ -122,26 +122,6 @@ def orthonormalize(X, w, logs):
 _SHIFT_MAX = 0.05
 _S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
 _C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
-
-
-@njit(cache=True)
-def _project_tangent_sc(y, X, minv, s, c):
-    """`charts.ambient.project_tangent` given s, c = sin, cos of y[:N] (same arithmetic)."""
-    n = y.size // 2
-    B = 0.0
-    for j in range(n):
-        B += s[j] * s[j] * minv[j]
-    for r in range(X.shape[0]):
-        dF = 0.0
-        for j in range(n):
-            dF += s[j] * X[r, j]
-        for j in range(n):
-            X[r, j] -= dF / B * s[j] * minv[j]
-        dG = 0.0
-        for j in range(n):
-            dG += s[j] * X[r, n + j] + y[n + j] * c[j] * X[r, j]
-        for j in range(n):
-            X[r, n + j] -= dG / B * s[j] * minv[j]
 
 
 @njit(cache=True)
@@ -285,7 +265,7 @@ def _lyap_kernel(y, X, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
         if to_reorth == 0:
             to_reorth = reorth_every
             if restricted:
-                _project_tangent_sc(y_, X_, minv, s0, c0)
+                project_tangent_sc(y_, X_, minv, s0, c0)
             orthonormalize(X_, w, logsum)
         if rec_every > 0:
             to_rec -= 1
