@@ -10,15 +10,15 @@ mechanically coupled rotators".  The public surface, by concept:
   ``waveform`` and ``power_spectrum`` (figures 2-3);
 * declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``.
 """
-from .system import RotorSystem
-from .integrate import IntegrationError, IntegrationResult, integrate
-from .lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spectrum
-from .curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
-from .hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
-from .spectra import power_spectrum, waveform
-from .scene import Scene, SceneError, load_scene, parse_scene
-from .runner import RunError, plan_scene, run_scene
-from .sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep
+from .geometry.system import RotorSystem
+from .solvers.integrate import IntegrationError, IntegrationResult, integrate
+from .analyses.lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spectrum
+from .analyses.curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
+from .analyses.hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
+from .analyses.spectra import power_spectrum, waveform
+from .runs.scene import Scene, SceneError, load_scene, parse_scene
+from .runs.runner import RunError, plan_scene, run_scene
+from .runs.sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep
 
 __all__ = [
     "RotorSystem",

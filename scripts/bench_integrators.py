@@ -1,9 +1,9 @@
-"""Cost per unit of simulated time of charts.integrate, against scipy.integrate.solve_ivp.
+"""Cost per unit of simulated time of charts.solvers.integrate, against scipy.integrate.solve_ivp.
 
 For N = 3, 4, 5 (unit masses, unit speed, seed 0) every formulation × method is timed on
 the same geodesic over ``--t`` time units, in one run, and reported as seconds per unit time
 and as a ratio to ``solve_ivp(method="DOP853")`` at the same rtol/atol on eq (8).  The SciPy
-right-hand side calls the numba-compiled eq (8) kernel (``charts.ambient.flow_rhs``), so the
+right-hand side calls the numba-compiled eq (8) kernel (``charts.flows.ambient.flow_rhs``), so the
 ratio measures the integrator, not a slow Python right-hand side.  RK4 uses the paper's
 dt = 0.01.  Each entry is the best of ``--repeat`` runs after a warm-up (compilation).
 The last column is max|θ − θ_ref| at t = 20 (before the chaos erases the digits),
@@ -20,7 +20,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from charts import RotorSystem, integrate
-from charts.ambient import flow_rhs
+from charts.flows.ambient import flow_rhs
 
 
 def best_time(fn, repeat):

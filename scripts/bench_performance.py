@@ -198,7 +198,7 @@ def trajectory_errors(ode, t=20.0):
     from scipy.integrate import solve_ivp
 
     import charts
-    from charts.lyapunov import advance_tangent
+    from charts.analyses.lyapunov import advance_tangent
 
     th, u = fixed_state()
     y0 = np.concatenate([th, u])
@@ -219,7 +219,7 @@ def _warm(job):
 
 
 def _member(job):
-    from charts.lyapunov import _ensemble_member
+    from charts.analyses.lyapunov import _ensemble_member
 
     t0 = time.process_time()
     _ensemble_member(job)
@@ -366,7 +366,7 @@ def main(argv=None):
         sys.path.insert(0, str(ROOT / "scripts"))
         import generate
 
-        from charts.codegen import SHIPPED_N
+        from charts.codegen.emit import SHIPPED_N
 
         with tempfile.TemporaryDirectory() as tmp:
             t0 = time.perf_counter()

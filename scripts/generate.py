@@ -17,7 +17,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def write_all(outdir: Path, ns, verbose=True) -> dict[str, float]:
-    from charts.codegen import init_source, module_name, module_source
+    from charts.codegen.emit import init_source, module_name, module_source
 
     outdir.mkdir(parents=True, exist_ok=True)
     timings = {}
@@ -43,7 +43,7 @@ def compare(new: Path, old: Path) -> list[str]:
 
 
 def main(argv=None) -> int:
-    from charts.codegen import SHIPPED_N
+    from charts.codegen.emit import SHIPPED_N
 
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true",

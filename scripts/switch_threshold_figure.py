@@ -21,7 +21,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from charts import RotorSystem, integrate  # noqa: E402
-from charts.chart_flow import DEFAULT_TAU, chart_condition_bound  # noqa: E402
+from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound  # noqa: E402
 
 TAUS = [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99]
 SEEDS = range(8)

@@ -12,11 +12,11 @@ import time
 import numpy as np
 import pytest
 
-from charts.cli import bundled_scenes, main
-from charts.runner import run_scene
-from charts.scene import load_scene
+from charts.cli.main import bundled_scenes, main
+from charts.runs.runner import run_scene
+from charts.runs.scene import load_scene
 
-CHARTS = [sys.executable, "-m", "charts.cli"]
+CHARTS = [sys.executable, "-m", "charts.cli.main"]
 
 MALFORMED = {
     "unknown key": ("[system]\nn = 3\ncolour = 1\n[run]\nt_final = 1\n[effects.drift]\n",
@@ -102,10 +102,10 @@ def test_run_bundled_scene_writes_outputs(tmp_path, capsys):
 
 def test_reproduce_dispatch(capsys):
     try:
-        import charts.reproduce  # noqa: F401
+        import charts.runs.reproduce  # noqa: F401
     except ImportError:
         assert main(["reproduce"]) == 2
-        assert "charts.reproduce" in capsys.readouterr().err
+        assert "charts.runs.reproduce" in capsys.readouterr().err
     else:
         assert main(["reproduce", "--help"]) == 0
         assert "usage" in capsys.readouterr().out

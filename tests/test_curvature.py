@@ -3,9 +3,9 @@ route (b) the generated Riemann tensor, eq (22) for N = 3."""
 import numpy as np
 import pytest
 
-from charts.curvature import (curvature_along_trajectory, exact_curvature_matrix,
+from charts.analyses.curvature import (curvature_along_trajectory, exact_curvature_matrix,
                               gaussian_curvature_eq22)
-from charts.system import RotorSystem
+from charts.geometry.system import RotorSystem
 
 #: "coincidence up to the fifth significant digit" (paper, after eq 22): the typical
 #: (median) relative error must be below 5e-5.

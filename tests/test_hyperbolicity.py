@@ -2,8 +2,8 @@
 import numpy as np
 import pytest
 
-from charts.hyperbolicity import SMALL_ANGLE, hyperbolicity_angles
-from charts.system import RotorSystem
+from charts.analyses.hyperbolicity import SMALL_ANGLE, hyperbolicity_angles
+from charts.geometry.system import RotorSystem
 
 #: N = 3 is Anosov: over t = 2000 the measured minima are 0.27 (full) and 0.59
 #: (restricted); a hyperbolic flow must stay clear of 0 by a wide margin.

@@ -7,9 +7,9 @@ import pytest
 from numba import njit
 
 from charts import RotorSystem
-from charts.chart_flow import DEFAULT_TAU, chart_condition_bound, leave_chart, should_leave
-from charts.integrate import IntegrationResult, integrate
-from charts.rk import RHS_SIG, dense_eval, dop853_dense, dop853_step, rk4_step
+from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound, leave_chart, should_leave
+from charts.solvers.integrate import IntegrationResult, integrate
+from charts.solvers.rk import RHS_SIG, dense_eval, dop853_dense, dop853_step, rk4_step
 
 SYS3 = RotorSystem(3)
 TH3, U3 = SYS3.random_state(7)

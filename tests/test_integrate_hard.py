@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from charts import RotorSystem, integrate
-from charts.integrate import TOLERANCES, SingularPointError
+from charts.solvers.integrate import TOLERANCES, SingularPointError
 
 #: Named tolerances, each with its reason.
 TOL = {

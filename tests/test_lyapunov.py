@@ -3,11 +3,11 @@ paper's exponents with two-sided error bars, ± symmetry, zeros, inner product, 
 import numpy as np
 import pytest
 
-from charts.ambient import adjoint_rhs, flow_rhs, flow_tangent_rhs, project_tangent
-from charts.ambient import project_state
-from charts.lyapunov import (_initial_vectors, _lyap_kernel, _rk4_step, _stage, identify_nonphysical,
+from charts.flows.ambient import adjoint_rhs, flow_rhs, flow_tangent_rhs, project_tangent
+from charts.flows.ambient import project_state
+from charts.analyses.lyapunov import (_initial_vectors, _lyap_kernel, _rk4_step, _stage, identify_nonphysical,
                              inner_weights, lyapunov_spectrum, orthonormalize, reconstruct_spectrum)
-from charts.system import RotorSystem
+from charts.geometry.system import RotorSystem
 
 # --- tolerances, each with its reason -------------------------------------------------
 #: central differences with h = 1e-6 have truncation ~h² and cancellation ~1e-16/h.
@@ -152,7 +152,7 @@ def test_reorth_every_leaves_exponents_unchanged():
 def test_constraint_preserving_subspace_is_invariant():
     """δG is conserved and δF' = −δG, so vectors with δF = δG = 0 stay there (to RK4
     accuracy over t = 10, without any projection)."""
-    from charts.lyapunov import advance_tangent
+    from charts.analyses.lyapunov import advance_tangent
     system = RotorSystem(4, MASSES[4])
     theta, u = system.random_state(seed=3)
     y = np.concatenate([theta, u])
@@ -264,7 +264,7 @@ def test_rejects_bad_arguments():
 
 
 def test_ensemble_runs_independent_trajectories_in_parallel():
-    from charts.lyapunov import lyapunov_ensemble
+    from charts.analyses.lyapunov import lyapunov_ensemble
     system = RotorSystem(3)
     mean, se, members = lyapunov_ensemble(system, 2, 500.0, workers=2, n_batches=5)
     assert len(members) == 2 and mean.shape == (1,) and se.shape == (1,)

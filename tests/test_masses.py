@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from charts import RotorSystem, integrate, lyapunov_spectrum
-from charts.cli import main
-from charts.curvature import curvature_along_trajectory
+from charts.cli.main import main
+from charts.analyses.curvature import curvature_along_trajectory
 
 # --- tolerances, each with its reason -------------------------------------------------
 #: route (a) vs (b), relative to the largest |K_ij| at the point: an O(Δt²·|K|) second

@@ -15,7 +15,7 @@ import sys
 import numpy as np
 import pytest
 
-from charts.codegen import SHIPPED_N, module_name, module_source
+from charts.codegen.emit import SHIPPED_N, module_name, module_source
 
 N = 7
 assert N not in SHIPPED_N
@@ -30,7 +30,7 @@ def derived(tmp_path_factory):
     """Derive N = 7 in a fresh process with its own cache folder and hash seed."""
     cache = tmp_path_factory.mktemp("charts-cache")
     env = dict(os.environ, CHARTS_CACHE_DIR=str(cache), PYTHONHASHSEED="12345")
-    code = ("import sys; from charts.ondemand import load_or_generate; "
+    code = ("import sys; from charts.codegen.cache import load_or_generate; "
             f"m = load_or_generate({N}); print(m.__file__)")
     p = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
@@ -38,7 +38,7 @@ def derived(tmp_path_factory):
 
 
 def _load(cache, monkeypatch):
-    from charts.ondemand import load_or_generate
+    from charts.codegen.cache import load_or_generate
     monkeypatch.setenv("CHARTS_CACHE_DIR", str(cache))
     return load_or_generate(N)
 

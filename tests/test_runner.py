@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from charts import RotorSystem
-from charts.runner import RunError, plan_scene, run_scene
-from charts.scene import parse_scene
+from charts.runs.runner import RunError, plan_scene, run_scene
+from charts.runs.scene import parse_scene
 
 #: Same RK4 arithmetic through two kernels: rounding differences (~1e-15) amplified by the
 #: chaos, e^{λt} with λ ≈ 0.4 over t ≤ 6, stay far below this.
@@ -112,9 +112,9 @@ def test_chart_formulation_state_dimension_and_switch_log(tmp_path):
 
 # ----------------------------------------------------------------- agreement with direct routes
 def test_waveforms_match_charts_integrate(tmp_path):
-    """The fused kernel route and ``charts.integrate`` (ambient RK4, same dt) are the same
+    """The fused kernel route and ``charts.solvers.integrate`` (ambient RK4, same dt) are the same
     method: their samples agree to rounding amplified by the chaos."""
-    from charts.integrate import integrate
+    from charts.solvers.integrate import integrate
 
     sc = scene(n=5, effects={"waveforms": {"t_window": 5.0}}, t_final=5.0, sample_dt=0.1)
     run(sc, tmp_path)

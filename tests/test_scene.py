@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from charts.cli import bundled_scenes
-from charts.scene import EFFECTS, SCHEMA, SceneError, load_scene, parse_scene
+from charts.cli.main import bundled_scenes
+from charts.runs.scene import EFFECTS, SCHEMA, SceneError, load_scene, parse_scene
 
 DOCS = Path(__file__).resolve().parent.parent / "docs" / "scenes.md"
 

@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from charts.ambient import invariants
-from charts.spectra import power_spectrum, waveform
-from charts.system import RotorSystem
+from charts.flows.ambient import invariants
+from charts.analyses.spectra import power_spectrum, waveform
+from charts.geometry.system import RotorSystem
 
 #: RK4 dt = 0.01 with projection every 100 steps: drift of the invariants between
 #: projections is ~1e-8 (measured 2e-8).

@@ -11,7 +11,7 @@ import time
 
 import pytest
 
-from charts.sweep import (LOG, SUMMARY, TABLE, SweepError, load_sweep, parse_sweep,
+from charts.runs.sweep import (LOG, SUMMARY, TABLE, SweepError, load_sweep, parse_sweep,
                           point_columns, read_table, run_sweep, sweep_points)
 
 BASE = {"system": {"n": 4}, "integrator": {"dt": 0.01}, "run": {"t_final": 30.0, "t_transient": 5.0},
@@ -99,7 +99,7 @@ def test_grid_and_random_points():
 
 
 def test_bundled_sweeps_validate():
-    from charts.sweep import bundled_sweeps
+    from charts.runs.sweep import bundled_sweeps
     sweeps = bundled_sweeps()
     assert "masses-n4" in sweeps
     for path in sweeps.values():
@@ -136,7 +136,7 @@ def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
 
     # 2. the command line on a local cluster of 2 workers, killed after two points
     out = tmp_path / "cut"
-    proc = subprocess.Popen([sys.executable, "-m", "charts.cli", "sweep", str(spec), "-o",
+    proc = subprocess.Popen([sys.executable, "-m", "charts.cli.main", "sweep", str(spec), "-o",
                              str(out), "--workers", "2", "--quiet", "--no-plots"],
                             start_new_session=True, stdout=subprocess.DEVNULL,
                             stderr=subprocess.PIPE)
@@ -167,15 +167,15 @@ def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
 def test_a_point_with_non_finite_results_is_failed(monkeypatch):
     """The ambient kernel can run off the manifold without stopping (N = 4 near a singular
     point, no projection); the sweep must not record such numbers as a finished point."""
-    import charts.runner
-    from charts.sweep import evaluate_point
+    import charts.runs.runner
+    from charts.runs.sweep import evaluate_point
 
     def fake(scene, outdir, **kw):
         return {"results": {"lyapunov": {"exponents": [float("nan"), 0.2],
                                          "stderr": [0.01, 0.01]}},
                 "drift": {"constraint": float("nan")}, "progress": {"t_done": 30.0}}
 
-    monkeypatch.setattr(charts.runner, "run_scene", fake)
+    monkeypatch.setattr(charts.runs.runner, "run_scene", fake)
     raw = sweep_points(_sweep())[0].raw
     out = evaluate_point(raw)
     assert out["status"] == "failed" and "lambda_1" in out["error"] and "project" in out["error"]
@@ -183,7 +183,7 @@ def test_a_point_with_non_finite_results_is_failed(monkeypatch):
 
 def test_a_half_written_last_row_is_dropped_on_resume(tmp_path):
     """A kill during a write leaves a partial last line: it is not a finished point."""
-    from charts.sweep import _line, _prepare_table
+    from charts.runs.sweep import _line, _prepare_table
     pts = sweep_points(_sweep())
     cols = point_columns(pts)
     row = {c: "" for c in cols}

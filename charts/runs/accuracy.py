@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .system import RotorSystem
+from ..geometry.system import RotorSystem
 
 __all__ = ["Point", "trajectory_study", "lyapunov_study", "curvature_study", "run_study", "main"]
 
@@ -86,8 +86,8 @@ def trajectory_study(n=4, seed=0, T=20.0, dts=(0.02, 0.01), rtols=(1e-8, 1e-11),
     Returns (points, info) with info = {"reference_error": ..., "T": T, ...}."""
     from scipy.integrate import solve_ivp
 
-    from .ambient import flow_rhs
-    from .integrate import integrate
+    from ..flows.ambient import flow_rhs
+    from ..solvers.integrate import integrate
 
     system = RotorSystem(n)
     theta0, u0 = system.random_state(seed=seed, speed=1.0)
@@ -152,7 +152,7 @@ def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, 
     the members / √members.  The cost is the wall time of all members (run one after the
     other).  A single finite-T estimate differs from another by its statistical error
     whatever the step, so the step's bias only shows where it exceeds that error."""
-    from .lyapunov import lyapunov_spectrum
+    from ..analyses.lyapunov import lyapunov_spectrum
 
     system = RotorSystem(3)
     states = [system.random_state(seed=seed + i, speed=1.0) for i in range(members)]
@@ -194,7 +194,7 @@ def _untimed_warm(fn):
 def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
     """N = 3 numerical curvature (route a) against eq (22) at the same points; exact route
     (b) timed at the same points."""
-    from .curvature import (curvature_along_trajectory, exact_curvature_matrix,
+    from ..analyses.curvature import (curvature_along_trajectory, exact_curvature_matrix,
                             gaussian_curvature_eq22)
 
     system = RotorSystem(3)
@@ -338,7 +338,7 @@ def main(argv=None, quiet=False) -> int:
     if not 3 <= args.n <= 6:
         ap.error(f"--n {args.n}: expected 3..6")
     quiet = quiet or args.quiet
-    from .runner import atomic_write
+    from .io import atomic_write
     study = run_study("quick" if args.quick else "full", args.n, args.seed, progress=not quiet)
     out = args.output
     out.mkdir(parents=True, exist_ok=True)

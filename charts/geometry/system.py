@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .chartfuncs import chart_module
+from .kernels import chart_module
 
 __all__ = ["RotorSystem", "TOL"]
 

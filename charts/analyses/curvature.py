@@ -30,8 +30,8 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-from .ambient import project_state, project_tangent_sc, transport_rhs
-from .chartfuncs import compiled
+from ..flows.ambient import project_state, project_tangent_sc, transport_rhs
+from ..geometry.kernels import compiled
 from .lyapunov import (_initial_state, _initial_vectors, _lyap_kernel, _rk4_step, _stage,
                        inner_weights, orthonormalize)
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from .ambient import project_state
+from ..flows.ambient import project_state
 from .lyapunov import _initial_state, _rk4_step
 
 __all__ = ["Waveform", "waveform", "power_spectrum"]

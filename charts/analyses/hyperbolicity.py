@@ -35,7 +35,7 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-from .ambient import adjoint_rhs, flow_rhs, project_state, project_tangent, project_tangent_sc
+from ..flows.ambient import adjoint_rhs, flow_rhs, project_state, project_tangent, project_tangent_sc
 from .lyapunov import _initial_state, _rk4_step, orthonormalize
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
@@ -287,7 +287,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
 
 def _member(args):
     n, masses, seed, t_final, kwargs = args
-    from .system import RotorSystem
+    from ..geometry.system import RotorSystem
     system = RotorSystem(n, masses)
     theta0, u0 = system.random_state(seed=seed)
     return hyperbolicity_angles(system, theta0, u0, t_final, seed=seed, **kwargs)

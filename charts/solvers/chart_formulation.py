@@ -32,8 +32,8 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from .chartfuncs import compiled
-from .driver import DOMAIN_CAP_FRACTION, CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from ..geometry.kernels import compiled
+from .loop import DOMAIN_CAP_FRACTION, CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
 from .rk import RHS_SIG
 
 __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]

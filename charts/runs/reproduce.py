@@ -30,9 +30,10 @@ from pathlib import Path
 
 import numpy as np
 
+from .paper import PAPER_EXPONENTS
+
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
 
-PAPER_EXPONENTS = {3: [0.500], 4: [0.385, 0.230], 5: [0.298, 0.227, 0.121]}
 NS = (3, 4, 5)
 
 PRESETS = {
@@ -45,8 +46,8 @@ PRESETS = {
 
 # ------------------------------------------------------------------------ worker tasks
 def _task_lyapunov(n, seed, t, batches):
-    from .lyapunov import lyapunov_spectrum
-    from .system import RotorSystem
+    from ..analyses.lyapunov import lyapunov_spectrum
+    from ..geometry.system import RotorSystem
     s = RotorSystem(n)
     th, u = s.random_state(seed=seed)
     r = lyapunov_spectrum(s, th, u, t, n_batches=batches, seed=seed)
@@ -55,8 +56,8 @@ def _task_lyapunov(n, seed, t, batches):
 
 
 def _task_angles(n, seed, t):
-    from .hyperbolicity import hyperbolicity_angles
-    from .system import RotorSystem
+    from ..analyses.hyperbolicity import hyperbolicity_angles
+    from ..geometry.system import RotorSystem
     s = RotorSystem(n)
     th, u = s.random_state(seed=seed)
     r = hyperbolicity_angles(s, th, u, t, seed=seed)
@@ -65,8 +66,8 @@ def _task_angles(n, seed, t):
 
 
 def _task_curvature(n, seed, t):
-    from .curvature import curvature_along_trajectory, gaussian_curvature_eq22
-    from .system import RotorSystem
+    from ..analyses.curvature import curvature_along_trajectory, gaussian_curvature_eq22
+    from ..geometry.system import RotorSystem
     s = RotorSystem(n)
     th, u = s.random_state(seed=seed)
     r = curvature_along_trajectory(s, th, u, t)
@@ -83,8 +84,8 @@ def _task_curvature(n, seed, t):
 
 
 def _task_waveform(n, seed, t):
-    from .spectra import power_spectrum, waveform
-    from .system import RotorSystem
+    from ..analyses.spectra import power_spectrum, waveform
+    from ..geometry.system import RotorSystem
     s = RotorSystem(n)
     th, u = s.random_state(seed=seed)
     w = waveform(s, th, u, t, t_transient=10.0)
@@ -139,7 +140,7 @@ def _fmt_table(rows):
 
 
 def _report(out, preset, rows, curv, ang, elapsed, workers):
-    from .hyperbolicity import SMALL_ANGLE
+    from ..analyses.hyperbolicity import SMALL_ANGLE
     L = [f"# Reproduction of Kuznetsov, rotators with Σcos θ = 0 — preset `{preset}`", "",
          f"Command: `charts reproduce --{preset} -o {out}`; wall time {elapsed:.0f} s on "
          f"{workers} worker processes ({platform.processor() or platform.machine()}, "
@@ -198,9 +199,9 @@ def main(argv=None):
     workers = args.workers or os.cpu_count() or 1
     t0 = time.time()
     results = _run_all(cfg, workers, args.quiet)
-    from . import figures
-    from .hyperbolicity import angle_statistics
-    from .spectra import Waveform
+    from . import paper_figures
+    from ..analyses.hyperbolicity import angle_statistics
+    from ..analyses.spectra import Waveform
     rows = _lyapunov_table(results, cfg)
     curv = {n: results[("curv", n, 0)] for n in NS}
     ang, ang_raw = {}, {}

@@ -5,7 +5,7 @@ __all__ = ["SHIPPED_N", "GENERATED_FUNCTIONS", "module_name"]
 #: N for which ``generated/rotor_n{N}.py`` is committed.
 SHIPPED_N = (3, 4, 5, 6)
 
-#: Functions every generated module defines (see charts/codegen.py).
+#: Functions every generated module defines (see charts/codegen/emit.py).
 GENERATED_FUNCTIONS = (
     "metric", "metric_inverse", "christoffel", "riemann",
     "geodesic_acceleration", "transport_rate", "curvature_operator",

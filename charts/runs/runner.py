@@ -42,13 +42,13 @@ from pathlib import Path
 
 import numpy as np
 
+from .paper import PAPER_EXPONENTS
+from .io import atomic_write, json_default as _json_default, npz_bytes as _npz_bytes, versions as _versions
 from .scene import Scene, scene_to_dict
-from .system import RotorSystem
+from ..geometry.system import RotorSystem
 
-__all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS", "atomic_write"]
+__all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS"]
 
-#: Lyapunov exponents printed in section 2 (unit speed, equal masses), largest first.
-PAPER_EXPONENTS = {3: [0.500], 4: [0.385, 0.230], 5: [0.298, 0.227, 0.121]}
 CHECKPOINT = "checkpoint.npz"
 #: Steps between the stored trajectory checkpoints of the angles pass (its memory bound:
 #: one state per checkpoint; the backward pass re-integrates each segment from it).
@@ -155,40 +155,6 @@ def plan_scene(scene: Scene) -> Plan:
 
 
 # ------------------------------------------------------------------------------- I/O
-def atomic_write(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` via a temporary file in the same folder + os.replace."""
-    path = Path(path)
-    tmp = path.with_name(f".{path.name}.tmp{os.getpid()}")
-    with open(tmp, "wb") as fh:
-        fh.write(data)
-        fh.flush()
-        os.fsync(fh.fileno())
-    os.replace(tmp, path)
-
-
-def _npz_bytes(arrays: dict) -> bytes:
-    buf = io.BytesIO()
-    np.savez(buf, **arrays)
-    return buf.getvalue()
-
-
-def _json_default(o):
-    if isinstance(o, np.ndarray):
-        return o.tolist()
-    if isinstance(o, (np.floating, np.integer)):
-        return o.item()
-    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
-
-
-def _versions():
-    import numba
-    import scipy
-
-    from . import __version__
-    return {"charts": __version__, "python": platform.python_version(), "numpy": np.__version__,
-            "scipy": scipy.__version__, "numba": numba.__version__}
-
-
 def _scene_hash(scene: Scene) -> str:
     blob = json.dumps(scene_to_dict(scene), sort_keys=True).encode()
     return hashlib.sha256(blob).hexdigest()[:16]
@@ -228,7 +194,7 @@ class _RunState:
         n = self.system.n
         if k == 0:
             return np.empty((0, 2 * n))
-        from .lyapunov import _initial_vectors, inner_weights
+        from ..analyses.lyapunov import _initial_vectors, inner_weights
         inner = self.scene.effects.get("lyapunov", {}).get("inner_product", "theta")
         return _initial_vectors(self.system, self.y, k, self.scene.initial["seed"] or 0, True,
                                 inner_weights(self.system, inner))
@@ -288,7 +254,7 @@ class _KernelEngine:
     (eq 18), via ``charts.lyapunov.advance_tangent``; k = 0 integrates the state alone."""
 
     def __init__(self, st: _RunState):
-        from .lyapunov import advance_tangent
+        from ..analyses.lyapunov import advance_tangent
 
         self.st = st
         self.adv = advance_tangent
@@ -330,14 +296,14 @@ class _IntegrateEngine:
     at the end of a chunk is the one the next chunk starts in (no spurious switch)."""
 
     def __init__(self, st: _RunState):
-        from .integrate import integrate
+        from ..solvers.integrate import integrate
 
         self.st = st
         self.integrate = integrate
         self.sdt = st.scene.run["sample_dt"]
 
     def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
-        from .integrate import IntegrationError
+        from ..solvers.integrate import IntegrationError
 
         st, sc = self.st, self.st.scene
         n = st.system.n
@@ -439,7 +405,7 @@ def _invariants(st: _RunState):
 def _curvature_sample(st: _RunState, kdir: int, routes: str):
     """K matrices (route a numerical, route b exact) at the current point, in the frame of
     the velocity and the θ-parts of the first ``kdir`` Lyapunov vectors (eqs 19–21)."""
-    from .curvature import _frame, _rk4_frame_step, exact_curvature_matrix
+    from ..analyses.curvature import _frame, _rk4_frame_step, exact_curvature_matrix
 
     sys_, y = st.system, st.y
     n = sys_.n
@@ -571,7 +537,7 @@ def _pos_of(st, ends):
 def _angles_pass(st: _RunState):
     """The hyperbolicity test (section 4) from the initial state: forward tangent vectors,
     backward adjoint vectors along the re-integrated trajectory (``charts.hyperbolicity``)."""
-    from .hyperbolicity import hyperbolicity_angles
+    from ..analyses.hyperbolicity import hyperbolicity_angles
 
     sc, sys_ = st.scene, st.system
     a = sc.effects["angles"]
@@ -739,7 +705,7 @@ def _lyapunov_result(st, t_done, arrays):
 
 
 def _angles_result(st):
-    from .hyperbolicity import SMALL_ANGLE, angle_statistics
+    from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
 
     a = st.scene.effects["angles"]
     res = {"variant": a["variant"], "n_vectors": a["n_vectors"]}
@@ -776,7 +742,7 @@ def _curvature_result(st):
         res["max_abs_route_difference"] = float(np.abs(arr["curvature_numerical"]
                                                        - arr["curvature_exact"]).max())
     if n == 3 and np.allclose(st.system.masses, 1.0) and len(t):
-        from .curvature import gaussian_curvature_eq22
+        from ..analyses.curvature import gaussian_curvature_eq22
         Y = np.array(st.rec["curvature_y"])
         K22 = gaussian_curvature_eq22(Y[:, :3])
         arr["curvature_eq22"] = K22

@@ -20,8 +20,8 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from .ambient import project_state
-from .driver import CAP_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, Formulation
+from ..flows.ambient import project_state
+from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, Formulation
 from .rk import RHS_SIG
 
 __all__ = ["AmbientFlow"]

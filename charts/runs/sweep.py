@@ -590,8 +590,8 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
     _atomic_text(outdir / META, json.dumps(meta, indent=2, default=str) + "\n")
     info = {"points": len(points), "skipped": len(done), "computed": [], "failed": [],
             "lost": [], "run_id": run_id, "table": str(outdir / TABLE)}
-    from .chartfuncs import chart_module
-    from .codegen import SHIPPED_N
+    from ..geometry.kernels import chart_module
+    from ..codegen.emit import SHIPPED_N
     for n in sorted({p.scene.system["n"] for p in todo} - set(SHIPPED_N)):
         chart_module(n)     # derive a non-shipped N once, here (cost on stderr): local
                             # workers then read it from the on-disk cache

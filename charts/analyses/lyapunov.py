@@ -34,7 +34,7 @@ from math import cos, log, sin, sqrt
 import numpy as np
 from numba import njit
 
-from .ambient import project_state, project_tangent, project_tangent_sc
+from ..flows.ambient import project_state, project_tangent, project_tangent_sc
 
 __all__ = ["LyapunovResult", "lyapunov_spectrum", "lyapunov_ensemble", "reconstruct_spectrum",
            "identify_nonphysical", "advance_tangent", "orthonormalize", "inner_weights"]
@@ -468,7 +468,7 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
 
 def _ensemble_member(args):
     n, masses, seed, speed, t_final, kwargs = args
-    from .system import RotorSystem
+    from ..geometry.system import RotorSystem
     system = RotorSystem(n, masses)
     theta0, u0 = system.random_state(seed=seed, speed=speed)
     return lyapunov_spectrum(system, theta0, u0, t_final, seed=seed, **kwargs)

@@ -1,6 +1,6 @@
 """Generated geometry for N not shipped in ``generated/``: derived once, cached on disk.
 
-The same generator (``charts.codegen.module_source``) writes the same bytes that
+The same generator (``charts.codegen.emit.module_source``) writes the same bytes that
 ``scripts/generate.py`` would; the module is stored under the cache folder
 (``$CHARTS_CACHE_DIR``, default ``~/.cache/charts``) keyed by N, the SymPy version and a
 hash of the generator's source,
@@ -16,7 +16,7 @@ from pathlib import Path
 
 import sympy
 
-from .codegen import module_name, module_source
+from .emit import module_name, module_source
 
 __all__ = ["cache_dir", "load_or_generate"]
 
@@ -27,7 +27,7 @@ def _generator_digest() -> str:
 
     here = Path(__file__).resolve().parent
     h = hashlib.sha256()
-    for name in ("symbolic.py", "codegen.py", "layout.py"):
+    for name in ("symbolic.py", "emit.py", "names.py"):
         h.update((here / name).read_bytes())
     return h.hexdigest()[:12]
 

@@ -12,7 +12,7 @@ from types import SimpleNamespace
 
 import numba
 
-from .layout import GENERATED_FUNCTIONS, SHIPPED_N, module_name
+from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 
 __all__ = ["chart_module", "compiled"]
 
@@ -26,7 +26,7 @@ def chart_module(n: int):
         return importlib.import_module(f"charts.generated.{module_name(n)}")
     if not 3 <= n <= MAX_N:
         raise ValueError(f"N={n} is not supported: generated geometry exists for 3 <= N <= {MAX_N}")
-    from .ondemand import load_or_generate
+    from ..codegen.cache import load_or_generate
 
     return load_or_generate(n)
 

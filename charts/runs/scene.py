@@ -421,7 +421,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
 def _check_state(source, n, masses, theta, u):
     import numpy as np
 
-    from .system import RotorSystem
+    from ..geometry.system import RotorSystem
 
     sys_ = RotorSystem(n, masses)
     try:

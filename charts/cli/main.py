@@ -28,7 +28,7 @@ EXIT_INTERRUPTED = 130
 
 def _checkout_root() -> Path | None:
     """The source checkout holding this package (None for a plain installation)."""
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     return root if (root / "scripts" / "generate.py").exists() else None
 
 
@@ -61,8 +61,8 @@ def _fail(msg: str) -> int:
 
 # ------------------------------------------------------------------------------- run
 def _cmd_run(args) -> int:
-    from .runner import RunError, run_scene
-    from .scene import SceneError, load_scene
+    from ..runs.runner import RunError, run_scene
+    from ..runs.scene import SceneError, load_scene
 
     path = resolve_scene(args.scene)
     try:
@@ -129,7 +129,7 @@ def _cmd_scenes(args) -> int:
             return _fail(f"no bundled scene {args.name!r} (one of: {', '.join(scenes)})")
         print(scenes[args.name].read_text(), end="")
         return 0
-    from .scene import SceneError, load_scene
+    from ..runs.scene import SceneError, load_scene
     width = max(len(n) for n in scenes) if scenes else 0
     for name, path in scenes.items():
         try:
@@ -156,7 +156,7 @@ def _load_script(name: str):
 
 def _cmd_reproduce(args) -> int:
     try:
-        from .reproduce import main as reproduce_main
+        from ..runs.reproduce import main as reproduce_main
     except ImportError:
         return _fail("`charts reproduce` needs charts.reproduce (issue 4), which this "
                      "installation does not have yet")
@@ -177,7 +177,7 @@ def _cmd_generate(args) -> int:
 def _generate_installed(check: bool) -> int:
     """Without a checkout: compare (or rewrite) the installed ``charts.generated``."""
     import charts.generated as gen
-    from .codegen import SHIPPED_N, init_source, module_name, module_source
+    from ..codegen.emit import SHIPPED_N, init_source, module_name, module_source
 
     folder = Path(gen.__file__).resolve().parent
     stale = []
@@ -209,13 +209,13 @@ def _cmd_bench(args) -> int:
             return _fail(f"`charts bench {args.what}` runs scripts/{name}.py ({issue}) "
                          "from a source checkout; it was not found")
         return int(script.main(args.rest) or 0)
-    from .accuracy import main as accuracy_main
+    from ..runs.accuracy import main as accuracy_main
     return int(accuracy_main(args.rest, quiet=args.quiet) or 0)
 
 
 # ------------------------------------------------------------------------------- parser
 def build_parser() -> argparse.ArgumentParser:
-    from . import __version__
+    from .. import __version__
 
     ap = argparse.ArgumentParser(
         prog="charts", description="Geodesic flows of coupled rotators (Kuznetsov): run scenes, "
@@ -270,7 +270,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="options of the benchmark (e.g. `charts bench accuracy --help`)")
     p.set_defaults(func=_cmd_bench)
 
-    from .sweep import add_parser as add_sweep_parser   # `charts sweep` (issue 7)
+    from ..runs.sweep import add_parser as add_sweep_parser   # `charts sweep` (issue 7)
     add_sweep_parser(sub)
     return ap
 

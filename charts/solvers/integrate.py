@@ -19,10 +19,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import driver as D
-from .ambient_flow import AmbientFlow
-from .chart_flow import DEFAULT_TAU, ChartFlow
-from .system import RotorSystem
+from . import loop as D
+from .ambient_formulation import AmbientFlow
+from .chart_formulation import DEFAULT_TAU, ChartFlow
+from ..geometry.system import RotorSystem
 
 __all__ = ["integrate", "IntegrationResult", "IntegrationError", "SingularPointError",
            "ChartDomainError", "TOLERANCES"]
