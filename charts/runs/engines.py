@@ -1,0 +1,128 @@
+"""The engines of the chunked main pass of a scene run.
+
+:class:`KernelEngine` — ambient RK4 with tangent vectors (the fused kernel);
+:class:`IntegrateEngine` — ``charts.integrate`` (chart formulation or adaptive method).
+Both advance a :class:`~charts.runs.run_state.RunState` in place chunk by chunk and call the
+recorders at every recording position.  :func:`chunk_bounds` cuts the run into its
+deterministic chunks.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .plan import Plan, ticks
+from .run_state import RunError, RunState
+from .scene import Scene
+
+__all__ = ["KernelEngine", "IntegrateEngine", "chunk_bounds", "record_interval"]
+
+
+def chunk_bounds(scene: Scene, plan: Plan) -> list[int]:
+    """Chunk ends in units (steps for the kernel engine, samples otherwise) after the
+    transient: every checkpoint_every, plus the Lyapunov batch boundaries."""
+    run = scene.run
+    unit = scene.integrator["dt"] if plan.engine == "kernel" else run["sample_dt"]
+    total = ticks(run["t_final"], unit)
+    every = ticks(run["checkpoint_every"], unit)
+    ends = set(range(every, total, every)) | {total}
+    if "lyapunov" in scene.effects:
+        nb = scene.effects["lyapunov"]["n_batches"]
+        ends |= {int(round(total * (b + 1) / nb)) for b in range(nb)}
+    return sorted(e for e in ends if 0 < e <= total)
+
+
+def record_interval(plan: Plan) -> int:
+    """The stepping unit of the kernel engine: gcd of every recording interval."""
+    g = 0
+    for v in plan.every.values():
+        g = math.gcd(g, v)
+    return g
+
+
+class KernelEngine:
+    """Ambient RK4 of eq (8) with k tangent vectors (eq 17) re-orthonormalised every step
+    (eq 18), via ``charts.lyapunov.advance_tangent``; k = 0 integrates the state alone."""
+
+    def __init__(self, st: RunState):
+        from ..analyses.lyapunov import advance_tangent
+
+        self.st = st
+        self.adv = advance_tangent
+        sc = st.scene
+        self.dt = sc.integrator["dt"]
+        self.inner = sc.effects.get("lyapunov", {}).get("inner_product", "theta")
+        self.project_every = 1 if sc.integrator["project"] else 1 << 40
+        self.step_unit = record_interval(st.plan) or None
+
+    def advance(self, nsteps: int):
+        st = self.st
+        st.logsum = self.adv(st.system, st.y, st.X, nsteps * self.dt, dt=self.dt, inner=self.inner,
+                             space="restricted", reorth_every=1,
+                             project_every=self.project_every, logsum=st.logsum)
+        st.rhs += 4 * nsteps
+        st.steps += nsteps
+        if not (np.all(np.isfinite(st.y)) and np.all(np.isfinite(st.X)) and np.all(np.isfinite(st.logsum))):
+            raise RunError(f"the state became non-finite within {nsteps} steps before step {st.steps}: "
+                           "the trajectory came too close to a singular point of the manifold "
+                           "(all sin θ ≈ 0) and left the constraint; set [integrator] project = true "
+                           "or a smaller dt")
+
+    def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
+        """Advance from unit ``start`` to ``end``, stopping at every multiple of the
+        recording unit counted from ``origin`` (the end of the transient) to record."""
+        unit = self.step_unit if (self.step_unit and recorders) else (end - start)
+        pos = start
+        while pos < end:
+            nxt = min(end, origin + ((pos - origin) // unit + 1) * unit)
+            self.advance(nxt - pos)
+            pos = nxt
+            for rec in recorders:
+                rec(pos)
+
+
+class IntegrateEngine:
+    """``charts.integrate`` for the chart formulation and adaptive methods,
+    called once per chunk with output at the sample times of that chunk.  The chart in use
+    at the end of a chunk is the one the next chunk starts in (no spurious switch)."""
+
+    def __init__(self, st: RunState):
+        from ..solvers.integrate import integrate
+
+        self.st = st
+        self.integrate = integrate
+        self.sdt = st.scene.run["sample_dt"]
+
+    def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
+        from ..solvers.integrate import IntegrationError
+
+        st, sc = self.st, self.st.scene
+        n = st.system.n
+        integ = sc.integrator
+        m = end - start
+        kw = dict(formulation=integ["formulation"], method=integ["method"],
+                  project=integ["project"], t_eval=np.arange(1, m + 1) * self.sdt)
+        if integ["method"] == "rk4":
+            kw["dt"] = integ["dt"]
+        else:
+            kw.update(rtol=integ["rtol"], atol=integ["atol"])
+        if integ["formulation"] == "chart" and st.chart >= 0:
+            kw["chart"] = st.chart
+        t_start = start * self.sdt
+        try:
+            res = self.integrate(st.system, st.y[:n], st.y[n:], m * self.sdt, **kw)
+        except IntegrationError as exc:
+            raise RunError(f"the integration failed in the chunk starting at t = {t_start:g} "
+                           f"(the times below count from that chunk's start): {exc}") from None
+        except ValueError as exc:  # e.g. the state reached a singular point exactly
+            raise RunError(f"the integration could not continue at t = {t_start:g}: {exc}") from None
+        st.rhs += int(res.n_rhs)
+        st.steps += int(res.n_steps)
+        for t_sw, a, b in res.switches:
+            st.rec["switches"].append([t_start + float(t_sw), float(a), float(b)])
+            st.chart = int(b)
+        for i in range(m):
+            st.y = np.concatenate([res.theta[i], res.u[i]])
+            for rec in recorders:
+                rec(start + i + 1)

@@ -1,0 +1,101 @@
+"""What a scene run records along the way: the recorders called by the engines at every
+recording position (waveforms, spectrum rotor, invariant drift, curvature samples), the
+invariants of the run and the curvature matrices at one point."""
+from __future__ import annotations
+
+import numpy as np
+
+from .run_state import RunState
+
+__all__ = ["make_recorders", "invariants", "curvature_sample"]
+
+
+def make_recorders(st: RunState, transient_units: int):
+    """Functions called with the absolute unit position after each advance."""
+    sc, plan = st.scene, st.plan
+    n = st.system.n
+    eff = sc.effects
+    unit = sc.integrator["dt"] if plan.engine == "kernel" else sc.run["sample_dt"]
+    recs = []
+
+    def rel(pos):
+        return pos - transient_units
+
+    if "waveforms" in eff:
+        rotors = np.array(eff["waveforms"]["rotors"])
+        every, limit = plan.every["waveforms"], plan.stored["waveforms"]
+
+        def rec_wave(pos, every=every, limit=limit, rotors=rotors):
+            r = rel(pos)
+            if r > 0 and r % every == 0 and r // every <= limit:
+                st.rec_t["waveforms"].append(r * unit)
+                st.rec["waveforms"].append(st.y[n + rotors])
+        recs.append(rec_wave)
+    if "spectrum" in eff:
+        rot, every = eff["spectrum"]["rotor"], plan.every["spectrum"]
+
+        def rec_spec(pos, every=every, rot=rot):
+            r = rel(pos)
+            if r > 0 and r % every == 0:
+                st.rec["spectrum"].append(st.y[n + rot])
+        recs.append(rec_spec)
+    if "drift" in eff:
+        every = plan.every["drift"]
+
+        def rec_drift(pos, every=every):
+            r = rel(pos)
+            if r > 0 and r % every == 0:
+                st.rec_t["drift"].append(r * unit)
+                st.rec["drift"].append(invariants(st))
+        recs.append(rec_drift)
+    if "curvature" in eff:
+        c = eff["curvature"]
+        every, kdir = plan.every["curvature"], c["n_directions"]
+        routes = c["route"]
+
+        def rec_curv(pos, every=every, kdir=kdir, routes=routes):
+            r = rel(pos)
+            if r > 0 and r % every == 0:
+                Kn, Ke = curvature_sample(st, kdir, routes)
+                st.rec_t["curvature"].append(r * unit)
+                st.rec["curvature_y"].append(st.y.copy())
+                if Kn is not None:
+                    st.rec["curvature_num"].append(np.diagonal(Kn).copy())
+                if Ke is not None:
+                    st.rec["curvature_exact"].append(np.diagonal(Ke).copy())
+        recs.append(rec_curv)
+    return recs
+
+
+def invariants(st: RunState):
+    n = st.system.n
+    theta, u = st.y[:n], st.y[n:]
+    E0 = 0.5 * st.speed ** 2
+    return [float(np.cos(theta).sum()), float(u @ np.sin(theta)),
+            float(st.system.energy(u) / E0 - 1.0)]
+
+
+def curvature_sample(st: RunState, kdir: int, routes: str):
+    """K matrices (route a numerical, route b exact) at the current point, in the frame of
+    the velocity and the θ-parts of the first ``kdir`` Lyapunov vectors (eqs 19–21)."""
+    # TODO(lead): public frame functions in charts.analyses.curvature
+    from ..analyses.curvature import _frame, _rk4_frame_step, exact_curvature_matrix
+
+    sys_, y = st.system, st.y
+    n = sys_.n
+    Xj = np.empty((kdir, 2 * n))
+    P = np.empty((kdir + 1, n))
+    uu = _frame(y, np.ascontiguousarray(st.X[:kdir]), sys_.minv, sys_.masses, Xj, P)
+    Kn = Ke = None
+    if routes in ("numerical", "both"):
+        dt = st.scene.integrator["dt"]
+        cs = np.zeros((kdir, kdir))
+        for sign in (1.0, -1.0):
+            y2, X2, P2 = y.copy(), Xj.copy(), P.copy()
+            _rk4_frame_step(y2, X2, P2, sys_.minv, sign * dt)
+            cs += (P2[1:] * sys_.masses) @ X2[:, :n].T
+        Kn = -(cs - 2.0 * np.eye(kdir)) / (dt * dt * uu)
+        st.rhs_frame += 8
+    if routes in ("exact", "both"):
+        Ke = exact_curvature_matrix(sys_, y[:n], P)
+    return Kn, Ke

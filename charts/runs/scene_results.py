@@ -1,0 +1,243 @@
+"""The results of a scene run, from its :class:`~charts.runs.run_state.RunState`, complete or
+partial: ``result.json`` (status, scene, versions, progress, timings, computation, states,
+drift, the per-effect results), ``arrays.npz`` and the figures, each written atomically."""
+from __future__ import annotations
+
+import json
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..analyses.curvature import gaussian_curvature_eq22
+from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
+from ..analyses.spectra import power_spectrum
+from . import scene_figures as figs
+from .io import atomic_write, json_default, npz_bytes, versions
+from .paper import PAPER_EXPONENTS
+from .recorders import invariants
+from .run_state import CHECKPOINT, RunState, units_done
+from .scene import scene_to_dict
+
+__all__ = ["finalize", "write_result", "waveforms_result", "spectrum_result", "drift_result",
+           "lyapunov_result", "curvature_result", "angles_result", "switches_result"]
+
+
+class _Outputs:
+    """What the result builders collect: arrays (arrays.npz), scalar results
+    (result.json), PNG bytes by file name, and the stored (rows, values) per effect."""
+
+    def __init__(self):
+        self.arrays, self.results, self.figures, self.stored = {}, {}, {}, {}
+
+
+def write_result(outdir: Path, result: dict) -> None:
+    """``result.json``, atomically."""
+    atomic_write(outdir / "result.json", json.dumps(result, indent=2, default=json_default).encode())
+
+
+def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
+    """Build the result of the run so far and write every output file; return the result."""
+    sc, plan, system = st.scene, st.plan, st.system
+    n = system.n
+    eff = sc.effects
+    t_done = max(0, units_done(st, ends) - transient) * unit
+    if not plan.main_pass:
+        t_done = sc.run["t_final"] if st.rec["angles"] else 0.0
+    out = _Outputs()
+    for name, build in (("waveforms", waveforms_result), ("spectrum", spectrum_result),
+                        ("drift", drift_result), ("lyapunov", lyapunov_result),
+                        ("curvature", curvature_result), ("angles", angles_result),
+                        ("switches", switches_result)):
+        if name in eff:
+            build(st, out, t_done=t_done, status=status)
+    comp = plan.as_dict()
+    comp["stored_samples"] = {k: v[0] for k, v in out.stored.items()}
+    comp["stored_values"] = int(sum(v[1] for v in out.stored.values()))
+    comp["rhs_evaluations"] = st.rhs
+    comp["steps"] = st.steps
+    comp["frame_rhs_evaluations"] = st.rhs_frame
+    comp["tangent_vector_evaluations"] = st.rhs * plan.tangent_vectors
+    files = ["result.json", CHECKPOINT] + (["arrays.npz"] if out.arrays else []) + sorted(out.figures)
+    result = {
+        "status": status,
+        "scene": scene_to_dict(sc),
+        "source": sc.source,
+        "versions": versions(),
+        "progress": {"t_done": t_done, "t_final": sc.run["t_final"],
+                     "t_transient": sc.run["t_transient"],
+                     "chunks_done": st.chunk_index, "chunks": len(ends)},
+        "timings": {"integration_wall_s": round(st.elapsed, 4)},
+        "computation": comp,
+        "initial_state": {"theta": st.y0[:n].tolist(), "u": st.y0[n:].tolist()},
+        "final_state": {"theta": st.y[:n].tolist(), "u": st.y[n:].tolist()},
+        "drift": _drift_summary(st, out),
+        "results": out.results,
+        "files": files,
+    }
+    if status == "interrupted":
+        result["resume"] = f"charts run {sc.source} -o {outdir} --resume"
+    t0 = time.perf_counter()
+    for name, png in out.figures.items():
+        atomic_write(outdir / name, png)
+    if out.arrays:
+        atomic_write(outdir / "arrays.npz", npz_bytes(out.arrays))
+    result["timings"]["output_wall_s"] = round(time.perf_counter() - t0, 4)
+    write_result(outdir, result)
+    return result
+
+
+def _drift_summary(st, out):
+    """The invariants at the final state, and their largest recorded drift."""
+    inv = invariants(st)
+    drift = {"constraint": inv[0], "tangency": inv[1], "energy_relative": inv[2]}
+    if out.stored.get("drift", (0,))[0]:
+        D = np.array(st.rec["drift"])
+        drift.update(max_abs_constraint=float(np.abs(D[:, 0]).max()),
+                     max_abs_tangency=float(np.abs(D[:, 1]).max()),
+                     max_abs_energy_relative=float(np.abs(D[:, 2]).max()))
+    return drift
+
+
+# ------------------------------------------------------------------------ per-effect results
+def waveforms_result(st, out, **_):
+    sc = st.scene
+    w = sc.effects["waveforms"]
+    t = np.array(st.rec_t["waveforms"])
+    U = np.array(st.rec["waveforms"]).reshape(len(t), len(w["rotors"]))
+    out.arrays.update(waveforms_t=t + sc.run["t_transient"], waveforms_u=U)
+    out.stored["waveforms"] = (len(t), int(U.size))
+    out.results["waveforms"] = {"rotors": w["rotors"], "samples": len(t),
+                                "rms": np.sqrt((U ** 2).mean(axis=0)).tolist() if len(t) else []}
+    if len(t):
+        out.figures["waveforms.png"] = figs.waveforms_png(sc, out.arrays["waveforms_t"], U)
+
+
+def spectrum_result(st, out, *, status, **_):
+    """Welch spectrum of the recorded rotor (``charts.power_spectrum``: angular frequency ω,
+    density per unit ω), segments of ``nperseg`` samples."""
+    sc = st.scene
+    x = np.array(st.rec["spectrum"])
+    out.stored["spectrum"] = (int(x.size), int(x.size))
+    nper = sc.effects["spectrum"]["nperseg"]
+    segment_time = nper * sc.run["sample_dt"]
+    res = {"rotor": sc.effects["spectrum"]["rotor"], "samples": int(x.size)}
+    try:
+        omega, density = power_spectrum(x, sc.run["sample_dt"], segment_time=segment_time)
+    except ValueError:     # fewer than 4 segments fit in the samples recorded
+        need = f"at least 4 × nperseg = {4 * nper}"
+        res["note"] = (f"only {x.size} samples so far ({need}): no spectrum yet"
+                       if status != "complete" else
+                       f"{x.size} samples are too few for segments of nperseg = {nper} ({need}): "
+                       "no spectrum; lengthen [run] t_final or lower nperseg")
+    else:
+        out.arrays.update(spectrum_omega=omega, spectrum_psd=density)
+        res.update(segments=int(2 * x.size // nper - 1),
+                   peak_frequency=float(omega[np.argmax(density)]), variance=float(x.var()))
+        out.figures["spectrum.png"] = figs.spectrum_png(sc, omega, density, segment_time)
+    out.results["spectrum"] = res
+
+
+def drift_result(st, out, **_):
+    sc = st.scene
+    t = np.array(st.rec_t["drift"])
+    D = np.array(st.rec["drift"]).reshape(len(t), 3)
+    out.arrays.update(drift_t=t + sc.run["t_transient"], drift_constraint=D[:, 0],
+                      drift_tangency=D[:, 1], drift_energy=D[:, 2])
+    out.stored["drift"] = (len(t), int(D.size))
+    if len(t):
+        out.figures["drift.png"] = figs.drift_png(sc, out.arrays["drift_t"], D)
+
+
+def lyapunov_result(st, out, *, t_done, **_):
+    ly = st.scene.effects["lyapunov"]
+    n = st.system.n
+    res = {"n_exponents": ly["n_exponents"], "inner_product": ly["inner_product"],
+           "t_averaged": t_done}
+    out.results["lyapunov"] = res
+    marks = st.lyap_marks
+    if not marks:
+        res["note"] = "no Lyapunov batch finished yet"
+        return
+    ticks = np.array([m[0] for m in marks], dtype=float)
+    L = np.array([m[1] for m in marks])[:, : ly["n_exponents"]]
+    unit = st.scene.integrator["dt"]
+    T = ticks * unit
+    exps = L[-1] / T[-1]
+    res["exponents"] = exps.tolist()
+    if len(marks) >= 2:
+        prev = np.vstack([np.zeros((1, L.shape[1])), L[:-1]])
+        Tp = np.concatenate([[0.0], T[:-1]])
+        batches = (L - prev) / (T - Tp)[:, None]
+        res["stderr"] = (batches.std(axis=0, ddof=1) / np.sqrt(len(batches))).tolist()
+        res["batches"] = len(batches)
+    equal = np.allclose(st.system.masses, 1.0)
+    if n in PAPER_EXPONENTS and equal:
+        paper = np.array(PAPER_EXPONENTS[n]) * st.speed
+        res["paper"] = [round(float(p), 12) for p in paper[: ly["n_exponents"]]]
+        res["paper_note"] = "section 2, unit speed, equal masses; scaled by the speed"
+    out.arrays.update(lyapunov_history_t=T, lyapunov_history=L / T[:, None])
+    out.figures["lyapunov.png"] = figs.lyapunov_png(st.scene, T, L / T[:, None], res)
+
+
+def angles_result(st, out, **_):
+    sc = st.scene
+    a = sc.effects["angles"]
+    res = {"variant": a["variant"], "n_vectors": a["n_vectors"]}
+    out.results["angles"] = res
+    if not st.rec["angles"]:
+        res["note"] = "the angles pass has not run yet"
+        return
+    A = np.array(st.rec["angles"])
+    arr = {"angles_t": A[:, 0]}
+    for j, variant in ((1, "full"), (2, "restricted")):
+        if a["variant"] in (variant, "both"):
+            arr[f"angles_{variant}"] = A[:, j]
+            res[variant] = angle_statistics(A[:, j], SMALL_ANGLE)
+    fwd, adj = st.rec["angles_exponents"]
+    res["forward_exponents"] = list(fwd)
+    res["adjoint_exponents"] = list(adj)
+    out.arrays.update(arr)
+    out.stored["angles"] = (len(arr["angles_t"]), int(sum(v.size for v in arr.values())))
+    out.figures["angles.png"] = figs.angles_png(sc, arr)
+
+
+def curvature_result(st, out, **_):
+    sc = st.scene
+    c = sc.effects["curvature"]
+    n = st.system.n
+    t = np.array(st.rec_t["curvature"])
+    arr = {"curvature_t": t + sc.run["t_transient"]}
+    res = {"route": c["route"], "samples": len(t)}
+    for route, key in (("numerical", "curvature_num"), ("exact", "curvature_exact")):
+        if c["route"] in (route, "both"):
+            K = np.array(st.rec[key]).reshape(len(t), c["n_directions"])
+            arr[f"curvature_{route}"] = K
+            if len(t):
+                res[route] = {"mean": K.mean(axis=0).tolist(), "min": K.min(axis=0).tolist(),
+                              "max": K.max(axis=0).tolist(),
+                              "fraction_positive": (K > 0).mean(axis=0).tolist()}
+    if c["route"] == "both" and len(t):
+        res["max_abs_route_difference"] = float(np.abs(arr["curvature_numerical"]
+                                                       - arr["curvature_exact"]).max())
+    if n == 3 and np.allclose(st.system.masses, 1.0) and len(t):
+        Y = np.array(st.rec["curvature_y"])
+        K22 = gaussian_curvature_eq22(Y[:, :3])
+        arr["curvature_eq22"] = K22
+        for route in ("numerical", "exact"):
+            if f"curvature_{route}" in arr:
+                err = np.abs(arr[f"curvature_{route}"][:, 0] - K22)
+                # relative errors blow up near the zero-curvature points: report both
+                res[route]["max_abs_error_vs_eq22"] = float(err.max())
+                res[route]["median_rel_error_vs_eq22"] = float(np.median(err / np.abs(K22)))
+    out.results["curvature"] = res
+    out.arrays.update(arr)
+    out.stored["curvature"] = (len(t), int(sum(v.size for v in arr.values())))
+    if len(t):
+        out.figures["curvature.png"] = figs.curvature_png(sc, arr)
+
+
+def switches_result(st, out, *, t_done, **_):
+    S = np.array(st.rec["switches"]).reshape(-1, 3)
+    out.arrays["switches"] = S
+    out.results["switches"] = {"count": len(S), "rate": len(S) / t_done if t_done else None}
