@@ -262,11 +262,13 @@ def table(study: dict) -> str:
 
 
 def figure(study: dict, path: Path) -> None:
-    from matplotlib.figure import Figure
+    from matplotlib.ticker import FormatStrFormatter, MaxNLocator, NullFormatter
+
+    from .plotting import new_figure, save_png
 
     pts = study["points"]
-    fig = Figure(figsize=(15, 4.6))
-    axes = fig.subplots(1, 3)
+    fig, axes = new_figure(1, 3, figsize=(15, 6.2))
+    below = dict(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2)   # off the data
     floor = 1e-16
     ax = axes[0]
     methods = sorted({q["method"] for q in pts if q["study"] == "trajectory"})
@@ -281,7 +283,7 @@ def figure(study: dict, path: Path) -> None:
     ax.set_xlabel("wall time (s)")
     ax.set_ylabel(f"max |state − reference| at t = {study['trajectory']['T']:g}")
     ax.set_title(f"(a) trajectory, N = {study['trajectory']['n']}")
-    ax.legend(fontsize=6.5)
+    ax.legend(fontsize=6.5, **below)
     ax = axes[1]
     qs = [q for q in pts if q["study"] == "lyapunov"]
     L = study["lyapunov"]
@@ -299,7 +301,7 @@ def figure(study: dict, path: Path) -> None:
     ax.set_xlabel(f"wall time (s), {L['members']} trajectories × T = {L['T']:g}")
     ax.set_ylabel(f"λ̄₁ − λ̄₁(dt = {L['reference_dt']:g}) = {L['lambda1_reference']:.4f}")
     ax.set_title("(b) leading Lyapunov exponent, N = 3")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, **below)
     ax = axes[2]
     qs = [q for q in pts if q["study"] == "curvature" and "numerical" in q["method"]]
     ax.loglog([q["wall"] for q in qs], [q["error"] for q in qs], "-o", ms=4,
@@ -313,12 +315,15 @@ def figure(study: dict, path: Path) -> None:
     ax.set_xlabel("wall time (s)")
     ax.set_ylabel("median |K − K_eq22| / |K_eq22|")
     ax.set_title("(c) N = 3 curvature vs eq (22)")
-    ax.legend(fontsize=7)
-    from matplotlib.ticker import NullFormatter
-    for ax in axes:
-        ax.xaxis.set_minor_formatter(NullFormatter())
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    ax.legend(fontsize=7, **below)
+    for ax in axes:   # over a decade: powers of 10 only; narrower than 4x: a few plain labels
+        lo, hi = ax.get_xlim()
+        if hi < 4 * lo:
+            ax.xaxis.set_major_locator(MaxNLocator(4))
+            ax.xaxis.set_major_formatter(FormatStrFormatter("%.2g"))
+        if hi > 10 * lo or hi < 4 * lo:
+            ax.xaxis.set_minor_formatter(NullFormatter())
+    save_png(fig, path)
 
 
 def main(argv=None, quiet=False) -> int:
