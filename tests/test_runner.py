@@ -82,6 +82,20 @@ def test_each_effect_alone_and_combined(tmp_path, effects, expect):
     assert set(res["results"]) == set(effects) - {"drift"}
 
 
+def test_spectrum_in_angular_frequency_and_a_note_when_too_short(tmp_path):
+    """The scene spectrum is ``charts.power_spectrum``'s: ω in rad per unit time, density
+    per unit ω, segments of nperseg samples; fewer than 4 segments give a note."""
+    res = run(scene(n=3, effects={"spectrum": {"nperseg": 16}}, t_final=8.0), tmp_path)
+    spec = res["results"]["spectrum"]
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        omega, psd = a["spectrum_omega"], a["spectrum_psd"]
+    np.testing.assert_allclose(omega[1], 2 * np.pi / (16 * 0.05))
+    assert spec["peak_frequency"] == omega[np.argmax(psd)]
+    short = run(scene(n=3, effects={"spectrum": {"nperseg": 16}}), tmp_path, "short")
+    assert "4 × nperseg = 64" in short["results"]["spectrum"]["note"]
+    assert "spectrum.png" not in short["files"]
+
+
 def test_angles_only_skips_the_main_pass(tmp_path):
     sc = scene(n=4, effects={"angles": {"sample_every": 0.5}}, t_final=2.0, t_transient=1.0)
     res = run(sc, tmp_path)
