@@ -183,16 +183,16 @@ def test_a_point_with_non_finite_results_is_failed(monkeypatch):
 
 def test_a_half_written_last_row_is_dropped_on_resume(tmp_path):
     """A kill during a write leaves a partial last line: it is not a finished point."""
-    from charts.runs.sweep import _line, _prepare_table
+    from charts.runs.sweep import csv_line, prepare_table
     pts = sweep_points(_sweep())
     cols = point_columns(pts)
     row = {c: "" for c in cols}
     row.update(index="0", point_id=pts[0].point_id, status="complete")
-    text = _line(cols) + _line([row[c] for c in cols])
+    text = csv_line(cols) + csv_line([row[c] for c in cols])
     (tmp_path / TABLE).write_text(text + f"1,{pts[1].point_id},compl")
     assert [r["point_id"] for r in read_table(tmp_path / TABLE)[1]] == [pts[0].point_id]
-    done = _prepare_table(tmp_path, cols, pts, True, "t.toml")
+    done = prepare_table(tmp_path, cols, pts, True, "t.toml")
     assert set(done) == {pts[0].point_id}
     assert (tmp_path / TABLE).read_text() == text
     with pytest.raises(SweepError, match="different columns"):
-        _prepare_table(tmp_path, cols[:-1], pts, True, "t.toml")
+        prepare_table(tmp_path, cols[:-1], pts, True, "t.toml")

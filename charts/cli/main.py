@@ -270,7 +270,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="options of the benchmark (e.g. `charts bench accuracy --help`)")
     p.set_defaults(func=_cmd_bench)
 
-    from ..runs.sweep import add_parser as add_sweep_parser   # `charts sweep` (issue 7)
+    from .sweep import add_parser as add_sweep_parser   # `charts sweep`
     add_sweep_parser(sub)
     return ap
 

@@ -1,9 +1,9 @@
-"""Sweep tables → summaries over seeds, markdown, and figures over the swept parameters.
+"""Sweep tables -> summaries over seeds, markdown, and figures over the swept parameters.
 
-``summarize(header, rows, points)`` groups the rows of ``sweep.csv`` (see
-``charts.sweep``) by their parameters without the seed; ``write_summary`` writes
-``summary.csv`` and ``summary.md``; ``plot_sweep`` draws one PNG per headline statistic
-(curves over one numeric parameter, heat maps over two, bars otherwise) and ``overview.png``.
+:func:`summarize` groups the rows of ``sweep.csv`` by their parameters without the seed;
+:func:`write_summary` writes ``summary.csv`` and ``summary.md``; :func:`plot_sweep` draws
+one PNG per headline statistic (curves over one numeric parameter, heat maps over two,
+bars otherwise) and ``overview.png``.
 """
 from __future__ import annotations
 
@@ -11,9 +11,17 @@ from pathlib import Path
 
 import numpy as np
 
-from .sweep import HEAD, TAIL, SweepPoint, _atomic_text, _fmt, _line
+from ..io import atomic_text
+from ..plotting import new_figure, save_png
+from .points import SweepPoint
+from .table import HEAD, TAIL, csv_text, format_cell
 
-__all__ = ["summarize", "write_summary", "summary_markdown", "plot_sweep", "PLOTTED"]
+__all__ = ["summarize", "write_summary", "summary_markdown", "plot_sweep", "PLOTTED", "SUMMARY"]
+
+SUMMARY = "summary.csv"
+#: Statistics that get a figure (the others are in the tables only).
+PLOTTED = ("lambda_", "Kpos_", "phi_full_min", "phi_restricted_min", "phi_full_frac",
+           "phi_restricted_frac")
 
 
 # --------------------------------------------------------------------------- summary
@@ -59,12 +67,13 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
 
 
 def write_summary(path: Path, summary: dict) -> None:
+    """``summary.csv`` at ``path`` (every statistic and its ``_se``) and ``summary.md``."""
     cols = summary["params"] + ["n_seeds"]
     for c in summary["stats"]:
         cols += [c, c + "_se"]
-    text = _line(cols) + "".join(_line([_fmt(e.get(c)) for c in cols]) for e in summary["rows"])
-    _atomic_text(path, text)
-    _atomic_text(path.with_suffix(".md"), summary_markdown(summary))
+    atomic_text(path, csv_text(cols, ([format_cell(e.get(c)) for c in cols]
+                                      for e in summary["rows"])))
+    atomic_text(path.with_suffix(".md"), summary_markdown(summary))
 
 
 def summary_markdown(summary: dict) -> str:
@@ -95,10 +104,6 @@ def summary_markdown(summary: dict) -> str:
 
 
 # --------------------------------------------------------------------------- plots
-#: Statistics that get a figure (the others are in the tables only).
-PLOTTED = ("lambda_", "Kpos_", "phi_full_min", "phi_restricted_min", "phi_full_frac",
-           "phi_restricted_frac")
-
 def _label(stat: str) -> str:
     parts = stat.split("_")
     if parts[0] == "lambda":
@@ -117,9 +122,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
     """One PNG per statistic: curves over the one numeric swept parameter (one line per
     value of the others, error bars = ``_se``), a heat map over the first two numeric
     parameters (one panel per value of the others), or bars when nothing numeric varies."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.colors import LogNorm, Normalize
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
@@ -144,23 +147,17 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
             all(r[stat] > 0 for r in have)
         if len(numeric) == 1:
             x = numeric[0]
-            fig, ax = plt.subplots(figsize=(5.2, 3.6), layout="constrained")
-            for g in groups:
-                rs = sorted((r for r in have if gkey(r) == g), key=lambda r: r[x])
-                ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
-                            yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs],
-                            marker="o", ms=3.5, capsize=2.5, label=glabel(g))
-            _log_x(ax, [r[x] for r in have])
+            fig, ax = new_figure(figsize=(5.2, 3.6))
+            _curves(ax, have, stat, x, groups, gkey, glabel, ms=3.5, capsize=2.5)
             ax.set_xlabel(x)
             if len(groups) > 1:
                 ax.legend(fontsize=7)
         elif len(numeric) >= 2:
             x, y = numeric[:2]
-            fig, axs = plt.subplots(1, len(groups), figsize=(4.2 * len(groups), 3.6),
-                                    layout="constrained", squeeze=False)
+            fig, axs = new_figure(1, len(groups), figsize=(4.2 * len(groups), 3.6),
+                                  squeeze=False)
             vals = [r[stat] for r in have]
-            norm = matplotlib.colors.LogNorm() if logy else \
-                matplotlib.colors.Normalize(min(vals), max(vals))
+            norm = LogNorm() if logy else Normalize(min(vals), max(vals))
             for ax, g in zip(axs[0], groups):
                 rs = [r for r in have if gkey(r) == g]
                 xs, ys = sorted({r[x] for r in rs}), sorted({r[y] for r in rs})
@@ -180,7 +177,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
             fig.colorbar(im, ax=axs[0].tolist(), shrink=0.9)
             ax = axs[0][0]
         else:
-            fig, ax = plt.subplots(figsize=(5.2, 3.6), layout="constrained")
+            fig, ax = new_figure(figsize=(5.2, 3.6))
             ax.bar(range(len(have)), [r[stat] for r in have],
                    yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in have])
             ax.set_xticks(range(len(have)), [glabel(gkey(r)) for r in have], rotation=30,
@@ -189,12 +186,21 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
             ax.set_yscale("log")
         fig.suptitle(f"{title}: {_label(stat)}", fontsize=9)
         path = folder / f"{stat}.png"
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
+        save_png(fig, path)
         files.append(str(path))
     if len(numeric) == 1:
         files.append(_overview(summary, folder, title, numeric[0], groups, gkey, glabel))
     return files
+
+
+def _curves(ax, rows, stat, x, groups, gkey, glabel, **style) -> None:
+    """``stat`` over ``x`` with error bars, one line per group; log x when it fits."""
+    for g in groups:
+        rs = sorted((r for r in rows if gkey(r) == g and stat in r), key=lambda r: r[x])
+        ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
+                    yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs], marker="o",
+                    label=glabel(g), **style)
+    _log_x(ax, [r[x] for r in rows])
 
 
 def _log_x(ax, xs) -> None:
@@ -210,8 +216,6 @@ def _log_x(ax, xs) -> None:
 def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
     """One figure with a panel per headline statistic (exponents, fraction of positive
     curvature in any velocity plane, minimum angles) over the one numeric parameter."""
-    import matplotlib.pyplot as plt
-
     stats = [c for c in summary["stats"] if c.startswith("lambda_")
              or (c.startswith("Kpos_") and c.endswith("_any")) or c.endswith("_min")
              or c == "phi_restricted_p001"]
@@ -219,16 +223,9 @@ def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
     stats = [c for c in stats if not (c.startswith("Kpos_numerical") and exact)]
     ncol = min(3, len(stats))
     nrow = -(-len(stats) // ncol)
-    fig, axs = plt.subplots(nrow, ncol, figsize=(4.0 * ncol, 2.9 * nrow), layout="constrained",
-                            squeeze=False)
+    fig, axs = new_figure(nrow, ncol, figsize=(4.0 * ncol, 2.9 * nrow), squeeze=False)
     for ax, stat in zip(axs.flat, stats):
-        for g in groups:
-            rs = sorted((r for r in summary["rows"] if gkey(r) == g and stat in r),
-                        key=lambda r: r[x])
-            ax.errorbar([r[x] for r in rs], [r[stat] for r in rs],
-                        yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in rs], marker="o", ms=3,
-                        capsize=2, label=glabel(g))
-        _log_x(ax, [r[x] for r in summary["rows"]])
+        _curves(ax, summary["rows"], stat, x, groups, gkey, glabel, ms=3, capsize=2)
         if stat.startswith("phi_") and not stat.endswith("frac_small"):
             ax.set_yscale("log")
         ax.set_title(_label(stat), fontsize=8)
@@ -239,6 +236,5 @@ def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
         axs.flat[0].legend(fontsize=7)
     fig.suptitle(title, fontsize=10)
     path = folder / "overview.png"
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_png(fig, path)
     return str(path)

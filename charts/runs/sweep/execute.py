@@ -1,0 +1,150 @@
+"""Running a sweep: the points on a Dask cluster (local or existing), each row appended as
+its point finishes, a progress bar, and at the end the table in point order, the summary
+and the figures."""
+from __future__ import annotations
+
+import json
+import os
+import time
+import uuid
+from pathlib import Path
+
+from ...codegen.names import SHIPPED_N
+from ...geometry.kernels import chart_module
+from ..io import atomic_text
+from .points import sweep_points
+from .report import SUMMARY, plot_sweep, summarize, write_summary
+from .spec import Sweep, SweepError
+from .table import (TABLE, TableAppender, finish_table, point_columns, point_row,
+                    prepare_table)
+from .worker import evaluate_point
+
+__all__ = ["run_sweep", "dask_client", "META"]
+
+META = "sweep.json"
+
+
+def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=False,
+              quiet=False, plots=True, on_point=None) -> dict:
+    """Evaluate every point of ``sweep`` on Dask into ``outdir`` (see
+    :mod:`charts.runs.sweep`).
+
+    Parameters
+    ----------
+    scheduler : str, optional
+        Address of an existing Dask scheduler (``tcp://host:8786``); its workers must be
+        able to import ``charts``.  Default: a LocalCluster.
+    workers : int, optional
+        Processes of the LocalCluster (default: every core).
+    resume : bool
+        Continue the table in ``outdir``: finished points are not recomputed.
+    on_point : callable(done, total), optional
+        Called after each row is written (tests raise KeyboardInterrupt from it).
+
+    Returns
+    -------
+    dict with 'points', 'skipped' (finished before), 'computed', 'failed', 'lost' (worker
+    errors, not in the table), 'run_id', 'table', 'summary', 'figures'.
+    An interrupt leaves the table valid and re-raises ``KeyboardInterrupt``.
+    """
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    points = sweep_points(sweep)
+    columns = point_columns(points)
+    done = prepare_table(outdir, columns, points, resume, sweep.source)
+    todo = [p for p in points if p.point_id not in done]
+    run_id = uuid.uuid4().hex[:8]
+    meta = {"name": sweep.name, "source": sweep.source, "sweep": sweep.data,
+            "points": len(points), "columns": columns}
+    atomic_text(outdir / META, json.dumps(meta, indent=2, default=str) + "\n")
+    info = {"points": len(points), "skipped": len(done), "computed": [], "failed": [],
+            "lost": [], "run_id": run_id, "table": str(outdir / TABLE)}
+    for n in sorted({p.scene.system["n"] for p in todo} - set(SHIPPED_N)):
+        chart_module(n)     # derive a non-shipped N once, here (cost on stderr): local
+                            # workers then read it from the on-disk cache
+    if todo:
+        _compute(sweep, todo, len(points), len(done), columns, outdir, info, scheduler,
+                 workers, quiet, on_point)
+    table = finish_table(outdir / TABLE, len(points))
+    if table is not None:
+        summary = summarize(*table, points)
+        write_summary(outdir / SUMMARY, summary)
+        info["summary"] = str(outdir / SUMMARY)
+        info["figures"] = plot_sweep(summary, outdir / "figures", sweep.name) if plots else []
+    return info
+
+
+def dask_client(scheduler, workers):
+    """``(client, cluster)``: a client of the cluster at ``scheduler`` (cluster None), or of
+    a new LocalCluster of ``workers`` single-threaded processes (default: every core)."""
+    import logging
+
+    from dask.distributed import Client, LocalCluster
+
+    if scheduler:
+        if workers:
+            raise SweepError("--workers applies to the local cluster only; an existing cluster "
+                             "(--scheduler) has its own workers")
+        try:
+            return Client(scheduler, timeout="20s"), None
+        except (OSError, TimeoutError) as exc:
+            raise SweepError(f"cannot reach the Dask scheduler at {scheduler!r}: {exc} (start "
+                             "one with `dask scheduler`, workers with `dask worker ADDRESS`)") \
+                from None
+    n = int(workers or os.cpu_count() or 1)
+    if n < 1:
+        raise SweepError(f"--workers must be >= 1, got {n}")
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                           dashboard_address=None, silence_logs=logging.ERROR)
+    return Client(cluster), cluster
+
+
+def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, workers, quiet,
+             on_point):
+    """Submit ``todo`` and write each row as its point finishes (with a progress bar)."""
+    from dask.distributed import as_completed
+    from tqdm.auto import tqdm
+
+    client, cluster = dask_client(scheduler, workers)
+    app = TableAppender(outdir)
+    bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
+    futures = {}
+    try:
+        if not quiet:
+            nw = len(client.scheduler_info().get("workers", {}))
+            where = scheduler or f"a local cluster of {nw} workers"
+            bar.write(f"{sweep.name}: {total} points ({n_done} finished before, {len(todo)} to "
+                      f"compute) on {where}")
+        for p in todo:
+            fut = client.submit(evaluate_point, p.raw, key=f"charts-sweep-{p.point_id}",
+                                pure=False)
+            futures[fut] = p
+        for fut in as_completed(list(futures)):
+            p = futures[fut]
+            try:
+                out = fut.result()
+            except Exception as exc:        # the worker died or could not run it
+                info["lost"].append((p.index, f"{type(exc).__name__}: {exc}"))
+                bar.update(1)
+                continue
+            app.add(point_row(p, out, columns),
+                    {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
+                     "status": out["status"], "wall_s": out["wall_s"], "worker": out["worker"],
+                     "finished": time.strftime("%Y-%m-%dT%H:%M:%S")})
+            info["computed"].append(p.point_id)
+            if out["status"] != "complete":
+                info["failed"].append((p.index, out["error"]))
+            bar.update(1)
+            lead = out["stats"].get("lambda_1")
+            bar.set_postfix_str(f"#{p.index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
+            if on_point is not None:
+                on_point(n_done + len(info["computed"]), total)
+    except BaseException:
+        client.cancel(list(futures))
+        raise
+    finally:
+        bar.close()
+        app.close()
+        client.close()
+        if cluster is not None:
+            cluster.close()

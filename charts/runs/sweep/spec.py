@@ -1,0 +1,213 @@
+"""Sweep files: the :class:`Sweep` read from TOML and validated, and the bundled sweeps.
+
+Every error is a :class:`SweepError` whose message names the key, the value and what is
+allowed.  The layout of a sweep file is described in :mod:`charts.runs.sweep` and
+docs/sweeps.md.
+"""
+from __future__ import annotations
+
+import difflib
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+from ..bundled import bundled_files, path_or_bundled
+from .expressions import ExpressionError, expression_symbols
+
+__all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
+           "resolve_sweep", "MODES", "SYSTEM_AXES"]
+
+MODES = ("grid", "random")
+#: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns.
+SYSTEM_AXES = {"n": "n", "speed": "speed"}
+
+
+class SweepError(ValueError):
+    """A sweep that cannot run.  The message names the key, the value and what is allowed."""
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """A validated sweep file: the base scene and the parameters to vary."""
+    name: str
+    description: str
+    base: dict
+    mode: str
+    seeds: tuple
+    axes: dict                      # name -> list (grid) or list / {min, max, log} (random)
+    masses: dict = field(default_factory=dict)   # pattern name -> list of numbers/exprs
+    n_points: int = 0
+    sample_seed: int = 0
+    source: str = "<sweep>"
+    data: dict = field(default_factory=dict)     # the file as read
+
+
+def bundled_sweeps() -> dict[str, Path]:
+    """Name -> path of every sweep shipped in ``charts/sweeps``."""
+    return bundled_files("charts.sweeps")
+
+
+def resolve_sweep(arg: str) -> Path:
+    """A sweep argument is a path to a .toml file or the name of a bundled sweep."""
+    path = path_or_bundled(arg, bundled_sweeps())
+    if path is None:
+        raise SweepError(f"{arg!r} is neither a sweep file nor a bundled sweep (list them with "
+                         "`charts sweep --list`)")
+    return path
+
+
+def load_sweep(path) -> Sweep:
+    """Read and validate a sweep file (TOML).  Raises :class:`SweepError`."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_bytes().decode("utf-8"))
+    except FileNotFoundError:
+        raise SweepError(f"{path}: no such sweep file (bundled sweeps: `charts sweep --list`)") \
+            from None
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise SweepError(f"{path}: cannot read the sweep: {exc}") from None
+    return parse_sweep(data, source=str(path), default_name=path.stem)
+
+
+def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
+    """Validate a sweep given as a dict (as read from TOML); every point's scene is
+    validated by :func:`charts.runs.sweep.sweep_points` too."""
+    top = {"name", "description", "scene", "sweep"}
+    for key in data:
+        if key not in top:
+            raise _unknown(source, "the top level", key, top)
+    base = data.get("scene", {})
+    if not isinstance(base, dict):
+        raise SweepError(f"{source}: [scene] must be a table (the base scene)")
+    if any(k in base.get("initial", {}) for k in ("theta", "u")):
+        raise SweepError(f"{source}: [scene.initial] theta/u are not allowed in a sweep: "
+                         "points are seeded (use [sweep] seeds)")
+    if "name" in base:
+        raise SweepError(f"{source}: [scene] name is not allowed: points are named "
+                         "<sweep name>-<index>")
+    sw = data.get("sweep")
+    if not isinstance(sw, dict):
+        raise SweepError(f"{source}: [sweep] is required: the parameters to vary")
+    allowed = {"mode", "seeds", "n_points", "sample_seed", "parameters", "masses"}
+    for key in sw:
+        if key not in allowed:
+            raise _unknown(source, "[sweep]", key, allowed)
+    mode, seeds, n_points, sample_seed = _sampling(source, sw)
+    axes = sw.get("parameters", {})
+    masses = sw.get("masses", {})
+    if not isinstance(axes, dict) or not isinstance(masses, dict):
+        raise SweepError(f"{source}: [sweep.parameters] and [sweep.masses] must be tables")
+    if "seed" in axes or "masses" in axes:
+        raise SweepError(f"{source}: [sweep.parameters] seed/masses are reserved: use "
+                         "[sweep] seeds and the [sweep.masses] patterns")
+    for name, vals in axes.items():
+        _check_axis(f"{source}: [sweep.parameters] {name}", name, vals, mode)
+    symbols = {k for k in axes if "." not in k and k not in SYSTEM_AXES}
+    unused = symbols - _pattern_symbols(source, masses, symbols)
+    if unused:
+        raise SweepError(f"{source}: [sweep.parameters] {', '.join(sorted(unused))} is not used: "
+                         "reference it in a [sweep.masses] pattern, or use n, speed or a dotted "
+                         "scene key such as \"run.t_final\"")
+    return Sweep(name=data.get("name", default_name), description=data.get("description", ""),
+                 base=base, mode=mode, seeds=tuple(seeds), axes=dict(axes), masses=dict(masses),
+                 n_points=n_points or 0, sample_seed=sample_seed, source=source, data=data)
+
+
+def _unknown(source, section, key, allowed):
+    hint = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+    did = f" — did you mean {hint[0]!r}?" if hint else ""
+    return SweepError(f"{source}: unknown key {key!r} in {section}{did} "
+                      f"(allowed: {', '.join(sorted(allowed))})")
+
+
+def _is_num(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def _is_int(v):
+    return isinstance(v, int) and not isinstance(v, bool)
+
+
+def _sampling(source, sw: dict):
+    """``mode, seeds, n_points, sample_seed`` of the [sweep] table, validated."""
+    mode = sw.get("mode", "grid")
+    if mode not in MODES:
+        raise SweepError(f"{source}: [sweep] mode = {mode!r} is not allowed "
+                         f"(allowed: {', '.join(map(repr, MODES))})")
+    seeds = sw.get("seeds", [0])
+    if _is_int(seeds) and seeds >= 1:
+        seeds = list(range(seeds))
+    if not (isinstance(seeds, list) and seeds and all(_is_int(s) and s >= 0 for s in seeds)):
+        raise SweepError(f"{source}: [sweep] seeds = {seeds!r} is not allowed: expected a "
+                         "non-empty list of integers >= 0, or a count >= 1")
+    if len(set(seeds)) != len(seeds):
+        raise SweepError(f"{source}: [sweep] seeds = {seeds!r} repeats a seed")
+    n_points, sample_seed = sw.get("n_points"), sw.get("sample_seed", 0)
+    if mode == "random":
+        if not (_is_int(n_points) and n_points >= 1):
+            raise SweepError(f"{source}: [sweep] n_points = {n_points!r}: random mode needs "
+                             "an integer >= 1 (the number of parameter draws)")
+        if not _is_int(sample_seed):
+            raise SweepError(f"{source}: [sweep] sample_seed = {sample_seed!r}: expected an integer")
+    elif n_points is not None or "sample_seed" in sw:
+        raise SweepError(f"{source}: [sweep] n_points/sample_seed are for mode = \"random\" "
+                         "only")
+    return mode, seeds, n_points, sample_seed
+
+
+def _check_axis(where: str, name: str, vals, mode: str) -> None:
+    """One entry of [sweep.parameters]: a list of values, or a range in random mode."""
+    if isinstance(vals, dict):
+        if mode != "random":
+            raise SweepError(f"{where} = {vals!r}: a range {{min, max, log}} needs mode = "
+                             "\"random\"; a grid takes a list of values")
+        extra = set(vals) - {"min", "max", "log"}
+        if extra or not (_is_num(vals.get("min")) and _is_num(vals.get("max"))
+                         and vals["min"] < vals["max"]):
+            raise SweepError(f"{where} = {vals!r} is not allowed: expected {{min = a, "
+                             "max = b, log = true|false}} with a < b")
+        if vals.get("log", False) and vals["min"] <= 0:
+            raise SweepError(f"{where}: log = true needs min > 0")
+    elif not (isinstance(vals, list) and vals):
+        raise SweepError(f"{where} = {vals!r} is not allowed: expected a non-empty list "
+                         "of values" + (" or {min, max, log}" if mode == "random" else ""))
+    elif len({json.dumps(v) for v in vals}) != len(vals):
+        raise SweepError(f"{where} = {vals!r} repeats a value")
+    if "." in name:
+        section = name.split(".")[0]
+        if section not in ("system", "initial", "integrator", "run", "effects"):
+            raise SweepError(f"{where}: a dotted key must start with system., integrator., "
+                             "run. or effects. (e.g. \"run.t_final\")")
+        if name in ("system.masses", "system.n", "system.speed", "initial.seed"):
+            raise SweepError(f"{where}: use the parameter name "
+                             f"{name.split('.')[-1]!r} (or seeds / [sweep.masses])")
+
+
+def _pattern_symbols(source, masses: dict, symbols: set) -> set:
+    """Validate the [sweep.masses] patterns; return the parameter symbols they use."""
+    used = set()
+    for pname, pat in masses.items():
+        where = f"{source}: [sweep.masses] {pname!r}"
+        if not (isinstance(pat, list) and pat):
+            raise SweepError(f"{where} = {pat!r}: expected a list of numbers or expressions")
+        for x in pat:
+            if isinstance(x, str):
+                try:
+                    names = expression_symbols(x)
+                except ExpressionError as exc:
+                    raise SweepError(f"{where}: {exc}") from None
+                missing = names - symbols
+                if missing:
+                    raise SweepError(f"{where}: {x!r} uses {', '.join(sorted(missing))}, which is "
+                                     "not a parameter; add it to [sweep.parameters]")
+                used |= names
+            elif not (_is_num(x) and x > 0):
+                raise SweepError(f"{where}: {x!r} is not allowed: entries are numbers > 0 or "
+                                 "expressions in the parameters")
+    return used

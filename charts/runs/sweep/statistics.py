@@ -1,0 +1,55 @@
+"""The statistics of one point: which columns a scene's effects give, and their values
+read from a run's ``result.json`` (and the curvature samples of ``arrays.npz``)."""
+from __future__ import annotations
+
+from ..scene import Scene
+
+__all__ = ["stat_columns", "result_statistics"]
+
+#: The angle statistics, per variant (``phi_<variant>_<stat>``).
+ANGLE_STATS = ("min", "p001", "median", "frac_small")
+
+
+def stat_columns(scene: Scene) -> list[str]:
+    """The statistic columns a scene's effects give, in table order."""
+    eff, cols = scene.effects, []
+    if "lyapunov" in eff:
+        k = eff["lyapunov"]["n_exponents"]
+        cols += [f"lambda_{i}" for i in range(1, k + 1)]
+        cols += [f"lambda_{i}_se" for i in range(1, k + 1)]
+    if "curvature" in eff:
+        c = eff["curvature"]
+        routes = ["numerical", "exact"] if c["route"] == "both" else [c["route"]]
+        for r in routes:
+            cols += [f"Kpos_{r}_{i}" for i in range(1, c["n_directions"] + 1)]
+            cols += [f"Kpos_{r}_any"]
+            cols += [f"Kmean_{r}_{i}" for i in range(1, c["n_directions"] + 1)]
+    if "angles" in eff:
+        v = eff["angles"]["variant"]
+        for var in (["full", "restricted"] if v == "both" else [v]):
+            cols += [f"phi_{var}_{s}" for s in ANGLE_STATS]
+    return cols
+
+
+def result_statistics(result: dict, arrays) -> dict:
+    """Column -> value from a run's result (``result.json`` as a dict) and, for the
+    ``Kpos_<route>_any`` fractions, its ``curvature_<route>`` arrays (or None)."""
+    res, out = result.get("results", {}), {}
+    ly = res.get("lyapunov", {})
+    for i, (e, s) in enumerate(zip(ly.get("exponents", []),
+                                   ly.get("stderr", [None] * len(ly.get("exponents", [])))), 1):
+        out[f"lambda_{i}"], out[f"lambda_{i}_se"] = e, s
+    cv = res.get("curvature", {})
+    for route in ("numerical", "exact"):
+        if route in cv:
+            for i, (f, m) in enumerate(zip(cv[route]["fraction_positive"], cv[route]["mean"]), 1):
+                out[f"Kpos_{route}_{i}"], out[f"Kmean_{route}_{i}"] = f, m
+            K = arrays.get(f"curvature_{route}") if arrays is not None else None
+            if K is not None and len(K):
+                out[f"Kpos_{route}_any"] = float((K > 0).any(axis=1).mean())
+    an = res.get("angles", {})
+    for var in ("full", "restricted"):
+        if var in an:
+            for s in ANGLE_STATS:
+                out[f"phi_{var}_{s}"] = an[var][s]
+    return out
