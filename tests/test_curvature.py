@@ -38,7 +38,7 @@ def test_n3_route_a_matches_eq22_to_five_digits():
     system = RotorSystem(3)
     theta, u = system.random_state(seed=2)
     dt = 0.01
-    res = curvature_along_trajectory(system, theta, u, 200.0, dt=dt, sample_every=10)
+    res = curvature_along_trajectory(system, theta, u, 200.0, dt=dt, sample_every=10 * dt)
     Ka = res.K_numeric[:, 0, 0]
     K22 = gaussian_curvature_eq22(res.theta)
     assert np.all(K22 < 0) and np.all(Ka < 0)  # negative curvature: the sign of eq (21) fixed
@@ -55,7 +55,7 @@ def test_route_a_converges_at_second_order():
     theta, u = system.random_state(seed=3)
     errs = []
     for dt in (0.02, 0.01):
-        res = curvature_along_trajectory(system, theta, u, 20.0, dt=dt, sample_every=int(0.2 / dt),
+        res = curvature_along_trajectory(system, theta, u, 20.0, dt=dt, sample_every=0.2,
                                          t_transient=10.0)
         errs.append(np.median(np.abs(res.K_numeric[:, 0, 0] - gaussian_curvature_eq22(res.theta))))
     order = np.log2(errs[0] / errs[1])
@@ -85,7 +85,7 @@ def test_routes_a_and_b_agree(n):
 def test_masses_route_a_matches_gauss_route():
     system = RotorSystem(4, [1.0, 2.0, 0.5, 1.5])
     theta, u = system.random_state(seed=1)
-    res = curvature_along_trajectory(system, theta, u, 30.0, sample_every=100, t_transient=10.0)
+    res = curvature_along_trajectory(system, theta, u, 30.0, sample_every=1.0, t_transient=10.0)
     for i in range(0, res.t.size, 5):
         P = res.frames[i]
         Kg = system.sectional_curvature_gauss(res.theta[i], P[0], P[1])

@@ -3,10 +3,11 @@ paper's exponents with two-sided error bars, ± symmetry, zeros, inner product, 
 import numpy as np
 import pytest
 
-from charts.flows.ambient import adjoint_rhs, flow_rhs, flow_tangent_rhs, project_tangent
-from charts.flows.ambient import project_state
-from charts.analyses.lyapunov import (_initial_vectors, _lyap_kernel, _rk4_step, _stage, identify_nonphysical,
-                             inner_weights, lyapunov_spectrum, orthonormalize, reconstruct_spectrum)
+from charts.flows.ambient import adjoint_rhs, flow_rhs, flow_tangent_rhs
+from charts.geometry.projection import project_state, project_tangent
+from charts.analyses.lyapunov import (identify_nonphysical, lyapunov_ensemble, lyapunov_spectrum,
+                                      reconstruct_spectrum)
+from charts.solvers.tangent import TangentFlow, inner_weights, orthonormalize
 from charts.geometry.system import RotorSystem
 
 # --- tolerances, each with its reason -------------------------------------------------
@@ -63,7 +64,8 @@ def _jacobian_fd(y, minv, h=1e-6):
 
 @pytest.mark.parametrize("n", [3, 4, 5])
 def test_variational_equations_match_finite_differences_of_eq8(n):
-    """Eq (17) generalised to masses, both the ambient kernel and the fused stage."""
+    """Eq (17) generalised to masses (the one home, charts.flows.ambient) against central
+    differences of eq (8); the state part of the same call is eq (8) itself."""
     system = RotorSystem(n, MASSES[n])
     theta, u = system.random_state(seed=n, speed=1.3)
     y = np.concatenate([theta, u])
@@ -73,12 +75,9 @@ def test_variational_equations_match_finite_differences_of_eq8(n):
     flow_tangent_rhs(y, X, system.minv, dy, dX)
     scale = np.abs(J).max()
     np.testing.assert_allclose(dX, X @ J.T, atol=FD_RTOL * scale * 10)
-    dy2, dX2 = np.empty(2 * n), np.empty_like(X)
-    _stage(y, X, system.minv, np.empty(n), np.empty(n), dy2, dX2)
-    np.testing.assert_allclose(dX2, dX, rtol=0, atol=ROUND * scale)
     f = np.empty(2 * n)
     flow_rhs(y, system.minv, f)
-    np.testing.assert_allclose(dy2, f, rtol=0, atol=ROUND)
+    np.testing.assert_array_equal(dy, f)
 
 
 @pytest.mark.parametrize("n", [3, 5])
@@ -99,15 +98,26 @@ def test_adjoint_is_minus_jacobian_transpose_and_conserves_pairing(n):
     assert np.abs(pairing_rate).max() < ROUND * 100
 
 
+def _rk4(system, y, X, h):
+    """One plain RK4 step of (eq 8, eq 17) in NumPy, libm sin/cos at every stage."""
+    def f(y, X):
+        dy, dX = np.empty_like(y), np.empty_like(X)
+        flow_tangent_rhs(y, X, system.minv, dy, dX)
+        return dy, dX
+    k1 = f(y, X)
+    k2 = f(y + h / 2 * k1[0], X + h / 2 * k1[1])
+    k3 = f(y + h / 2 * k2[0], X + h / 2 * k2[1])
+    k4 = f(y + h * k3[0], X + h * k3[1])
+    return (y + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]),
+            X + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]))
+
+
 def _reference_route(system, y, X, w, nsteps, speed):
-    """Step by step with the plain kernels: `_rk4_step` (libm sin/cos at each stage),
-    `project_state` every 100 steps, `project_tangent` and eq (18) every step."""
-    n, k = system.n, X.shape[0]
-    logs = np.zeros(k)
-    s, c, ky, kX = np.empty(n), np.empty(n), np.empty((4, 2 * n)), np.empty((4, k, 2 * n))
-    yt, Xt = np.empty(2 * n), np.empty((k, 2 * n))
+    """Step by step in NumPy: `_rk4`, `project_state` every 100 steps, `project_tangent`
+    and eq (18) every step."""
+    logs = np.zeros(X.shape[0])
     for step in range(1, nsteps + 1):
-        _rk4_step(y, X, system.minv, 0.01, s, c, ky, kX, yt, Xt)
+        y[:], X[:] = _rk4(system, y, X, 0.01)
         if step % 100 == 0:
             project_state(y, system.masses, speed)
         project_tangent(y, X, system.minv)
@@ -117,34 +127,43 @@ def _reference_route(system, y, X, w, nsteps, speed):
 
 @pytest.mark.parametrize("n", [3, 4, 5])
 def test_fast_kernel_matches_step_by_step_route(n):
-    """The fused time loop (shared stage factors, shifted sin/cos, no allocation) is the
-    same RK4 + eq (18) map as the plain kernels,
-    to rounding, over 500 steps; with re-orthonormalisation every 10 steps the trajectory
-    is unchanged and the log-norm sums agree to the RK4 error leaving T_r."""
+    """The tangent kernel (shared stage factors, shifted sin/cos, no allocation) is the
+    same RK4 + eq (18) map as a plain NumPy route, to rounding, over 500 steps; with
+    re-orthonormalisation every 10 steps the trajectory is unchanged and the log-norm sums
+    agree to the RK4 error leaving T_r."""
     system = RotorSystem(n, MASSES[n])
     theta, u = system.random_state(seed=n, speed=1.3)
-    y0 = np.concatenate([theta, u])
-    w = inner_weights(system, "full")
     k = 2 * n - 2
-    X0 = _initial_vectors(system, y0, k, 0, True, w)
-    speed = float(system.speed(u))
-    y, X = y0.copy(), X0.copy()
-    ref = _reference_route(system, y, X, w, 500, speed)
     for reorth, tol in [(1, FAST_TOL), (10, REORTH_TOL)]:
-        y2, X2, logs = y0.copy(), X0.copy(), np.zeros(k)
-        _lyap_kernel(y2, X2, system.minv, system.masses, speed, 0.01, 500, reorth, w, True, 100,
-                     0, logs, np.empty((0, k)))
-        np.testing.assert_allclose(y2, y, rtol=0, atol=FAST_TOL)
-        np.testing.assert_allclose(logs, ref, rtol=0, atol=tol)
-        np.testing.assert_allclose(X2, X, rtol=0, atol=tol * 10)
+        flow = TangentFlow(system, theta, u, k, dt=0.01, inner="full", reorth_every=reorth,
+                           project_every=100, seed=0)
+        y, X = flow.y.copy(), flow.X.copy()
+        ref = _reference_route(system, y, X, flow.w, 500, flow.speed)
+        flow.advance(500)
+        np.testing.assert_allclose(flow.y, y, rtol=0, atol=FAST_TOL)
+        np.testing.assert_allclose(flow.logsum, ref, rtol=0, atol=tol)
+        np.testing.assert_allclose(flow.X, X, rtol=0, atol=tol * 10)
+
+
+def test_chunking_does_not_change_a_bit():
+    """The kernel's state persists between calls: 1000 steps in one call or in uneven
+    chunks give bit-identical states and log-norm sums."""
+    system = RotorSystem(4, MASSES[4])
+    theta, u = system.random_state(seed=5)
+    a = TangentFlow(system, theta, u, 2, dt=0.01, reorth_every=10, project_every=100)
+    b = TangentFlow(system, theta, u, 2, dt=0.01, reorth_every=10, project_every=100)
+    a.advance(1000)
+    for chunk in (1, 7, 92, 300, 600):
+        b.advance(chunk)
+    assert np.array_equal(a.Z, b.Z) and np.array_equal(a.logsum, b.logsum)
 
 
 def test_reorth_every_leaves_exponents_unchanged():
     """Public API: the default (every 10 steps) against every step, same trajectory."""
     system = RotorSystem(5)
     theta, u = system.random_state(seed=2)
-    a = lyapunov_spectrum(system, theta, u, 300.0, reorth_every=1, t_transient=10.0)
-    b = lyapunov_spectrum(system, theta, u, 300.0, reorth_every=10, t_transient=10.0)
+    a = lyapunov_spectrum(system, theta, u, 300.0, reorth_every=0.01, t_transient=10.0)
+    b = lyapunov_spectrum(system, theta, u, 300.0, reorth_every=0.1, t_transient=10.0)
     np.testing.assert_allclose(b.exponents, a.exponents, rtol=0, atol=REORTH_TOL)
     np.testing.assert_allclose(b.batches, a.batches, rtol=0, atol=REORTH_TOL)
 
@@ -152,13 +171,13 @@ def test_reorth_every_leaves_exponents_unchanged():
 def test_constraint_preserving_subspace_is_invariant():
     """δG is conserved and δF' = −δG, so vectors with δF = δG = 0 stay there (to RK4
     accuracy over t = 10, without any projection)."""
-    from charts.analyses.lyapunov import advance_tangent
     system = RotorSystem(4, MASSES[4])
     theta, u = system.random_state(seed=3)
-    y = np.concatenate([theta, u])
-    X = np.random.default_rng(0).normal(size=(3, 8))
-    project_tangent(y, X, system.minv)
-    advance_tangent(system, y, X, 10.0, inner="full", space="full")
+    flow = TangentFlow(system, theta, u, 3, dt=0.01, inner="full", restricted=True,
+                       reorth_every=1, project_every=100, seed=0)
+    flow.restricted = False  # start in T_r, then never project again
+    flow.advance(1000)
+    y, X = flow.y, flow.X
     n = 4
     dF = -(np.sin(y[:n]) * X[:, :n]).sum(1)
     dG = (np.sin(y[:n]) * X[:, n:] + y[n:] * np.cos(y[:n]) * X[:, :n]).sum(1)
@@ -242,7 +261,8 @@ def test_exponents_scale_with_speed():
     theta, u = system.random_state(seed=6, speed=1.0)
     T = 2000.0
     a = lyapunov_spectrum(system, theta, u, T, dt=0.01, t_transient=50.0)
-    b = lyapunov_spectrum(system, theta, 2.0 * u, T / 2, dt=0.005, t_transient=25.0)
+    b = lyapunov_spectrum(system, theta, 2.0 * u, T / 2, dt=0.005, t_transient=25.0,
+                          reorth_every=0.05, project_every=0.5, record_every=0.5)  # same steps
     # bounded difference of log-norms (≲ 1) spread over T/2 of the fast run
     np.testing.assert_allclose(b.exponents, 2.0 * a.exponents, atol=1.0 / (T / 2))
     assert np.all(a.exponents > 0.1)
@@ -264,9 +284,9 @@ def test_rejects_bad_arguments():
 
 
 def test_ensemble_runs_independent_trajectories_in_parallel():
-    from charts.analyses.lyapunov import lyapunov_ensemble
     system = RotorSystem(3)
-    mean, se, members = lyapunov_ensemble(system, 2, 500.0, workers=2, n_batches=5)
+    ens = lyapunov_ensemble(system, 2, 500.0, workers=2, n_batches=5)
+    mean, se, members = ens.exponents, ens.stderr, ens.members
     assert len(members) == 2 and mean.shape == (1,) and se.shape == (1,)
     # independent seeds give different trajectories, hence different estimates
     assert members[0].exponents[0] != members[1].exponents[0]

@@ -41,7 +41,7 @@ MASSES = {4: [1.0, 1.0, 1.0, 4.0], 5: [0.25, 1.0, 3.0, 1.0, 0.6]}
 def test_curvature_routes_agree_with_unequal_masses(n):
     system = RotorSystem(n, MASSES[n])
     theta, u = system.random_state(seed=5)
-    res = curvature_along_trajectory(system, theta, u, 100.0, sample_every=20, t_transient=10.0)
+    res = curvature_along_trajectory(system, theta, u, 100.0, sample_every=0.2, t_transient=10.0)
     Ka, Kb = res.K_numeric, res.K_exact
     rel = np.abs(Ka - Kb).max(axis=(1, 2)) / np.abs(Kb).max(axis=(1, 2))
     assert np.median(rel) < REL_AB_MEDIAN, np.median(rel)
@@ -72,7 +72,7 @@ def test_scaling_law_is_exact_for_a_power_of_two():
     np.testing.assert_allclose(2 * r4.u[-1], r1.u[-1], rtol=0, atol=1e-13)
     l1 = lyapunov_spectrum(s1, theta, u, 400.0, dt=0.01, t_transient=50.0, n_batches=4)
     l4 = lyapunov_spectrum(s4, theta, u / 2, 800.0, dt=0.02, t_transient=100.0, n_batches=4,
-                           record_every=2.0)
+                           record_every=2.0, reorth_every=0.2, project_every=2.0)  # same steps
     ratio = 2 * l4.exponents / l1.exponents - 1
     assert abs(ratio[0]) < EXACT_LEADING, ratio
     assert abs(ratio[1]) < EXACT_SUBLEADING, ratio

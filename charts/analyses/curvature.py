@@ -16,7 +16,7 @@ Eq (21) as printed lacks the minus sign: with it the N = 3 result matches eq (22
 which is negative.  Dividing by |u|² makes K independent of the speed.
 
 Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ = R_abcd p_i^a p_0^b p_j^c p_0^d from the
-generated Riemann tensor (`charts.chartfuncs.compiled(n).riemann`) in the best-
+generated Riemann tensor (``charts.geometry.kernels``) in the best-
 conditioned chart, evaluated at the same points and frames.
 
 For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
@@ -25,76 +25,81 @@ For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import cos, sin, sqrt
+from math import sqrt
 
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import project_state, project_tangent_sc, transport_rhs
+from ..flows.ambient import (flow_rhs, multiplier, sincos, state_rate, tangent_factors,
+                             tangent_rate, transport_rate)
+from ..geometry.atlas import chart_coordinates, local_masses
 from ..geometry.kernels import compiled
-from .lyapunov import (_initial_state, _initial_vectors, _lyap_kernel, _rk4_step, _stage,
-                       inner_weights, orthonormalize)
+from ..solvers.rk import rk4_combine, rk4_point
+from ..solvers.status import RUNNING, status_error
+from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
+from .arguments import positive_time, progress_reporter, steps_of
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
-           "gaussian_curvature_eq22"]
+           "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
 
 
 def gaussian_curvature_eq22(theta):
     """Eq (22): Gaussian curvature of the N = 3 surface (equal masses), theta (..., 3)."""
     theta = np.asarray(theta, dtype=float)
+    if theta.shape[-1:] != (3,):
+        raise ValueError(f"eq (22) is the curvature of the N = 3 surface: theta must have shape "
+                         f"(..., 3), got {theta.shape}")
     return -(np.cos(theta) ** 2).sum(-1) / (2.0 * ((np.sin(theta) ** 2).sum(-1)) ** 2)
 
 
 @njit(cache=True)
-def _rk4_frame_step(y, X, P, minv, h):
-    """One RK4 step of eq (8), eq (17) for rows of X and eq (19) for rows of P, in place."""
+def frame_step(y, X, P, minv, h):
+    """One RK4 step of size h, in place, of eq (8) for y (2N,), eq (17) for the rows of X
+    (k, 2N) and eq (19) for the rows of P (kp, N)."""
     n = y.size // 2
     d = 2 * n
     k = X.shape[0]
     kp = P.shape[0]
+    oP = d + k * d
+    L = oP + kp * n
+    z = np.empty(L)
+    z[:d] = y
+    z[d:oP] = X.ravel()
+    z[oP:] = P.ravel()
+    zt = np.empty(L)
+    K = np.empty(4 * L)
     s = np.empty(n)
     c = np.empty(n)
-    ky = np.empty((4, d))
-    kX = np.empty((4, k, d))
-    kP = np.empty((4, kp, n))
-    yt = y.copy()
-    Xt = X.copy()
-    Pt = P.copy()
+    f = np.empty(n)
+    g = np.empty(n)
+    p = np.empty(n)
+    q = np.empty(n)
     for st in range(4):
-        if st > 0:
-            a = 0.5 * h if st < 3 else h
-            for i in range(d):
-                yt[i] = y[i] + a * ky[st - 1, i]
-            for r in range(k):
-                for i in range(d):
-                    Xt[r, i] = X[r, i] + a * kX[st - 1, r, i]
-            for r in range(kp):
-                for i in range(n):
-                    Pt[r, i] = P[r, i] + a * kP[st - 1, r, i]
-        _stage(yt, Xt, minv, s, c, ky[st], kX[st])
-        transport_rhs(yt, Pt, minv, s, c, kP[st])
-    h6 = h / 6.0
-    for i in range(d):
-        y[i] += h6 * (ky[0, i] + 2.0 * ky[1, i] + 2.0 * ky[2, i] + ky[3, i])
-    for r in range(k):
-        for i in range(d):
-            X[r, i] += h6 * (kX[0, r, i] + 2.0 * kX[1, r, i] + 2.0 * kX[2, r, i] + kX[3, r, i])
-    for r in range(kp):
-        for i in range(n):
-            P[r, i] += h6 * (kP[0, r, i] + 2.0 * kP[1, r, i] + 2.0 * kP[2, r, i] + kP[3, r, i])
+        rk4_point(z, K, st, h, L, zt)
+        sincos(zt, 0, n, s, c)
+        lam, B = multiplier(zt, 0, n, minv, s, c)
+        iB = 1.0 / B
+        o = st * L
+        state_rate(zt, 0, n, minv, s, lam, K, o)
+        tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)
+        for r in range(k):
+            tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)
+        for r in range(kp):
+            transport_rate(zt, oP + r * n, n, zt, 0, f, c, iB, K, o + oP + r * n)
+    rk4_combine(z, K, h, L, z)
+    y[:] = z[:d]
+    X[:, :] = z[d:oP].reshape((k, d))
+    P[:, :] = z[oP:].reshape((kp, n))
 
 
 @njit(cache=True)
-def _frame(y, X, minv, m, Xj, P):
-    """Jacobi fields Xj, shape (N−2, 2N), and frame P, shape (N−1, N), at y from the
-    Lyapunov vectors X (route a, see module docstring)."""
+def curvature_frame(y, X, minv, m, Xj, P):
+    """Jacobi fields Xj, shape (k, 2N), and the M-orthonormal frame P, shape (k + 1, N), at
+    y from the Lyapunov vectors X (route a, see the module doc).  Returns |u|²."""
     n = y.size // 2
     k = X.shape[0]
-    s = np.empty(n)
-    c = np.empty(n)
     f = np.empty(2 * n)
-    dummy = np.empty((0, 2 * n))
-    _stage(y, dummy, minv, s, c, f, dummy)
+    flow_rhs(y, minv, f)  # the flow-direction perturbation (u, u̇), a solution of eq (17)
     uu = 0.0
     for i in range(n):
         uu += m[i] * y[n + i] * y[n + i]
@@ -106,8 +111,7 @@ def _frame(y, X, minv, m, Xj, P):
         for i in range(2 * n):
             Xj[r, i] = X[r, i] - a * f[i]
     w = np.zeros(2 * n)
-    for i in range(n):
-        w[i] = m[i]
+    w[:n] = m
     orthonormalize(Xj, w, np.zeros(k))
     un = sqrt(uu)
     for i in range(n):
@@ -119,68 +123,63 @@ def _frame(y, X, minv, m, Xj, P):
 
 
 @njit(cache=True)
-def _curvature_kernel(y, X, minv, m, speed, dt, sample_every, w, project_every, Ka, Ys, Ps):
-    """Advance (y, X) with re-orthonormalisation and, every ``sample_every`` steps, store
-    y in Ys[s], the frame in Ps[s] and the route-(a) matrix K in Ka[s]."""
+def numerical_curvature(y, Xj, P, minv, m, dt, uu, K):
+    """Route (a), eqs (20)–(21) with the minus sign: K[i, j] from one RK4 step of ±dt of
+    the trajectory, the Jacobi fields Xj and the frame P (`curvature_frame`)."""
     n = y.size // 2
-    k = X.shape[0]
-    s = np.empty(n)
-    c = np.empty(n)
-    ky = np.empty((4, 2 * n))
-    kX = np.empty((4, k, 2 * n))
-    yt = np.empty(2 * n)
-    Xt = np.empty((k, 2 * n))
+    k = Xj.shape[0]
+    cs = np.zeros((k, k))
+    for sign in (1.0, -1.0):
+        y2 = y.copy()
+        X2 = Xj.copy()
+        P2 = P.copy()
+        frame_step(y2, X2, P2, minv, sign * dt)
+        for i in range(k):
+            for j in range(k):
+                acc = 0.0
+                for q in range(n):
+                    acc += m[q] * X2[j, q] * P2[i + 1, q]
+                cs[i, j] += acc
+    for i in range(k):
+        for j in range(k):
+            K[i, j] = -(cs[i, j] - (2.0 if i == j else 0.0)) / (dt * dt * uu)
+
+
+@njit(cache=True)
+def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, project_every,
+                      Ka, Ys, Ps):
+    """Advance the tangent flow Z = [y; X] ``sample_steps`` steps at a time (re-orthonormalised
+    every step) and at each sample store y, the frame and the route-(a) matrix.
+    Returns (status, samples done)."""
+    n = Z.shape[1] // 2
+    k = Z.shape[0] - 1
     logs = np.zeros(k)
+    none = np.empty((0, 0))
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
-    cs = np.zeros((k, k))
-    step = 0
     for smp in range(Ka.shape[0]):
-        for _ in range(sample_every):
-            _rk4_step(y, X, minv, dt, s, c, ky, kX, yt, Xt)
-            step += 1
-            if step % project_every == 0:
-                project_state(y, m, speed)
-            for j in range(n):
-                s[j] = sin(y[j])
-                c[j] = cos(y[j])
-            project_tangent_sc(y, X, minv, s, c)
-            orthonormalize(X, w, logs)
-        uu = _frame(y, X, minv, m, Xj, P)
+        status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, 1, w,
+                                      True, project_every, logs, 0, 0, none)
+        if status != RUNNING:
+            return status, smp
+        y = Z[0]
+        uu = curvature_frame(y, Z[1:], minv, m, Xj, P)
         Ys[smp] = y
         Ps[smp] = P
-        for i in range(k):
-            for j in range(k):
-                cs[i, j] = 0.0
-        for sign in (1.0, -1.0):
-            y2 = y.copy()
-            X2 = Xj.copy()
-            P2 = P.copy()
-            _rk4_frame_step(y2, X2, P2, minv, sign * dt)
-            for i in range(k):
-                for j in range(k):
-                    acc = 0.0
-                    for q in range(n):
-                        acc += m[q] * X2[j, q] * P2[i + 1, q]
-                    cs[i, j] += acc
-        for i in range(k):
-            for j in range(k):
-                Ka[smp, i, j] = -(cs[i, j] - (2.0 if i == j else 0.0)) / (dt * dt * uu)
+        numerical_curvature(y, Xj, P, minv, m, dt, uu, Ka[smp])
+    return RUNNING, Ka.shape[0]
 
 
 def exact_curvature_matrix(system, theta, P):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frame P,
-    shape (N−1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart.
-    Returns shape (N−2, N−2)."""
-    fn = compiled(system.n).riemann
+    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart.
+    Returns shape (k, k)."""
     k = system.best_chart(theta)
-    idx = [i for i in range(system.n) if i != k]
+    idx = chart_coordinates(system.n, k)
     q = np.ascontiguousarray(theta[idx])
-    mm = np.concatenate([system.masses[idx], system.masses[k:k + 1]])
-    R = fn(q, mm, np.empty((system.dim,) * 4))
+    R = compiled(system.n).riemann(q, local_masses(system.masses, k), np.empty((system.dim,) * 4))
     Q = P[:, idx]
-    # R_abcd p_i^a p0^b p_j^c p0^d
-    Rp = np.einsum("abcd,b,d->ac", R, Q[0], Q[0])
+    Rp = np.einsum("abcd,b,d->ac", R, Q[0], Q[0])  # R_abcd p_i^a p0^b p_j^c p0^d
     return Q[1:] @ Rp @ Q[1:].T
 
 
@@ -210,9 +209,9 @@ class CurvatureResult:
         return (self.diagonal(route) > 0).mean(axis=0)
 
 
-def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_every=10,
-                               t_transient=50.0, exact=True, project_every=100, seed=0,
-                               progress=False):
+def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.1,
+                               t_transient=50.0, exact=True, project_every=1.0, seed=0,
+                               progress=False) -> CurvatureResult:
     """Sectional curvatures K_ij along the trajectory from (theta0, u0), routes (a) and (b).
 
     Parameters
@@ -220,58 +219,61 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     system : RotorSystem
     theta0, u0 : ndarray, shape (N,)
     t_final : float
-        Sampled time after the transient.
+        Sampled time after the transient (a multiple of ``sample_every``).
     dt : float
         RK4 step of the trajectory, the Lyapunov vectors and the ±Δt frame steps.
-    sample_every : int
-        Steps between sample points.
+    sample_every : float
+        Time between sample points (a multiple of dt).
     t_transient : float
         Time for the Lyapunov vectors to converge before sampling.
     exact : bool
         Also evaluate route (b) at the same points and frames.
+    project_every : float or None
+        Time between projections of the state onto the invariants (None: never).
+    seed : int
+        Seed of the random initial tangent vectors.
+    progress : bool or callable(t_done, t_total)
 
     Returns
     -------
     CurvatureResult
     """
     n = system.n
-    if n < 3:
-        raise ValueError("curvature needs N >= 3")
-    y, speed = _initial_state(system, theta0, u0)
+    dt = positive_time("dt", dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    total = steps_of("t_final", t_final, dt)
+    if total % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    theta0, u0 = system.check_state(theta0, u0)
+    if not system.speed(u0) > 0:
+        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
     k = n - 2
-    w = inner_weights(system, "theta")
-    X = _initial_vectors(system, y, k, seed, True, w)
-    if t_transient > 0:
-        _lyap_kernel(y, X, system.minv, system.masses, speed, float(dt),
-                     int(round(t_transient / dt)), 1, w, True, int(project_every), 0,
-                     np.zeros(k), np.empty((0, k)))
-    S = int(round(t_final / dt)) // int(sample_every)
-    if S < 1:
-        raise ValueError(f"t_final={t_final} is shorter than one sample interval; increase it")
+    flow = TangentFlow(system, theta0, u0, k, dt=dt, inner="theta", restricted=True,
+                       reorth_every=1, project_every=project, seed=seed)
+    rep = progress_reporter(progress, (transient + total) * dt, f"curvature N={n}")
+    where = "curvature_along_trajectory (ambient RK4)"
+    flow.advance(transient, where=where)
+    rep.update(transient * dt)
+    S = total // sample
     Ka = np.empty((S, k, k))
     Ys = np.empty((S, 2 * n))
     Ps = np.empty((S, k + 1, n))
-    chunks = np.array_split(np.arange(S), min(S, 50))
-    bar = None
-    if progress:
-        from tqdm.auto import tqdm
-        bar = tqdm(total=S, desc=f"curvature N={n}", leave=False)
-    for ch in chunks:
+    for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
-        Kc = np.empty((b - a, k, k))
-        Yc = np.empty((b - a, 2 * n))
-        Pc = np.empty((b - a, k + 1, n))
-        _curvature_kernel(y, X, system.minv, system.masses, speed, float(dt), int(sample_every),
-                          w, int(project_every), Kc, Yc, Pc)
-        Ka[a:b], Ys[a:b], Ps[a:b] = Kc, Yc, Pc
-        if bar is not None:
-            bar.update(b - a)
-    if bar is not None:
-        bar.close()
+        status, done = _sample_curvature(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
+                                         flow.speed, dt, sample, flow.w, project, Ka[a:b],
+                                         Ys[a:b], Ps[a:b])
+        if status != RUNNING:
+            raise status_error(status, flow.steps * dt, where)
+        rep.update((b - a) * sample * dt)
+    rep.close()
     Kb = None
     if exact:
         Kb = np.array([exact_curvature_matrix(system, Ys[i, :n], Ps[i]) for i in range(S)])
-    t = (np.arange(1, S + 1) * sample_every) * dt
-    params = dict(n=n, masses=system.masses.tolist(), dt=dt, sample_every=sample_every,
-                  t_transient=t_transient, speed=speed, t_final=float(t[-1]))
+    t = (np.arange(1, S + 1) * sample) * dt
+    params = dict(n=n, masses=system.masses.tolist(), dt=dt, sample_every=sample * dt,
+                  t_transient=transient * dt, project_every=project * dt or None,
+                  speed=flow.speed, t_final=float(t[-1]), seed=seed)
     return CurvatureResult(t, Ys[:, :n], Ys[:, n:], Ps, Ka, Kb, params)

@@ -21,25 +21,27 @@ Two variants are computed from the same V and W:
   Euclidean-orthogonally onto T_r and re-orthonormalised (the complement of E_cs ∩ T_r in
   T_r is the projection of the complement of E_cs), V lies in T_r already.
 
-Memory: the trajectory is kept only as checkpoints every ``checkpoint_every`` steps; the
-backward pass restarts each segment from its checkpoint and integrates eq (8) backward
-jointly with the adjoint (over one segment the backward RK4 retraces the forward one to
-~1e-13).  The forward vectors are stored only at the S sample points: S·m·2N floats.
+Memory: the trajectory is kept only as checkpoints every ``checkpoint_every``; the backward
+pass restarts each segment from its checkpoint and integrates eq (8) backward jointly with
+the adjoint (over one segment the backward RK4 retraces the forward one to ~1e-13).  The
+forward vectors are stored only at the S sample points: S·m·2N floats.
 """
 from __future__ import annotations
 
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
-from math import cos, sin, sqrt
 
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import adjoint_rhs, flow_rhs, project_state, project_tangent, project_tangent_sc
-from .lyapunov import _initial_state, _rk4_step, orthonormalize
+from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
+from ..geometry.projection import project_tangent_euclidean
+from ..solvers.rk import rk4_combine, rk4_point
+from ..solvers.tangent import TangentFlow, orthonormalize
+from .arguments import positive_int, positive_time, progress_reporter, steps_of
+from .ensemble import EnsembleResult, run_ensemble
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
-           "SMALL_ANGLE"]
+           "SMALL_ANGLE", "adjoint_step"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
 SMALL_ANGLE = 0.05
@@ -48,98 +50,23 @@ MAX_STORE = 1 << 30
 
 
 @njit(cache=True)
-def _forward_kernel(y, V, minv, m, speed, dt, nsteps, ck_every, ck, first_sample,
-                    sample_every, Vs, w):
-    """Forward pass: RK4 of (y, V) with projection onto T_r and QR every step; y stored
-    in ck[i] at step i·ck_every (ck[0] = initial); V stored in Vs[k] at step
-    first_sample + k·sample_every."""
-    n = y.size // 2
-    k = V.shape[0]
-    s = np.empty(n)
-    c = np.empty(n)
-    ky = np.empty((4, 2 * n))
-    kX = np.empty((4, k, 2 * n))
-    yt = np.empty(2 * n)
-    Xt = np.empty((k, 2 * n))
-    logs = np.zeros(k)
-    ck[0] = y
-    for step in range(1, nsteps + 1):
-        _rk4_step(y, V, minv, dt, s, c, ky, kX, yt, Xt)
-        if step % 100 == 0:
-            project_state(y, m, speed)
-        for j in range(n):
-            s[j] = sin(y[j])
-            c[j] = cos(y[j])
-        project_tangent_sc(y, V, minv, s, c)
-        orthonormalize(V, w, logs)
-        if step % ck_every == 0:
-            ck[step // ck_every] = y
-        j = step - first_sample
-        if j >= 0 and j % sample_every == 0 and j // sample_every < Vs.shape[0]:
-            Vs[j // sample_every] = V
-    return logs
-
-
-@njit(cache=True)
-def _adjoint_rk4(y, W, minv, h, k1, k2, k3, k4, K1, K2, K3, K4, yt, Wt):
-    d = y.size
-    r_ = W.shape[0]
-    flow_rhs(y, minv, k1)
-    adjoint_rhs(y, W, minv, K1)
-    for st in range(3):
-        a = 0.5 * h if st < 2 else h
-        ka = k1 if st == 0 else (k2 if st == 1 else k3)
-        Ka = K1 if st == 0 else (K2 if st == 1 else K3)
-        for i in range(d):
-            yt[i] = y[i] + a * ka[i]
-        for r in range(r_):
-            for i in range(d):
-                Wt[r, i] = W[r, i] + a * Ka[r, i]
-        if st == 0:
-            flow_rhs(yt, minv, k2)
-            adjoint_rhs(yt, Wt, minv, K2)
-        elif st == 1:
-            flow_rhs(yt, minv, k3)
-            adjoint_rhs(yt, Wt, minv, K3)
-        else:
-            flow_rhs(yt, minv, k4)
-            adjoint_rhs(yt, Wt, minv, K4)
-    h6 = h / 6.0
-    for i in range(d):
-        y[i] += h6 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
-    for r in range(r_):
-        for i in range(d):
-            W[r, i] += h6 * (K1[r, i] + 2.0 * K2[r, i] + 2.0 * K3[r, i] + K4[r, i])
-
-
-@njit(cache=True)
-def _project_tr(y, W):
-    """Euclidean-orthogonal projection of the rows of W onto T_r at y."""
-    n = y.size // 2
-    a = np.zeros(2 * n)  # ∇F (sign irrelevant)
-    b = np.zeros(2 * n)  # ∇G
-    for i in range(n):
-        a[i] = sin(y[i])
-        b[i] = y[n + i] * cos(y[i])
-        b[n + i] = sin(y[i])
-    aa = 0.0
-    ab = 0.0
-    bb = 0.0
-    for i in range(2 * n):
-        aa += a[i] * a[i]
-        ab += a[i] * b[i]
-        bb += b[i] * b[i]
-    det = aa * bb - ab * ab
-    for r in range(W.shape[0]):
-        wa = 0.0
-        wb = 0.0
-        for i in range(2 * n):
-            wa += W[r, i] * a[i]
-            wb += W[r, i] * b[i]
-        ca = (bb * wa - ab * wb) / det
-        cb = (aa * wb - ab * wa) / det
-        for i in range(2 * n):
-            W[r, i] -= ca * a[i] + cb * b[i]
+def adjoint_step(Z, minv, h, zt, K, s, c):
+    """One RK4 step of size h (h < 0: backward), in place, of eq (8) for Z[0] and of the
+    adjoint flow ẇ = −Jᵀw for the rows Z[1:]; zt (L,), K (4L,), s, c (N,) are work arrays."""
+    R, d = Z.shape
+    n = d // 2
+    L = R * d
+    Zf = Z.reshape(L)
+    for st in range(4):
+        rk4_point(Zf, K, st, h, L, zt)
+        sincos(zt, 0, n, s, c)
+        lam, B = multiplier(zt, 0, n, minv, s, c)
+        iB = 1.0 / B
+        o = st * L
+        state_rate(zt, 0, n, minv, s, lam, K, o)
+        for r in range(1, R):
+            adjoint_rate(zt, r * d, n, zt, 0, minv, s, c, lam, iB, K, o + r * d)
+    rk4_combine(Zf, K, h, L, Zf)
 
 
 @njit(cache=True)
@@ -147,40 +74,38 @@ def _backward_kernel(ck, W, minv, dt, ck_every, first_sample, sample_every, Vs, 
     """Backward pass over all segments (last first); at sample steps store
     Mf[k] = W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ (restricted)."""
     d = ck.shape[1]
+    n = d // 2
     kk = W.shape[0]
-    k1 = np.empty(d)
-    k2 = np.empty(d)
-    k3 = np.empty(d)
-    k4 = np.empty(d)
-    K1 = np.empty((kk, d))
-    K2 = np.empty((kk, d))
-    K3 = np.empty((kk, d))
-    K4 = np.empty((kk, d))
-    yt = np.empty(d)
-    Wt = np.empty((kk, d))
+    Z = np.empty((1 + kk, d))
+    Z[1:] = W
+    Wv = Z[1:]
+    L = (1 + kk) * d
+    zt = np.empty(L)
+    K = np.empty(4 * L)
+    s = np.empty(n)
+    c = np.empty(n)
     Wr = np.empty((kk, d))
     logs = np.zeros(kk)
     nseg = ck.shape[0] - 1
     S = Vs.shape[0]
-    y = np.empty(d)
     for seg in range(nseg - 1, -1, -1):
-        y[:] = ck[seg + 1]
+        Z[0] = ck[seg + 1]
         for jj in range(ck_every):
-            _adjoint_rk4(y, W, minv, -dt, k1, k2, k3, k4, K1, K2, K3, K4, yt, Wt)
-            orthonormalize(W, w, logs)
+            adjoint_step(Z, minv, -dt, zt, K, s, c)
+            orthonormalize(Wv, w, logs)
             step = (seg + 1) * ck_every - jj - 1
             j = step - first_sample
             if j >= 0 and j % sample_every == 0 and j // sample_every < S:
                 q = j // sample_every
-                Wr[:, :] = W
-                _project_tr(y, Wr)
+                Wr[:, :] = Wv
+                project_tangent_euclidean(Z[0], Wr)
                 orthonormalize(Wr, w, np.zeros(kk))
                 for r in range(kk):
                     for s_ in range(kk):
                         af = 0.0
                         ar = 0.0
                         for i in range(d):
-                            af += W[r, i] * Vs[q, s_, i]
+                            af += Wv[r, i] * Vs[q, s_, i]
                             ar += Wr[r, i] * Vs[q, s_, i]
                         Mf[q, r, s_] = af
                         Mr[q, r, s_] = ar
@@ -221,7 +146,8 @@ def _sin_to_angle(M):
 
 
 def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=None,
-                         t_transient=100.0, sample_every=10, checkpoint_every=100, seed=0):
+                         t_transient=100.0, sample_every=0.1, checkpoint_every=1.0,
+                         project_every=1.0, seed=0, progress=False) -> AngleResult:
     """Angles between the expanding subspace and the zero-and-contracting subspace along
     the trajectory from (theta0, u0), both variants (see module docstring).
 
@@ -233,71 +159,81 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         Length of the analysed window; the trajectory runs t_transient + t_final +
         t_transient so that V (forward) and W (backward) converge before it.
     dt : float
-        RK4 step of both passes.
+        RK4 step of both passes.  Every other time below is a whole number of steps.
     n_unstable : int, optional
         m, the dimension of E_u (default N−2, the number of positive exponents).
-    sample_every : int
-        Steps between sample points (memory S·m·2N·8 bytes for the forward vectors).
-    checkpoint_every : int
-        Steps between stored trajectory checkpoints.
+    t_transient : float
+        Convergence time of each pass (>= 0).
+    sample_every : float
+        Time between sample points (memory S·m·2N·8 bytes for the forward vectors).
+    checkpoint_every : float
+        Time between stored trajectory checkpoints of the forward pass.
+    project_every : float or None
+        Time between projections of the forward state onto the invariants (None: never).
+    seed : int
+        Seed of the random initial vectors of both passes.
+    progress : bool or callable(t_done, t_total)
 
     Returns
     -------
     AngleResult
     """
     n = system.n
-    m = n - 2 if n_unstable is None else int(n_unstable)
+    m = n - 2 if n_unstable is None else positive_int("n_unstable", n_unstable)
     if not 1 <= m <= n - 2:
         raise ValueError(f"n_unstable must be in 1..{n - 2} (the positive exponents), got {m}")
-    y, speed = _initial_state(system, theta0, u0)
-    n_tr = int(round(t_transient / dt))
-    n_win = int(round(t_final / dt))
-    S = n_win // int(sample_every)
+    dt = positive_time("dt", dt)
+    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    n_win = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    ce = steps_of("checkpoint_every", checkpoint_every, dt)
+    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    seed = positive_int("seed", seed, 0)
+    theta0, u0 = system.check_state(theta0, u0)
+    if not system.speed(u0) > 0:
+        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    S = n_win // sample
     if S < 1:
-        raise ValueError(f"t_final={t_final} holds no sample; increase it or lower sample_every")
+        raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")
     need = S * m * 2 * n * 8
     if need > MAX_STORE:
         raise ValueError(f"storing {S} samples needs {need / 2**20:.0f} MB; increase sample_every "
                          f"or split t_final into several runs")
-    ce = int(checkpoint_every)
     nseg = -(-(2 * n_tr + n_win) // ce)
     nsteps = nseg * ce
-    w = np.ones(2 * n)
-    rng = np.random.default_rng(seed)
-    V = rng.normal(size=(m, 2 * n))
-    project_tangent(y, V, system.minv)
-    orthonormalize(V, w, np.zeros(m))
+    flow = TangentFlow(system, theta0, u0, m, dt=dt, inner="euclidean", restricted=True,
+                       reorth_every=1, project_every=project, seed=seed)
+    rep = progress_reporter(progress, 2 * nsteps * dt, f"angles N={n}")
     ck = np.empty((nseg + 1, 2 * n))
-    Vs = np.empty((S, m, 2 * n))
-    flog = _forward_kernel(y, V, system.minv, system.masses, speed, float(dt), nsteps, ce, ck,
-                           n_tr, int(sample_every), Vs, w)
-    W = rng.normal(size=(m, 2 * n))
-    orthonormalize(W, w, np.zeros(m))
+    ck[0] = flow.y
+    states = np.empty((S, (1 + m) * 2 * n))
+    for i in range(nseg):
+        flow.advance(ce, rec_start=n_tr, rec_every=sample, states=states,
+                     where="hyperbolicity_angles (forward RK4)")
+        ck[i + 1] = flow.y
+        rep.update(ce * dt)
+    Vs = np.ascontiguousarray(states[:, 2 * n:].reshape(S, m, 2 * n))
+    W = np.random.default_rng([seed, 1]).normal(size=(m, 2 * n))
+    orthonormalize(W, flow.w, np.zeros(m))
     Mf = np.empty((S, m, m))
     Mr = np.empty((S, m, m))
-    blog = _backward_kernel(ck, W, system.minv, float(dt), ce, n_tr, int(sample_every), Vs,
-                            Mf, Mr, w)
+    blog = _backward_kernel(ck, W, system.minv, dt, ce, n_tr, sample, Vs, Mf, Mr, flow.w)
+    rep.update(nsteps * dt)
+    rep.close()
     T = nsteps * dt
-    t = (n_tr + np.arange(S) * sample_every) * dt
-    params = dict(n=n, masses=system.masses.tolist(), dt=dt, m=m, t_final=t_final,
-                  t_transient=t_transient, sample_every=sample_every, speed=speed,
-                  checkpoint_every=ce, seed=seed)
-    return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flog / T, blog / T, params)
+    t = (n_tr + np.arange(S) * sample) * dt
+    params = dict(n=n, masses=system.masses.tolist(), dt=dt, m=m, t_final=n_win * dt,
+                  t_transient=n_tr * dt, sample_every=sample * dt, speed=flow.speed,
+                  checkpoint_every=ce * dt, project_every=project * dt or None, seed=seed)
+    return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flow.logsum / T, blog / T,
+                       params)
 
 
-def _member(args):
-    n, masses, seed, t_final, kwargs = args
-    from ..geometry.system import RotorSystem
-    system = RotorSystem(n, masses)
-    theta0, u0 = system.random_state(seed=seed)
-    return hyperbolicity_angles(system, theta0, u0, t_final, seed=seed, **kwargs)
-
-
-def hyperbolicity_ensemble(system, n_trajectories, t_final, *, seed=0, workers=None, **kwargs):
-    """`hyperbolicity_angles` on independent random states in parallel processes; returns
-    the list of `AngleResult` (concatenate the angles for statistics)."""
-    jobs = [(system.n, system.masses, seed + i, t_final, kwargs) for i in range(n_trajectories)]
-    if workers == 1:
-        return [_member(j) for j in jobs]
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        return list(pool.map(_member, jobs))
+def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
+                           progress=False, **kwargs) -> EnsembleResult:
+    """`hyperbolicity_angles` on independent random states (seeds seed, seed+1, …) in
+    parallel processes; returns an `EnsembleResult` (``concatenate("phi_restricted")`` joins
+    the angles of all members for statistics)."""
+    return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
+                        seed=seed, workers=workers, progress=progress,
+                        desc=f"angles N={system.n} ensemble", **kwargs)

@@ -1,42 +1,24 @@
 """Waveforms and power spectra of the angular velocities, figures 2 and 3.
 
-`waveform` samples u(t) of eq (8) (RK4, the same fused kernel as `charts.lyapunov`
-with no tangent vectors, state projected back onto the manifold every 100 steps).
-`power_spectrum` estimates the spectral density of one rotor's velocity by Welch's
-method (`scipy.signal.welch`: segments much longer than the signal's correlation time,
-Hann window, averaged squared amplitudes), as described in section 1.
+`waveform` samples θ(t), u(t) of eq (8) (the tangent kernel of ``charts.solvers.tangent``
+with no tangent vectors: RK4, the state projected onto the invariants every
+``project_every``).  `power_spectrum` estimates the spectral density of one rotor's velocity
+by Welch's method (`scipy.signal.welch`: segments much longer than the signal's correlation
+time, Hann window, averaged squared amplitudes), as described in section 1.
+
+Frequency convention (the project's, everywhere): angular frequency ω in rad per unit time,
+spectral density per unit ω (its integral over ω ≥ 0 is the signal's variance).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
-from ..flows.ambient import project_state
-from .lyapunov import _initial_state, _rk4_step
+from ..solvers.tangent import TangentFlow
+from .arguments import positive_time, steps_of
 
 __all__ = ["Waveform", "waveform", "power_spectrum"]
-
-
-@njit(cache=True)
-def _sample_kernel(y, minv, m, speed, dt, every, out):
-    """RK4 of eq (8); out[k] = y after (k+1)·every steps, shape (S, 2N)."""
-    n = y.size // 2
-    s = np.empty(n)
-    c = np.empty(n)
-    ky = np.empty((4, 2 * n))
-    X = np.empty((0, 2 * n))
-    kX = np.empty((4, 0, 2 * n))
-    yt = np.empty(2 * n)
-    step = 0
-    for k in range(out.shape[0]):
-        for _ in range(every):
-            _rk4_step(y, X, minv, dt, s, c, ky, kX, yt, X)
-            step += 1
-            if step % 100 == 0:
-                project_state(y, m, speed)
-        out[k] = y
 
 
 @dataclass
@@ -48,30 +30,42 @@ class Waveform:
     dt_sample: float
 
 
-def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=5, t_transient=0.0):
-    """u(t) and θ(t) from (theta0, u0) every ``sample_every`` RK4 steps up to t_final
-    (after discarding t_transient)."""
-    y, speed = _initial_state(system, theta0, u0)
-    args = (system.minv, system.masses, speed, float(dt))
-    if t_transient > 0:
-        _sample_kernel(y, *args, int(round(t_transient / dt)), np.empty((1, y.size)))
-    S = int(round(t_final / dt)) // int(sample_every)
+def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_transient=0.0,
+             project_every=1.0) -> Waveform:
+    """θ(t) and u(t) from (theta0, u0) every ``sample_every`` up to ``t_final`` after
+    discarding ``t_transient`` (all times whole numbers of RK4 steps ``dt``)."""
+    dt = positive_time("dt", dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    total = steps_of("t_final", t_final, dt)
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    S = total // sample
     if S < 2:
-        raise ValueError(f"t_final={t_final} gives fewer than 2 samples; increase it")
-    out = np.empty((S, y.size))
-    _sample_kernel(y, *args, int(sample_every), out)
-    t = np.arange(1, S + 1) * sample_every * dt
+        raise ValueError(f"t_final={t_final:g} gives fewer than 2 samples of sample_every="
+                         f"{sample_every:g}; increase t_final")
+    theta0, u0 = system.check_state(theta0, u0)
+    if not system.speed(u0) > 0:
+        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    flow = TangentFlow(system, theta0, u0, 0, dt=dt, project_every=project)
+    out = np.empty((S, 2 * system.n))
+    flow.advance(transient + S * sample, rec_start=transient + sample, rec_every=sample,
+                 states=out, where="waveform (ambient RK4)")
+    t = np.arange(1, S + 1) * sample * dt
     n = system.n
-    return Waveform(t, out[:, :n], out[:, n:], sample_every * dt)
+    return Waveform(t, out[:, :n], out[:, n:], sample * dt)
 
 
 def power_spectrum(signal, dt_sample, *, segment_time=200.0):
     """Welch estimate of the one-sided power spectral density of ``signal`` (shape (S,))
     sampled every ``dt_sample``: segments of ``segment_time`` with 50 % overlap and a
-    Hann window.  Returns (angular frequency ω = 2πf, shape (F,), density per unit ω)."""
+    Hann window.  Returns (ω (F,), rad per unit time; density per unit ω (F,))."""
     signal = np.asarray(signal, dtype=float)
+    if signal.ndim != 1 or not np.all(np.isfinite(signal)):
+        raise ValueError("signal must be a 1-D array of finite values")
+    dt_sample = positive_time("dt_sample", dt_sample)
+    segment_time = positive_time("segment_time", segment_time)
     nper = int(round(segment_time / dt_sample))
-    if nper > signal.size // 4:
+    if nper < 2 or nper > signal.size // 4:
         raise ValueError(f"signal of {signal.size * dt_sample:g} time units is too short for "
                          f"Welch segments of {segment_time:g}; need at least 4 segments")
     from scipy.signal import welch  # imported here: scipy.signal costs seconds at import

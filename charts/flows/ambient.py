@@ -1,195 +1,183 @@
-"""Ambient (Lagrange) formulation, eqs (8), (17), (19), generalised to masses.
+"""The ambient (Lagrange) equations, generalised to masses: the only place they are written.
 
-State y = (θ₀…θ_{N−1}, u₀…u_{N−1}), shape (2N,).  With minv = 1/m:
+State y = (θ₀…θ_{N−1}, u₀…u_{N−1}), shape (2N,).  With sᵢ = sin θᵢ, cᵢ = cos θᵢ:
 
-    θ̇ᵢ = uᵢ,   u̇ᵢ = −Λ sin θᵢ / mᵢ,   Λ = Σ u_j² cos θ_j / Σ sin²θ_j / m_j     (eq 8)
+    θ̇ᵢ = uᵢ,   u̇ᵢ = −Λ sᵢ / mᵢ,   Λ = Σ u_j² c_j / B,   B = Σ s_j² / m_j          (eq 8)
 
-Tangent (perturbation) vectors ξ = (θ̃, ũ), shape (2N,), obey the linearisation
-(eq 17, re-derived here for masses; tested against finite differences of eq 8):
+Tangent (perturbation) vectors ξ = (θ̃, ũ), shape (2N,), obey the linearisation (eq 17,
+re-derived for masses; tested against finite differences of eq 8), written with the
+per-rotor factors fᵢ = sᵢ/mᵢ, gᵢ = Λcᵢ/mᵢ, pᵢ = 2uᵢcᵢ, qᵢ = sᵢ(uᵢ² + 2gᵢ):
 
-    θ̃̇ᵢ = ũᵢ,   ũ̇ᵢ = −(δΛ sin θᵢ + Λ cos θᵢ θ̃ᵢ) / mᵢ,
-    δΛ = [Σ(2u_j ũ_j cos θ_j − u_j² sin θ_j θ̃_j) − Λ Σ 2 sin θ_j cos θ_j θ̃_j / m_j] / B
+    θ̃̇ᵢ = ũᵢ,   ũ̇ᵢ = −(δΛ fᵢ + gᵢ θ̃ᵢ),   δΛ = Σ (p_j ũ_j − q_j θ̃_j) / B             (eq 17)
 
-and the adjoint vectors obey ẇ = −Jᵀ w.  All kernels are numba-compiled, write
-into caller-given arrays and allocate nothing.
+Parallel transport of an ambient tangent vector p, shape (N,) (eq 19):
+
+    ṗᵢ = −(Σ p_j u_j c_j / B) fᵢ                                                  (eq 19)
+
+and adjoint vectors w = (a, b), shape (2N,), obey ẇ = −J(y)ᵀ w, J the Jacobian of eq (8).
+
+The equations are scalar-loop functions inlined into the compiled kernels
+(``inline="always"``).  They read and write *flat* arrays at offsets (``o``, ``do``), so the
+same code serves every layout: the stacked state [y; X] of the tangent kernel, the packed
+state (θ, u, p¹…pᵏ) of the integration loop and plain (2N,) vectors.  No call allocates.
+The wrappers at the end (`flow_rhs`, `flow_tangent_rhs`, `adjoint_rhs`, `transport_rhs`)
+evaluate them on ordinary arrays for Python callers and tests.
 """
 from __future__ import annotations
 
-from math import cos, sin, sqrt
+from math import cos, sin
 
 import numpy as np
 from numba import njit
 
 __all__ = [
-    "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs", "project_state",
-    "project_tangent", "project_tangent_sc", "invariants",
+    "sincos", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
+    "adjoint_rate", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
 ]
 
 
-@njit(cache=True)
-def flow_rhs(y, minv, dy):
-    """Eq (8): dy = f(y).  Returns B = Σ sin²θ/m (→ 0 at singular points)."""
-    n = y.size // 2
+@njit(cache=True, inline="always")
+def sincos(y, o, n, s, c):
+    """s, c = sin θ, cos θ of the angles y[o:o+n]."""
+    for j in range(n):
+        s[j] = sin(y[o + j])
+        c[j] = cos(y[o + j])
+
+
+@njit(cache=True, inline="always")
+def multiplier(y, o, n, minv, s, c):
+    """(Λ, B) of eq (8) at the state y[o:o+2N] with sin/cos s, c of its angles.
+    B = Σ sin²θ/m → 0 only at the singular points (N = 4); Λ is then returned as 0."""
     A = 0.0
     B = 0.0
     for j in range(n):
-        s = sin(y[j])
-        A += y[n + j] * y[n + j] * cos(y[j])
-        B += s * s * minv[j]
-    lam = A / B
+        u = y[o + n + j]
+        A += u * u * c[j]
+        B += s[j] * s[j] * minv[j]
+    if B > 0.0:
+        return A / B, B
+    return 0.0, B
+
+
+@njit(cache=True, inline="always")
+def state_rate(y, o, n, minv, s, lam, dy, do):
+    """Eq (8): dy[do:do+2N] = (u, −Λ sin θ / m) for the state y[o:o+2N]."""
     for i in range(n):
-        dy[i] = y[n + i]
-        dy[n + i] = -lam * sin(y[i]) * minv[i]
+        dy[do + i] = y[o + n + i]
+        dy[do + n + i] = -lam * s[i] * minv[i]
+
+
+@njit(cache=True, inline="always")
+def tangent_factors(y, o, n, minv, s, c, lam, f, g, p, q):
+    """The factors f, g, p, q of eq (17) at the state y[o:o+2N] (see the module doc)."""
+    for j in range(n):
+        u = y[o + n + j]
+        f[j] = s[j] * minv[j]
+        g[j] = lam * c[j] * minv[j]
+        p[j] = 2.0 * u * c[j]
+        q[j] = s[j] * (u * u + 2.0 * g[j])
+
+
+@njit(cache=True, inline="always")
+def tangent_rate(x, o, n, f, g, p, q, iB, dx, do):
+    """Eq (17): dx[do:do+2N] = d/dt of the tangent vector x[o:o+2N]; iB = 1/B."""
+    acc = 0.0
+    for j in range(n):
+        acc += p[j] * x[o + n + j] - q[j] * x[o + j]
+    dlam = acc * iB
+    for i in range(n):
+        dx[do + i] = x[o + n + i]
+        dx[do + n + i] = -(dlam * f[i] + g[i] * x[o + i])
+
+
+@njit(cache=True, inline="always")
+def transport_rate(x, o, n, y, yo, f, c, iB, dx, do):
+    """Eq (19): dx[do:do+N] = d/dt of the transported vector x[o:o+N] along the state
+    y[yo:yo+2N]; f = sin θ / m, c = cos θ, iB = 1/B."""
+    a = 0.0
+    for j in range(n):
+        a += x[o + j] * y[yo + n + j] * c[j]
+    a *= iB
+    for i in range(n):
+        dx[do + i] = -a * f[i]
+
+
+@njit(cache=True, inline="always")
+def adjoint_rate(x, o, n, y, yo, minv, s, c, lam, iB, dx, do):
+    """ẇ = −J(y)ᵀ w for the adjoint vector w = x[o:o+2N] at the state y[yo:yo+2N]."""
+    sb = 0.0  # Σ sᵢ bᵢ / mᵢ, b = velocity part of w
+    for i in range(n):
+        sb += s[i] * x[o + n + i] * minv[i]
+    for j in range(n):
+        u = y[yo + n + j]
+        dlam_dtheta = (-u * u * s[j] - lam * 2.0 * s[j] * c[j] * minv[j]) * iB
+        dx[do + j] = dlam_dtheta * sb + lam * c[j] * minv[j] * x[o + n + j]
+        dx[do + n + j] = -(x[o + j] - 2.0 * u * c[j] * iB * sb)
+
+
+# ------------------------------------------------------------------ wrappers for Python
+@njit(cache=True)
+def flow_rhs(y, minv, dy):
+    """Eq (8): dy = f(y), y and dy shape (2N,).  Returns B = Σ sin²θ/m."""
+    n = y.size // 2
+    s = np.empty(n)
+    c = np.empty(n)
+    sincos(y, 0, n, s, c)
+    lam, B = multiplier(y, 0, n, minv, s, c)
+    state_rate(y, 0, n, minv, s, lam, dy, 0)
     return B
 
 
 @njit(cache=True)
 def flow_tangent_rhs(y, X, minv, dy, dX):
-    """Eq (8) for y and eq (17) for each row of X, shape (k, 2N), sharing sin/cos."""
+    """Eq (8) for y, shape (2N,), and eq (17) for each row of X, shape (k, 2N)."""
     n = y.size // 2
-    A = 0.0
-    B = 0.0
-    for j in range(n):
-        s = sin(y[j])
-        A += y[n + j] * y[n + j] * cos(y[j])
-        B += s * s * minv[j]
-    lam = A / B
-    for i in range(n):
-        dy[i] = y[n + i]
-        dy[n + i] = -lam * sin(y[i]) * minv[i]
+    s = np.empty(n)
+    c = np.empty(n)
+    f = np.empty(n)
+    g = np.empty(n)
+    p = np.empty(n)
+    q = np.empty(n)
+    sincos(y, 0, n, s, c)
+    lam, B = multiplier(y, 0, n, minv, s, c)
+    state_rate(y, 0, n, minv, s, lam, dy, 0)
+    tangent_factors(y, 0, n, minv, s, c, lam, f, g, p, q)
+    xf = X.reshape(X.size)
+    dxf = dX.reshape(dX.size)
     for r in range(X.shape[0]):
-        dA = 0.0
-        dB = 0.0
-        for j in range(n):
-            s = sin(y[j])
-            c = cos(y[j])
-            u = y[n + j]
-            dA += 2.0 * u * X[r, n + j] * c - u * u * s * X[r, j]
-            dB += 2.0 * s * c * X[r, j] * minv[j]
-        dlam = (dA - lam * dB) / B
-        for i in range(n):
-            dX[r, i] = X[r, n + i]
-            dX[r, n + i] = -(dlam * sin(y[i]) + lam * cos(y[i]) * X[r, i]) * minv[i]
+        tangent_rate(xf, 2 * n * r, n, f, g, p, q, 1.0 / B, dxf, 2 * n * r)
     return B
 
 
 @njit(cache=True)
 def adjoint_rhs(y, W, minv, dW):
-    """ẇ = −J(y)ᵀ w for each row of W, shape (k, 2N), J the Jacobian of eq (8)."""
+    """ẇ = −J(y)ᵀ w for each row of W, shape (k, 2N).  Returns B."""
     n = y.size // 2
-    A = 0.0
-    B = 0.0
-    for j in range(n):
-        s = sin(y[j])
-        A += y[n + j] * y[n + j] * cos(y[j])
-        B += s * s * minv[j]
-    lam = A / B
+    s = np.empty(n)
+    c = np.empty(n)
+    sincos(y, 0, n, s, c)
+    lam, B = multiplier(y, 0, n, minv, s, c)
+    wf = W.reshape(W.size)
+    dwf = dW.reshape(dW.size)
     for r in range(W.shape[0]):
-        sb = 0.0  # Σ_i sin θ_i b_i / m_i, b = velocity part of w
-        for i in range(n):
-            sb += sin(y[i]) * W[r, n + i] * minv[i]
-        for j in range(n):
-            s = sin(y[j])
-            c = cos(y[j])
-            u = y[n + j]
-            dlam_dtheta = (-u * u * s - lam * 2.0 * s * c * minv[j]) / B
-            jt_theta = -dlam_dtheta * sb - lam * c * minv[j] * W[r, n + j]
-            jt_u = W[r, j] - 2.0 * u * c / B * sb
-            dW[r, j] = -jt_theta
-            dW[r, n + j] = -jt_u
+        adjoint_rate(wf, 2 * n * r, n, y, 0, minv, s, c, lam, 1.0 / B, dwf, 2 * n * r)
     return B
 
 
 @njit(cache=True)
-def transport_rhs(y, P, minv, s, c, dP):
-    """Eq (19), parallel transport of the rows of P, shape (k, N), along the flow, given
-    s, c = sin θ, cos θ of y (shared with the caller's other right-hand sides):
-    ṗᵢ = −(Σ p_j u_j cos θ_j / B) sin θᵢ / mᵢ."""
-    n = y.size // 2
-    B = 0.0
-    for j in range(n):
-        B += s[j] * s[j] * minv[j]
-    for r in range(P.shape[0]):
-        a = 0.0
-        for j in range(n):
-            a += P[r, j] * y[n + j] * c[j]
-        a /= B
-        for i in range(n):
-            dP[r, i] = -a * s[i] * minv[i]
-
-
-@njit(cache=True)
-def project_state(y, m, speed):
-    """Project y in place onto Σcos θ = 0 (Newton along M⁻¹∇F), Σ uᵢ sin θᵢ = 0
-    (M-orthogonal) and Σ mᵢuᵢ² = speed² (rescaling u)."""
-    n = y.size // 2
-    for _ in range(3):
-        F = 0.0
-        B = 0.0
-        for j in range(n):
-            s = sin(y[j])
-            F += cos(y[j])
-            B += s * s / m[j]
-        d = F / B
-        for j in range(n):
-            y[j] += d * sin(y[j]) / m[j]
-        if abs(F) < 1e-15:
-            break
-    G = 0.0
-    B = 0.0
-    for j in range(n):
-        s = sin(y[j])
-        G += y[n + j] * s
-        B += s * s / m[j]
-    for j in range(n):
-        y[n + j] -= G / B * sin(y[j]) / m[j]
-    if speed > 0.0:
-        E = 0.0
-        for j in range(n):
-            E += m[j] * y[n + j] * y[n + j]
-        f = speed / sqrt(E)
-        for j in range(n):
-            y[n + j] *= f
-
-
-@njit(cache=True)
-def project_tangent_sc(y, X, minv, s, c):
-    """Remove from each row of X, shape (k, 2N), its components that change the
-    constraint F = Σcos θ and the tangency G = Σ u sin θ to first order, i.e.
-    make δF = −Σ sin θ θ̃ = 0 and δG = Σ(sin θ ũ + u cos θ θ̃) = 0 (M-orthogonally),
-    given s, c = sin θ, cos θ of y."""
-    n = y.size // 2
-    B = 0.0
-    for j in range(n):
-        B += s[j] * s[j] * minv[j]
-    for r in range(X.shape[0]):
-        dF = 0.0
-        for j in range(n):
-            dF += s[j] * X[r, j]
-        for j in range(n):
-            X[r, j] -= dF / B * s[j] * minv[j]
-        dG = 0.0
-        for j in range(n):
-            dG += s[j] * X[r, n + j] + y[n + j] * c[j] * X[r, j]
-        for j in range(n):
-            X[r, n + j] -= dG / B * s[j] * minv[j]
-
-
-@njit(cache=True)
-def project_tangent(y, X, minv):
-    """`project_tangent_sc` computing sin θ and cos θ itself (allocates two (N,) arrays)."""
+def transport_rhs(y, P, minv, dP):
+    """Eq (19) for each row of P, shape (k, N), along y, shape (2N,).  Returns B."""
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
+    f = np.empty(n)
+    sincos(y, 0, n, s, c)
+    B = 0.0
     for j in range(n):
-        s[j] = sin(y[j])
-        c[j] = cos(y[j])
-    project_tangent_sc(y, X, minv, s, c)
-
-
-def invariants(theta, u, masses):
-    """(constraint Σcos θ, tangency Σ u sin θ, energy ½Σ m u²) along the last axis."""
-    theta = np.asarray(theta)
-    u = np.asarray(u)
-    return (np.cos(theta).sum(-1), (u * np.sin(theta)).sum(-1),
-            0.5 * (np.asarray(masses) * u * u).sum(-1))
+        f[j] = s[j] * minv[j]
+        B += s[j] * f[j]
+    pf = P.reshape(P.size)
+    dpf = dP.reshape(dP.size)
+    for r in range(P.shape[0]):
+        transport_rate(pf, n * r, n, y, 0, f, c, 1.0 / B, dpf, n * r)
+    return B

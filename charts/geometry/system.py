@@ -2,14 +2,16 @@
 
 Points are ambient angle vectors ``theta``, shape (n,); tangent vectors are
 ambient velocity vectors ``u``, shape (n,), with Σ uᵢ sin θᵢ = 0 (eq 10).
-Chart ``k`` uses the local coordinates θ without θₖ (see ``charts.symbolic``);
+Chart ``k`` uses the local coordinates θ without θₖ (see ``charts.geometry.atlas``);
 its domain is sin θₖ ≠ 0 and the sign of sin θₖ is the chart's branch.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from .atlas import chart_coordinates, local_masses
 from .kernels import chart_module
+from .projection import tangent_part
 
 __all__ = ["RotorSystem", "TOL"]
 
@@ -101,9 +103,7 @@ class RotorSystem:
 
     def project_tangent(self, theta, u):
         """M-orthogonal projection of an ambient vector onto the tangent space."""
-        s = np.sin(np.asarray(theta, dtype=float))
-        u = np.asarray(u, dtype=float)
-        return u - (u @ s) / np.sum(s * s * self.minv) * s * self.minv
+        return tangent_part(np.asarray(theta, dtype=float), np.asarray(u, dtype=float), self.minv)
 
     def random_state(self, seed=0, speed=1.0):
         """Random (theta, u) on the manifold with Σ mᵢuᵢ² = speed²."""
@@ -136,8 +136,8 @@ class RotorSystem:
         if abs(sk) < TOL["chart_domain"]:
             raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = {sk:.2e}; "
                              f"use chart={self.best_chart(theta)} (the best conditioned) or chart=None")
-        idx = [i for i in range(self.n) if i != k]
-        return int(k), idx, theta[idx], np.concatenate([self.masses[idx], self.masses[k:k + 1]])
+        idx = chart_coordinates(self.n, k)
+        return int(k), idx, theta[idx], local_masses(self.masses, k)
 
     def to_chart(self, theta, u, chart):
         """Local coordinates and velocity components of (theta, u) in ``chart``."""

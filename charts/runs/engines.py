@@ -12,11 +12,13 @@ import math
 
 import numpy as np
 
+from ..analyses.statistics import batch_ends
 from .plan import Plan, ticks
 from .run_state import RunError, RunState
 from .scene import Scene
 
-__all__ = ["KernelEngine", "IntegrateEngine", "chunk_bounds", "record_interval"]
+__all__ = ["KernelEngine", "IntegrateEngine", "chunk_bounds", "record_interval",
+           "lyapunov_batch_ends"]
 
 
 def chunk_bounds(scene: Scene, plan: Plan) -> list[int]:
@@ -27,10 +29,19 @@ def chunk_bounds(scene: Scene, plan: Plan) -> list[int]:
     total = ticks(run["t_final"], unit)
     every = ticks(run["checkpoint_every"], unit)
     ends = set(range(every, total, every)) | {total}
-    if "lyapunov" in scene.effects:
-        nb = scene.effects["lyapunov"]["n_batches"]
-        ends |= {int(round(total * (b + 1) / nb)) for b in range(nb)}
+    ends |= set(lyapunov_batch_ends(scene, plan))
     return sorted(e for e in ends if 0 < e <= total)
+
+
+def lyapunov_batch_ends(scene: Scene, plan: Plan) -> list[int]:
+    """Steps after the transient at which the Lyapunov batches end (the API's, see
+    ``charts.analyses.statistics.batch_ends``); none without a Lyapunov effect."""
+    if "lyapunov" not in scene.effects:
+        return []
+    ly = scene.effects["lyapunov"]
+    dt = scene.integrator["dt"]
+    return batch_ends(ticks(scene.run["t_final"], dt), ly["n_batches"],
+                      ticks(ly["reorth_every"], dt))
 
 
 def record_interval(plan: Plan) -> int:
@@ -42,32 +53,24 @@ def record_interval(plan: Plan) -> int:
 
 
 class KernelEngine:
-    """Ambient RK4 of eq (8) with k tangent vectors (eq 17) re-orthonormalised every step
-    (eq 18), via ``charts.lyapunov.advance_tangent``; k = 0 integrates the state alone."""
+    """Ambient RK4 of eq (8) with k tangent vectors (eq 17) re-orthonormalised (eq 18): the
+    run state's `TangentFlow` (``charts.solvers.tangent``); k = 0 integrates the state alone."""
 
     def __init__(self, st: RunState):
-        from ..analyses.lyapunov import advance_tangent
-
         self.st = st
-        self.adv = advance_tangent
-        sc = st.scene
-        self.dt = sc.integrator["dt"]
-        self.inner = sc.effects.get("lyapunov", {}).get("inner_product", "theta")
-        self.project_every = 1 if sc.integrator["project"] else 1 << 40
         self.step_unit = record_interval(st.plan) or None
 
     def advance(self, nsteps: int):
+        from ..solvers.status import IntegrationError
+
         st = self.st
-        st.logsum = self.adv(st.system, st.y, st.X, nsteps * self.dt, dt=self.dt, inner=self.inner,
-                             space="restricted", reorth_every=1,
-                             project_every=self.project_every, logsum=st.logsum)
+        try:
+            st.flow.advance(nsteps, where="scene (ambient RK4)")
+        except IntegrationError as exc:
+            raise RunError(f"{exc}; set [integrator] project = true or a smaller dt, or start "
+                           "from another state") from None
         st.rhs += 4 * nsteps
         st.steps += nsteps
-        if not (np.all(np.isfinite(st.y)) and np.all(np.isfinite(st.X)) and np.all(np.isfinite(st.logsum))):
-            raise RunError(f"the state became non-finite within {nsteps} steps before step {st.steps}: "
-                           "the trajectory came too close to a singular point of the manifold "
-                           "(all sin θ ≈ 0) and left the constraint; set [integrator] project = true "
-                           "or a smaller dt")
 
     def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
         """Advance from unit ``start`` to ``end``, stopping at every multiple of the

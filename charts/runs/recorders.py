@@ -78,23 +78,17 @@ def invariants(st: RunState):
 def curvature_sample(st: RunState, kdir: int, routes: str):
     """K matrices (route a numerical, route b exact) at the current point, in the frame of
     the velocity and the θ-parts of the first ``kdir`` Lyapunov vectors (eqs 19–21)."""
-    # TODO(lead): public frame functions in charts.analyses.curvature
-    from ..analyses.curvature import _frame, _rk4_frame_step, exact_curvature_matrix
+    from ..analyses.curvature import curvature_frame, exact_curvature_matrix, numerical_curvature
 
     sys_, y = st.system, st.y
     n = sys_.n
     Xj = np.empty((kdir, 2 * n))
     P = np.empty((kdir + 1, n))
-    uu = _frame(y, np.ascontiguousarray(st.X[:kdir]), sys_.minv, sys_.masses, Xj, P)
+    uu = curvature_frame(y, np.ascontiguousarray(st.X[:kdir]), sys_.minv, sys_.masses, Xj, P)
     Kn = Ke = None
     if routes in ("numerical", "both"):
-        dt = st.scene.integrator["dt"]
-        cs = np.zeros((kdir, kdir))
-        for sign in (1.0, -1.0):
-            y2, X2, P2 = y.copy(), Xj.copy(), P.copy()
-            _rk4_frame_step(y2, X2, P2, sys_.minv, sign * dt)
-            cs += (P2[1:] * sys_.masses) @ X2[:, :n].T
-        Kn = -(cs - 2.0 * np.eye(kdir)) / (dt * dt * uu)
+        Kn = np.empty((kdir, kdir))
+        numerical_curvature(y, Xj, P, sys_.minv, sys_.masses, st.scene.integrator["dt"], uu, Kn)
         st.rhs_frame += 8
     if routes in ("exact", "both"):
         Ke = exact_curvature_matrix(sys_, y[:n], P)

@@ -15,7 +15,8 @@ from ..geometry.system import RotorSystem
 from .plan import Plan
 from .scene import Scene, scene_to_dict
 
-__all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done"]
+__all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done", "tangent_flow",
+           "lyapunov_settings_of"]
 
 #: File name of the checkpoint in the output folder.
 CHECKPOINT = "checkpoint.npz"
@@ -42,10 +43,11 @@ class RunState:
             theta, u = system.random_state(seed=scene.initial["seed"],
                                            speed=scene.system["speed"])
         self.y0 = np.concatenate([theta, u])
-        self.y = self.y0.copy()
         self.speed = float(system.speed(u))
-        self.X = self._initial_vectors(plan.tangent_vectors)
-        self.logsum = np.zeros(plan.tangent_vectors)
+        #: the tangent flow of the kernel engine (state, vectors, log-norm sums), else None
+        self.flow = tangent_flow(scene, system, theta, u, plan.tangent_vectors) \
+            if plan.engine == "kernel" else None
+        self._y = self.y0.copy()
         self.lyap_marks = []           # (tick, logsum) at Lyapunov batch boundaries
         self.rhs = 0                   # evaluations of the (augmented) vector field
         self.rhs_frame = 0             # extra evaluations for the curvature frame steps
@@ -60,24 +62,37 @@ class RunState:
         self.chunk_index = 0
         self.n_main = None             # chunks of the main pass (set by the runner)
 
-    def _initial_vectors(self, k):
-        n = self.system.n
-        if k == 0:
-            return np.empty((0, 2 * n))
-        # TODO(lead): a public initial-vectors function in charts.analyses.lyapunov
-        from ..analyses.lyapunov import _initial_vectors, inner_weights
-        inner = self.scene.effects.get("lyapunov", {}).get("inner_product", "theta")
-        return _initial_vectors(self.system, self.y, k, self.scene.initial["seed"] or 0, True,
-                                inner_weights(self.system, inner))
+    @property
+    def y(self):
+        """The current state (θ, u), shape (2N,)."""
+        return self.flow.y if self.flow is not None else self._y
+
+    @y.setter
+    def y(self, value):
+        if self.flow is not None:
+            raise AttributeError("the kernel engine's state is advanced by its tangent flow")
+        self._y = value
+
+    @property
+    def X(self):
+        """The tangent vectors, shape (k, 2N) (none without the kernel engine)."""
+        return self.flow.X if self.flow is not None else np.empty((0, self._y.size))
+
+    @property
+    def logsum(self):
+        """Log-norm sums of eq (18) since the end of the transient, shape (k,)."""
+        return self.flow.logsum if self.flow is not None else np.empty(0)
 
     # -- checkpoint ------------------------------------------------------------------------
     def to_arrays(self) -> dict:
-        a = {"y": self.y, "X": self.X, "logsum": self.logsum,
+        a = {"y": self.y,
              "scalars": np.array([self.rhs, self.rhs_frame, self.chunk_index,
                                   self.elapsed, float(self.done), self.steps, self.chart]),
              "lyap_ticks": np.array([m[0] for m in self.lyap_marks], dtype=np.int64),
              "lyap_logsums": np.array([m[1] for m in self.lyap_marks]).reshape(
                  len(self.lyap_marks), self.plan.tangent_vectors)}
+        if self.flow is not None:
+            a.update({"flow_" + k: v for k, v in self.flow.state().items()})
         for name, rows in self.rec.items():
             a["rec_" + name] = np.array(rows, dtype=float)
         for name, rows in self.rec_t.items():
@@ -85,7 +100,10 @@ class RunState:
         return a
 
     def load_arrays(self, a):
-        self.y, self.X, self.logsum = a["y"].copy(), a["X"].copy(), a["logsum"].copy()
+        if self.flow is not None:
+            self.flow.load_state({k: a["flow_" + k] for k in self.flow.state()})
+        else:
+            self._y = a["y"].copy()
         rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]
         self.steps, self.chart = int(steps), int(chart)
         self.rhs, self.rhs_frame = int(rhs), int(rhs_frame)
@@ -95,6 +113,37 @@ class RunState:
             self.rec[name] = list(a["rec_" + name])
         for name in self.rec_t:
             self.rec_t[name] = list(a["rect_" + name])
+
+
+def lyapunov_settings_of(scene: Scene, system: RotorSystem, k: int):
+    """The settings of `charts.lyapunov_spectrum` that the scene's tangent flow mirrors
+    (validated by the scene schema): a scene and that API call give identical numbers."""
+    from ..analyses.lyapunov import lyapunov_settings
+
+    integ, run, eff = scene.integrator, scene.run, scene.effects
+    ly = eff.get("lyapunov", {})
+    dt = integ["dt"]
+    # without a Lyapunov effect the vectors (curvature frames) are re-orthonormalised every
+    # step, as in charts.curvature_along_trajectory
+    reorth = ly.get("reorth_every", dt)
+    project = dt if integ["project"] else (integ["project_every"] or None)
+    return lyapunov_settings(system, run["t_final"], dt=dt, n_exponents=max(k, 1),
+                             inner=ly.get("inner_product", "theta"), space="restricted",
+                             t_transient=run["t_transient"], n_batches=ly.get("n_batches", 2),
+                             reorth_every=reorth, project_every=project, record_every=reorth,
+                             seed=scene.initial["seed"] or 0)
+
+
+def tangent_flow(scene: Scene, system: RotorSystem, theta, u, k: int):
+    """The tangent flow of the kernel engine: ``k`` vectors, settings as the API's."""
+    from ..analyses.lyapunov import lyapunov_flow
+    from ..solvers.tangent import TangentFlow
+
+    cfg = lyapunov_settings_of(scene, system, k)
+    if k:
+        return lyapunov_flow(system, theta, u, cfg)
+    return TangentFlow(system, theta, u, 0, dt=cfg.dt, reorth_every=cfg.reorth,
+                       project_every=cfg.project)
 
 
 def units_done(st: RunState, ends) -> int:

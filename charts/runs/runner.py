@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from ..geometry.system import RotorSystem
-from .engines import IntegrateEngine, KernelEngine, chunk_bounds
+from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
 from .paper import PAPER_EXPONENTS
 from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
@@ -79,9 +79,7 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     recorders = make_recorders(st, transient)
     lyap_ends = set()
     if "lyapunov" in scene.effects:
-        total = ends[-1] - transient
-        nb = scene.effects["lyapunov"]["n_batches"]
-        lyap_ends = {transient + int(round(total * (b + 1) / nb)) for b in range(nb)}
+        lyap_ends = {transient + e for e in lyapunov_batch_ends(scene, plan)}
 
     n_main = len(ends) if plan.main_pass else 0
     n_units = n_main + (1 if plan.angles else 0)
@@ -151,8 +149,9 @@ def _angles_pass(st: RunState):
     n = sys_.n
     res = hyperbolicity_angles(sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
                                n_unstable=a["n_vectors"], t_transient=sc.run["t_transient"],
-                               sample_every=ticks(a["sample_every"], dt),
-                               checkpoint_every=ANGLES_CHECKPOINT_STEPS,
+                               sample_every=a["sample_every"],
+                               checkpoint_every=ANGLES_CHECKPOINT_STEPS * dt,
+                               project_every=st.flow.project_every * dt or None,
                                seed=sc.initial["seed"] or 0)
     st.rec["angles"] = [list(r) for r in np.column_stack([res.t, res.phi_full,
                                                           res.phi_restricted])]

@@ -105,8 +105,12 @@ SCHEMA: dict[str, dict[str, Key]] = {
                     check=_between(1e-15, 1e-1)),
         "atol": Key("float", None, "Absolute tolerance (default 1e-12). dop853 only.",
                     check=_between(1e-18, 1e-1)),
-        "project": Key("bool", False, "Project back onto the constraint and tangency after "
-                       "each step (ambient formulation)."),
+        "project": Key("bool", False, "Project back onto the invariants after every step "
+                       "(overrides project_every)."),
+        "project_every": Key("float", 1.0, "Time between projections of the state onto the "
+                             "invariants (constraint, tangency, energy) for ambient RK4, as "
+                             "project_every of the analyses; 0 = never. A multiple of dt.",
+                             check=_ge(0)),
     },
     "run": {
         "t_final": Key("float", None, "Simulated time after the transient.", check=_gt(0),
@@ -140,8 +144,10 @@ EFFECTS: dict[str, dict[str, Key]] = {
                            check=_ge(1)),
         "inner_product": Key("str", "theta", "\"theta\": the paper's θ-only product (sec. 2); "
                              "\"full\": all 2N components.", choices=("theta", "full")),
-        "n_batches": Key("int", 10, "Batches for the batch-means standard error.",
+        "n_batches": Key("int", 20, "Batches for the batch-means standard error.",
                          check=_ge(2)),
+        "reorth_every": Key("float", 0.1, "Time between re-orthonormalisations (eq 18); a "
+                            "multiple of dt that divides t_final.", check=_gt(0)),
     },
     "curvature": {
         "route": Key("str", "both", "\"numerical\": eqs (19)–(21); \"exact\": from the "
@@ -469,10 +475,17 @@ def _check_effects(source, n, integ, run, effects):
             raise SceneError(f"{_where(source, sect('spectrum'), 'nperseg')} = {s['nperseg']!r} is "
                              f"not allowed: expected at most the number of samples, {n_samples} "
                              "(lengthen [run] t_final or shorten the segments)")
+    if integ["formulation"] == "ambient" and integ["method"] == "rk4" and integ["project_every"]:
+        _multiple(source, "integrator", "project_every", integ["project_every"], integ["dt"],
+                  "[integrator] dt")
     if "lyapunov" in effects:
         ly = effects["lyapunov"]
         if ly["n_exponents"] is None:
             ly["n_exponents"] = n - 2
+        _multiple(source, sect("lyapunov"), "reorth_every", ly["reorth_every"], integ["dt"],
+                  "[integrator] dt")
+        _multiple(source, "run", "t_final", run["t_final"], ly["reorth_every"],
+                  "[effects.lyapunov] reorth_every")
         # the vectors stay in the 2N−2-dim. constraint-preserving subspace; the θ-only
         # product sees only its N−1 θ-directions (more vectors would be degenerate)
         kmax = n - 1 if ly["inner_product"] == "theta" else 2 * n - 2

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..analyses.lyapunov import exponents_from_marks
+
 from ..analyses.curvature import gaussian_curvature_eq22
 from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
 from ..analyses.spectra import power_spectrum
@@ -159,17 +161,13 @@ def lyapunov_result(st, out, *, t_done, **_):
     if not marks:
         res["note"] = "no Lyapunov batch finished yet"
         return
-    ticks = np.array([m[0] for m in marks], dtype=float)
+    steps = np.array([m[0] for m in marks])
     L = np.array([m[1] for m in marks])[:, : ly["n_exponents"]]
-    unit = st.scene.integrator["dt"]
-    T = ticks * unit
-    exps = L[-1] / T[-1]
+    T = steps * st.scene.integrator["dt"]
+    exps, batches, stderr = exponents_from_marks(L, steps, st.scene.integrator["dt"])
     res["exponents"] = exps.tolist()
     if len(marks) >= 2:
-        prev = np.vstack([np.zeros((1, L.shape[1])), L[:-1]])
-        Tp = np.concatenate([[0.0], T[:-1]])
-        batches = (L - prev) / (T - Tp)[:, None]
-        res["stderr"] = (batches.std(axis=0, ddof=1) / np.sqrt(len(batches))).tolist()
+        res["stderr"] = stderr.tolist()
         res["batches"] = len(batches)
     equal = np.allclose(st.system.masses, 1.0)
     if n in PAPER_EXPONENTS and equal:

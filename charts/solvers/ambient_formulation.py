@@ -1,60 +1,63 @@
-"""Ambient formulation of the flow: eq (8) with masses, eq (19) for transported vectors.
+"""Ambient formulation of the flow for the integration loop: eq (8) with masses, eq (19)
+for transported vectors (both from ``charts.flows.ambient``).
 
-State ``y = (θ₀…θ_{N−1}, u₀…u_{N−1}, p¹, …, pᵏ)``, shape ((2 + k)·N,), all ambient:
+State ``y = (θ₀…θ_{N−1}, u₀…u_{N−1}, p¹, …, pᵏ)``, shape ((2 + k)·N,), all ambient.  The
+constraint Σcos θ = 0 (eq 9), the tangency Σ uᵢ sin θᵢ = 0 (eq 10) and the energy ½Σ mᵢuᵢ²
+are first integrals; with ``project=True`` the state is put back on all three after every
+step (``charts.geometry.projection.project_state``) and each pʲ is made tangent again.  The
+loop monitors all three at every step.
 
-    θ̇ᵢ = uᵢ,   mᵢ u̇ᵢ = −Λ sin θᵢ,   Λ = Σ u_j² cos θ_j / Σ sin²θ_j/m_j         (eq 8)
-    mᵢ ṗᵢ = −(Σ p_j u_j cos θ_j / Σ sin²θ_j/m_j) sin θᵢ                        (eq 19)
-
-The constraint Σcos θ = 0 (eq 9), the tangency Σ uᵢ sin θᵢ = 0 (eq 10) and the energy
-½Σ mᵢuᵢ² are first integrals; with ``project=True`` the state is put back on all three
-after every step (``charts.ambient.project_state``) and each pʲ is projected
-M-orthogonally onto the tangent space.  The driver monitors all three at every step.
-
-Parameters: ``par = (N, 1/m (N), m (N), speed, project)``, ``ipar = (N, k)``.
+Parameters: ``par = (N, 1/m (N), m (N), speed, project, cap fraction, work (3N))`` — the
+work area holds sin θ, cos θ and sin θ/m of the point being evaluated, so that no hook
+allocates; ``ipar = (N, k)``.
 """
 from __future__ import annotations
 
-import math
 from functools import cache
 
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import project_state
+from ..flows.ambient import multiplier, sincos, state_rate, transport_rate
+from ..geometry.projection import project_state, project_velocity
 from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, Formulation
 from .rk import RHS_SIG
+from .status import step_cap
 
 __all__ = ["AmbientFlow"]
+
+
+@njit(cache=True, inline="always")
+def _point(y, par, n):
+    """Views of the work area: (1/m, sin θ, cos θ, sin θ/m) with sin/cos of y filled in."""
+    w = 2 * n + 4
+    minv = par[1:1 + n]
+    s = par[w:w + n]
+    c = par[w + n:w + 2 * n]
+    f = par[w + 2 * n:w + 3 * n]
+    sincos(y, 0, n, s, c)
+    for j in range(n):
+        f[j] = s[j] * minv[j]
+    return minv, s, c, f
 
 
 def _rhs(y, par, dy):
     """Eq (8) and eq (19); returns S = Σ sin²θ (0 at a singular point: dy is then 0)."""
     n = int(par[0])
     nv = (y.size - 2 * n) // n
-    A = 0.0
-    Bm = 0.0
-    S = 0.0
-    for j in range(n):
-        s = math.sin(y[j])
-        A += y[n + j] * y[n + j] * math.cos(y[j])
-        Bm += s * s * par[1 + j]
-        S += s * s
-    if Bm == 0.0:
+    minv, s, c, f = _point(y, par, n)
+    lam, B = multiplier(y, 0, n, minv, s, c)
+    if B == 0.0:
         for i in range(y.size):
             dy[i] = 0.0
         return 0.0
-    lam = A / Bm
-    for i in range(n):
-        dy[i] = y[n + i]
-        dy[n + i] = -lam * math.sin(y[i]) * par[1 + i]
+    state_rate(y, 0, n, minv, s, lam, dy, 0)
     for r in range(nv):
         o = (2 + r) * n
-        a = 0.0
-        for j in range(n):
-            a += y[o + j] * y[n + j] * math.cos(y[j])
-        a /= Bm
-        for i in range(n):
-            dy[o + i] = -a * math.sin(y[i]) * par[1 + i]
+        transport_rate(y, o, n, y, 0, f, c, 1.0 / B, dy, o)
+    S = 0.0
+    for j in range(n):
+        S += s[j] * s[j]
     return S
 
 
@@ -63,29 +66,19 @@ def _cap(y, par, ipar):
     S = 0.0
     U = 0.0
     for j in range(n):
-        S += math.sin(y[j]) ** 2
+        S += np.sin(y[j]) ** 2
         U += y[n + j] ** 2
-    if U == 0.0:
-        return np.inf
-    return par[2 * n + 3] * math.sqrt(S / U)
+    return step_cap(S, U, par[2 * n + 3])
 
 
 @njit(cache=True)
 def _project(y, par, ipar):
     """Project (θ, u) onto the invariants and each p onto the tangent space, in place."""
     n = ipar[0]
-    nv = ipar[1]
     project_state(y[:2 * n], par[1 + n:1 + 2 * n], par[2 * n + 1])
-    Bm = 0.0
-    for j in range(n):
-        Bm += math.sin(y[j]) ** 2 * par[1 + j]
-    for r in range(nv):
-        o = (2 + r) * n
-        G = 0.0
-        for j in range(n):
-            G += y[o + j] * math.sin(y[j])
-        for j in range(n):
-            y[o + j] -= G / Bm * math.sin(y[j]) * par[1 + j]
+    minv, s, c, f = _point(y, par, n)
+    for r in range(ipar[1]):
+        project_velocity(y, (2 + r) * n, n, s, minv)
 
 
 def _post(y, par, ipar, t, log):
@@ -123,6 +116,6 @@ class AmbientFlow(Formulation):
         y = np.concatenate([theta, u, P.ravel()])
         speed = float(sys.speed(u))
         par = np.concatenate([[n], sys.minv, sys.masses,
-                              [speed, float(self.project), self.cap_fraction]])
+                              [speed, float(self.project), self.cap_fraction], np.zeros(3 * n)])
         ipar = np.array([n, P.shape[0]], dtype=np.int64)
         return y, par, ipar

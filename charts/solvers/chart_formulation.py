@@ -32,9 +32,12 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from ..geometry.kernels import compiled
-from .loop import DOMAIN_CAP_FRACTION, CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from ..flows.chart import chart_rates
+from ..geometry.atlas import ambient_index
+from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
+from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from .status import DOMAIN_CAP_FRACTION, step_cap
 
 __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
 
@@ -99,17 +102,12 @@ def _to_ambient_impl(y, par, ipar, row):
             acc += y[o + a] * math.sin(y[a])
         row[(1 + b) * n + k] = -acc / sk
     for a in range(d):
-        i = a if a < k else a + 1
+        i = ambient_index(a, k)
         row[i] = y[a]
         for b in range(1 + nv):
             row[(1 + b) * n + i] = y[(1 + b) * d + a]
     if par[1 + 2 * n + _PROJ] != 0.0:  # samples from the dense output get the energy too
-        E = 0.0
-        for i in range(n):
-            E += par[1 + n + i] * row[n + i] ** 2
-        f = par[1 + 2 * n + _SPEED] / math.sqrt(E)
-        for i in range(n):
-            row[n + i] *= f
+        rescale_speed(row, n, n, par[1 + n:1 + 2 * n], par[1 + 2 * n + _SPEED])
     return 0.0
 
 
@@ -128,7 +126,7 @@ def enter_chart(row, n, nv, j, masses, y, par, ipar):
     ipar[3] = 1 if sj >= 0.0 else -1
     par[1 + 2 * n + _OFF] = thj - math.atan2(sj, math.cos(thj))
     for a in range(d):
-        i = a if a < j else a + 1
+        i = ambient_index(a, j)
         par[1 + a] = masses[i]
         for b in range(2 + nv):
             y[b * d + a] = row[b * n + i]
@@ -191,48 +189,19 @@ def _cap(y, par, ipar):
     U += (acc / sk) ** 2
     if U == 0.0:
         return np.inf
-    return min(par[1 + 2 * n + _CAP] * math.sqrt(S), DOMAIN_CAP_FRACTION * abs(sk)) / math.sqrt(U)
+    return min(step_cap(S, U, par[1 + 2 * n + _CAP]), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
+
+
+@cache
+def chart_rhs(n: int):
+    """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop."""
+    return njit(RHS_SIG)(chart_rates(n))
 
 
 @cache
 def _common_hooks():
     return (njit(CAP_SIG, cache=True)(_cap), njit(POST_SIG, cache=True)(_post),
             njit(OUT_SIG, cache=True)(_to_ambient))
-
-
-@cache
-def chart_rhs(n: int):
-    """Compiled right-hand side of eqs (14) + (16) for N = ``n`` (any chart: the local
-    masses in ``par`` select it).  Returns S = Σ sin²θ, or −1 outside the chart."""
-    kern = compiled(n)
-    ga = kern.geodesic_acceleration
-    tr = kern.transport_rate
-    d = n - 1
-
-    def rhs(y, par, dy):
-        nv = (y.size - 2 * d) // d
-        C = 0.0
-        S = 0.0
-        for a in range(d):
-            C += math.cos(y[a])
-            S += math.sin(y[a]) ** 2
-        s2 = 1.0 - C * C
-        if s2 <= 0.0:
-            for i in range(y.size):
-                dy[i] = 0.0
-            return -1.0
-        m = par[1:1 + n]
-        q = y[:d]
-        v = y[d:2 * d]
-        ga(q, v, m, dy[d:2 * d])
-        for a in range(d):
-            dy[a] = y[d + a]
-        for r in range(nv):
-            o = (2 + r) * d
-            tr(q, v, y[o:o + d], m, dy[o:o + d])
-        return S + s2
-
-    return njit(RHS_SIG)(rhs)
 
 
 class ChartFlow(Formulation):

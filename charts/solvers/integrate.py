@@ -19,20 +19,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..geometry.system import RotorSystem
 from . import loop as D
+from .status import (CAP_FRACTION, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
+                     IntegrationError, SingularPointError, status_error)
 from .ambient_formulation import AmbientFlow
 from .chart_formulation import DEFAULT_TAU, ChartFlow
-from ..geometry.system import RotorSystem
 
 __all__ = ["integrate", "IntegrationResult", "IntegrationError", "SingularPointError",
            "ChartDomainError", "TOLERANCES"]
 
 #: Named tolerances of the integrators.
 TOLERANCES = {
-    # Σ sin²θ below which a point counts as an N = 4 singular point (distance ≈ 1e-7):
-    # there the sines carry a relative rounding error ≈ 1e-16/√S ≈ 1e-9, and the flow
-    # (whose acceleration scales as 1/√S) cannot be continued meaningfully.
-    "singular_S": 1e-14,
+    # Σ sin²θ below which a point counts as an N = 4 singular point (charts.solvers.status).
+    "singular_S": SINGULAR_S,
     # default relative tolerance of DOP853; atol defaults to rtol·min(1, speed).
     "rtol": 1e-10,
     # the smallest rtol accepted (the error estimate is meaningless near rounding level).
@@ -45,22 +45,6 @@ _METHODS = {"rk4": D.METHOD_RK4, "dop853": D.METHOD_DOP853}
 _FORMULATIONS = {"ambient": AmbientFlow, "chart": ChartFlow}
 _EVERY_STEP_BUFFER = 4096
 _LOG_CAPACITY = 1024
-
-
-class IntegrationError(RuntimeError):
-    """The run could not be completed; ``err.result`` holds the samples computed so far."""
-
-    def __init__(self, message, result):
-        super().__init__(message)
-        self.result = result
-
-
-class SingularPointError(IntegrationError):
-    """The trajectory reached a singular point of the manifold (N = 4)."""
-
-
-class ChartDomainError(IntegrationError):
-    """A fixed step left the domain of the current chart."""
 
 
 @dataclass
@@ -227,7 +211,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     kw = {"tau": tau, "chart": chart} if formulation == "chart" else {}
     if formulation == "ambient" and (chart is not None or tau != DEFAULT_TAU):
         raise ValueError("tau and chart apply to formulation='chart'")
-    form = form_cls(system, project=project, cap_fraction=D.CAP_FRACTION[method], **kw)
+    form = form_cls(system, project=project, cap_fraction=CAP_FRACTION[method], **kw)
     y, par, ipar = form.initial(theta0, u0, P)
     rhs, cap, post, to_amb = form.hooks()
     st, ist = D.new_state(_METHODS[method], t_final, dt, rtol_v, atol_v, float(system.energy(u0)),
@@ -287,14 +271,12 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         drain()
         if status < 0:
             res = result(f"failed at t = {st[D.S_T]:.17g}")
-            msg = D.STATUS_MESSAGES[status].format(t=st[D.S_T], s_sing=TOLERANCES["singular_S"])
-            exc = {D.SINGULAR: SingularPointError, D.DOMAIN: ChartDomainError}.get(status, IntegrationError)
-            raise exc(f"{formulation}/{method}: {msg}", res)
-        if status == D.FINISHED:
+            raise status_error(status, st[D.S_T], f"{formulation}/{method}", res)
+        if status == FINISHED:
             if progress is not None:
                 progress(st[D.S_T], t_final)
             break
-        if status == D.RUNNING and progress is not None and progress(st[D.S_T], t_final) is False:
+        if status == RUNNING and progress is not None and progress(st[D.S_T], t_final) is False:
             status_name = "stopped"
             break
     return result(status_name)

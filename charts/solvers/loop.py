@@ -10,7 +10,7 @@ requested times, invariant monitoring, counters, status codes).  The contract:
     number if ``y`` is outside the domain of the formulation's coordinates.
 ``cap(y, par, ipar) -> hmax``  (:data:`CAP_SIG`)
     Largest step the formulation accepts from ``y`` (resolution of the geometry near
-    singular points and chart boundaries; see :data:`CAP_FRACTION`).
+    singular points and chart boundaries; see ``charts.solvers.status``).
 ``post(y, par, ipar, t, log) -> code``  (:data:`POST_SIG`)
     Called after every accepted step, may change ``y`` in place (projection, chart switch)
     and append rows to ``log``, shape (capacity, 3).  Returns :data:`POST_OK`,
@@ -29,10 +29,14 @@ import math
 import numpy as np
 from numba import njit, types
 
+from ..geometry.projection import invariants_of
+from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FULL, RUNNING,
+                     SINGULAR, UNDERFLOW)
 from .rk import (RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense, dop853_step, initial_step,
                  rk4_step, step_factor)
 
-__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "drive", "new_state", "STATUS_MESSAGES"]
+__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "drive", "new_state", "monitor", "Formulation",
+           "POST_OK", "POST_CHANGED", "POST_LOG_FULL", "METHOD_RK4", "METHOD_DOP853"]
 
 _f8 = types.float64
 _i8 = types.int64
@@ -44,18 +48,6 @@ CAP_SIG = _f8(_v, _v, _iv)
 POST_SIG = _i8(_v, _v, _iv, _f8, _m)
 OUT_SIG = _f8(_v, _v, _iv, _v)
 
-#: Steps are limited to move the point by at most a fraction of its distance to the nearest
-#: singular point (≈ √S, fraction ``CAP_FRACTION[method]``) and to the boundary of the current
-#: chart (≈ |sin θₖ|, fraction ``DOMAIN_CAP_FRACTION``).  Within one step |Δ sin θₖ| ≤ |u|·h,
-#: so 0.5 keeps every stage strictly inside the chart, and a trajectory aimed at a singular
-#: point approaches it geometrically until the singular-point test catches it instead of
-#: stepping over it.  DOP853 controls its own error, so its cap only serves that safety.  RK4
-#: has no error control, and near a singular point the path turns by ~|u|h/√S per step; its
-#: local error ∝ (fraction)⁵ per step, and 0.03 keeps a close pass (S ≈ 1e-6) at an energy
-#: error ≈ 1e-8 (0.1 gave 3e-6).  For dt = 0.01 at unit speed it only binds where S < 0.1.
-CAP_FRACTION = {"dop853": 0.5, "rk4": 0.03}
-DOMAIN_CAP_FRACTION = 0.5
-
 # float state
 S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
 # int state
@@ -65,20 +57,6 @@ S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
 METHOD_RK4, METHOD_DOP853 = 0, 1
 
 POST_OK, POST_CHANGED, POST_LOG_FULL = 0, 1, 3
-
-RUNNING, FINISHED, OUT_FULL, LOG_FULL = 0, 1, 2, 3
-SINGULAR, DOMAIN, UNDERFLOW, NONFINITE = -1, -2, -3, -4
-
-STATUS_MESSAGES = {
-    SINGULAR: "the trajectory reached a singular point of the manifold (N = 4: all θᵢ ∈ {{0, π}}, "
-              "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
-              "through it. Start from a different state (the samples up to t are in err.result).",
-    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}; reduce dt "
-            "(or use method='dop853', which shrinks such steps automatically).",
-    UNDERFLOW: "the step size underflowed at t = {t:.17g}; the solution is not resolvable at "
-               "this tolerance. Loosen rtol/atol or check the initial state.",
-    NONFINITE: "the state became non-finite at t = {t:.17g}; reduce dt or tighten rtol.",
-}
 
 
 def new_state(method: int, t_final: float, dt: float, rtol: float, atol: float, e0: float,
@@ -94,14 +72,10 @@ def new_state(method: int, t_final: float, dt: float, rtol: float, atol: float, 
 
 
 @njit(cache=True)
-def _monitor(row, n, masses, e0, mon):
-    F = 0.0
-    G = 0.0
-    E = 0.0
-    for i in range(n):
-        F += math.cos(row[i])
-        G += row[n + i] * math.sin(row[i])
-        E += 0.5 * masses[i] * row[n + i] ** 2
+def monitor(row, n, masses, e0, mon):
+    """Update ``mon`` = running max of |F|, |G|, |ΔE|/E₀ with the state ``row``; False if the
+    state is not finite."""
+    F, G, E = invariants_of(row, n, masses)
     dE = abs(E - e0) / e0
     if not (math.isfinite(F) and math.isfinite(G) and math.isfinite(E)):
         return False
@@ -244,7 +218,7 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
             T_out[ist[I_NOUT]] = t
             ist[I_NOUT] += 1
         to_ambient(y, par, ipar, arow)
-        if not _monitor(arow, n, masses, st[S_E0], mon):
+        if not monitor(arow, n, masses, st[S_E0], mon):
             status = NONFINITE
             break
         if code == POST_LOG_FULL:

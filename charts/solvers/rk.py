@@ -26,7 +26,7 @@ import numpy as np
 from numba import njit, types
 
 __all__ = [
-    "RHS_SIG", "RHS_TYPE", "rk4_step", "dop853_step", "dop853_dense", "dense_eval",
+    "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "rk4_combine", "rk4_step", "dop853_step", "dop853_dense", "dense_eval",
     "initial_step", "step_factor", "N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER",
 ]
 
@@ -237,25 +237,53 @@ MAX_FACTOR = 10.0
 ERROR_EXPONENT = -1.0 / 8.0
 
 
+#: The classical RK4 tableau (the paper's integrator): stage nodes and weights.
+RK4_NODES = (0.0, 0.5, 0.5, 1.0)
+RK4_WEIGHTS = (1.0 / 6.0, 2.0 / 6.0, 2.0 / 6.0, 1.0 / 6.0)
+
+
+@njit(cache=True, inline="always")
+def rk4_node(st):
+    """``RK4_NODES[st]`` as arithmetic (a run-time index into a tuple is slow in Numba)."""
+    return 0.0 if st == 0 else (0.5 if st < 3 else 1.0)
+
+
+@njit(cache=True, inline="always")
+def rk4_point(z, K, st, h, L, zt):
+    """The point of RK4 stage ``st`` of a step h from z: zt = z + c_st·h·K_{st−1}.
+    z, zt : flat, length L; K : flat, length 4L, stage j at offset j·L."""
+    if st == 0:
+        for i in range(L):
+            zt[i] = z[i]
+    else:
+        a = rk4_node(st) * h
+        o = (st - 1) * L
+        for i in range(L):
+            zt[i] = z[i] + a * K[o + i]
+
+
+@njit(cache=True, inline="always")
+def rk4_combine(z, K, h, L, out):
+    """out = z + h/6·(K₀ + 2K₁ + 2K₂ + K₃) (the weights `RK4_WEIGHTS`; out may be z: in
+    place); K flat, stage j at offset j·L."""
+    h6 = RK4_WEIGHTS[0] * h
+    for i in range(L):
+        out[i] = z[i] + h6 * (K[i] + 2.0 * K[L + i] + 2.0 * K[2 * L + i] + K[3 * L + i])
+
+
 @njit(cache=True)
 def rk4_step(f, y, h, par, K, ytmp, ynew):
     """One classical RK4 step of size ``h`` from ``y``, shape (n,), into ``ynew``.
 
-    ``K`` : work array, shape (4, n); ``ytmp`` : work array, shape (n,).
+    ``K`` : work array, shape (≥ 4, n), C-contiguous; ``ytmp`` : work array, shape (n,).
     Returns the smallest health over the four stages."""
     n = y.size
-    hmin = f(y, par, K[0])
-    for i in range(n):
-        ytmp[i] = y[i] + 0.5 * h * K[0, i]
-    hmin = min(hmin, f(ytmp, par, K[1]))
-    for i in range(n):
-        ytmp[i] = y[i] + 0.5 * h * K[1, i]
-    hmin = min(hmin, f(ytmp, par, K[2]))
-    for i in range(n):
-        ytmp[i] = y[i] + h * K[2, i]
-    hmin = min(hmin, f(ytmp, par, K[3]))
-    for i in range(n):
-        ynew[i] = y[i] + h / 6.0 * (K[0, i] + 2.0 * K[1, i] + 2.0 * K[2, i] + K[3, i])
+    Kf = K.reshape(K.size)
+    hmin = 1e300
+    for st in range(4):
+        rk4_point(y, Kf, st, h, n, ytmp)
+        hmin = min(hmin, f(ytmp, par, K[st]))
+    rk4_combine(y, Kf, h, n, ynew)
     return hmin
 
 

@@ -1,0 +1,90 @@
+"""Argument checks shared by every analysis: one message style, one rule for time grids.
+
+Times are in time units of the flow everywhere.  A duration on the RK4 grid (``t_final``,
+``t_transient``, ``sample_every``, ...) must be a whole number of steps ``dt``: it is never
+rounded silently.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter"]
+
+#: Relative slack when checking that a duration is a whole number of steps (rounding of
+#: decimal inputs such as 0.1 / 0.01 = 9.999999999999998).
+GRID_RTOL = 1e-9
+
+
+def _number(name, x):
+    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise ValueError(f"{name} must be a number, got {x!r}")
+    x = float(x)
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {x!r}")
+    return x
+
+
+def positive_time(name, x) -> float:
+    """``x`` as a float; ValueError naming ``name`` unless finite and > 0."""
+    x = _number(name, x)
+    if not x > 0:
+        raise ValueError(f"{name} must be positive, got {x!r}")
+    return x
+
+
+def nonnegative_time(name, x) -> float:
+    """``x`` as a float; ValueError naming ``name`` unless finite and >= 0."""
+    x = _number(name, x)
+    if x < 0:
+        raise ValueError(f"{name} must be >= 0, got {x!r}")
+    return x
+
+
+def steps_of(name, t, dt, *, allow_zero=False) -> int:
+    """The number of steps ``dt`` in the duration ``t``; ValueError naming ``name`` if ``t``
+    is not finite, negative (or zero unless ``allow_zero``), or not a whole number of steps."""
+    t = nonnegative_time(name, t) if allow_zero else positive_time(name, t)
+    k = round(t / dt)
+    if abs(k * dt - t) > GRID_RTOL * max(t, dt):
+        raise ValueError(f"{name}={t:g} is not a whole number of steps dt={dt:g}; use a multiple "
+                         f"of dt (e.g. {max(k, 1) * dt:g})")
+    return int(k)
+
+
+def positive_int(name, x, minimum=1) -> int:
+    """``x`` as an int; ValueError naming ``name`` unless an integer >= ``minimum``."""
+    if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or x < minimum:
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {x!r}")
+    return int(x)
+
+
+class _Reporter:
+    def __init__(self, progress, total, desc):
+        self.total = float(total)
+        self.done = 0.0
+        self.callback = progress if callable(progress) else None
+        self.bar = None
+        if progress is True:
+            from tqdm.auto import tqdm
+            self.bar = tqdm(total=round(self.total, 10), desc=desc, unit="t", leave=False)
+
+    def update(self, t):
+        self.done += t
+        if self.bar is not None:
+            self.bar.update(t)
+        if self.callback is not None:
+            self.callback(self.done, self.total)
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+def progress_reporter(progress, total, desc) -> _Reporter:
+    """Progress in simulated time: ``progress`` False (silent), True (a tqdm bar) or a
+    callable ``progress(t_done, t_total)``."""
+    if not (progress is True or progress is False or progress is None or callable(progress)):
+        raise ValueError(f"progress must be True, False or callable(t_done, t_total), got {progress!r}")
+    return _Reporter(progress, total, desc)

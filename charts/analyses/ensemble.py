@@ -1,0 +1,92 @@
+"""Ensembles: one analysis on independent random initial states, in parallel processes."""
+from __future__ import annotations
+
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .arguments import positive_int
+from .statistics import standard_error
+
+__all__ = ["EnsembleResult", "run_ensemble"]
+
+
+@dataclass
+class EnsembleResult:
+    """Results of one analysis on independent trajectories (seeds seed, seed+1, …).
+
+    members : list of the analysis' results, in seed order.
+    exponents, stderr : (k,) for Lyapunov members: mean over the members and its two-sided
+        standard error (their spread); None for other analyses.
+    """
+    members: list
+    exponents: np.ndarray | None = None
+    stderr: np.ndarray | None = None
+    params: dict = field(default_factory=dict)
+
+    def __len__(self):
+        return len(self.members)
+
+    def __iter__(self):
+        return iter(self.members)
+
+    def __getitem__(self, i):
+        return self.members[i]
+
+    def concatenate(self, attribute):
+        """The members' array ``attribute`` joined along its first axis."""
+        return np.concatenate([getattr(m, attribute) for m in self.members])
+
+    def __repr__(self):
+        if self.exponents is None:
+            return f"EnsembleResult({len(self)} members)"
+        pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
+        return f"EnsembleResult([{pm}], {len(self)} members)"
+
+
+def _member(job):
+    fn, n, masses, seed, speed, t_final, kwargs = job
+    from ..geometry.system import RotorSystem
+    system = RotorSystem(n, masses)
+    theta0, u0 = system.random_state(seed=seed, speed=speed)
+    return fn(system, theta0, u0, t_final, seed=seed, **kwargs)
+
+
+def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
+                 progress=False, desc="ensemble", **kwargs) -> EnsembleResult:
+    """``fn(system, theta0, u0, t_final, seed=s, **kwargs)`` on ``n_trajectories`` random
+    states of speed ``speed`` (seeds seed, seed+1, …), in ``workers`` processes (default:
+    all cores; 1: in this process).  Members whose results have ``exponents`` give the
+    ensemble's mean and standard error."""
+    n_trajectories = positive_int("n_trajectories", n_trajectories, 2)
+    seed = positive_int("seed", seed, 0)
+    if workers is not None:
+        workers = positive_int("workers", workers)
+    jobs = [(fn, system.n, system.masses, seed + i, speed, t_final, kwargs)
+            for i in range(n_trajectories)]
+    if workers == 1:
+        it = map(_member, jobs)
+        members = _collect(it, len(jobs), progress, desc)
+    else:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            members = _collect(pool.map(_member, jobs), len(jobs), progress, desc)
+    res = EnsembleResult(members, params=dict(n=system.n, masses=system.masses.tolist(),
+                                              n_trajectories=n_trajectories, seed=seed,
+                                              speed=speed, t_final=t_final, **kwargs))
+    if all(hasattr(m, "exponents") for m in members):
+        E = np.array([m.exponents for m in members])
+        res.exponents, res.stderr = E.mean(axis=0), standard_error(E)
+    return res
+
+
+def _collect(it, total, progress, desc):
+    if progress is True:
+        from tqdm.auto import tqdm
+        it = tqdm(it, total=total, desc=desc, leave=False)
+    out = []
+    for i, r in enumerate(it):
+        out.append(r)
+        if callable(progress):
+            progress(i + 1, total)
+    return out

@@ -1,0 +1,169 @@
+"""Projections onto the manifold and its tangent spaces, the energy rescale and the
+invariants: the only place they are written.
+
+Invariants of eq (8): the constraint F = Σ cos θ = 0 (eq 9), the tangency G = Σ u sin θ = 0
+(eq 10) and the energy E = ½ Σ m u².  Ḟ = −G, so the subspace of perturbations
+
+    T_r = {ξ = (θ̃, ũ) : δF = −Σ sin θ θ̃ = 0,  δG = Σ (sin θ ũ + u cos θ θ̃) = 0}
+
+(dimension 2N − 2) is invariant under eq (17); the tangent-vector projections map onto it.
+"""
+from __future__ import annotations
+
+from math import cos, sin, sqrt
+
+import numpy as np
+from numba import njit
+
+__all__ = ["project_state", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc",
+           "project_tangent_euclidean", "invariants", "invariants_of"]
+
+
+@njit(cache=True, inline="always")
+def rescale_speed(y, o, n, m, speed):
+    """Scale the velocities y[o:o+n] in place so that Σ mᵢuᵢ² = speed² (energy)."""
+    E = 0.0
+    for j in range(n):
+        E += m[j] * y[o + j] * y[o + j]
+    f = speed / sqrt(E)
+    for j in range(n):
+        y[o + j] *= f
+
+
+@njit(cache=True, inline="always")
+def project_velocity(x, o, n, s, minv):
+    """Make the ambient vector x[o:o+N] tangent: remove its Σ xᵢ sin θᵢ component
+    M-orthogonally (along M⁻¹ sin θ); s = sin θ."""
+    G = 0.0
+    B = 0.0
+    for j in range(n):
+        G += x[o + j] * s[j]
+        B += s[j] * s[j] * minv[j]
+    a = G / B
+    for j in range(n):
+        x[o + j] -= a * s[j] * minv[j]
+
+
+@njit(cache=True)
+def project_state(y, m, speed):
+    """Project y = (θ, u) in place onto F = 0 (Newton along M⁻¹∇F), G = 0 (M-orthogonally)
+    and, if ``speed`` > 0, Σ mᵢuᵢ² = speed² (`rescale_speed`)."""
+    n = y.size // 2
+    for _ in range(3):
+        F = 0.0
+        B = 0.0
+        for j in range(n):
+            s = sin(y[j])
+            F += cos(y[j])
+            B += s * s / m[j]
+        d = F / B
+        for j in range(n):
+            y[j] += d * sin(y[j]) / m[j]
+        if abs(F) < 1e-15:
+            break
+    s = np.empty(n)
+    minv = np.empty(n)
+    for j in range(n):
+        s[j] = sin(y[j])
+        minv[j] = 1.0 / m[j]
+    project_velocity(y, n, n, s, minv)
+    if speed > 0.0:
+        rescale_speed(y, n, n, m, speed)
+
+
+@njit(cache=True)
+def project_tangent_sc(y, X, minv, s, c):
+    """Project each row of X, shape (k, 2N), onto T_r at y: remove its δF and δG
+    components M-orthogonally; s, c = sin θ, cos θ of y."""
+    n = y.size // 2
+    B = 0.0
+    for j in range(n):
+        B += s[j] * s[j] * minv[j]
+    for r in range(X.shape[0]):
+        dF = 0.0
+        for j in range(n):
+            dF += s[j] * X[r, j]
+        for j in range(n):
+            X[r, j] -= dF / B * s[j] * minv[j]
+        dG = 0.0
+        for j in range(n):
+            dG += s[j] * X[r, n + j] + y[n + j] * c[j] * X[r, j]
+        for j in range(n):
+            X[r, n + j] -= dG / B * s[j] * minv[j]
+
+
+@njit(cache=True)
+def tangent_part(theta, u, minv):
+    """The M-orthogonal projection of the ambient vector u, shape (N,), onto the tangent
+    space at theta (a new array)."""
+    n = theta.size
+    s = np.empty(n)
+    for j in range(n):
+        s[j] = sin(theta[j])
+    x = u.copy()
+    project_velocity(x, 0, n, s, minv)
+    return x
+
+
+@njit(cache=True)
+def project_tangent(y, X, minv):
+    """`project_tangent_sc` computing sin θ and cos θ itself."""
+    n = y.size // 2
+    s = np.empty(n)
+    c = np.empty(n)
+    for j in range(n):
+        s[j] = sin(y[j])
+        c[j] = cos(y[j])
+    project_tangent_sc(y, X, minv, s, c)
+
+
+@njit(cache=True)
+def project_tangent_euclidean(y, W):
+    """Euclidean-orthogonal projection of the rows of W, shape (k, 2N), onto T_r at y
+    (the complement of span(∇F, ∇G), ∇F ∝ (sin θ, 0), ∇G = (u cos θ, sin θ))."""
+    n = y.size // 2
+    a = np.zeros(2 * n)
+    b = np.zeros(2 * n)
+    for i in range(n):
+        a[i] = sin(y[i])
+        b[i] = y[n + i] * cos(y[i])
+        b[n + i] = sin(y[i])
+    aa = 0.0
+    ab = 0.0
+    bb = 0.0
+    for i in range(2 * n):
+        aa += a[i] * a[i]
+        ab += a[i] * b[i]
+        bb += b[i] * b[i]
+    det = aa * bb - ab * ab
+    for r in range(W.shape[0]):
+        wa = 0.0
+        wb = 0.0
+        for i in range(2 * n):
+            wa += W[r, i] * a[i]
+            wb += W[r, i] * b[i]
+        ca = (bb * wa - ab * wb) / det
+        cb = (aa * wb - ab * wa) / det
+        for i in range(2 * n):
+            W[r, i] -= ca * a[i] + cb * b[i]
+
+
+@njit(cache=True, inline="always")
+def invariants_of(row, n, masses):
+    """(F, G, E) = (Σ cos θ, Σ u sin θ, ½ Σ m u²) of the state row[0:2N]."""
+    F = 0.0
+    G = 0.0
+    E = 0.0
+    for i in range(n):
+        F += cos(row[i])
+        G += row[n + i] * sin(row[i])
+        E += 0.5 * masses[i] * row[n + i] * row[n + i]
+    return F, G, E
+
+
+def invariants(theta, u, masses):
+    """(constraint Σcos θ, tangency Σ u sin θ, energy ½Σ m u²) along the last axis."""
+    theta = np.asarray(theta)
+    u = np.asarray(u)
+    return (np.cos(theta).sum(-1), (u * np.sin(theta)).sum(-1),
+            0.5 * (np.asarray(masses) * u * u).sum(-1))

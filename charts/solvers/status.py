@@ -1,0 +1,81 @@
+"""How a run ends, for every route (the integration loop and the tangent kernel alike):
+status codes, their messages, the exceptions they raise, and the policy near singular points.
+
+Policy.  A step never moves the point by more than a fraction of its distance to the nearest
+singular point of the manifold (≈ √S, S = Σ sin²θ; fraction `CAP_FRACTION` of the method)
+nor, in a chart, of its distance to the chart boundary (≈ |sin θₖ|, `DOMAIN_CAP_FRACTION`):
+`step_cap`.  Within one step |Δ sin θₖ| ≤ |u|·h, so 0.5 keeps every stage strictly inside the
+chart, and a trajectory aimed at a singular point approaches it geometrically until the
+singular-point test (S < `SINGULAR_S`) catches it instead of stepping over it.  DOP853
+controls its own error, so its cap only serves that safety.  RK4 has no error control, and
+near a singular point the path turns by ~|u|h/√S per step; its local error ∝ (fraction)⁵
+per step, and 0.03 keeps a close pass (S ≈ 1e-6) at an energy error ≈ 1e-8 (0.1 gave 3e-6).
+For dt = 0.01 at unit speed it only binds where S < 0.1.  A fixed-step route (the tangent
+kernel) keeps its grid: a capped step is cut into equal sub-steps.
+"""
+from __future__ import annotations
+
+from math import sqrt
+
+from numba import njit
+
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "SINGULAR_S", "step_cap", "RUNNING",
+           "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
+           "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
+           "status_error"]
+
+#: Largest step as a fraction of the distance √S to the nearest singular point, per method.
+CAP_FRACTION = {"dop853": 0.5, "rk4": 0.03}
+#: Largest step as a fraction of the distance |sin θₖ| to the boundary of chart k.
+DOMAIN_CAP_FRACTION = 0.5
+#: Σ sin²θ below which a point counts as an N = 4 singular point (distance ≈ 1e-7): there
+#: the sines carry a relative rounding error ≈ 1e-16/√S ≈ 1e-9, and the flow (whose
+#: acceleration scales as 1/√S) cannot be continued meaningfully.
+SINGULAR_S = 1e-14
+
+
+@njit(cache=True, inline="always")
+def step_cap(S, U, fraction):
+    """Largest step allowed at a point with Σ sin²θ = S and speed² U = Σ u² (see above)."""
+    if U == 0.0:
+        return 1e300
+    return fraction * sqrt(S / U)
+
+
+RUNNING, FINISHED, OUT_FULL, LOG_FULL = 0, 1, 2, 3
+SINGULAR, DOMAIN, UNDERFLOW, NONFINITE = -1, -2, -3, -4
+
+STATUS_MESSAGES = {
+    SINGULAR: "the trajectory reached a singular point of the manifold (N = 4: all θᵢ ∈ {{0, π}}, "
+              "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
+              "through it. Start from a different state (the part computed up to t is in "
+              "err.result).",
+    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}; reduce dt "
+            "(or use method='dop853', which shrinks such steps automatically).",
+    UNDERFLOW: "the step size underflowed at t = {t:.17g}; the solution is not resolvable at "
+               "this tolerance. Loosen rtol/atol or check the initial state.",
+    NONFINITE: "the state became non-finite at t = {t:.17g}; reduce dt or tighten rtol.",
+}
+
+
+class IntegrationError(RuntimeError):
+    """The run could not be completed; ``err.result`` holds what was computed so far."""
+
+    def __init__(self, message, result=None):
+        super().__init__(message)
+        self.result = result
+
+
+class SingularPointError(IntegrationError):
+    """The trajectory reached a singular point of the manifold (N = 4)."""
+
+
+class ChartDomainError(IntegrationError):
+    """A fixed step left the domain of the current chart."""
+
+
+def status_error(status: int, t: float, where: str, result=None) -> IntegrationError:
+    """The exception for a negative status code at time ``t``; ``where`` names the route."""
+    msg = STATUS_MESSAGES[status].format(t=t, s_sing=SINGULAR_S)
+    exc = {SINGULAR: SingularPointError, DOMAIN: ChartDomainError}.get(status, IntegrationError)
+    return exc(f"{where}: {msg}", result)

@@ -1,0 +1,314 @@
+"""The tangent kernel: a state y and k tangent vectors X advanced together by RK4 of eqs (8)
+and (17), re-orthonormalised by Gram–Schmidt (eq 18), projected onto the invariants.  Every
+analysis (Lyapunov spectra, curvature, angles, waveforms) and every scene with ambient RK4
+advances this one kernel, through `TangentFlow`.
+
+Phase space.  Eq (8) lives in R^{2N}, the physical phase space is the tangent bundle of the
+(N−1)-manifold, and the subspace T_r of perturbations that keep the constraint and the
+tangency is invariant under eq (17) (``charts.flows.projection``).  ``restricted=True``
+keeps the vectors in T_r (projected at every re-orthonormalisation).
+
+Inner product of eq (18): ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ with w from `inner_weights`: ``"theta"`` (the
+paper's: masses on the θ-parts, 0 on the u-parts), ``"full"`` (masses on both) or
+``"euclidean"`` (all 1, the product of the angle test of section 4).
+
+Chunk independence.  Everything that decides the arithmetic of the next step — the stacked
+state Z = [y; X], the sin/cos of the current angles and the global step counter (which
+fixes the phases of projection and re-orthonormalisation) — lives in `TangentFlow` and
+persists between calls, so advancing 1000 steps in one call or in any number of chunks gives
+bit-identical numbers.  That makes a scene, resumed or not, equal to the API call it mirrors.
+"""
+from __future__ import annotations
+
+from math import ceil, cos, isfinite, log, sin, sqrt
+
+import numpy as np
+from numba import njit
+
+from ..flows.ambient import multiplier, sincos, state_rate, tangent_factors, tangent_rate
+from ..geometry.projection import project_state, project_tangent, project_tangent_sc
+from .rk import rk4_combine, rk4_node, rk4_point
+from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
+
+__all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos"]
+
+#: |δ| up to which sin/cos(θ + δ) (RK4 stages 2–4, and the new θ from the old) come from the
+#: angle-addition formula with the Taylor polynomials below instead of libm (beyond it:
+#: libm).  At |δ| = 0.05 the first omitted terms, δ¹¹/11! (relative to sin δ ≈ δ: 2.4e-21)
+#: and δ¹⁰/10! (2.7e-20), are far below an ulp, so the polynomials are exact to rounding; the
+#: shifts are |δ| ≤ dt·|u| ≈ 0.01 at unit speed and dt = 0.01.  (libm at every stage
+#: instead: 2× the cost per step, same exponents; docs/performance.md.)
+SHIFT_MAX = 0.05
+_S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
+_C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
+_CAP = CAP_FRACTION["rk4"]
+
+
+@njit(cache=True)
+def orthonormalize(X, w, logs):
+    """Modified Gram–Schmidt (eq 18) of the rows of X in ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ, in place;
+    logs[r] += log of the r-th norm."""
+    k, d = X.shape
+    for r in range(k):
+        for q in range(r):
+            p = 0.0
+            for i in range(d):
+                p += w[i] * X[r, i] * X[q, i]
+            for i in range(d):
+                X[r, i] -= p * X[q, i]
+        nrm = 0.0
+        for i in range(d):
+            nrm += w[i] * X[r, i] * X[r, i]
+        nrm = sqrt(nrm)
+        logs[r] += log(nrm)
+        for i in range(d):
+            X[r, i] /= nrm
+
+
+@njit(cache=True, inline="always")
+def shift_sincos(s0, c0, dl, theta, n, s, c):
+    """s, c = sin, cos of θ = θ₀ + δ from s0, c0 = sin θ₀, cos θ₀ and δ = dl, shape (N,), by
+    the angle-addition formula (polynomials for |δ| ≤ `SHIFT_MAX`, else libm of theta).
+    s, c may be s0, c0 (in place)."""
+    for j in range(n):
+        d = dl[j]
+        d2 = d * d
+        sd = d + d * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * _S[3])))
+        cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * _C[3])))
+        sj = s0[j]
+        cj = c0[j]
+        s[j] = sj + (sj * cm + cj * sd)
+        c[j] = cj + (cj * cm - sj * sd)
+    for j in range(n):
+        if abs(dl[j]) > SHIFT_MAX:
+            s[j] = sin(theta[j])
+            c[j] = cos(theta[j])
+
+
+@njit(cache=True, inline="always")
+def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
+    """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X] (flat,
+    length L = R·d), with sin/cos s0, c0 of y's angles updated; the rest is work space."""
+    for j in range(n):
+        th[j] = Zf[j]
+    for st in range(4):
+        rk4_point(Zf, K, st, h, L, Zt)
+        if st == 0:
+            for j in range(n):
+                s[j] = s0[j]
+                c[j] = c0[j]
+        else:
+            a = rk4_node(st) * h
+            for j in range(n):
+                dl[j] = a * K[(st - 1) * L + j]
+            shift_sincos(s0, c0, dl, Zt, n, s, c)
+        lam, B = multiplier(Zt, 0, n, minv, s, c)
+        iB = 1.0 / B if B > 0.0 else 0.0
+        o = st * L
+        state_rate(Zt, 0, n, minv, s, lam, K, o)
+        tangent_factors(Zt, 0, n, minv, s, c, lam, f, g, p, q)
+        for r in range(1, R):
+            tangent_rate(Zt, r * d, n, f, g, p, q, iB, K, o + r * d)
+    rk4_combine(Zf, K, h, L, Zf)
+    for j in range(n):
+        dl[j] = Zf[j] - th[j]
+    shift_sincos(s0, c0, dl, Zf, n, s0, c0)
+
+
+@njit(cache=True)
+def _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc, n, R, d, L):
+    """The step dt as ⌈dt/hc⌉ equal `_rk4_step` sub-steps (kept out of the kernel's loop, which
+    it would slow down by a third); False if a sub-step starts at a singular point."""
+    nsub = int(ceil(dt / hc))
+    for sub in range(nsub):
+        S = 0.0
+        for j in range(n):
+            S += s0[j] * s0[j]
+        if S < SINGULAR_S:
+            return False
+        _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt / nsub, n, R, d, L)
+    return True
+
+
+@njit(cache=True)
+def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
+                   project_every, logsum, rec_start, rec_every, states):
+    """Advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eqs (8) + (17).
+
+    ``sc`` (2, N): sin/cos of y's angles, kept current; ``counter`` (1,): global step count.
+    After global step i: project y onto the invariants (`project_state`) when
+    i % project_every == 0 (``project_every`` = 0: never); project X onto T_r (if
+    ``restricted``) and re-orthonormalise (eq 18, logs added to ``logsum``) when
+    i % reorth_every == 0; when i ≥ rec_start and (i − rec_start) % rec_every == 0, store
+    the first ``states.shape[1]`` entries of Z (y, then the rows of X) in ``states[row]``,
+    row = (i − rec_start) // rec_every (if ``states`` has that row).
+
+    Steps follow the policy of ``charts.solvers.status``: a step longer than the cap near a
+    singular point is cut into equal sub-steps.  Returns (status, steps done): RUNNING, or
+    SINGULAR / NONFINITE with Z at the start of the failing step.
+
+    The time loop is one function on purpose: the equations are inlined, and an array-valued
+    call or view inside the loop would cost reference-count updates per step (see
+    docs/performance.md).  Per stage, sin/cos come from the start of the step shifted by
+    `shift_sincos`: one libm sin/cos pair per angle per projection, not four per step.
+    """
+    R, d = Z.shape
+    n = d // 2
+    L = R * d
+    Zf = Z.reshape(L)
+    y_ = Z[0]
+    X_ = Z[1:]
+    s0 = sc[0]
+    c0 = sc[1]
+    Zt = np.empty(L)
+    K = np.empty(4 * L)
+    th = np.empty(n)
+    dl = np.empty(n)
+    s = np.empty(n)
+    c = np.empty(n)
+    f = np.empty(n)
+    g = np.empty(n)
+    p = np.empty(n)
+    q = np.empty(n)
+    nrec = states.shape[1]
+    # countdowns to the next projection / re-orthonormalisation / record, from the global
+    # step counter (so that the phases do not depend on how the steps are chunked)
+    i0 = counter[0]
+    to_proj = project_every - i0 % project_every if project_every > 0 else -1
+    to_reorth = reorth_every - i0 % reorth_every
+    to_rec = -1
+    if rec_every > 0:
+        to_rec = rec_start - i0 if i0 < rec_start else rec_every - (i0 - rec_start) % rec_every
+    for it in range(nsteps):
+        S = 0.0
+        U = 0.0
+        for j in range(n):
+            S += s0[j] * s0[j]
+            U += Zf[n + j] * Zf[n + j]
+        if not isfinite(S + U):
+            return NONFINITE, it
+        hc = step_cap(S, U, _CAP)
+        if hc >= dt:
+            if S < SINGULAR_S:
+                return SINGULAR, it
+            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, n, R, d, L)
+        else:  # near a singular point: equal sub-steps within the cap (module doc)
+            if not _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc, n, R, d, L):
+                return SINGULAR, it
+        counter[0] += 1
+        to_proj -= 1
+        if to_proj == 0:
+            to_proj = project_every
+            project_state(y_, m, speed)
+            sincos(Zf, 0, n, s0, c0)
+        to_reorth -= 1
+        if to_reorth == 0:
+            to_reorth = reorth_every
+            if R > 1:
+                if restricted:
+                    project_tangent_sc(y_, X_, minv, s0, c0)
+                orthonormalize(X_, w, logsum)
+                if not isfinite(logsum[R - 2]):
+                    return NONFINITE, it + 1
+        to_rec -= 1
+        if to_rec == 0:
+            to_rec = rec_every
+            row = (counter[0] - rec_start) // rec_every
+            if row < states.shape[0]:
+                for j in range(nrec):
+                    states[row, j] = Zf[j]
+    return RUNNING, nsteps
+
+
+def inner_weights(system, inner):
+    """Weights w, shape (2N,), of the tangent inner product Σ wᵢ aᵢ bᵢ (see module doc)."""
+    if inner == "theta":
+        return np.concatenate([system.masses, np.zeros(system.n)])
+    if inner == "full":
+        return np.concatenate([system.masses, system.masses])
+    if inner == "euclidean":
+        return np.ones(2 * system.n)
+    raise ValueError(f"inner must be 'theta' (the paper's θ-only product), 'full' or "
+                     f"'euclidean', got {inner!r}")
+
+
+_NO_ROWS = np.empty((0, 0))
+
+
+class TangentFlow:
+    """The state (θ, u) and ``k`` tangent vectors, advanced by `tangent_kernel`.
+
+    Parameters
+    ----------
+    system : RotorSystem
+    theta, u : ndarray, shape (N,)
+        A validated state (``system.check_state``) with nonzero speed.
+    k : int
+        Number of tangent vectors; they start as ``seed``-random vectors, projected onto
+        T_r if ``restricted``, orthonormal in ``inner``.
+    dt : float
+        RK4 step.
+    reorth_every, project_every : int
+        Steps between re-orthonormalisations / projections of y (0: never project).
+
+    Attributes: ``Z`` (1 + k, 2N) = [y; X], ``sc`` (2, N), ``counter`` (1,), ``logsum``
+    (k,) — together the whole state (``state()`` / ``load_state()`` for checkpoints).
+    """
+
+    def __init__(self, system, theta, u, k, *, dt, inner="theta", restricted=True,
+                 reorth_every=1, project_every=100, seed=0):
+        n = system.n
+        self.system = system
+        self.dt = float(dt)
+        self.w = inner_weights(system, inner)
+        self.restricted = bool(restricted)
+        self.reorth_every = int(reorth_every)
+        self.project_every = int(project_every)
+        self.speed = float(system.speed(u))
+        self.Z = np.empty((1 + k, 2 * n))
+        self.Z[0, :n] = theta
+        self.Z[0, n:] = u
+        if k:
+            X = np.random.default_rng(seed).normal(size=(k, 2 * n))
+            if self.restricted:
+                project_tangent(self.Z[0], X, system.minv)
+            orthonormalize(X, self.w, np.zeros(k))
+            self.Z[1:] = X
+        self.sc = np.vstack([np.sin(self.Z[0, :n]), np.cos(self.Z[0, :n])])
+        self.counter = np.zeros(1, dtype=np.int64)
+        self.logsum = np.zeros(k)
+
+    @property
+    def y(self):
+        return self.Z[0]
+
+    @property
+    def X(self):
+        return self.Z[1:]
+
+    @property
+    def steps(self) -> int:
+        return int(self.counter[0])
+
+    def advance(self, nsteps, *, rec_start=0, rec_every=0, states=None, where="RK4"):
+        """Advance ``nsteps`` steps (recording as `tangent_kernel` says); raises
+        `SingularPointError` / `IntegrationError` (``where`` names the route) on failure."""
+        sys_ = self.system
+        states = _NO_ROWS if states is None else states
+        status, done = tangent_kernel(self.Z, self.sc, self.counter, sys_.minv, sys_.masses,
+                                      self.speed, self.dt, int(nsteps), self.reorth_every,
+                                      self.w, self.restricted, self.project_every, self.logsum,
+                                      int(rec_start), int(rec_every), states)
+        if status != RUNNING:
+            raise status_error(status, self.steps * self.dt, where)
+
+    def state(self) -> dict:
+        """Copies of every array that decides the next step (for checkpoints)."""
+        return {"Z": self.Z.copy(), "sc": self.sc.copy(), "counter": self.counter.copy(),
+                "logsum": self.logsum.copy()}
+
+    def load_state(self, a) -> None:
+        self.Z[...] = a["Z"]
+        self.sc[...] = a["sc"]
+        self.counter[...] = a["counter"]
+        self.logsum[...] = a["logsum"]
