@@ -30,4 +30,4 @@ __all__ = [
     "Scene", "SceneError", "load_scene", "parse_scene", "run_scene", "plan_scene", "RunError",
     "Sweep", "SweepError", "load_sweep", "parse_sweep", "run_sweep",
 ]
-__version__ = "0.1.0"
+from .version import __version__  # noqa: E402

@@ -30,8 +30,8 @@ from math import sqrt
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import (flow_rhs, multiplier, sincos, state_rate, tangent_factors,
-                             tangent_rate, transport_rate)
+from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
+                             transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
 from ..geometry.kernels import compiled
 from ..solvers.rk import rk4_combine, rk4_point
@@ -68,19 +68,11 @@ def frame_step(y, X, P, minv, h):
     z[oP:] = P.ravel()
     zt = np.empty(L)
     K = np.empty(4 * L)
-    s = np.empty(n)
-    c = np.empty(n)
-    f = np.empty(n)
-    g = np.empty(n)
-    p = np.empty(n)
-    q = np.empty(n)
+    s, c, f, g, p, q = stage_work(n)
     for st in range(4):
         rk4_point(z, K, st, h, L, zt)
-        sincos(zt, 0, n, s, c)
-        lam, B = multiplier(zt, 0, n, minv, s, c)
-        iB = 1.0 / B
         o = st * L
-        state_rate(zt, 0, n, minv, s, lam, K, o)
+        lam, iB = state_stage(zt, 0, n, minv, s, c, K, o)
         tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)
         for r in range(k):
             tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
+from ..flows.ambient import adjoint_rate, state_stage
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_point
 from ..solvers.tangent import TangentFlow, orthonormalize
@@ -59,11 +59,8 @@ def adjoint_step(Z, minv, h, zt, K, s, c):
     Zf = Z.reshape(L)
     for st in range(4):
         rk4_point(Zf, K, st, h, L, zt)
-        sincos(zt, 0, n, s, c)
-        lam, B = multiplier(zt, 0, n, minv, s, c)
-        iB = 1.0 / B
         o = st * L
-        state_rate(zt, 0, n, minv, s, lam, K, o)
+        lam, iB = state_stage(zt, 0, n, minv, s, c, K, o)
         for r in range(1, R):
             adjoint_rate(zt, r * d, n, zt, 0, minv, s, c, lam, iB, K, o + r * d)
     rk4_combine(Zf, K, h, L, Zf)

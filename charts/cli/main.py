@@ -215,7 +215,7 @@ def _cmd_bench(args) -> int:
 
 # ------------------------------------------------------------------------------- parser
 def build_parser() -> argparse.ArgumentParser:
-    from .. import __version__
+    from ..version import __version__
 
     ap = argparse.ArgumentParser(
         prog="charts", description="Geodesic flows of coupled rotators (Kuznetsov): run scenes, "

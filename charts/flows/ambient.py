@@ -32,7 +32,7 @@ from numba import njit
 
 __all__ = [
     "sincos", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
-    "adjoint_rate", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
+    "adjoint_rate", "state_stage", "stage_work", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
 ]
 
 
@@ -115,6 +115,22 @@ def adjoint_rate(x, o, n, y, yo, minv, s, c, lam, iB, dx, do):
         dx[do + n + j] = -(x[o + j] - 2.0 * u * c[j] * iB * sb)
 
 
+@njit(cache=True, inline="always")
+def state_stage(y, o, n, minv, s, c, dy, do):
+    """Eq (8) at the state y[o:o+2N] into dy[do:do+2N], filling s, c = sin θ, cos θ;
+    returns (Λ, 1/B) for the tangent, transport or adjoint rates at the same point."""
+    sincos(y, o, n, s, c)
+    lam, B = multiplier(y, o, n, minv, s, c)
+    state_rate(y, o, n, minv, s, lam, dy, do)
+    return lam, (1.0 / B if B > 0.0 else 0.0)
+
+
+@njit(cache=True)
+def stage_work(n):
+    """Work arrays (s, c, f, g, p, q), each shape (N,), for the rates above."""
+    return (np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n))
+
+
 # ------------------------------------------------------------------ wrappers for Python
 @njit(cache=True)
 def flow_rhs(y, minv, dy):
@@ -132,21 +148,14 @@ def flow_rhs(y, minv, dy):
 def flow_tangent_rhs(y, X, minv, dy, dX):
     """Eq (8) for y, shape (2N,), and eq (17) for each row of X, shape (k, 2N)."""
     n = y.size // 2
-    s = np.empty(n)
-    c = np.empty(n)
-    f = np.empty(n)
-    g = np.empty(n)
-    p = np.empty(n)
-    q = np.empty(n)
-    sincos(y, 0, n, s, c)
-    lam, B = multiplier(y, 0, n, minv, s, c)
-    state_rate(y, 0, n, minv, s, lam, dy, 0)
+    s, c, f, g, p, q = stage_work(n)
+    lam, iB = state_stage(y, 0, n, minv, s, c, dy, 0)
     tangent_factors(y, 0, n, minv, s, c, lam, f, g, p, q)
     xf = X.reshape(X.size)
     dxf = dX.reshape(dX.size)
     for r in range(X.shape[0]):
-        tangent_rate(xf, 2 * n * r, n, f, g, p, q, 1.0 / B, dxf, 2 * n * r)
-    return B
+        tangent_rate(xf, 2 * n * r, n, f, g, p, q, iB, dxf, 2 * n * r)
+    return 1.0 / iB
 
 
 @njit(cache=True)

@@ -153,25 +153,27 @@ def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, 
     other).  A single finite-T estimate differs from another by its statistical error
     whatever the step, so the step's bias only shows where it exceeds that error."""
     from ..analyses.lyapunov import lyapunov_spectrum
+    from ..analyses.statistics import standard_error
 
     system = RotorSystem(3)
     states = [system.random_state(seed=seed + i, speed=1.0) for i in range(members)]
     kw = dict(n_exponents=1, t_transient=50.0, n_batches=10)
 
-    def ensemble(dt):
-        lam = [lyapunov_spectrum(system, th, u, T, dt=dt, seed=seed + i, **kw).exponents[0]
+    def ensemble(dt):  # re-orthonormalise every 10 steps, project every 100, at every dt
+        lam = [lyapunov_spectrum(system, th, u, T, dt=dt, seed=seed + i, reorth_every=10 * dt,
+                                 record_every=10 * dt, project_every=100 * dt, **kw).exponents[0]
                for i, (th, u) in enumerate(states)]
         return np.array(lam)
 
     ref = ensemble(ref_dt)
-    lam_ref, se_ref = float(ref.mean()), float(ref.std(ddof=1) / np.sqrt(members))
+    lam_ref, se_ref = float(ref.mean()), float(standard_error(ref))
     if progress:
         progress()
     points = []
     for dt in dts:
         wall, lam = _timed(lambda dt=dt: ensemble(dt), repeat) if repeat > 1 else \
             _untimed_warm(lambda dt=dt: ensemble(dt))
-        se = float(lam.std(ddof=1) / np.sqrt(members))
+        se = float(standard_error(lam))
         steps = members * int(round((T + 50.0) / dt))
         points.append(Point("lyapunov", "RK4 + QR (eq 17, 18)", f"dt={dt:g}", dt,
                             abs(float(lam.mean()) - lam_ref), wall, 4 * steps,
@@ -202,7 +204,7 @@ def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
     points = []
     last = None
     for dt in dts:
-        every = max(1, int(round(0.1 / dt)))
+        every = max(1, int(round(0.1 / dt))) * dt
         wall, res = _timed(lambda dt=dt, every=every: curvature_along_trajectory(
             system, theta0, u0, T, dt=dt, sample_every=every, t_transient=10.0, exact=False,
             seed=seed), repeat)

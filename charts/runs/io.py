@@ -56,6 +56,6 @@ def versions() -> dict:
     import numba
     import scipy
 
-    from .. import __version__
+    from ..version import __version__
     return {"charts": __version__, "python": platform.python_version(), "numpy": np.__version__,
             "scipy": scipy.__version__, "numba": numba.__version__}

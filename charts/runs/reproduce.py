@@ -30,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..analyses.statistics import standard_error
 from .paper import PAPER_EXPONENTS
 
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
@@ -122,8 +123,8 @@ def _lyapunov_table(results, cfg):
         E = np.array([m["exponents"] for m in mem])
         B = np.concatenate([m["batches"] for m in mem])
         mean = E.mean(0)
-        se_batch = B.std(0, ddof=1) / np.sqrt(len(B))   # pooled batch means
-        se_ens = E.std(0, ddof=1) / np.sqrt(len(E))     # spread of the trajectories
+        se_batch = standard_error(B)   # pooled batch means
+        se_ens = standard_error(E)     # spread of the trajectories
         rows[n] = dict(exponents=mean.tolist(), stderr=np.maximum(se_batch, se_ens).tolist(),
                        stderr_batch=se_batch.tolist(), stderr_ensemble=se_ens.tolist(),
                        paper=PAPER_EXPONENTS[n], t_total=cfg["lyap_members"] * cfg["lyap_t"])
@@ -214,11 +215,11 @@ def main(argv=None):
                       forward=[m["forward"].tolist() for m in mem],
                       adjoint=[m["adjoint"].tolist() for m in mem])
     waves = {n: results[("wave", n, 0)] for n in NS}
-    figures.figure2({n: Waveform(w["t"], None, w["u"], w["dt_sample"]) for n, w in waves.items()},
+    paper_figures.figure2({n: Waveform(w["t"], None, w["u"], w["dt_sample"]) for n, w in waves.items()},
                     out / "fig2.png")
-    figures.figure3({n: (w["omega"], w["psd"]) for n, w in waves.items()}, out / "fig3.png")
-    figures.figure4({n: curv[n]["Ka"] for n in NS}, out / "fig4.png")
-    figures.figure5(ang_raw, out / "fig5.png")
+    paper_figures.figure3({n: (w["omega"], w["psd"]) for n, w in waves.items()}, out / "fig3.png")
+    paper_figures.figure4({n: curv[n]["Ka"] for n in NS}, out / "fig4.png")
+    paper_figures.figure5(ang_raw, out / "fig5.png")
     elapsed = time.time() - t0
     (out / "table.md").write_text(_fmt_table(rows) + "\n")
     summary = dict(preset=preset, config=cfg, elapsed_s=elapsed, workers=workers,

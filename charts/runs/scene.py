@@ -24,160 +24,18 @@ import difflib
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
 
 try:  # Python >= 3.11
     import tomllib
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
+from .scene_schema import (EFFECTS, GRID_RTOL, MAX_N, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, Key,
+                           SceneError)
+
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
            "scene_to_dict", "MAX_N"]
 
-#: Largest N a scene may ask for: N = 3..6 ship generated code, 7..10 derive it on demand.
-MAX_N = 10
-#: Relative slack when checking that one time is an integer multiple of another (dt grid).
-GRID_RTOL = 1e-9
-
-
-class SceneError(ValueError):
-    """A scene that cannot run.  The message names the key, the value and what is allowed."""
-
-
-# ---------------------------------------------------------------------------------------
-# Schema: one Key per leaf.  ``check`` returns None when fine, else "what is allowed".
-# ---------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Key:
-    kind: str                      # "int", "float", "str", "bool", "floats", "ints"
-    default: Any = None            # None: no default (optional, or required if required=True)
-    doc: str = ""
-    choices: tuple = ()
-    check: Callable[[Any], str | None] | None = None
-    required: bool = False
-
-
-def _gt(lo):
-    return lambda v: None if v > lo else f"a number > {lo:g}"
-
-
-def _ge(lo):
-    return lambda v: None if v >= lo else f"a number >= {lo:g}"
-
-
-def _between(lo, hi):
-    return lambda v: None if lo <= v <= hi else f"a number in [{lo:g}, {hi:g}]"
-
-
-_TOP = {
-    "name": Key("str", None, "Run name used in outputs (default: the file name without .toml)."),
-    "description": Key("str", "", "Free text copied into result.json."),
-}
-
-SCHEMA: dict[str, dict[str, Key]] = {
-    "system": {
-        "n": Key("int", None, "Number of rotors N (3..10; the manifold has dimension N−1).",
-                 check=_between(3, MAX_N), required=True),
-        "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
-                      "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
-                      else "a list of numbers, each > 0"),
-        "speed": Key("float", 1.0, "Speed along the geodesic ‖u‖_g = √(Σ mᵢuᵢ²) of a seeded "
-                     "initial state (the paper uses 1). Not allowed with an explicit u.",
-                     check=_gt(0)),
-    },
-    "initial": {
-        "seed": Key("int", 0, "Seed of RotorSystem.random_state (used when theta/u are not "
-                    "given).", check=_ge(0)),
-        "theta": Key("floats", None, "Explicit initial angles, length N, on Σ cos θᵢ = 0 "
-                     "(to 1e-8). Requires u; excludes seed."),
-        "u": Key("floats", None, "Explicit initial angular velocities, length N, tangent: "
-                 "Σ uᵢ sin θᵢ = 0 (to 1e-8). Requires theta."),
-    },
-    "integrator": {
-        "formulation": Key("str", "ambient", "\"ambient\": the Lagrange equations (8) in N "
-                           "angles; \"chart\": the intrinsic geodesic equation (14) in N−1 "
-                           "chart coordinates with chart switching.", choices=("ambient", "chart")),
-        "method": Key("str", "rk4", "\"rk4\": classical fixed-step Runge–Kutta (the paper's); "
-                      "\"dop853\": adaptive embedded 8(5,3) with rtol/atol.",
-                      choices=("rk4", "dop853")),
-        "dt": Key("float", None, "RK4 step (default 0.01, the paper's). rk4 only.", check=_gt(0)),
-        "rtol": Key("float", None, "Relative tolerance (default 1e-10). dop853 only.",
-                    check=_between(1e-15, 1e-1)),
-        "atol": Key("float", None, "Absolute tolerance (default 1e-12). dop853 only.",
-                    check=_between(1e-18, 1e-1)),
-        "project": Key("bool", False, "Project back onto the invariants after every step "
-                       "(overrides project_every)."),
-        "project_every": Key("float", 1.0, "Time between projections of the state onto the "
-                             "invariants (constraint, tangency, energy) for ambient RK4, as "
-                             "project_every of the analyses; 0 = never. A multiple of dt.",
-                             check=_ge(0)),
-    },
-    "run": {
-        "t_final": Key("float", None, "Simulated time after the transient.", check=_gt(0),
-                       required=True),
-        "t_transient": Key("float", 0.0, "Time integrated first and discarded (also settles "
-                           "the Lyapunov vectors).", check=_ge(0)),
-        "sample_dt": Key("float", None, "Interval between stored samples (default: dt for "
-                         "rk4, 0.01 for dop853); a multiple of dt for rk4.", check=_gt(0)),
-        "checkpoint_every": Key("float", None, "Simulated time between checkpoints / progress "
-                                "updates (default: t_final/20, rounded to samples); a "
-                                "multiple of sample_dt.", check=_gt(0)),
-    },
-}
-
-#: Effects and their options.  Each is requested by its table (or ``name = true``).
-EFFECTS: dict[str, dict[str, Key]] = {
-    "waveforms": {
-        "rotors": Key("ints", None, "Rotors whose velocity uᵢ(t) is stored and plotted "
-                      "(0-based; default: all)."),
-        "t_window": Key("float", 100.0, "Length of the stored window, from the end of the "
-                        "transient (capped at t_final).", check=_gt(0)),
-    },
-    "spectrum": {
-        "rotor": Key("int", 0, "Rotor whose velocity is analysed (0-based).", check=_ge(0)),
-        "nperseg": Key("int", 4096, "Welch segment length in samples (scipy.signal.welch).",
-                       check=_ge(16)),
-    },
-    "lyapunov": {
-        "n_exponents": Key("int", None, "Number of exponents (default N−2, the positive "
-                           "ones; at most N−1 with the θ product, 2N−2 with the full one).",
-                           check=_ge(1)),
-        "inner_product": Key("str", "theta", "\"theta\": the paper's θ-only product (sec. 2); "
-                             "\"full\": all 2N components.", choices=("theta", "full")),
-        "n_batches": Key("int", 20, "Batches for the batch-means standard error.",
-                         check=_ge(2)),
-        "reorth_every": Key("float", 0.1, "Time between re-orthonormalisations (eq 18); a "
-                            "multiple of dt that divides t_final.", check=_gt(0)),
-    },
-    "curvature": {
-        "route": Key("str", "both", "\"numerical\": eqs (19)–(21); \"exact\": from the "
-                     "generated Riemann tensor; \"both\" at the same points.",
-                     choices=("numerical", "exact", "both")),
-        "n_directions": Key("int", None, "Diagonal elements K_ii (planes velocity × i-th "
-                            "Lyapunov vector) to record (default N−2, at most N−2).",
-                            check=_ge(1)),
-        "sample_every": Key("float", 0.1, "Simulated time between curvature samples; a "
-                            "multiple of dt.", check=_gt(0)),
-    },
-    "angles": {
-        "variant": Key("str", "both", "\"full\": the paper's 2N-dimensional tangent space; "
-                       "\"restricted\": the constraint-preserving subspace; or \"both\".",
-                       choices=("full", "restricted", "both")),
-        "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2, at "
-                         "most N−2).",
-                         check=_ge(1)),
-        "sample_every": Key("float", 0.1, "Simulated time between angle samples; a multiple "
-                            "of dt.", check=_gt(0)),
-    },
-    "switches": {},
-    "drift": {
-        "sample_every": Key("float", 1.0, "Simulated time between recorded invariant values; "
-                            "a multiple of sample_dt.", check=_gt(0)),
-    },
-}
-
-#: Effects that need tangent vectors (variational eq 17), integrated with ambient RK4.
-TANGENT_EFFECTS = ("lyapunov", "curvature", "angles")
 
 
 # ---------------------------------------------------------------------------------------
@@ -317,12 +175,12 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     """Validate a scene given as a dict (as read from TOML).  Raises :class:`SceneError`."""
     if not isinstance(data, dict):
         raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
-    allowed_top = set(_TOP) | set(SCHEMA) | {"effects"}
+    allowed_top = set(TOP_KEYS) | set(SCHEMA) | {"effects"}
     for key in data:
         if key not in allowed_top:
             raise _unknown(source, None, key, allowed_top)
     top = {}
-    for key, spec in _TOP.items():
+    for key, spec in TOP_KEYS.items():
         top[key] = _coerce(source, None, key, spec, data[key]) if key in data else spec.default
     name = top["name"] or default_name
 

@@ -25,7 +25,8 @@ from math import ceil, cos, isfinite, log, sin, sqrt
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import multiplier, sincos, state_rate, tangent_factors, tangent_rate
+from ..flows.ambient import (multiplier, sincos, stage_work, state_rate, tangent_factors,
+                             tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
@@ -164,12 +165,7 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
     K = np.empty(4 * L)
     th = np.empty(n)
     dl = np.empty(n)
-    s = np.empty(n)
-    c = np.empty(n)
-    f = np.empty(n)
-    g = np.empty(n)
-    p = np.empty(n)
-    q = np.empty(n)
+    s, c, f, g, p, q = stage_work(n)
     nrec = states.shape[1]
     # countdowns to the next projection / re-orthonormalisation / record, from the global
     # step counter (so that the phases do not depend on how the steps are chunked)

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ..plotting import new_figure, save_png
 from .points import SweepPoint
@@ -56,7 +57,7 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
             entry[c] = float(vals.min() if c.endswith("_min") else vals.mean())
             ses = []
             if vals.size >= 2 and not c.endswith("_min"):
-                ses.append(vals.std(ddof=1) / np.sqrt(vals.size))
+                ses.append(standard_error(vals))
             own = [float(r[c + "_se"]) for r in rs if r.get(c + "_se", "") != ""]
             if own and len(own) == vals.size:       # the points' own (batch-means) errors
                 ses.append(np.sqrt(np.sum(np.square(own))) / len(own))
