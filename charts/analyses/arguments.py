@@ -10,7 +10,10 @@ import math
 
 import numpy as np
 
+from ..solvers.progress import progress_reporter
+
 __all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter"]
+
 
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
 #: decimal inputs such as 0.1 / 0.01 = 9.999999999999998).
@@ -58,33 +61,3 @@ def positive_int(name, x, minimum=1) -> int:
     if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or x < minimum:
         raise ValueError(f"{name} must be an integer >= {minimum}, got {x!r}")
     return int(x)
-
-
-class _Reporter:
-    def __init__(self, progress, total, desc):
-        self.total = float(total)
-        self.done = 0.0
-        self.callback = progress if callable(progress) else None
-        self.bar = None
-        if progress is True:
-            from tqdm.auto import tqdm
-            self.bar = tqdm(total=round(self.total, 10), desc=desc, unit="t", leave=False)
-
-    def update(self, t):
-        self.done += t
-        if self.bar is not None:
-            self.bar.update(t)
-        if self.callback is not None:
-            self.callback(self.done, self.total)
-
-    def close(self):
-        if self.bar is not None:
-            self.bar.close()
-
-
-def progress_reporter(progress, total, desc) -> _Reporter:
-    """Progress in simulated time: ``progress`` False (silent), True (a tqdm bar) or a
-    callable ``progress(t_done, t_total)``."""
-    if not (progress is True or progress is False or progress is None or callable(progress)):
-        raise ValueError(f"progress must be True, False or callable(t_done, t_total), got {progress!r}")
-    return _Reporter(progress, total, desc)

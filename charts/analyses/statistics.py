@@ -8,9 +8,11 @@ __all__ = ["standard_error", "batch_ends", "batch_estimates"]
 
 def standard_error(samples, axis=0):
     """Two-sided standard error of the mean of independent ``samples`` along ``axis``:
-    std(ddof=1)/√count."""
+    std(ddof=1)/√count (NaN for fewer than two samples)."""
     samples = np.asarray(samples, dtype=float)
     m = samples.shape[axis]
+    if m < 2:  # no spread to measure
+        return np.full(np.delete(samples.shape, axis), np.nan)
     return samples.std(axis=axis, ddof=1) / np.sqrt(m)
 
 

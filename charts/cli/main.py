@@ -2,10 +2,10 @@
 
     charts run SCENE -o DIR [--resume] [--quiet]   run a scene (a .toml file or a bundled name)
     charts scenes [NAME]                          list the bundled scenes, or print one
-    charts reproduce ...                          the paper's figures and table (issue 4)
+    charts reproduce ...                          the paper's figures and table
     charts generate [--check]                     regenerate generated/ (code generator)
-    charts bench accuracy | integrators | performance   accuracy vs time; integrators; peers (issue 6)
-    charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask (issue 7)
+    charts bench accuracy | integrators | performance   accuracy vs time; integrators; peers
+    charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask
 
 Every subcommand has ``--help``.  Errors in the input are reported in one line on stderr
 with exit status 2; a run that started and failed (e.g. a trajectory through a singular
@@ -17,8 +17,9 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import sys
-from importlib import resources
 from pathlib import Path
+
+from ..runs.bundled import bundled_files
 
 __all__ = ["main", "bundled_scenes", "resolve_scene"]
 
@@ -34,9 +35,7 @@ def _checkout_root() -> Path | None:
 
 def bundled_scenes() -> dict[str, Path]:
     """Name -> path of every scene shipped in ``charts/scenes``."""
-    folder = resources.files("charts.scenes")
-    return {p.name[:-5]: Path(str(p)) for p in sorted(folder.iterdir(), key=lambda p: p.name)
-            if p.name.endswith(".toml")}
+    return bundled_files("charts.scenes")
 
 
 def resolve_scene(arg: str) -> Path:
@@ -158,7 +157,7 @@ def _cmd_reproduce(args) -> int:
     try:
         from ..runs.reproduce import main as reproduce_main
     except ImportError:
-        return _fail("`charts reproduce` needs charts.reproduce (issue 4), which this "
+        return _fail("`charts reproduce` needs charts.reproduce, which this "
                      "installation does not have yet")
     try:
         return int(reproduce_main(args.rest) or 0)
@@ -243,7 +242,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("name", nargs="?", help="print this scene's TOML")
     p.set_defaults(func=_cmd_scenes)
 
-    p = sub.add_parser("reproduce", help="reproduce the paper's figures and table (issue 4)",
+    p = sub.add_parser("reproduce", help="reproduce the paper's figures and table",
                        description="Dispatch to charts.reproduce; the options after "
                        "`reproduce` are passed through (try `charts reproduce --help`).",
                        add_help=False)

@@ -21,6 +21,7 @@ import numpy as np
 
 from ..geometry.system import RotorSystem
 from . import loop as D
+from .progress import progress_reporter
 from .status import (CAP_FRACTION, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
                      IntegrationError, SingularPointError, status_error)
 from .ambient_formulation import AmbientFlow
@@ -128,11 +129,12 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     transport : array_like, shape (k, n) or (n,), optional
         Tangent vectors at θ₀ to parallel-transport along the geodesic.
     tau : float in (0, 1)
-        Chart switching threshold (chart formulation), see ``charts.chart_flow``.
+        Chart switching threshold (chart formulation), see ``charts.solvers.chart_formulation``.
     chart : int, optional
         Initial chart (default: the best conditioned one); left at t = 0 if the rule says so.
-    progress : callable(t, t_final) -> bool or None, optional
-        Called after every chunk; returning ``False`` stops the run early.
+    progress : bool or callable(t, t_final) -> bool, optional
+        True: a progress bar.  A callable is called after every chunk; returning ``False``
+        stops the run early.
     chunk_steps : int
         Accepted steps per compiled chunk.
 
@@ -192,8 +194,17 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         dt = 0.0
     if isinstance(chunk_steps, bool) or not isinstance(chunk_steps, (int, np.integer)) or chunk_steps < 1:
         raise ValueError(f"chunk_steps must be a positive integer, got {chunk_steps!r}")
-    if progress is not None and not callable(progress):
-        raise ValueError("progress must be callable(t, t_final) or None")
+    bar = None
+    if progress is True:  # a bar over simulated time; the callable form may also stop the run
+        bar = progress_reporter(True, t_final, f"integrate N={system.n}")
+
+        def progress(t, total, _done=[0.0]):
+            bar.update(t - _done[0])
+            _done[0] = t
+    elif progress is False:
+        progress = None
+    elif progress is not None and not callable(progress):
+        raise ValueError("progress must be True, False, None or callable(t, t_final)")
 
     use_eval = t_eval is not None
     if use_eval:
@@ -275,6 +286,8 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         if status == FINISHED:
             if progress is not None:
                 progress(st[D.S_T], t_final)
+            if bar is not None:
+                bar.close()
             break
         if status == RUNNING and progress is not None and progress(st[D.S_T], t_final) is False:
             status_name = "stopped"
