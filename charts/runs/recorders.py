@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry.projection import invariants as invariants_of
+
 from .run_state import RunState
 
 __all__ = ["make_recorders", "invariants", "curvature_sample"]
@@ -68,11 +70,10 @@ def make_recorders(st: RunState, transient_units: int):
 
 
 def invariants(st: RunState):
+    """[Σ cos θ, Σ u sin θ, E/E₀ − 1] of the current state (``geometry.projection``)."""
     n = st.system.n
-    theta, u = st.y[:n], st.y[n:]
-    E0 = 0.5 * st.speed ** 2
-    return [float(np.cos(theta).sum()), float(u @ np.sin(theta)),
-            float(st.system.energy(u) / E0 - 1.0)]
+    F, G, E = invariants_of(st.y[:n], st.y[n:], st.system.masses)
+    return [float(F), float(G), float(E / (0.5 * st.speed ** 2) - 1.0)]
 
 
 def curvature_sample(st: RunState, kdir: int, routes: str):

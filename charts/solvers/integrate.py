@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..geometry.projection import invariants
 from ..geometry.system import RotorSystem
 from . import loop as D
 from .progress import progress_reporter
@@ -300,10 +301,10 @@ def _make_result(system, t, Y, k, mon, switches, ist, status, formulation, metho
     theta = Y[:, :n]
     u = Y[:, n:2 * n]
     transported = Y[:, 2 * n:].reshape(-1, k, n) if k else None
-    E = system.energy(u)
+    F, G, E = invariants(theta, u, system.masses)
     drift = {
-        "constraint": float(max(mon[0], np.max(np.abs(np.cos(theta).sum(1)), initial=0.0))),
-        "tangency": float(max(mon[1], np.max(np.abs((u * np.sin(theta)).sum(1)), initial=0.0))),
+        "constraint": float(max(mon[0], np.max(np.abs(F), initial=0.0))),
+        "tangency": float(max(mon[1], np.max(np.abs(G), initial=0.0))),
         "energy": float(max(mon[2], np.max(np.abs(E - E[0]) / E[0], initial=0.0))),
     }
     if k:
