@@ -5,13 +5,16 @@ mechanically coupled rotators".  The public surface, by concept:
 
 * the manifold (eqs 1-13, 22): ``RotorSystem``;
 * trajectories (eqs 8, 14, 16, 19): ``integrate``;
-* the paper's analyses: ``lyapunov_spectrum`` (eqs 17-18), ``curvature_along_trajectory``
+* the paper's analyses (times in time units, ensembles as ``EnsembleResult``):
+  ``lyapunov_spectrum`` (eqs 17-18), ``curvature_along_trajectory``
   (eqs 19-21 and the exact Riemann tensor), ``hyperbolicity_angles`` (section 4),
   ``waveform`` and ``power_spectrum`` (figures 2-3);
 * declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``.
 """
 from .geometry.system import RotorSystem
-from .solvers.integrate import IntegrationError, IntegrationResult, integrate
+from .solvers.integrate import IntegrationResult, integrate
+from .solvers.status import ChartDomainError, IntegrationError, SingularPointError
+from .analyses.ensemble import EnsembleResult
 from .analyses.lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spectrum
 from .analyses.curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
 from .analyses.hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
@@ -22,7 +25,8 @@ from .runs.sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep
 
 __all__ = [
     "RotorSystem",
-    "integrate", "IntegrationResult", "IntegrationError",
+    "integrate", "IntegrationResult", "IntegrationError", "SingularPointError", "ChartDomainError",
+    "EnsembleResult",
     "lyapunov_spectrum", "lyapunov_ensemble", "LyapunovResult",
     "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22",
     "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
