@@ -46,3 +46,14 @@ def test_the_fixed_step_route_caps_its_steps_before_the_singular_point():
     # the capped sub-steps land on the point itself at t = 1 (S at rounding level, the state
     # finite), and the next step refuses to start from it
     assert flow.steps == 100 and S < SINGULAR_S and np.all(np.isfinite(flow.Z))
+
+
+def test_angles_without_transient_sample_the_initial_point():
+    """t_transient = 0: the first sample is the initial point (its forward vectors are the
+    initial ones, projected and orthonormal), not an unwritten buffer."""
+    system = charts.RotorSystem(3)
+    th, u = system.random_state(seed=1)
+    a = charts.hyperbolicity_angles(system, th, u, 2.0, t_transient=0.0, sample_every=0.5)
+    b = charts.hyperbolicity_angles(system, th, u, 2.0, t_transient=0.0, sample_every=0.25)
+    assert np.all(np.isfinite(a.phi_full)) and a.t[0] == 0.0
+    np.testing.assert_allclose(a.phi_full, b.phi_full[::2], rtol=1e-12)

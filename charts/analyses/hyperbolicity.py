@@ -204,6 +204,8 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     ck = np.empty((nseg + 1, 2 * n))
     ck[0] = flow.y
     states = np.empty((S, (1 + m) * 2 * n))
+    if n_tr == 0:  # the first sample is the initial point (the kernel records after steps)
+        states[0] = flow.Z.ravel()
     for i in range(nseg):
         flow.advance(ce, rec_start=n_tr, rec_every=sample, states=states,
                      where="hyperbolicity_angles (forward RK4)")
