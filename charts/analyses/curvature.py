@@ -147,11 +147,12 @@ def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, proje
     k = Z.shape[0] - 1
     logs = np.zeros(k)
     none = np.empty((0, 0))
+    no_events = np.empty(0, dtype=np.int64)
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     for smp in range(Ka.shape[0]):
         status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, 1, w,
-                                      True, project_every, logs, 0, 0, none)
+                                      True, project_every, logs, 0, 0, none, no_events, none)
         if status != RUNNING:
             return status, smp
         y = Z[0]

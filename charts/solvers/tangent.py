@@ -133,7 +133,7 @@ def _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc, n, R, d
 
 @njit(cache=True)
 def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
-                   project_every, logsum, rec_start, rec_every, states):
+                   project_every, logsum, rec_start, rec_every, states, events, event_logs):
     """Advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eqs (8) + (17).
 
     ``sc`` (2, N): sin/cos of y's angles, kept current; ``counter`` (1,): global step count.
@@ -142,7 +142,8 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
     ``restricted``) and re-orthonormalise (eq 18, logs added to ``logsum``) when
     i % reorth_every == 0; when i ≥ rec_start and (i − rec_start) % rec_every == 0, store
     the first ``states.shape[1]`` entries of Z (y, then the rows of X) in ``states[row]``,
-    row = (i − rec_start) // rec_every (if ``states`` has that row).
+    row = (i − rec_start) // rec_every (if ``states`` has that row); when i = events[e] (a
+    sorted array of global steps), store ``logsum`` in ``event_logs[e]``.
 
     Steps follow the policy of ``charts.solvers.status``: a step longer than the cap near a
     singular point is cut into equal sub-steps.  Returns (status, steps done): RUNNING, or
@@ -172,6 +173,9 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
     i0 = counter[0]
     to_proj = project_every - i0 % project_every if project_every > 0 else -1
     to_reorth = reorth_every - i0 % reorth_every
+    ev = 0
+    while ev < events.size and events[ev] <= i0:
+        ev += 1
     to_rec = -1
     if rec_every > 0:
         to_rec = rec_start - i0 if i0 < rec_start else rec_every - (i0 - rec_start) % rec_every
@@ -206,6 +210,10 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
                 orthonormalize(X_, w, logsum)
                 if not isfinite(logsum[R - 2]):
                     return NONFINITE, it + 1
+        if ev < events.size and counter[0] == events[ev]:
+            for r in range(R - 1):
+                event_logs[ev, r] = logsum[r]
+            ev += 1
         to_rec -= 1
         if to_rec == 0:
             to_rec = rec_every
@@ -229,6 +237,7 @@ def inner_weights(system, inner):
 
 
 _NO_ROWS = np.empty((0, 0))
+_NO_EVENTS = np.empty(0, dtype=np.int64)
 
 
 class TangentFlow:
@@ -286,15 +295,19 @@ class TangentFlow:
     def steps(self) -> int:
         return int(self.counter[0])
 
-    def advance(self, nsteps, *, rec_start=0, rec_every=0, states=None, where="RK4"):
+    def advance(self, nsteps, *, rec_start=0, rec_every=0, states=None, events=None,
+                event_logs=None, where="RK4"):
         """Advance ``nsteps`` steps (recording as `tangent_kernel` says); raises
         `SingularPointError` / `IntegrationError` (``where`` names the route) on failure."""
         sys_ = self.system
         states = _NO_ROWS if states is None else states
+        if events is None:
+            events, event_logs = _NO_EVENTS, _NO_ROWS
         status, done = tangent_kernel(self.Z, self.sc, self.counter, sys_.minv, sys_.masses,
                                       self.speed, self.dt, int(nsteps), self.reorth_every,
                                       self.w, self.restricted, self.project_every, self.logsum,
-                                      int(rec_start), int(rec_every), states)
+                                      int(rec_start), int(rec_every), states, events,
+                                      event_logs)
         if status != RUNNING:
             raise status_error(status, self.steps * self.dt, where)
 
