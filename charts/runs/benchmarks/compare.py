@@ -47,7 +47,8 @@ for line in sys.stdin:
         S = charts.RotorSystem(job["n"])
         th, u = S.random_state(seed=job["seed"])
         c0, w0 = time.process_time(), time.perf_counter()
-        r = charts.lyapunov_spectrum(S, th, u, job["t"], n_exponents=job["k"], t_transient=0)
+        r = charts.lyapunov_spectrum(S, th, u, job["t"], n_exponents=job["k"], t_transient=0,
+                                     **job["kw"])
         c1, w1 = time.process_time(), time.perf_counter()
         out = {"cpu": c1 - c0, "wall": w1 - w0, "exponents": [float(x) for x in r.exponents]}
     except Exception as exc:
@@ -91,8 +92,9 @@ class Engine:
             raise RuntimeError(f"engine {self.label!r} ({self.python}) exited")
         return json.loads(line)
 
-    def run(self, n, t, seed):
-        self.proc.stdin.write(json.dumps({"n": n, "k": n - 2, "t": t, "seed": seed}) + "\n")
+    def run(self, n, t, seed, kw=None):
+        job = {"n": n, "k": n - 2, "t": t, "seed": seed, "kw": kw or {}}
+        self.proc.stdin.write(json.dumps(job) + "\n")
         self.proc.stdin.flush()
         out = self._read()
         if "error" in out:
@@ -144,6 +146,9 @@ def main(argv=None) -> int:
     ap.add_argument("--t", type=float, default=3000.0, help="time units per run (default 3000)")
     ap.add_argument("--repeat", type=int, default=7, help="repetitions per engine (default 7)")
     ap.add_argument("--seed", type=int, default=1, help="seed of the initial state (default 1)")
+    ap.add_argument("--record-every", type=float, default=None, metavar="T",
+                    help="pass record_every=T to lyapunov_spectrum (default: its default, 1.0; "
+                    "a larger T means fewer, longer calls of the compiled kernel)")
     ap.add_argument("--cold", type=int, default=0, metavar="K",
                     help="also time the first-ever call (empty numba cache, new process) K "
                     "times per engine, for the largest N (default 0: no)")
@@ -152,7 +157,9 @@ def main(argv=None) -> int:
     print(f"date: {datetime.date.today().isoformat()}\nmachine: {machine()}")
     print("command: charts bench compare " + " ".join(sys.argv[1:] if argv is None else argv))
     print(f"task: lyapunov_spectrum(RotorSystem(N), *random_state(seed={args.seed}), "
-          f"{args.t:g}, n_exponents=N-2, t_transient=0); CPU time per run, "
+          f"{args.t:g}, n_exponents=N-2, t_transient=0"
+          + ("" if args.record_every is None else f", record_every={args.record_every:g}")
+          + f"); CPU time per run, "
           f"{args.repeat} repetitions, engines taking turns\n{load()}", flush=True)
     with tempfile.TemporaryDirectory() as cwd:
         engines = [Engine(label, py, src, cwd) for label, py, src in specs]
@@ -160,7 +167,8 @@ def main(argv=None) -> int:
             for e in engines:
                 print(f"  {e.label}: {e.python}" + (f" (PYTHONPATH {e.src})" if e.src else "")
                       + f" -> {e.source}")
-            results = measure(engines, args.n, args.t, args.repeat, args.seed)
+            kw = {} if args.record_every is None else {"record_every": args.record_every}
+            results = measure(engines, args.n, args.t, args.repeat, args.seed, kw)
             colds = {e.label: [] for e in engines}
             for _ in range(args.cold):
                 for e in engines:
@@ -187,7 +195,7 @@ def _range(values, unit=""):
     return f"{med:.2f} s ({lo:.2f}–{hi:.2f})" + (f" {unit}" if unit else "")
 
 
-def measure(engines, ns, t, repeat, seed):
+def measure(engines, ns, t, repeat, seed, kw):
     """{(label, n): [worker answers]}: a warm-up per engine and N, then the engines take turns
     (their order reversed every other repetition)."""
     for n in ns:
@@ -198,7 +206,7 @@ def measure(engines, ns, t, repeat, seed):
         order = engines if rep % 2 == 0 else engines[::-1]
         for n in ns:
             for e in order:
-                results[e.label, n].append(e.run(n, t, seed))
+                results[e.label, n].append(e.run(n, t, seed, kw))
         print(f"  repetition {rep + 1}/{repeat} done; {load()}", flush=True)
     return results
 
