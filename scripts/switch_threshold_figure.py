@@ -14,14 +14,11 @@ from __future__ import annotations
 import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from charts import RotorSystem, integrate  # noqa: E402
-from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound  # noqa: E402
+from charts import RotorSystem, integrate
+from charts.runs.plotting import new_figure, save_png
+from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound
 
 TAUS = [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99]
 SEEDS = range(8)
@@ -62,7 +59,7 @@ def main(out="docs/figures/switch_threshold.png"):
         for row in rows:
             print(f"{n:>2} {row[0]:>5.2f} {row[1]:>13.2f} {row[2]:>8.2f} {row[3]:>11.1f} {row[4]:>8.1f} "
                   f"{row[5]:>8.0f} {row[6]:>9.0f}")
-    fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
+    fig, ax = new_figure(1, 3, figsize=(13, 3.8))
     for i, (n, rows) in enumerate(table.items()):
         r = np.array(rows)
         c = f"C{i}"
@@ -79,9 +76,8 @@ def main(out="docs/figures/switch_threshold.png"):
     for a in ax:
         a.axvline(DEFAULT_TAU, color="grey", lw=0.8)
         a.legend(fontsize=7)
-    fig.tight_layout()
-    os.makedirs(os.path.dirname(out), exist_ok=True)
-    fig.savefig(out, dpi=110)
+    os.makedirs(os.path.dirname(out) or ".", exist_ok=True)
+    save_png(fig, out)
     print(f"wrote {out}")
 
 

@@ -199,17 +199,12 @@ def _generate_installed(check: bool) -> int:
 
 
 def _cmd_bench(args) -> int:
-    scripts = {"integrators": ("bench_integrators", "issue 3"),
-               "performance": ("bench_performance", "issue 6")}
-    if args.what in scripts:
-        name, issue = scripts[args.what]
-        script = _load_script(name)
-        if script is None:
-            return _fail(f"`charts bench {args.what}` runs scripts/{name}.py ({issue}) "
-                         "from a source checkout; it was not found")
-        return int(script.main(args.rest) or 0)
-    from ..runs.accuracy import main as accuracy_main
-    return int(accuracy_main(args.rest, quiet=args.quiet) or 0)
+    """`charts bench NAME`: module NAME of ``charts.runs.benchmarks`` (accuracy: runs.accuracy)."""
+    if args.what == "accuracy":
+        from ..runs.accuracy import main as accuracy_main
+        return int(accuracy_main(args.rest, quiet=args.quiet) or 0)
+    module = importlib.import_module(f"charts.runs.benchmarks.{args.what}")
+    return int(module.main(args.rest) or 0)
 
 
 # ------------------------------------------------------------------------------- parser
@@ -257,16 +252,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_generate)
 
     p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision), `integrators` "
-                       "or `performance` (against JiTCODE and SciPy)",
+                       "(against solve_ivp), `performance` (against JiTCODE and SciPy), "
+                       "`compare` (installations against each other)",
                        description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
-                       "diagrams and table (see docs/accuracy.md). `charts bench integrators`: "
-                       "cost per unit time against solve_ivp (scripts/bench_integrators.py). "
-                       "`charts bench performance [--quick]`: the Lyapunov kernel against "
-                       "JiTCODE and SciPy, cold start, both cores (docs/performance.md).")
-    p.add_argument("what", choices=("accuracy", "integrators", "performance"))
-    p.add_argument("--quiet", "-q", action="store_true", help="no progress bars")
+                       "diagrams and table (docs/accuracy.md). `charts bench integrators`: cost "
+                       "per unit time against solve_ivp (docs/integrators.md). `charts bench "
+                       "performance [--quick]`: the Lyapunov task against JiTCODE and SciPy, cold "
+                       "start, all cores (docs/performance.md). `charts bench compare --engine "
+                       "LABEL=PYTHON ...`: Lyapunov throughput of several installations, e.g. two "
+                       "checkouts, interleaved in one run. Each is a module of "
+                       "charts.runs.benchmarks: no source checkout needed.")
+    p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare"))
+    p.add_argument("--quiet", "-q", action="store_true", help="no progress bars (accuracy)")
     p.add_argument("rest", nargs=argparse.REMAINDER,
-                   help="options of the benchmark (e.g. `charts bench accuracy --help`)")
+                   help="options of the benchmark (e.g. `charts bench performance --help`)")
     p.set_defaults(func=_cmd_bench)
 
     from .sweep import add_parser as add_sweep_parser   # `charts sweep`

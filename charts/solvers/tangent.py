@@ -28,7 +28,7 @@ from numba import njit
 from ..flows.ambient import (multiplier, sincos, stage_work, state_rate, tangent_factors,
                              tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
-from .rk import rk4_combine, rk4_node, rk4_point
+from .rk import RK4_WEIGHTS, rk4_node
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
 __all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos"]
@@ -89,28 +89,47 @@ def shift_sincos(s0, c0, dl, theta, n, s, c):
 @njit(cache=True, inline="always")
 def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
     """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X] (flat,
-    length L = R·d), with sin/cos s0, c0 of y's angles updated; the rest is work space."""
+    length L = R·d), with sin/cos s0, c0 of y's angles updated; the rest is work space.
+
+    n, R, d, L are unsigned (``np.uint64``, from `tangent_kernel`), so every flat index here
+    and in the inlined equations is unsigned: Numba compiles a negative-index wraparound
+    (``i + (i >> 63 & len)``) into every signed array access whose sign LLVM cannot prove,
+    i.e. every ``x[o + j]`` with a run-time offset o, which cost a quarter of the step.  The
+    stage point and the combination are the loops of `rk4_point` / `rk4_combine` (same
+    tableau, same arithmetic) written here with unsigned offsets, and stage 0 outside the
+    inlined call: `rk4_point` branches on the stage, and the two branches release its arrays
+    at different places, so Numba's reference-count pruning leaves an atomic incref/decref
+    pair per array and stage (docs/performance.md)."""
     for j in range(n):
         th[j] = Zf[j]
+    zero = np.uint64(0)
     for st in range(4):
-        rk4_point(Zf, K, st, h, L, Zt)
+        o = np.uint64(st) * L           # offset of stage st in K
         if st == 0:
+            for i in range(L):
+                Zt[i] = Zf[i]
             for j in range(n):
                 s[j] = s0[j]
                 c[j] = c0[j]
         else:
             a = rk4_node(st) * h
+            op = o - L                  # the previous stage
+            for i in range(L):
+                Zt[i] = Zf[i] + a * K[op + i]
             for j in range(n):
-                dl[j] = a * K[(st - 1) * L + j]
+                dl[j] = a * K[op + j]
             shift_sincos(s0, c0, dl, Zt, n, s, c)
-        lam, B = multiplier(Zt, 0, n, minv, s, c)
+        lam, B = multiplier(Zt, zero, n, minv, s, c)
         iB = 1.0 / B if B > 0.0 else 0.0
-        o = st * L
-        state_rate(Zt, 0, n, minv, s, lam, K, o)
-        tangent_factors(Zt, 0, n, minv, s, c, lam, f, g, p, q)
-        for r in range(1, R):
+        state_rate(Zt, zero, n, minv, s, lam, K, o)
+        tangent_factors(Zt, zero, n, minv, s, c, lam, f, g, p, q)
+        for r in range(np.uint64(1), R):
             tangent_rate(Zt, r * d, n, f, g, p, q, iB, K, o + r * d)
-    rk4_combine(Zf, K, h, L, Zf)
+    h6 = RK4_WEIGHTS[0] * h
+    L2 = L + L
+    L3 = L2 + L
+    for i in range(L):
+        Zf[i] = Zf[i] + h6 * (K[i] + 2.0 * K[L + i] + 2.0 * K[L2 + i] + K[L3 + i])
     for j in range(n):
         dl[j] = Zf[j] - th[j]
     shift_sincos(s0, c0, dl, Zf, n, s0, c0)
@@ -157,6 +176,7 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
     R, d = Z.shape
     n = d // 2
     L = R * d
+    nu, Ru, du, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L)  # see _rk4_step
     Zf = Z.reshape(L)
     y_ = Z[0]
     X_ = Z[1:]
@@ -191,9 +211,10 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
         if hc >= dt:
             if S < SINGULAR_S:
                 return SINGULAR, it
-            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, n, R, d, L)
+            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, nu, Ru, du, Lu)
         else:  # near a singular point: equal sub-steps within the cap (module doc)
-            if not _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc, n, R, d, L):
+            if not _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc,
+                             nu, Ru, du, Lu):
                 return SINGULAR, it
         counter[0] += 1
         to_proj -= 1
