@@ -13,3 +13,20 @@ def test_readme_python_example_runs():
     lyap = namespace["lyap"]
     assert len(lyap.exponents) == 2 and all(e > 0 for e in lyap.exponents)
     assert namespace["traj"].theta.shape[1] == 4
+
+
+def test_every_package_folder_is_installed():
+    """pyproject.toml lists packages explicitly (charts.generated lives in generated/): a new
+    subpackage missing from the list would be absent from a non-editable install."""
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10
+        import tomli as tomllib
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    listed = set(tomllib.loads((root / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"])
+    found = {".".join(p.parent.relative_to(root).parts) for p in (root / "charts").rglob("*.py")
+             if "__pycache__" not in p.parts}
+    found |= {".".join(p.parent.relative_to(root).parts) for p in (root / "charts").rglob("*.toml")}
+    assert found <= listed, sorted(found - listed)

@@ -34,7 +34,7 @@ from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors,
                              transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
 from ..geometry.kernels import compiled
-from ..solvers.rk import rk4_combine, rk4_point
+from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
 from .arguments import positive_time, progress_reporter, steps_of
@@ -70,7 +70,7 @@ def frame_step(y, X, P, minv, h):
     K = np.empty(4 * L)
     s, c, f, g, p, q = stage_work(n)
     for st in range(4):
-        rk4_point(z, K, st, h, L, zt)
+        rk4_stage_point(z, K, st, h, L, zt)
         o = st * L
         lam, iB = state_stage(zt, 0, n, minv, s, c, K, o)
         tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)

@@ -35,7 +35,7 @@ from numba import njit
 
 from ..flows.ambient import adjoint_rate, state_stage
 from ..geometry.projection import project_tangent_euclidean
-from ..solvers.rk import rk4_combine, rk4_point
+from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.tangent import TangentFlow, orthonormalize
 from .arguments import positive_int, positive_time, progress_reporter, steps_of
 from .ensemble import EnsembleResult, run_ensemble
@@ -58,7 +58,7 @@ def adjoint_step(Z, minv, h, zt, K, s, c):
     L = R * d
     Zf = Z.reshape(L)
     for st in range(4):
-        rk4_point(Zf, K, st, h, L, zt)
+        rk4_stage_point(Zf, K, st, h, L, zt)
         o = st * L
         lam, iB = state_stage(zt, 0, n, minv, s, c, K, o)
         for r in range(1, R):

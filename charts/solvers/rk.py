@@ -26,7 +26,8 @@ from numba import njit, types
 from .dop853_coefficients import A, B, D, E3, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED
 
 __all__ = [
-    "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "rk4_combine",
+    "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "rk4_stage_point",
+    "rk4_combine",
     "rk4_step", "dop853_step", "dop853_dense", "dense_eval", "initial_step", "step_factor",
     "N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER",
 ]
@@ -56,17 +57,13 @@ def rk4_node(st):
 
 
 @njit(cache=True, inline="always")
-def rk4_point(z, K, st, h, L, zt):
-    """The point of RK4 stage ``st`` of a step h from z: zt = z + c_st·h·K_{st−1}.
-    z, zt : flat, length L; K : flat, length 4L, stage j at offset j·L."""
-    if st == 0:
-        for i in range(L):
-            zt[i] = z[i]
-    else:
-        a = rk4_node(st) * h
-        o = (st - 1) * L
-        for i in range(L):
-            zt[i] = z[i] + a * K[o + i]
+def rk4_point(z, K, o, a, L, zt):
+    """The point of an RK4 stage: zt = z + a·K[o:o+L] with a = c_st·h and o the offset of the
+    previous stage in K (stage 0's point is z itself).  Branch-free: inlined into the hot
+    kernels, a branch here would keep Numba's reference counting in their loops
+    (docs/performance.md).  Offsets may be unsigned (no negative-index wraparound)."""
+    for i in range(L):
+        zt[i] = z[i] + a * K[o + i]
 
 
 @njit(cache=True, inline="always")
@@ -74,8 +71,20 @@ def rk4_combine(z, K, h, L, out):
     """out = z + h/6·(K₀ + 2K₁ + 2K₂ + K₃) (the weights `RK4_WEIGHTS`; out may be z: in
     place); K flat, stage j at offset j·L."""
     h6 = RK4_WEIGHTS[0] * h
+    L2 = L + L
+    L3 = L2 + L
     for i in range(L):
-        out[i] = z[i] + h6 * (K[i] + 2.0 * K[L + i] + 2.0 * K[2 * L + i] + K[3 * L + i])
+        out[i] = z[i] + h6 * (K[i] + 2.0 * K[L + i] + 2.0 * K[L2 + i] + K[L3 + i])
+
+
+@njit(cache=True, inline="always")
+def rk4_stage_point(z, K, st, h, L, zt):
+    """`rk4_point` of stage ``st`` of a step h (a copy of z for stage 0)."""
+    if st == 0:
+        for i in range(L):
+            zt[i] = z[i]
+    else:
+        rk4_point(z, K, (st - 1) * L, rk4_node(st) * h, L, zt)
 
 
 @njit(cache=True)
@@ -88,7 +97,7 @@ def rk4_step(f, y, h, par, K, ytmp, ynew):
     Kf = K.reshape(K.size)
     hmin = 1e300
     for st in range(4):
-        rk4_point(y, Kf, st, h, n, ytmp)
+        rk4_stage_point(y, Kf, st, h, n, ytmp)
         hmin = min(hmin, f(ytmp, par, K[st]))
     rk4_combine(y, Kf, h, n, ynew)
     return hmin

@@ -28,7 +28,7 @@ from numba import njit
 from ..flows.ambient import (multiplier, sincos, stage_work, state_rate, tangent_factors,
                              tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
-from .rk import RK4_WEIGHTS, rk4_node
+from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
 __all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos"]
@@ -94,12 +94,11 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
     n, R, d, L are unsigned (``np.uint64``, from `tangent_kernel`), so every flat index here
     and in the inlined equations is unsigned: Numba compiles a negative-index wraparound
     (``i + (i >> 63 & len)``) into every signed array access whose sign LLVM cannot prove,
-    i.e. every ``x[o + j]`` with a run-time offset o, which cost a quarter of the step.  The
-    stage point and the combination are the loops of `rk4_point` / `rk4_combine` (same
-    tableau, same arithmetic) written here with unsigned offsets, and stage 0 outside the
-    inlined call: `rk4_point` branches on the stage, and the two branches release its arrays
-    at different places, so Numba's reference-count pruning leaves an atomic incref/decref
-    pair per array and stage (docs/performance.md)."""
+    i.e. every ``x[o + j]`` with a run-time offset o, which cost a quarter of the step.
+    Stage 0 is handled here, outside the branch-free `rk4_point`: an inlined function that
+    branches on the stage releases its arrays at different places in its two branches, and
+    Numba's reference-count pruning then leaves an atomic incref/decref pair per array and
+    stage in the loop (docs/performance.md)."""
     for j in range(n):
         th[j] = Zf[j]
     zero = np.uint64(0)
@@ -114,8 +113,7 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
         else:
             a = rk4_node(st) * h
             op = o - L                  # the previous stage
-            for i in range(L):
-                Zt[i] = Zf[i] + a * K[op + i]
+            rk4_point(Zf, K, op, a, L, Zt)
             for j in range(n):
                 dl[j] = a * K[op + j]
             shift_sincos(s0, c0, dl, Zt, n, s, c)
@@ -125,11 +123,7 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
         tangent_factors(Zt, zero, n, minv, s, c, lam, f, g, p, q)
         for r in range(np.uint64(1), R):
             tangent_rate(Zt, r * d, n, f, g, p, q, iB, K, o + r * d)
-    h6 = RK4_WEIGHTS[0] * h
-    L2 = L + L
-    L3 = L2 + L
-    for i in range(L):
-        Zf[i] = Zf[i] + h6 * (K[i] + 2.0 * K[L + i] + 2.0 * K[L2 + i] + K[L3 + i])
+    rk4_combine(Zf, K, h, L, Zf)
     for j in range(n):
         dl[j] = Zf[j] - th[j]
     shift_sincos(s0, c0, dl, Zf, n, s0, c0)
