@@ -2,7 +2,7 @@
 
 Route (a), the paper's numerical algorithm.  At a sample point of the trajectory the
 frame p⁽⁰⁾ = u/|u|, p⁽¹⁾…p⁽ᴺ⁻²⁾ is built from the θ-parts of the N−2 leading Lyapunov
-vectors (kept in the constraint-preserving subspace, see `charts.lyapunov`): the
+vectors (kept in the constraint-preserving subspace, see `charts.analyses.lyapunov`): the
 component along the flow is removed from each vector by subtracting a multiple of the
 flow-direction perturbation (u, u̇) (itself a solution of eq 17, so the result is still a
 Jacobi field), and the θ-parts are M-orthonormalised (metric Σ mᵢ aᵢ bᵢ).  One RK4 step

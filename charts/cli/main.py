@@ -157,7 +157,7 @@ def _cmd_reproduce(args) -> int:
     try:
         from ..runs.reproduce import main as reproduce_main
     except ImportError:
-        return _fail("`charts reproduce` needs charts.reproduce, which this "
+        return _fail("`charts reproduce` needs charts.runs.reproduce, which this "
                      "installation does not have yet")
     try:
         return int(reproduce_main(args.rest) or 0)
@@ -238,7 +238,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_scenes)
 
     p = sub.add_parser("reproduce", help="reproduce the paper's figures and table",
-                       description="Dispatch to charts.reproduce; the options after "
+                       description="Dispatch to charts.runs.reproduce; the options after "
                        "`reproduce` are passed through (try `charts reproduce --help`).",
                        add_help=False)
     p.add_argument("rest", nargs=argparse.REMAINDER)

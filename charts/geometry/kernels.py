@@ -31,7 +31,7 @@ def chart_module(n: int):
     return load_or_generate(n)
 
 
-#: Generated functions called inside numba kernels (``charts.chart_flow``): always compiled.
+#: Generated functions called inside numba kernels (``charts.solvers.chart_formulation``): always compiled.
 KERNEL_FUNCTIONS = ("geodesic_acceleration", "transport_rate")
 #: A generated function called only from Python is left to CPython when its source is longer
 #: than this: LLVM's compile time grows superlinearly with straight-line code (N = 7 Riemann,

@@ -4,7 +4,7 @@ what is integrated (no integration happens here).
 * the state — 2N ambient variables (eq 8) or 2(N−1) chart variables (eq 14);
 * tangent vectors (eq 17) — none unless ``lyapunov`` or ``curvature`` is requested, then
   max(n_exponents, n_directions) forward vectors, shared by both;
-* the angles pass (``charts.hyperbolicity``) — only for ``angles``: m forward vectors, then
+* the angles pass (``charts.analyses.hyperbolicity``) — only for ``angles``: m forward vectors, then
   the backward adjoint pass (m vectors) along the trajectory re-integrated from sparse
   checkpoints; it runs as one unit after the main pass (which is skipped when nothing
   else needs it);
@@ -30,7 +30,7 @@ ANGLES_CHECKPOINT_STEPS = 100
 class Plan:
     """What a scene's effects require.  All counts are per run.
 
-    engine : "kernel" (fused ambient RK4 of eqs 8 + 17, ``charts.lyapunov``) or
+    engine : "kernel" (fused ambient RK4 of eqs 8 + 17, ``charts.analyses.lyapunov``) or
         "integrate" (``charts.integrate``: chart formulation or adaptive method).
     state_dim : int   number of integrated state variables.
     tangent_vectors : int   forward tangent vectors (eq 17), 0 if none needed.

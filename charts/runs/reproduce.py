@@ -1,7 +1,7 @@
 """``charts reproduce``: every result of the paper from one command.
 
     charts reproduce [--quick|--full] [-o DIR] [--quiet] [--workers K]
-    python -m charts.reproduce --quick
+    python -m charts.runs.reproduce --quick
 
 Writes into DIR (default ``reproduce-out``): ``table.md`` (Lyapunov exponents with
 error bars beside the paper's), ``fig2.png`` … ``fig5.png`` (the paper's panel layouts),

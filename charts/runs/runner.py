@@ -140,7 +140,7 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
 
 def _angles_pass(st: RunState):
     """The hyperbolicity test (section 4) from the initial state: forward tangent vectors,
-    backward adjoint vectors along the re-integrated trajectory (``charts.hyperbolicity``)."""
+    backward adjoint vectors along the re-integrated trajectory (``charts.analyses.hyperbolicity``)."""
     from ..analyses.hyperbolicity import hyperbolicity_angles
 
     sc, sys_ = st.scene, st.system

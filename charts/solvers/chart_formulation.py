@@ -74,7 +74,7 @@ def leave_chart(sin_abs, k, tau):
 def chart_condition_bound(n, tau, masses=None):
     """Bound 1 + (N − 1)·max(m)/(τ² min(m)) on the 2-norm condition number of g in the chart
     in use, at step boundaries (where the rule is applied).  Inside the step that crosses the
-    threshold |sin θₖ| can fall further, by at most the domain step cap (``charts.driver``)."""
+    threshold |sin θₖ| can fall further, by at most the domain step cap (``charts.solvers.loop``)."""
     m = np.ones(n) if masses is None else np.asarray(masses, float)
     return 1.0 + (n - 1) * m.max() / (tau * tau * m.min())
 

@@ -3,12 +3,12 @@
 Both formulations return ambient angles and velocities, so their results compare directly:
 
 * ``formulation="ambient"`` — eq (8) (+ eq (19) for transported vectors), optionally
-  projected back onto the invariants after every step (``charts.ambient_flow``);
+  projected back onto the invariants after every step (``charts.solvers.ambient_formulation``);
 * ``formulation="chart"`` — eq (14) (+ eq (16)) in the atlas of N charts × 2 branches, with
-  switching to the best conditioned chart (``charts.chart_flow``).
+  switching to the best conditioned chart (``charts.solvers.chart_formulation``).
 
 ``method="rk4"`` is the classical fixed-step method of the paper; ``method="dop853"`` the
-adaptive 8th-order method (``charts.rk``).  The loop runs compiled, in chunks of
+adaptive 8th-order method (``charts.solvers.rk``).  The loop runs compiled, in chunks of
 ``chunk_steps`` accepted steps; between chunks ``progress(t, t_final)`` is called, and
 returning ``False`` stops the run with everything computed so far.
 """
@@ -118,7 +118,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     dt : float, optional (rk4 only)
         Step; default 0.01/|u₀|.  Steps are shortened to land on ``t_eval`` and ``t_final``
         and, near N = 4 singular points and chart boundaries, to move at most
-        ``charts.driver.CAP_FRACTION`` of the distance to them.
+        ``charts.solvers.status.CAP_FRACTION`` of the distance to them.
     rtol, atol : float, optional (dop853 only)
         Local error tolerances, default 1e-10 and rtol·min(1, |u₀|).
     t_eval : array_like, shape (m,), optional

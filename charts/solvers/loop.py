@@ -1,10 +1,10 @@
 """The integration loop shared by both formulations, compiled once and driven in chunks.
 
-A *formulation* (``charts.ambient_flow``, ``charts.chart_flow``) supplies four compiled
+A *formulation* (``charts.solvers.ambient_formulation``, ``charts.solvers.chart_formulation``) supplies four compiled
 hooks; the loop here supplies everything else (stepping, step-size control, output at the
 requested times, invariant monitoring, counters, status codes).  The contract:
 
-``rhs(y, par, dy) -> health``  (:data:`charts.rk.RHS_SIG`)
+``rhs(y, par, dy) -> health``  (:data:`charts.solvers.rk.RHS_SIG`)
     Time derivative of the formulation's state ``y``, shape (ny,).  ``health`` is
     S = Σᵢ sin²θᵢ at the point (S → 0 only at the N = 4 singular points), or a negative
     number if ``y`` is outside the domain of the formulation's coordinates.
@@ -249,7 +249,7 @@ def drive(*args):
 class Formulation:
     """Base of the formulations driven by :func:`drive`.  A subclass supplies
 
-    * ``hooks()`` → ``(rhs, cap, post, to_ambient)``, compiled with :data:`charts.rk.RHS_SIG`,
+    * ``hooks()`` → ``(rhs, cap, post, to_ambient)``, compiled with :data:`charts.solvers.rk.RHS_SIG`,
       :data:`CAP_SIG`, :data:`POST_SIG`, :data:`OUT_SIG` (see the module docstring);
     * ``initial(theta, u, P)`` → ``(y, par, ipar)``: the formulation's state, float
       parameters and int parameters for the ambient start (θ, u, transported vectors P,
