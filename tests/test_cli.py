@@ -16,6 +16,8 @@ from charts.cli.main import bundled_scenes, main
 from charts.runs.runner import run_scene
 from charts.runs.scene import load_scene
 
+from scenarios import THROUGH_SINGULAR_N4
+
 CHARTS = [sys.executable, "-m", "charts.cli.main"]
 
 MALFORMED = {
@@ -186,12 +188,13 @@ def test_tangent_run_through_a_singular_point_fails_clearly_not_nan(tmp_path, ca
     through the N = 4 singular point must stop with a clear error and keep the finished
     part, never report a 'complete' run with NaN exponents."""
     scene = tmp_path / "sing-lyap.toml"
-    scene.write_text(textwrap.dedent("""
+    theta, u = (", ".join(repr(float(x)) for x in v) for v in THROUGH_SINGULAR_N4)
+    scene.write_text(textwrap.dedent(f"""
         [system]
         n = 4
         [initial]
-        theta = [-0.42426406871192845, -0.565685424949238, 2.7173285848778646, 2.5759072286405553]
-        u = [0.42426406871192845, 0.565685424949238, 0.42426406871192845, 0.565685424949238]
+        theta = [{theta}]
+        u = [{u}]
         [integrator]
         formulation = "ambient"
         method = "rk4"
