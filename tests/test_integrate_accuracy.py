@@ -10,12 +10,12 @@ from scenarios import SEEDS, masses
 
 #: Named tolerances, each with its reason.
 TOL = {
-    # Issue 3's bar for chart vs ambient up to t = 20.  Both run at rtol = 1e-13; the
+    # The required bar for chart vs ambient up to t = 20.  Both run at rtol = 1e-13; the
     # measured gap is 1e-11..4e-10 (rounding amplified by the chaos, λ ≈ 0.3–0.5).
     "chart_vs_ambient": 1e-9,
-    # Issue 3's bar for forward to t = 10 and back (rtol = 1e-12: measured ≤ 2e-10).
+    # The required bar for forward to t = 10 and back (rtol = 1e-12: measured ≤ 2e-10).
     "reversal": 1e-8,
-    # Issue 3's bar for ⟨p, q⟩_g and ⟨p, u⟩_g over t = 20 (rtol = 1e-13).
+    # The required bar for ⟨p, q⟩_g and ⟨p, u⟩_g over t = 20 (rtol = 1e-13).
     "transport_gram": 1e-10,
     # eq (16) in charts vs eq (19) ambient, both at rtol = 1e-13 up to t = 20: the transported
     # vectors obey the linearised flow and inherit the same chaotic amplification as θ.

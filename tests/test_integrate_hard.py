@@ -1,4 +1,4 @@
-"""Hard cases of issue 3: chart boundaries at |sin θₖ| ≈ 1e-8, the N = 4 singular points (close
+"""Hard cases of the integrators: chart boundaries at |sin θₖ| ≈ 1e-8, the N = 4 singular points (close
 passes, exact hits, long runs), the N = 3 flat points, speeds from 1e-3 to 1e3, t = 1e5."""
 import numpy as np
 import pytest
