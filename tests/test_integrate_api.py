@@ -11,7 +11,7 @@ from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound,
 from charts.solvers.integrate import IntegrationResult, integrate
 from charts.solvers.rk import RHS_SIG, dense_eval, dop853_dense, dop853_step, rk4_step
 
-from scenarios import TOL, masses
+from scenarios import SINGULAR_N4, TOL, masses
 
 SYS3 = RotorSystem(3)
 TH3, U3 = SYS3.random_state(7)
@@ -67,7 +67,7 @@ def test_bad_states():
         integrate(SYS3, TH3[:2], U3[:2], 1.0)
     s4 = RotorSystem(4)
     with pytest.raises(ValueError, match="singular point"):
-        integrate(s4, np.array([0.0, 0.0, np.pi, np.pi]), np.zeros(4) + [1, -1, 0, 0], 1.0)
+        integrate(s4, np.array(SINGULAR_N4), np.zeros(4) + [1, -1, 0, 0], 1.0)
 
 
 # -- result layout and output times ---------------------------------------------------------

@@ -133,3 +133,11 @@ def test_importing_the_figures_leaves_the_users_backend_alone():
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     assert p.stdout.strip().lower() == "svg"
+
+
+def test_the_package_quotes_the_papers_exponents():
+    """charts.runs.paper (what reports and result.json print beside our numbers) against the
+    transcription of section 2 in tests/scenarios.py."""
+    from charts.runs.paper import PAPER_EXPONENTS as quoted
+
+    assert {n: tuple(v) for n, v in quoted.items()} == PAPER_EXPONENTS
