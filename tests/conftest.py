@@ -6,13 +6,10 @@
   own hash seed, into that folder.  Every test that uses N >= 7 requests it (directly or
   through ``system7``), so the derivation in that process is the first one of the session
   (tests/test_ondemand.py checks its cost report);
-* helpers ``members(result)`` and ``steps_arg(fn, name, steps, dt)`` for the change of the
-  analyses' API in progress (ensembles returning a result with ``.members``; step counts
-  becoming time units).
+* ``members(result)``: the members of an ensemble result, whatever its container.
 """
 from __future__ import annotations
 
-import inspect
 import os
 import subprocess
 import sys
@@ -66,11 +63,3 @@ def members(result):
         return list(result[2])
     return list(result)
 
-
-def steps_arg(fn, name, steps, dt):
-    """The value of the ``*_every`` argument ``name`` of ``fn`` meaning ``steps`` steps of
-    ``dt``: the step count itself while ``fn`` takes step counts (integer default), the time
-    ``steps * dt`` once it takes time units (float default).  Only for the tests whose subject
-    is that argument; every other test relies on the defaults."""
-    default = inspect.signature(fn).parameters[name].default
-    return steps * dt if isinstance(default, float) else int(steps)

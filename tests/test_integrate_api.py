@@ -224,7 +224,7 @@ def test_dop853_tableau_is_scipys():
     for entry: a transcription check of the copied tables."""
     from scipy.integrate._ivp import dop853_coefficients as ref
 
-    import charts.solvers.rk as rk
+    import charts.solvers.dop853_coefficients as rk
     for name in ("A", "B", "C", "D", "E3", "E5"):
         np.testing.assert_array_equal(getattr(rk, name), getattr(ref, name), err_msg=name)
     assert (rk.N_STAGES, rk.N_STAGES_EXTENDED, rk.INTERPOLATOR_POWER) == \

@@ -117,7 +117,7 @@ def _qr(X, w, logs):
     Q, R = np.linalg.qr((X * sw).T)
     sign = np.sign(np.diag(R))
     logs += np.log(np.abs(np.diag(R)))
-    return (Q * sign).T / sw
+    return np.ascontiguousarray((Q * sign).T / sw)
 
 
 def _reference_route(system, y, X, w, nsteps, speed):

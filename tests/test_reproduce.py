@@ -45,9 +45,6 @@ def _table_rows(text):
 
 # ------------------------------------------------------------------------ charts reproduce
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, raises=NameError,
-                   reason="package bug: charts/runs/reproduce.py calls figures.figure2..5 but "
-                          "imports the module as paper_figures (NameError after all the runs)")
 def test_reproduce_quick_end_to_end(tmp_path):
     """The quick preset (4 × t = 5·10³ per N for the exponents): every file is written, and
     the table's exponents agree with the project's full-preset reference within N_SIGMA
@@ -124,10 +121,8 @@ def test_paper_figures_single_n(tmp_path, small_inputs):
         _assert_drawn(tmp_path / name, min_px=100)
 
 
-@pytest.mark.xfail(strict=True, reason="charts/runs/paper_figures.py calls matplotlib.use('Agg') "
-                   "at import (conventions: the figure style lives in runs/plotting.py; never "
-                   "pyplot, never matplotlib.use) — restructuring in progress")
 def test_importing_the_figures_leaves_the_users_backend_alone():
+    """The figures never switch the user's matplotlib backend (no matplotlib.use, no pyplot)."""
     code = ("import matplotlib; matplotlib.use('svg'); import charts.runs.paper_figures; "
             "print(matplotlib.get_backend())")
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
