@@ -16,6 +16,8 @@ from charts.cli.main import bundled_scenes, main
 from charts.runs.runner import run_scene
 from charts.runs.scene import load_scene
 
+from scenarios import THROUGH_SINGULAR_N4
+
 CHARTS = [sys.executable, "-m", "charts.cli.main"]
 
 MALFORMED = {
@@ -101,14 +103,12 @@ def test_run_bundled_scene_writes_outputs(tmp_path, capsys):
 
 
 def test_reproduce_dispatch(capsys):
-    try:
-        import charts.runs.reproduce  # noqa: F401
-    except ImportError:
-        assert main(["reproduce"]) == 2
-        assert "charts.runs.reproduce" in capsys.readouterr().err
-    else:
-        assert main(["reproduce", "--help"]) == 0
-        assert "usage" in capsys.readouterr().out
+    """`charts reproduce` reaches charts.runs.reproduce (its own help and usage errors)."""
+    assert main(["reproduce", "--help"]) == 0
+    out = capsys.readouterr().out
+    assert "usage: charts reproduce" in out and "--quick" in out and "--full" in out
+    assert main(["reproduce", "--quick", "--full"]) == 2           # mutually exclusive
+    assert "not allowed with argument" in capsys.readouterr().err
 
 
 def test_bench_accuracy_help(capsys):
@@ -186,12 +186,13 @@ def test_tangent_run_through_a_singular_point_fails_clearly_not_nan(tmp_path, ca
     through the N = 4 singular point must stop with a clear error and keep the finished
     part, never report a 'complete' run with NaN exponents."""
     scene = tmp_path / "sing-lyap.toml"
-    scene.write_text(textwrap.dedent("""
+    theta, u = (", ".join(repr(float(x)) for x in v) for v in THROUGH_SINGULAR_N4)
+    scene.write_text(textwrap.dedent(f"""
         [system]
         n = 4
         [initial]
-        theta = [-0.42426406871192845, -0.565685424949238, 2.7173285848778646, 2.5759072286405553]
-        u = [0.42426406871192845, 0.565685424949238, 0.42426406871192845, 0.565685424949238]
+        theta = [{theta}]
+        u = [{u}]
         [integrator]
         formulation = "ambient"
         method = "rk4"

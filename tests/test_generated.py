@@ -1,13 +1,12 @@
-"""Generated chart geometry against independent routes (issue 2).
+"""Generated chart geometry against independent routes.
 
-Routes: the paper's closed forms (13), (15), (22); a live ``sympy.lambdify`` of the
-derivation of *every* chart (which also proves that the canonical-chart module with
-relabelled inputs is each chart's geometry); the textbook ∂Γ definition of Riemann;
-the Gauss equation of the hypersurface; Riemann's algebraic identities.
+Routes: the paper's closed forms (13), (15), (22) and the Gauss equation of the hypersurface,
+written independently in tests/scenarios.py; a live ``sympy.lambdify`` of the derivation of
+*every* chart (which also proves that the canonical-chart module with relabelled inputs is
+each chart's geometry); the textbook ∂Γ definition of Riemann; Riemann's algebraic identities.
 """
 import importlib.util
 import shutil
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -19,11 +18,14 @@ import charts.codegen.emit
 from charts.geometry.kernels import chart_module
 from charts.codegen.symbolic import ChartGeometry
 
+from scenarios import (FLAT_N3, TOL, christoffel_eq15, gauss_sectional_curvature,
+                       gaussian_curvature_eq22, masses, metric_eq13, rel_err)
+
 ROOT = Path(__file__).resolve().parent.parent
 NS = (3, 4, 5, 6)
 # Closed forms and generated code evaluate the same rational functions of sin/cos in a
 # different order: agreement to ~1e2 ulp is expected at well-conditioned points.
-REL = 1e-12
+REL = TOL["closed_form"]
 # Chart-to-chart agreement passes through the metric of each chart, whose condition
 # number grows like 1/sin²θ_k; charts with |sin θ_k| >= WELL_CONDITIONED keep it < ~1e3.
 WELL_CONDITIONED = 0.05
@@ -31,36 +33,15 @@ CHART_REL = 1e-10
 
 
 def masses_for(n, kind):
-    return np.ones(n) if kind == "equal" else np.linspace(0.4, 2.5, n)[::-1].copy()
+    return masses("equal" if kind == "equal" else "ramp", n)
 
 
 def points(system, count, seed=0):
     return [system.random_state(seed=seed * 1000 + i) for i in range(count)]
 
 
-def rel_err(a, b):
-    return np.max(np.abs(np.asarray(a) - np.asarray(b))) / max(np.max(np.abs(b)), 1e-300)
-
-
 def charts_with_domain(system, theta, threshold=WELL_CONDITIONED):
     return [k for k in range(system.n) if abs(np.sin(theta[k])) >= threshold]
-
-
-def closed_metric(theta, k, m):
-    idx = [i for i in range(len(theta)) if i != k]
-    s, C = np.sin(theta[idx]), np.cos(theta[idx]).sum()
-    return np.diag(m[idx]) + m[k] * np.outer(s, s) / (1 - C * C)
-
-
-def closed_christoffel(theta, k, m):
-    """Eq (15), written for masses: Γ^a_bc = (sin θ_a/m_a)(δ_bc cos θ_b − C s_b s_c/(1−C²))
-    / (Σ s²/m + (1−C²)/m_k); unit masses give the paper's expression."""
-    idx = [i for i in range(len(theta)) if i != k]
-    s, c, ml = np.sin(theta[idx]), np.cos(theta[idx]), m[idx]
-    C = c.sum()
-    inner = np.diag(c) - C * np.outer(s, s) / (1 - C * C)
-    denom = np.sum(s * s / ml) + (1 - C * C) / m[k]
-    return (s / ml)[:, None, None] * inner[None, :, :] / denom
 
 
 # -- closed forms (13), (15), (22) --------------------------------------------------------
@@ -70,8 +51,8 @@ def test_metric_and_christoffel_match_closed_forms(n, kind):
     S = charts.RotorSystem(n, masses_for(n, kind))
     for theta, _ in points(S, 20, seed=n):
         for k in charts_with_domain(S, theta):
-            assert rel_err(S.metric(theta, chart=k), closed_metric(theta, k, S.masses)) < REL
-            assert rel_err(S.christoffel(theta, chart=k), closed_christoffel(theta, k, S.masses)) < REL
+            assert rel_err(S.metric(theta, chart=k), metric_eq13(theta, k, S.masses)) < REL
+            assert rel_err(S.christoffel(theta, chart=k), christoffel_eq15(theta, k, S.masses)) < REL
 
 
 def test_n3_sectional_curvature_is_eq22():
@@ -79,14 +60,13 @@ def test_n3_sectional_curvature_is_eq22():
     rng = np.random.default_rng(22)
     for theta, u in points(S, 50, seed=3):
         w = S.project_tangent(theta, rng.normal(size=3))
-        c2, s2 = np.cos(theta) ** 2, np.sin(theta) ** 2
-        K22 = -c2.sum() / (2 * s2.sum() ** 2)
+        K22 = gaussian_curvature_eq22(theta)
         assert abs(S.sectional_curvature(theta, u, w) - K22) <= REL * abs(K22)
 
 
 def test_n3_curvature_vanishes_at_the_eight_points():
     S = charts.RotorSystem(3)
-    theta = np.array([np.pi / 2, -np.pi / 2, np.pi / 2])
+    theta = np.array(FLAT_N3)
     v = S.project_tangent(theta, [1.0, 0.0, 0.0])
     w = S.project_tangent(theta, [0.0, 1.0, 0.0])
     assert abs(S.sectional_curvature(theta, v, w)) < 1e-14
@@ -211,7 +191,10 @@ def test_sectional_curvature_agrees_across_charts_and_with_gauss(n, kind):
     checked = 0
     for theta, u in points(S, 10, seed=60 + n):
         w = S.project_tangent(theta, rng.normal(size=n))
-        ref = S.sectional_curvature_gauss(theta, u, w)
+        ref = gauss_sectional_curvature(theta, u, w, S.masses)
+        # the package's own Gauss-equation route, against the Riemann route (best chart)
+        assert S.sectional_curvature_gauss(theta, u, w) == pytest.approx(
+            S.sectional_curvature(theta, u, w), rel=CHART_REL, abs=CHART_REL * 1e-3)
         for k in range(n):
             sk = abs(np.sin(theta[k]))
             if sk < 1e-6:
@@ -257,8 +240,8 @@ def test_chart_round_trip_and_tangency(n):
         for k in charts_with_domain(S, theta):
             q, v = S.to_chart(theta, u, k)
             th2, u2 = S.from_chart(q, v, k, np.sign(np.sin(theta[k])))
-            assert np.allclose(np.angle(np.exp(1j * (th2 - theta))), 0, atol=1e-12)
-            assert np.allclose(u2, u, atol=1e-12)
+            np.testing.assert_allclose(np.angle(np.exp(1j * (th2 - theta))), 0, rtol=0, atol=1e-12)
+            np.testing.assert_allclose(u2, u, rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("n", NS)

@@ -6,14 +6,16 @@ import pytest
 
 from charts import RotorSystem, integrate
 
+from scenarios import SEEDS, masses
+
 #: Named tolerances, each with its reason.
 TOL = {
-    # Issue 3's bar for chart vs ambient up to t = 20.  Both run at rtol = 1e-13; the
+    # The required bar for chart vs ambient up to t = 20.  Both run at rtol = 1e-13; the
     # measured gap is 1e-11..4e-10 (rounding amplified by the chaos, λ ≈ 0.3–0.5).
     "chart_vs_ambient": 1e-9,
-    # Issue 3's bar for forward to t = 10 and back (rtol = 1e-12: measured ≤ 2e-10).
+    # The required bar for forward to t = 10 and back (rtol = 1e-12: measured ≤ 2e-10).
     "reversal": 1e-8,
-    # Issue 3's bar for ⟨p, q⟩_g and ⟨p, u⟩_g over t = 20 (rtol = 1e-13).
+    # The required bar for ⟨p, q⟩_g and ⟨p, u⟩_g over t = 20 (rtol = 1e-13).
     "transport_gram": 1e-10,
     # eq (16) in charts vs eq (19) ambient, both at rtol = 1e-13 up to t = 20: the transported
     # vectors obey the linearised flow and inherit the same chaotic amplification as θ.
@@ -27,16 +29,13 @@ TOL = {
     "tangency": 1e-11,
 }
 
-MASSES = {3: [0.7, 1.15, 1.6], 4: [0.7, 1.0, 1.3, 1.6], 5: [0.7, 0.925, 1.15, 1.375, 1.6]}
-
 # (n, unequal masses?, seed, tau): states whose chart run switches >= 10 times before t = 20.
 # tau close to 1 makes the rule switch often, which is the point of this test.
-MANY_SWITCHES = [(3, False, 3, 0.9), (3, True, 18, 0.9), (4, False, 4, 0.9), (4, True, 2, 0.9),
-                 (5, False, 6, 0.9), (5, True, 1, 0.95)]
+MANY_SWITCHES = SEEDS["many_switches"]
 
 
 def _system(n, unequal):
-    return RotorSystem(n, MASSES[n] if unequal else None)
+    return RotorSystem(n, masses("linear", n) if unequal else None)
 
 
 @pytest.mark.parametrize("n, unequal, seed, tau", MANY_SWITCHES)
@@ -92,7 +91,7 @@ def test_forward_and_back_returns_to_the_start(formulation, n):
 
 @pytest.mark.parametrize("formulation", ["chart", "ambient"])
 def test_rk4_is_fourth_order(formulation):
-    s = RotorSystem(4, MASSES[4])
+    s = RotorSystem(4, masses("linear", 4))
     th, u = s.random_state(5)
     ref = integrate(s, th, u, 2.0, formulation="ambient", rtol=1e-13, t_eval=[0, 2.0])
     dts = np.array([0.04, 0.02, 0.01, 0.005])

@@ -11,6 +11,8 @@ from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound,
 from charts.solvers.integrate import IntegrationResult, integrate
 from charts.solvers.rk import RHS_SIG, dense_eval, dop853_dense, dop853_step, rk4_step
 
+from scenarios import SINGULAR_N4, TOL, masses
+
 SYS3 = RotorSystem(3)
 TH3, U3 = SYS3.random_state(7)
 
@@ -65,14 +67,14 @@ def test_bad_states():
         integrate(SYS3, TH3[:2], U3[:2], 1.0)
     s4 = RotorSystem(4)
     with pytest.raises(ValueError, match="singular point"):
-        integrate(s4, np.array([0.0, 0.0, np.pi, np.pi]), np.zeros(4) + [1, -1, 0, 0], 1.0)
+        integrate(s4, np.array(SINGULAR_N4), np.zeros(4) + [1, -1, 0, 0], 1.0)
 
 
 # -- result layout and output times ---------------------------------------------------------
 @pytest.mark.parametrize("formulation", ["chart", "ambient"])
 @pytest.mark.parametrize("method", ["rk4", "dop853"])
 def test_result_layout_and_exact_output_times(formulation, method):
-    s = RotorSystem(4, [1.0, 2.0, 0.5, 1.5])
+    s = RotorSystem(4, masses("mixed", 4))
     th, u = s.random_state(3)
     P = np.array([s.project_tangent(th, np.arange(4.0)), s.project_tangent(th, np.ones(4))])
     te = np.array([0.0, 0.123, 1.0, 2.5, 3.0])
@@ -82,7 +84,7 @@ def test_result_layout_and_exact_output_times(formulation, method):
     assert r.theta.shape == r.u.shape == (5, 4) and r.transported.shape == (5, 2, 4)
     np.testing.assert_array_equal(r.theta[0], th)
     np.testing.assert_array_equal(r.u[0], u)
-    np.testing.assert_allclose(r.transported[0], P, atol=1e-15)
+    np.testing.assert_array_equal(r.transported[0], P)  # the t = 0 sample is the input
     assert set(r.drift) == {"constraint", "tangency", "energy", "transport"}
     assert r.n_steps > 0 and r.n_rhs >= 4 * r.n_steps
     if formulation == "ambient":
@@ -200,18 +202,59 @@ def test_rk4_and_dop853_on_the_harmonic_oscillator():
         errs.append(np.abs(y - exact(2.0)).max())
     order = np.polyfit(np.log(hs), np.log(errs), 1)[0]
     assert 3.9 < order < 4.1  # fourth order, to the precision of a 3-point fit
-    # DOP853: one step of h = 0.1 is accurate to ~h⁹; the error estimate is small and the
-    # dense output reproduces the solution inside the step to ~h⁸
+    # DOP853: one step of h = 0.1 is accurate to ~h⁹, and the dense output reproduces the
+    # solution inside the step to ~h⁸
     y = np.array([1.0, 0.0])
     K = np.zeros((16, 2))
     _osc(y, par, K[0])
     new = np.zeros(2)
     tmp = np.zeros(2)
     err, health = dop853_step(_osc, y, 0.1, par, K, tmp, new, 1e-10, 1e-10)
-    assert np.abs(new - exact(0.1)).max() < 1e-12 and err < 1.0 and health == 1.0
+    assert np.abs(new - exact(0.1)).max() < TOL["dop853_one_step"] and health == 1.0
     F = np.zeros((7, 2))
     dop853_dense(_osc, y, new, 0.1, par, K, tmp, F)
     for x in (0.0, 0.3, 0.77, 1.0):
         out = np.zeros(2)
         dense_eval(F, y, x, out)
         assert np.abs(out - exact(0.1 * x)).max() < 1e-11
+
+
+def test_dop853_tableau_is_scipys():
+    """The coefficients are SciPy's (``scipy/integrate/_ivp/dop853_coefficients.py``), entry
+    for entry: a transcription check of the copied tables."""
+    from scipy.integrate._ivp import dop853_coefficients as ref
+
+    import charts.solvers.dop853_coefficients as rk
+    for name in ("A", "B", "C", "D", "E3", "E5"):
+        np.testing.assert_array_equal(getattr(rk, name), getattr(ref, name), err_msg=name)
+    assert (rk.N_STAGES, rk.N_STAGES_EXTENDED, rk.INTERPOLATOR_POWER) == \
+        (ref.N_STAGES, ref.N_STAGES_EXTENDED, ref.INTERPOLATOR_POWER)
+
+
+@pytest.mark.parametrize("rtol, h", [(1e-6, 0.6), (1e-10, 0.15), (1e-12, 0.1)])
+def test_dop853_step_and_error_norm_equal_scipys(rtol, h):
+    """One step of our DOP853 against SciPy's ``DOP853`` solver taking the same step from the
+    same state: the same new state (to a few ulp) and the same scaled error norm, whose value
+    decides acceptance (the error norm is compared, not merely required to be < 1)."""
+    from scipy.integrate import DOP853
+
+    w2 = 4.0
+    par = np.array([w2])
+    y0 = np.array([1.0, 0.3])
+    ref = DOP853(lambda t, y: np.array([y[1], -w2 * y[0]]), 0.0, y0, t_bound=h, rtol=rtol,
+                 atol=rtol, first_step=h)
+    ref.step()
+    assert ref.t == h, "SciPy rejected the step: choose a smaller h for this rtol"
+    scale = rtol + np.maximum(np.abs(y0), np.abs(ref.y)) * rtol
+    err_ref = ref._estimate_error_norm(ref.K, h, scale)
+    K = np.zeros((16, 2))
+    _osc(y0, par, K[0])
+    new, tmp = np.zeros(2), np.zeros(2)
+    err, _ = dop853_step(_osc, y0, h, par, K, tmp, new, rtol, rtol)
+    np.testing.assert_allclose(new, ref.y, rtol=0, atol=TOL["dop853_vs_scipy_state"])
+    assert 0.1 < err < 1.0          # a step near the acceptance limit, where the norm decides
+    # the norm is h·|Σ_j E_j K_j| / scale, a sum that cancels down to the local error: its
+    # rounding (in either implementation) is ~13 terms × |E| ≲ 1 ulp of |K|, in units of the scale
+    rounding = 16 * np.finfo(float).eps * np.abs(K[:13]).max() * h / scale.min()
+    assert abs(err - err_ref) <= TOL["dop853_vs_scipy_error"] * err_ref + rounding, \
+        (err, err_ref, rounding)

@@ -1,10 +1,13 @@
-"""Hard cases of issue 3: chart boundaries at |sin θₖ| ≈ 1e-8, the N = 4 singular points (close
+"""Hard cases of the integrators: chart boundaries at |sin θₖ| ≈ 1e-8, the N = 4 singular points (close
 passes, exact hits, long runs), the N = 3 flat points, speeds from 1e-3 to 1e3, t = 1e5."""
 import numpy as np
 import pytest
 
-from charts import RotorSystem, integrate
-from charts.solvers.integrate import TOLERANCES, SingularPointError
+from charts import IntegrationError, RotorSystem, integrate
+from charts.solvers.integrate import TOLERANCES, ChartDomainError, SingularPointError
+
+from scenarios import (FLAT_N3, chart_edge_n3, gauss_sectional_curvature, masses,
+                       near_singular_n4, singular_line_n4)
 
 #: Named tolerances, each with its reason.
 TOL = {
@@ -70,17 +73,8 @@ def test_trajectory_through_sin_theta_1e8(n):
 S4 = RotorSystem(4)
 
 
-def _near_singular(delta, seed=0):
-    """A point at distance ≈ δ√2 from the singular point (0, 0, π, π), generic velocity."""
-    x0, x1, y2 = 0.6 * delta, 0.8 * delta, 0.7 * delta
-    y3 = np.arccos(np.cos(x0) + np.cos(x1) - np.cos(y2))
-    th = S4.project_point(np.array([x0, x1, np.pi + y2, np.pi - y3]))
-    u = S4.project_tangent(th, np.random.default_rng(seed).normal(size=4))
-    return th, u / S4.speed(u)
-
-
 def test_close_pass_of_a_singular_point_is_accurate():
-    thc, uc = _near_singular(1e-3)
+    thc, uc = near_singular_n4(1e-3)
     th0, u0 = _state_through(S4, thc, uc, 2.0)
     te = np.linspace(0, 4, 401)
     ref = integrate(S4, th0, u0, 4.0, formulation="ambient", rtol=1e-13, t_eval=te)
@@ -110,14 +104,13 @@ def test_trajectory_aimed_exactly_at_a_singular_point_raises(formulation, method
     # (a − t/2, a − t/2, π − a + t/2, π − a + t/2) lies on the manifold for every t and is a
     # unit-speed geodesic (a straight line with Λ = 0): it reaches (0, 0, π, π) at t = 2a.
     a = 1.0
-    th = np.array([a, a, np.pi - a, np.pi - a])
-    u = np.array([-1.0, -1.0, 1.0, 1.0]) / 2.0
+    th, u = singular_line_n4(a)
     with pytest.raises(SingularPointError, match="singular point") as err:
         integrate(S4, th, u, 3.0, formulation=formulation, method=method, t_eval=np.linspace(0, 3, 31))
     res = err.value.result
     assert np.isfinite(res.theta).all() and np.isfinite(res.u).all()  # never NaN
     assert res.t.size >= 10 and res.t[-1] < 2 * a  # samples before the hit are kept
-    np.testing.assert_allclose(res.theta[:, 0], a - res.t / 2, atol=1e-9)  # and they are right
+    np.testing.assert_allclose(res.theta[:, 0], a - res.t / 2, rtol=0, atol=1e-9)  # and right
 
 
 def test_long_n4_rk4_run_keeps_invariants_at_rounding_level():
@@ -147,10 +140,11 @@ def test_long_run_t1e5_has_bounded_drift(formulation):
 # -- N = 3 flat points, speeds -------------------------------------------------------------------
 def test_n3_zero_curvature_point():
     s = RotorSystem(3)
-    th = np.array([np.pi / 2, np.pi / 2, -np.pi / 2])  # all cosines vanish: K = 0 (eq 22)
+    th = np.array(FLAT_N3)  # all cosines vanish: K = 0 (eq 22)
     u = s.project_tangent(th, np.array([1.0, -0.3, 0.2]))
     u /= s.speed(u)
-    assert abs(s.sectional_curvature_gauss(th, u, s.project_tangent(th, np.array([0.2, 1.0, 0.0])))) < 1e-30
+    w = s.project_tangent(th, np.array([0.2, 1.0, 0.0]))
+    assert abs(gauss_sectional_curvature(th, u, w, s.masses)) < 1e-30
     te = np.linspace(0, 20, 201)
     amb = integrate(s, th, u, 20.0, formulation="ambient", rtol=1e-13, t_eval=te)
     ch = integrate(s, th, u, 20.0, formulation="chart", rtol=1e-13, t_eval=te)
@@ -160,7 +154,7 @@ def test_n3_zero_curvature_point():
 @pytest.mark.parametrize("formulation", ["ambient", "chart"])
 @pytest.mark.parametrize("speed", [1e-3, 1e3])
 def test_speed_scaling(formulation, speed):
-    s = RotorSystem(4, [0.7, 1.0, 1.3, 1.6])
+    s = RotorSystem(4, masses("linear", 4))
     th, u = s.random_state(9)
     te = np.linspace(0, 5, 51)
     one = integrate(s, th, u, 5.0, formulation=formulation, rtol=1e-12, t_eval=te)
@@ -169,3 +163,54 @@ def test_speed_scaling(formulation, speed):
     assert np.abs(fast.theta - one.theta).max() <= TOL["speed_scaling"]
     assert np.abs(fast.u / speed - one.u).max() <= TOL["speed_scaling"]
     assert fast.drift["energy"] < 1e-9
+
+
+# -- failure statuses through the public API ---------------------------------------------------
+# A chart is only usable away from its edge sin θₖ = 0, where its metric blows up; the switching
+# rule leaves it long before.  With tau → 0 the rule is switched off and a run heading for the
+# edge of its chart fails there (at t ≈ sin θ₀/|u₀|); which status it ends with depends on how
+# the blow-up of the local equations develops in floating point (measured over sin θ₀ in
+# [1e-4, 5e-2]: a stage outside the chart, or an overflow, or the ZeroDivisionError below).
+# The default tau leaves chart 0 at t = 0 and the same runs finish and agree with the ambient
+# formulation.
+NO_SWITCHING = 1e-9
+
+
+@pytest.mark.parametrize("sin0, error, message", [
+    (5e-2, ChartDomainError, "left the domain of the current chart"),
+    (1e-3, IntegrationError, "became non-finite"),
+])
+def test_run_kept_in_a_chart_up_to_its_edge_fails_with_a_status(sin0, error, message):
+    s = RotorSystem(3)
+    th, u = chart_edge_n3(sin0)
+    with pytest.raises(error, match=message) as err:
+        integrate(s, th, u, 1.0, formulation="chart", method="rk4", dt=0.01, chart=0,
+                  tau=NO_SWITCHING)
+    assert type(err.value) is error                       # not a subclass for NONFINITE
+    res = err.value.result
+    assert res.status.startswith("failed at t = ") and res.t.size > 100 and res.switches == []
+    # it failed at the edge: θ₀ (moving at u₀) reaches 0 after ≈ sin0/|u₀|
+    assert res.t[-1] == pytest.approx(sin0 / abs(u[0]), rel=0.05)
+    # the samples before the failing step are finite (the last one may not be)
+    assert np.isfinite(res.theta[:-1]).all() and np.isfinite(res.u[:-1]).all()
+    # the same run with the switching rule: leaves chart 0 at t = 0, finishes, and agrees
+    # with the ambient formulation (both RK4, dt = 0.01)
+    ok = integrate(s, th, u, 1.0, formulation="chart", method="rk4", dt=0.01, chart=0)
+    amb = integrate(s, th, u, 1.0, formulation="ambient", method="rk4", dt=0.01)
+    assert ok.switches[0][:2] == (0.0, 0) and ok.status == "finished"
+    assert np.abs(ok.theta[-1] - amb.theta[-1]).max() < 1e-9
+
+
+@pytest.mark.xfail(strict=True, raises=ZeroDivisionError,
+                   reason="package bug: an RK4 step that lands outside the chart (its stages "
+                          "inside) divides by sin θₖ = 0 in the chart formulation's hooks "
+                          "(charts/solvers/chart_formulation.py, -acc / sk) instead of ending "
+                          "with the DOMAIN status")
+@pytest.mark.parametrize("sin0", [2e-4, 2e-3, 1e-2, 3e-2])
+def test_every_run_into_the_chart_edge_ends_in_an_integration_error(sin0):
+    s = RotorSystem(3)
+    th, u = chart_edge_n3(sin0)
+    with pytest.raises(IntegrationError) as err:
+        integrate(s, th, u, 1.0, formulation="chart", method="rk4", dt=0.01, chart=0,
+                  tau=NO_SWITCHING)
+    assert err.value.result.t[-1] == pytest.approx(sin0 / abs(u[0]), rel=0.05)

@@ -11,6 +11,8 @@ import pytest
 from charts.cli.main import bundled_scenes
 from charts.runs.scene import EFFECTS, SCHEMA, SceneError, load_scene, parse_scene
 
+from scenarios import EXACT_N3
+
 DOCS = Path(__file__).resolve().parent.parent / "docs" / "scenes.md"
 
 
@@ -83,9 +85,8 @@ def test_malformed_scene_message(data, pieces):
         assert piece in msg, (piece, msg)
 
 
-# An exact point of the N = 3 manifold: cos(2π/3)·2 + cos(0) = 0, and a tangent velocity.
-THETA = [2 * math.pi / 3, 2 * math.pi / 3, 0.0]
-U = [1.0, -1.0, 0.0]
+# An exact point of the N = 3 manifold and a tangent velocity.
+THETA, U = (list(v) for v in EXACT_N3)
 
 
 def test_explicit_state_accepted_and_speed_derived():

@@ -48,9 +48,8 @@ def test_welch_finds_a_pure_tone():
 def test_velocity_spectrum_is_continuous(n):
     system = RotorSystem(n)
     theta, u = system.random_state(seed=2)
-    w = waveform(system, theta, u, 4000.0, sample_every=0.05)
+    w = waveform(system, theta, u, 4000.0)
     om, p = power_spectrum(w.u[:, 0], w.dt_sample)
-    assert np.all(p >= 0)
     band = om < 10.0  # above ω ≈ 10 the density is ~1e-20, pure rounding
     assert _line_ratio(p[band]) < MAX_LINE_RATIO
     # Parseval: the density integrates to the variance (minus the per-segment means

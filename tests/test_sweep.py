@@ -1,4 +1,4 @@
-"""Sweeps (issue 7, item 3): validation of sweep files, the points and their scenes, and a
+"""Sweeps: validation of sweep files, the points and their scenes, and a
 sweep on a local Dask cluster (2 workers) that is killed midway (SIGKILL to the whole
 process group), resumed without recomputing finished points, and ends with the same table
 as an uninterrupted run on an existing cluster (``--scheduler``)."""
