@@ -3,6 +3,7 @@ passes, exact hits, long runs), the N = 3 flat points, speeds from 1e-3 to 1e3, 
 import numpy as np
 import pytest
 
+import charts
 from charts import IntegrationError, RotorSystem, integrate
 from charts.solvers.integrate import TOLERANCES, ChartDomainError, SingularPointError
 
@@ -168,9 +169,10 @@ def test_speed_scaling(formulation, speed):
 # -- failure statuses through the public API ---------------------------------------------------
 # A chart is only usable away from its edge sin θₖ = 0, where its metric blows up; the switching
 # rule leaves it long before.  With tau → 0 the rule is switched off and a run heading for the
-# edge of its chart fails there (at t ≈ sin θ₀/|u₀|); which status it ends with depends on how
-# the blow-up of the local equations develops in floating point (measured over sin θ₀ in
-# [1e-4, 5e-2]: a stage outside the chart, or an overflow, or the ZeroDivisionError below).
+# edge of its chart fails there (at t ≈ sin θ₀/|u₀|) with the domain status: a stage or a step
+# outside the chart, or no step left at its boundary (before, depending on how the blow-up of the
+# local equations developed in floating point, it could also end non-finite or raise a
+# ZeroDivisionError).
 # The default tau leaves chart 0 at t = 0 and the same runs finish and agree with the ambient
 # formulation.
 NO_SWITCHING = 1e-9
@@ -178,7 +180,7 @@ NO_SWITCHING = 1e-9
 
 @pytest.mark.parametrize("sin0, error, message", [
     (5e-2, ChartDomainError, "left the domain of the current chart"),
-    (1e-3, IntegrationError, "became non-finite"),
+    (1e-3, ChartDomainError, "left the domain of the current chart"),
 ])
 def test_run_kept_in_a_chart_up_to_its_edge_fails_with_a_status(sin0, error, message):
     s = RotorSystem(3)
@@ -186,7 +188,7 @@ def test_run_kept_in_a_chart_up_to_its_edge_fails_with_a_status(sin0, error, mes
     with pytest.raises(error, match=message) as err:
         integrate(s, th, u, 1.0, formulation="chart", method="rk4", dt=0.01, chart=0,
                   tau=NO_SWITCHING)
-    assert type(err.value) is error                       # not a subclass for NONFINITE
+    assert type(err.value) is error
     res = err.value.result
     assert res.status.startswith("failed at t = ") and res.t.size > 100 and res.switches == []
     # it failed at the edge: θ₀ (moving at u₀) reaches 0 after ≈ sin0/|u₀|
@@ -201,16 +203,23 @@ def test_run_kept_in_a_chart_up_to_its_edge_fails_with_a_status(sin0, error, mes
     assert np.abs(ok.theta[-1] - amb.theta[-1]).max() < 1e-9
 
 
-@pytest.mark.xfail(strict=True, raises=ZeroDivisionError,
-                   reason="package bug: an RK4 step that lands outside the chart (its stages "
-                          "inside) divides by sin θₖ = 0 in the chart formulation's hooks "
-                          "(charts/solvers/chart_formulation.py, -acc / sk) instead of ending "
-                          "with the DOMAIN status")
 @pytest.mark.parametrize("sin0", [2e-4, 2e-3, 1e-2, 3e-2])
 def test_every_run_into_the_chart_edge_ends_in_an_integration_error(sin0):
+    """An RK4 step that lands outside the chart ends with the DOMAIN status (it used to
+    divide by sin θₖ = 0 in the chart formulation's post-step hook)."""
     s = RotorSystem(3)
     th, u = chart_edge_n3(sin0)
     with pytest.raises(IntegrationError) as err:
         integrate(s, th, u, 1.0, formulation="chart", method="rk4", dt=0.01, chart=0,
                   tau=NO_SWITCHING)
     assert err.value.result.t[-1] == pytest.approx(sin0 / abs(u[0]), rel=0.05)
+
+
+def test_a_velocity_whose_energy_overflows_is_refused():
+    s = RotorSystem(3)
+    th, u = s.random_state(seed=0)
+    for fn in (lambda: integrate(s, th, u * 1e155, 1.0),
+               lambda: integrate(s, th, u * 1e155, 1.0, method="rk4"),
+               lambda: charts.lyapunov_spectrum(s, th, u * 1e155, 2.0)):
+        with pytest.raises(ValueError, match="overflows"):
+            fn()

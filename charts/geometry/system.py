@@ -73,7 +73,10 @@ class RotorSystem:
 
     def check_state(self, theta, u):
         theta = self.check_point(theta)
-        return theta, self.check_tangent(theta, u)
+        u = self.check_tangent(theta, u)
+        if not np.isfinite(self.energy(u)):
+            raise ValueError("u is too large: its kinetic energy overflows a float; rescale it")
+        return theta, u
 
     # -- invariants and projections ----------------------------------------------------
     def energy(self, u):

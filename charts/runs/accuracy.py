@@ -157,11 +157,13 @@ def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, 
 
     system = RotorSystem(3)
     states = [system.random_state(seed=seed + i, speed=1.0) for i in range(members)]
-    kw = dict(n_exponents=1, t_transient=50.0, n_batches=10)
+    kw = dict(n_exponents=1, n_batches=10)
 
-    def ensemble(dt):  # re-orthonormalise every 10 steps, project every 100, at every dt
-        lam = [lyapunov_spectrum(system, th, u, T, dt=dt, seed=seed + i, reorth_every=10 * dt,
-                                 record_every=10 * dt, project_every=100 * dt, **kw).exponents[0]
+    def ensemble(dt):  # re-orthonormalise every step, project every 100, at every dt
+        lam = [lyapunov_spectrum(system, th, u, T, dt=dt, seed=seed + i, reorth_every=dt,
+                                 record_every=max(1, round(1.0 / dt)) * dt,
+                                 project_every=100 * dt, t_transient=round(50.0 / dt) * dt,
+                                 **kw).exponents[0]
                for i, (th, u) in enumerate(states)]
         return np.array(lam)
 

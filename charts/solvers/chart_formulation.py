@@ -37,7 +37,7 @@ from ..geometry.atlas import ambient_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
 from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
-from .status import DOMAIN_CAP_FRACTION, step_cap
+from .status import DOMAIN, DOMAIN_CAP_FRACTION, step_cap
 
 __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
 
@@ -138,7 +138,9 @@ def _post(y, par, ipar, t, log):
     n = ipar[0]
     d = n - 1
     k = ipar[2]
-    C, sk, _ = _sin_k(y, n, ipar[3])
+    C, sk, s2 = _sin_k(y, n, ipar[3])
+    if not s2 > 0.0:  # the step ended outside the chart (|Σ cos q| >= 1): no θₖ, no uₖ
+        return DOMAIN
     code = POST_OK
     if par[1 + 2 * n + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
         acc = 0.0

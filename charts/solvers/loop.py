@@ -117,6 +117,11 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
             status = OUT_FULL
             break
         hcap = cap(y, par, ipar)
+        if hcap < 10.0 * (np.nextafter(t, np.inf) - t):
+            # the formulation allows no step: at a chart boundary that the switching rule
+            # does not leave (steps shrink geometrically towards it), or outside the chart
+            status = DOMAIN
+            break
         t_next = t_final
         if use_eval and ist[I_IEVAL] < ne:
             t_next = min(t_next, t_eval[ist[I_IEVAL]])

@@ -50,8 +50,9 @@ STATUS_MESSAGES = {
               "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
               "through it. Start from a different state (the part computed up to t is in "
               "err.result).",
-    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}; reduce dt "
-            "(or use method='dop853', which shrinks such steps automatically).",
+    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}, or the steps shrank "
+            "to nothing at its boundary; reduce dt, use method='dop853' (which shrinks such "
+            "steps automatically), or let the chart switch (tau close to the default 0.9).",
     UNDERFLOW: "the step size underflowed at t = {t:.17g}; the solution is not resolvable at "
                "this tolerance. Loosen rtol/atol or check the initial state.",
     NONFINITE: "the state became non-finite at t = {t:.17g}; reduce dt or tighten rtol.",
