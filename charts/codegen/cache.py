@@ -16,6 +16,7 @@ from pathlib import Path
 
 import sympy
 
+from ..atomic import atomic_write
 from .emit import module_name, module_source
 
 __all__ = ["cache_dir", "load_or_generate"]
@@ -45,9 +46,7 @@ def load_or_generate(n: int):
         print(f"charts: deriving geometry for N={n} (not shipped); cached at {path}",
               file=sys.stderr, flush=True)
         src = module_source(n)
-        tmp = path.with_suffix(f".tmp{os.getpid()}")
-        tmp.write_text(src)
-        os.replace(tmp, path)  # atomic: concurrent workers never see half a file
+        atomic_write(path, src.encode("utf-8"))  # concurrent workers never see half a file
         print(f"charts: N={n} derived in {time.perf_counter() - t0:.1f} s", file=sys.stderr, flush=True)
     name = f"charts_ondemand_{module_name(n)}"
     spec = importlib.util.spec_from_file_location(name, path)

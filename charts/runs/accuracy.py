@@ -351,9 +351,7 @@ def main(argv=None, quiet=False) -> int:
     study = run_study("quick" if args.quick else "full", args.n, args.seed, progress=not quiet)
     out = args.output
     out.mkdir(parents=True, exist_ok=True)
-    tmp = out / ".accuracy.png.tmp.png"
-    figure(study, tmp)
-    tmp.replace(out / "accuracy.png")
+    figure(study, out / "accuracy.png")      # written atomically by plotting.save_png
     md = table(study)
     atomic_write(out / "accuracy.md", (md + "\n").encode())
     atomic_write(out / "accuracy.json", json.dumps(study, indent=1).encode())

@@ -3,29 +3,13 @@ encoding, and the version stamp every result carries."""
 from __future__ import annotations
 
 import io
-import os
 import platform
-from pathlib import Path
 
 import numpy as np
 
+from ..atomic import atomic_write
+
 __all__ = ["atomic_write", "atomic_text", "npz_bytes", "json_default", "versions"]
-
-
-def atomic_write(path, data: bytes) -> None:
-    """Write ``data`` to ``path`` through a temporary file in the same folder, flushed to
-    disk, then ``os.replace``: readers see the old file or the new one, never a part."""
-    path = Path(path)
-    tmp = path.with_name(f".{path.name}.tmp{os.getpid()}")
-    try:
-        with open(tmp, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
 
 
 def atomic_text(path, text: str) -> None:
