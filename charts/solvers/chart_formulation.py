@@ -37,7 +37,7 @@ from ..geometry.atlas import ambient_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
 from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
-from .status import DOMAIN, DOMAIN_CAP_FRACTION, step_cap
+from .status import CHART_MIN_RATIO, DOMAIN, DOMAIN_CAP_FRACTION, step_cap
 
 __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
 
@@ -162,6 +162,8 @@ def _post(y, par, ipar, t, log):
             smax = s
             j = i
     if not should_leave(abs(sk), smax, par[1 + 2 * n + _TAU]):
+        if abs(sk) < CHART_MIN_RATIO * smax:  # kept (no switch) up to its edge: stop
+            return DOMAIN
         return code
     nv = ipar[1]
     row = np.empty((2 + nv) * n)  # allocation only at a switch, never per step

@@ -19,7 +19,7 @@ from math import sqrt
 
 from numba import njit
 
-__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "SINGULAR_S", "step_cap", "RUNNING",
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
            "status_error"]
@@ -28,6 +28,12 @@ __all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "SINGULAR_S", "step_cap", "RUN
 CAP_FRACTION = {"dop853": 0.5, "rk4": 0.03}
 #: Largest step as a fraction of the distance |sin θₖ| to the boundary of chart k.
 DOMAIN_CAP_FRACTION = 0.5
+#: |sin θₖ| / maxᵢ |sin θᵢ| below which chart k is not used any further (a route that keeps it,
+#: switching turned off, stops with the domain status): its metric's condition number is then
+#: above 1 + (N − 1)·10⁸, and DOP853's error control would crawl towards the edge in steps
+#: of ~1e-9 forever (measured at a ratio of 5e-5).  The switching rule (τ = 0.9) never gets
+#: near it.
+CHART_MIN_RATIO = 1e-4
 #: Σ sin²θ below which a point counts as an N = 4 singular point (distance ≈ 1e-7): there
 #: the sines carry a relative rounding error ≈ 1e-16/√S ≈ 1e-9, and the flow (whose
 #: acceleration scales as 1/√S) cannot be continued meaningfully.
@@ -50,9 +56,10 @@ STATUS_MESSAGES = {
               "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
               "through it. Start from a different state (the part computed up to t is in "
               "err.result).",
-    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}, or the steps shrank "
-            "to nothing at its boundary; reduce dt, use method='dop853' (which shrinks such "
-            "steps automatically), or let the chart switch (tau close to the default 0.9).",
+    DOMAIN: "a step left the domain of the current chart at t = {t:.17g}, or came so close to its "
+            "boundary that the chart is ill-conditioned beyond use (|sin θₖ| < 1e-4·max|sin θ|); "
+            "reduce dt, use method='dop853' (which shrinks such steps automatically), or let "
+            "the chart switch (tau close to the default 0.9).",
     UNDERFLOW: "the step size underflowed at t = {t:.17g}; the solution is not resolvable at "
                "this tolerance. Loosen rtol/atol or check the initial state.",
     NONFINITE: "the state became non-finite at t = {t:.17g}; reduce dt or tighten rtol.",
