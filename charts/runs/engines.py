@@ -109,7 +109,7 @@ class IntegrateEngine:
         if integ["method"] == "rk4":
             kw["dt"] = integ["dt"]
         else:
-            kw.update(rtol=integ["rtol"], atol=integ["atol"])
+            kw.update(rtol=integ["rtol"], atol=integ["atol"])  # atol None: integrate's default
         if integ["formulation"] == "chart" and st.chart >= 0:
             kw["chart"] = st.chart
         t_start = start * self.sdt

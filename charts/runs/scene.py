@@ -237,7 +237,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                              "allowed with method = 'dop853' (adaptive: set rtol/atol, or use "
                              "method = 'rk4')")
         integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
-        integ["atol"] = integ["atol"] if integ["atol"] is not None else 1e-12
+        # atol: None = integrate's default, rtol·min(1, speed)
 
     # -- run: times on the grids ---------------------------------------------------------------
     grid = integ["dt"] if method == "rk4" else None

@@ -5,13 +5,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable
 
+from ..analyses.arguments import GRID_RTOL
+from ..geometry.kernels import MAX_N
+
 __all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "MAX_N",
            "GRID_RTOL"]
-
-#: Largest N a scene may ask for: N = 3..6 ship generated code, 7..10 derive it on demand.
-MAX_N = 10
-#: Relative slack when checking that one time is an integer multiple of another (dt grid).
-GRID_RTOL = 1e-9
 
 
 class SceneError(ValueError):
@@ -78,7 +76,8 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "dt": Key("float", None, "RK4 step (default 0.01, the paper's). rk4 only.", check=_gt(0)),
         "rtol": Key("float", None, "Relative tolerance (default 1e-10). dop853 only.",
                     check=_between(1e-15, 1e-1)),
-        "atol": Key("float", None, "Absolute tolerance (default 1e-12). dop853 only.",
+        "atol": Key("float", None, "Absolute tolerance (default rtol·min(1, speed), as "
+                    "charts.integrate). dop853 only.",
                     check=_between(1e-18, 1e-1)),
         "project": Key("bool", False, "Project back onto the invariants after every step "
                        "(overrides project_every)."),
