@@ -17,14 +17,15 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def write_all(outdir: Path, ns, verbose=True) -> dict[str, float]:
+    from charts.atomic import atomic_write
     from charts.codegen.emit import init_source, module_name, module_source
 
     outdir.mkdir(parents=True, exist_ok=True)
     timings = {}
-    (outdir / "__init__.py").write_text(init_source())
+    atomic_write(outdir / "__init__.py", init_source().encode("utf-8"))
     for n in ns:
         t0 = time.perf_counter()
-        (outdir / f"{module_name(n)}.py").write_text(module_source(n))
+        atomic_write(outdir / f"{module_name(n)}.py", module_source(n).encode("utf-8"))
         timings[f"N={n}"] = time.perf_counter() - t0
         if verbose:
             print(f"  N={n}: {timings[f'N={n}']:.1f} s", flush=True)

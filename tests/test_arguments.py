@@ -95,3 +95,32 @@ def test_progress_callable_sees_the_simulated_time():
                              progress=lambda t, total: seen.append((t, total)))
     assert seen[-1] == pytest.approx((3.0, 3.0)) and len(seen) > 2
     assert all(b[0] >= a[0] for a, b in zip(seen, seen[1:]))
+
+
+def test_durations_off_the_sampling_grid_are_refused():
+    """t_final must hold a whole number of samples (it was floored silently)."""
+    with pytest.raises(ValueError, match="multiple of sample_every"):
+        charts.waveform(SYSTEM, THETA, U, 1.03, sample_every=0.05)
+    with pytest.raises(ValueError, match="multiple of sample_every"):
+        charts.hyperbolicity_angles(SYSTEM, THETA, U, 1.05, sample_every=0.1, t_transient=0.0)
+    x = np.sin(np.arange(4000) * 0.05)
+    with pytest.raises(ValueError, match="segment_time=200.03"):
+        charts.power_spectrum(x, 0.05, segment_time=200.03)
+
+
+def test_ensembles_check_their_arguments_and_report_simulated_time():
+    with pytest.raises(ValueError, match="progress"):
+        charts.lyapunov_ensemble(SYSTEM, 2, 2.0, progress="x")
+    with pytest.raises(ValueError, match="t_final"):
+        charts.hyperbolicity_ensemble(SYSTEM, 2, -1.0)
+    seen = []
+    charts.lyapunov_ensemble(SYSTEM, 2, 2.0, workers=1, t_transient=0.0, n_batches=2,
+                             progress=lambda t, total: seen.append((t, total)))
+    assert seen == [(2.0, 4.0), (4.0, 4.0)]
+
+
+def test_curvature_checks_seed_and_exact():
+    with pytest.raises(ValueError, match="seed"):
+        charts.curvature_along_trajectory(SYSTEM, THETA, U, 1.0, seed="a")
+    with pytest.raises(ValueError, match="exact"):
+        charts.curvature_along_trajectory(SYSTEM, THETA, U, 1.0, exact="yes")

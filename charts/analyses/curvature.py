@@ -37,7 +37,7 @@ from ..geometry.kernels import compiled
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
-from .arguments import positive_time, progress_reporter, steps_of
+from .arguments import positive_int, positive_time, progress_reporter, steps_of
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
            "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
@@ -239,6 +239,9 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
         raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    seed = positive_int("seed", seed, 0)
+    if not isinstance(exact, (bool, np.bool_)):
+        raise ValueError(f"exact must be True or False, got {exact!r}")
     theta0, u0 = system.check_state(theta0, u0)
     if not system.speed(u0) > 0:
         raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")

@@ -6,7 +6,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .arguments import positive_int
+from ..solvers.progress import check_progress
+from .arguments import positive_int, positive_time, progress_reporter
 from .statistics import standard_error
 
 __all__ = ["EnsembleResult", "run_ensemble"]
@@ -63,14 +64,17 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     seed = positive_int("seed", seed, 0)
     if workers is not None:
         workers = positive_int("workers", workers)
+    positive_time("t_final", t_final)
+    positive_time("speed", speed)
+    check_progress(progress)
     jobs = [(fn, system.n, system.masses, seed + i, speed, t_final, kwargs)
             for i in range(n_trajectories)]
     if workers == 1:
         it = map(_member, jobs)
-        members = _collect(it, len(jobs), progress, desc)
+        members = _collect(it, len(jobs), t_final, progress, desc)
     else:
         with ProcessPoolExecutor(max_workers=workers) as pool:
-            members = _collect(pool.map(_member, jobs), len(jobs), progress, desc)
+            members = _collect(pool.map(_member, jobs), len(jobs), t_final, progress, desc)
     res = EnsembleResult(members, params=dict(n=system.n, masses=system.masses.tolist(),
                                               n_trajectories=n_trajectories, seed=seed,
                                               speed=speed, t_final=t_final, **kwargs))
@@ -80,13 +84,12 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     return res
 
 
-def _collect(it, total, progress, desc):
-    if progress is True:
-        from tqdm.auto import tqdm
-        it = tqdm(it, total=total, desc=desc, leave=False)
+def _collect(it, total, t_final, progress, desc):
+    """The members in order; progress in simulated time (members done × t_final)."""
+    rep = progress_reporter(progress, total * t_final, desc)
     out = []
-    for i, r in enumerate(it):
+    for r in it:
         out.append(r)
-        if callable(progress):
-            progress(i + 1, total)
+        rep.update(t_final)
+    rep.close()
     return out

@@ -189,6 +189,8 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     theta0, u0 = system.check_state(theta0, u0)
     if not system.speed(u0) > 0:
         raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    if n_win % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
     S = n_win // sample
     if S < 1:
         raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")

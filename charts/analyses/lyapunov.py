@@ -5,7 +5,7 @@ The trajectory and k tangent vectors are advanced by the tangent kernel
 (eq 18) in the product ``inner`` and the logarithms of the norms are summed.
 
 ``space="restricted"`` (default) keeps the vectors in the constraint-preserving subspace T_r
-(``charts.flows.projection``), so all 2N−2 computable exponents are physical;
+(``charts.geometry.projection``), so all 2N−2 computable exponents are physical;
 ``space="full"`` does not, and up to 2N exponents can be computed, two of them the
 non-physical zeros of the directions that break the constraint (`identify_nonphysical`).
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solvers.tangent import TangentFlow
-from .arguments import positive_time, steps_of
+from .arguments import positive_time, progress_reporter, steps_of
 
 __all__ = ["Waveform", "waveform", "power_spectrum"]
 
@@ -31,14 +31,17 @@ class Waveform:
 
 
 def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_transient=0.0,
-             project_every=1.0) -> Waveform:
+             project_every=1.0, progress=False) -> Waveform:
     """θ(t) and u(t) from (theta0, u0) every ``sample_every`` up to ``t_final`` after
-    discarding ``t_transient`` (all times whole numbers of RK4 steps ``dt``)."""
+    discarding ``t_transient`` (all times whole numbers of RK4 steps ``dt``); ``progress``:
+    True or callable(t_done, t_total)."""
     dt = positive_time("dt", dt)
     sample = steps_of("sample_every", sample_every, dt)
     total = steps_of("t_final", t_final, dt)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    if total % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
     S = total // sample
     if S < 2:
         raise ValueError(f"t_final={t_final:g} gives fewer than 2 samples of sample_every="
@@ -48,8 +51,14 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_trans
         raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
     flow = TangentFlow(system, theta0, u0, 0, dt=dt, project_every=project)
     out = np.empty((S, 2 * system.n))
-    flow.advance(transient + S * sample, rec_start=transient + sample, rec_every=sample,
-                 states=out, where="waveform (ambient RK4)")
+    total = transient + S * sample
+    rep = progress_reporter(progress, total * dt, f"waveform N={system.n}")
+    c = min(total, 100)
+    for size in np.diff([total * i // c for i in range(c + 1)]):
+        flow.advance(size, rec_start=transient + sample, rec_every=sample, states=out,
+                     where="waveform (ambient RK4)")
+        rep.update(size * dt)
+    rep.close()
     t = np.arange(1, S + 1) * sample * dt
     n = system.n
     return Waveform(t, out[:, :n], out[:, n:], sample * dt)
@@ -65,6 +74,9 @@ def power_spectrum(signal, dt_sample, *, segment_time=200.0):
     dt_sample = positive_time("dt_sample", dt_sample)
     segment_time = positive_time("segment_time", segment_time)
     nper = int(round(segment_time / dt_sample))
+    if abs(nper * dt_sample - segment_time) > 1e-9 * segment_time:
+        raise ValueError(f"segment_time={segment_time:g} is not a whole number of samples "
+                         f"dt_sample={dt_sample:g}")
     if nper < 2 or nper > signal.size // 4:
         raise ValueError(f"signal of {signal.size * dt_sample:g} time units is too short for "
                          f"Welch segments of {segment_time:g}; need at least 4 segments")

@@ -19,6 +19,7 @@ import importlib.util
 import sys
 from pathlib import Path
 
+from ..atomic import atomic_write
 from ..runs.bundled import bundled_files
 
 __all__ = ["main", "bundled_scenes", "resolve_scene"]
@@ -186,9 +187,9 @@ def _generate_installed(check: bool) -> int:
         if not path.exists() or path.read_text() != src:
             stale.append(path.name)
             if not check:
-                path.write_text(src)
+                atomic_write(path, src.encode("utf-8"))
     if not check:
-        (folder / "__init__.py").write_text(init_source())
+        atomic_write(folder / "__init__.py", init_source().encode("utf-8"))
         print(f"wrote {folder}")
         return 0
     if stale:

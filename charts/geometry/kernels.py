@@ -1,7 +1,7 @@
 """Access to the generated chart kernels of one N, plain and numba-compiled.
 
 ``chart_module(n)`` imports ``charts.generated.rotor_n{n}`` (shipped for N = 3..6)
-or, for other N, derives it on demand through ``charts.ondemand``.
+or, for other N, derives it on demand through ``charts.codegen.cache``.
 ``compiled(n)`` returns the same functions compiled with ``numba.njit(cache=True)``.
 """
 from __future__ import annotations
@@ -31,7 +31,7 @@ def chart_module(n: int):
     return load_or_generate(n)
 
 
-#: Generated functions called inside numba kernels (``charts.solvers.chart_formulation``): always compiled.
+#: Generated functions called inside numba kernels (``charts.flows.chart``): always compiled.
 KERNEL_FUNCTIONS = ("geodesic_acceleration", "transport_rate")
 #: A generated function called only from Python is left to CPython when its source is longer
 #: than this: LLVM's compile time grows superlinearly with straight-line code (N = 7 Riemann,

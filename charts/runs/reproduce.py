@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analyses.statistics import standard_error
+from .io import atomic_text
 from .paper import PAPER_EXPONENTS
 
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
@@ -179,7 +180,7 @@ def _report(out, preset, rows, curv, ang, elapsed, workers):
           "space).  Only the restricted angles are intrinsic: the full variant depends on how "
           "eq (8) is continued off the constraint manifold.  Paper's claim: N = 3 stays away "
           "from φ = 0 (hyperbolic), N = 4, 5 reach φ ≈ 0.", ""]
-    (out / "report.md").write_text("\n".join(L) + "\n")
+    atomic_text(out / "report.md", "\n".join(L) + "\n")
 
 
 def main(argv=None):
@@ -221,14 +222,14 @@ def main(argv=None):
     paper_figures.figure4({n: curv[n]["Ka"] for n in NS}, out / "fig4.png")
     paper_figures.figure5(ang_raw, out / "fig5.png")
     elapsed = time.time() - t0
-    (out / "table.md").write_text(_fmt_table(rows) + "\n")
+    atomic_text(out / "table.md", _fmt_table(rows) + "\n")
     summary = dict(preset=preset, config=cfg, elapsed_s=elapsed, workers=workers,
                    lyapunov=rows,
                    curvature={n: {k: v for k, v in c.items() if not isinstance(v, np.ndarray)}
                               | dict(fraction_positive=(c["Kb"] > 0).mean(0).tolist(),
                                      samples=int(c["Kb"].shape[0])) for n, c in curv.items()},
                    angles=ang)
-    (out / "results.json").write_text(json.dumps(summary, indent=1, default=float))
+    atomic_text(out / "results.json", json.dumps(summary, indent=1, default=float))
     _report(out, preset, rows, curv, ang, elapsed, workers)
     if not args.quiet:
         print(_fmt_table(rows))

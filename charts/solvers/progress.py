@@ -2,7 +2,7 @@
 (silent), True (a tqdm bar) or a callable ``progress(t_done, t_total)``."""
 from __future__ import annotations
 
-__all__ = ["progress_reporter"]
+__all__ = ["progress_reporter", "check_progress"]
 
 
 class _Reporter:
@@ -29,9 +29,14 @@ class _Reporter:
             self.bar.close()
 
 
+def check_progress(progress):
+    """``progress`` itself; ValueError unless False/None, True or callable."""
+    if not (progress is True or progress is False or progress is None or callable(progress)):
+        raise ValueError(f"progress must be True, False or callable(t_done, t_total), got {progress!r}")
+    return progress
+
+
 def progress_reporter(progress, total, desc) -> _Reporter:
     """Progress in simulated time: ``progress`` False (silent), True (a tqdm bar) or a
     callable ``progress(t_done, t_total)``."""
-    if not (progress is True or progress is False or progress is None or callable(progress)):
-        raise ValueError(f"progress must be True, False or callable(t_done, t_total), got {progress!r}")
-    return _Reporter(progress, total, desc)
+    return _Reporter(check_progress(progress), total, desc)

@@ -5,7 +5,7 @@ advances this one kernel, through `TangentFlow`.
 
 Phase space.  Eq (8) lives in R^{2N}, the physical phase space is the tangent bundle of the
 (N−1)-manifold, and the subspace T_r of perturbations that keep the constraint and the
-tangency is invariant under eq (17) (``charts.flows.projection``).  ``restricted=True``
+tangency is invariant under eq (17) (``charts.geometry.projection``).  ``restricted=True``
 keeps the vectors in T_r (projected at every re-orthonormalisation).
 
 Inner product of eq (18): ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ with w from `inner_weights`: ``"theta"`` (the
