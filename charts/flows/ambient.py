@@ -181,10 +181,9 @@ def transport_rhs(y, P, minv, dP):
     c = np.empty(n)
     f = np.empty(n)
     sincos(y, 0, n, s, c)
-    B = 0.0
+    lam, B = multiplier(y, 0, n, minv, s, c)
     for j in range(n):
         f[j] = s[j] * minv[j]
-        B += s[j] * f[j]
     pf = P.reshape(P.size)
     dpf = dP.reshape(dP.size)
     for r in range(P.shape[0]):

@@ -11,7 +11,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["chart_coordinates", "local_masses", "ambient_index"]
+__all__ = ["chart_coordinates", "local_masses", "ambient_index", "local_index",
+           "eliminated_component"]
 
 
 def chart_coordinates(n: int, k: int) -> list[int]:
@@ -29,3 +30,20 @@ def local_masses(masses, k: int) -> np.ndarray:
 def ambient_index(a, k):
     """Ambient index of local coordinate a of chart k."""
     return a if a < k else a + 1
+
+
+@njit(cache=True, inline="always")
+def local_index(i, k):
+    """Local coordinate of ambient index i ≠ k in chart k (the inverse of `ambient_index`)."""
+    return i if i < k else i - 1
+
+
+@njit(cache=True, inline="always")
+def eliminated_component(q, x, o, d, sk):
+    """The eliminated rotor's component of the tangent vector with local components
+    x[o:o+d] at local angles q (the first d entries) of chart k, where sin θₖ = sk:
+    xₖ = −Σ_α x_α sin q_α / sin θₖ (tangency, eq 10)."""
+    acc = 0.0
+    for a in range(d):
+        acc += x[o + a] * np.sin(q[a])
+    return -acc / sk

@@ -15,7 +15,7 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-__all__ = ["project_state", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc",
+__all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc",
            "project_tangent_euclidean", "invariants", "invariants_of"]
 
 
@@ -45,22 +45,34 @@ def project_velocity(x, o, n, s, minv):
 
 
 @njit(cache=True)
-def project_state(y, m, speed):
-    """Project y = (θ, u) in place onto F = 0 (Newton along M⁻¹∇F), G = 0 (M-orthogonally)
-    and, if ``speed`` > 0, Σ mᵢuᵢ² = speed² (`rescale_speed`)."""
-    n = y.size // 2
-    for _ in range(3):
+def project_constraint(theta, m, iterations):
+    """Put the angles theta[0:N] on F = Σ cos θ = 0 in place by Newton steps along M⁻¹∇F (at
+    most ``iterations``, stopping once |F| < 1e-15).  Returns False at a critical point of F
+    (all sin θ = 0), where there is no direction to move along."""
+    n = m.size
+    for _ in range(iterations):
         F = 0.0
         B = 0.0
         for j in range(n):
-            s = sin(y[j])
-            F += cos(y[j])
+            s = sin(theta[j])
+            F += cos(theta[j])
             B += s * s / m[j]
+        if B < 1e-300:
+            return False
         d = F / B
         for j in range(n):
-            y[j] += d * sin(y[j]) / m[j]
+            theta[j] += d * sin(theta[j]) / m[j]
         if abs(F) < 1e-15:
             break
+    return True
+
+
+@njit(cache=True)
+def project_state(y, m, speed):
+    """Project y = (θ, u) in place onto F = 0 (`project_constraint`, 3 Newton steps), G = 0
+    (M-orthogonally) and, if ``speed`` > 0, Σ mᵢuᵢ² = speed² (`rescale_speed`)."""
+    n = y.size // 2
+    project_constraint(y, m, 3)
     s = np.empty(n)
     minv = np.empty(n)
     for j in range(n):

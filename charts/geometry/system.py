@@ -11,7 +11,7 @@ import numpy as np
 
 from .atlas import chart_coordinates, local_masses
 from .kernels import chart_module
-from .projection import tangent_part
+from .projection import project_constraint, tangent_part
 
 __all__ = ["RotorSystem", "TOL"]
 
@@ -91,17 +91,12 @@ class RotorSystem:
         return float(np.sum(self.masses * np.asarray(a) * np.asarray(b)))
 
     def project_point(self, theta, iterations=50):
-        """Nearest-ish point on the manifold (Newton along M⁻¹∇F)."""
+        """Nearest-ish point on the manifold (Newton along M⁻¹∇F, ``projection.project_constraint``)."""
         theta = np.array(theta, dtype=float)
-        for _ in range(iterations):
-            s = np.sin(theta)
-            B = np.sum(s * s * self.minv)
-            if B < 1e-300:
-                raise ValueError("cannot project: the point is a critical point of sum(cos theta)")
-            F = np.cos(theta).sum()
-            theta += F / B * s * self.minv
-            if abs(F) < 1e-15:
-                break
+        if theta.shape != (self.n,) or not np.all(np.isfinite(theta)):
+            raise ValueError(f"theta must be {self.n} finite angles, got {theta.tolist()}")
+        if not project_constraint(theta, self.masses, int(iterations)):
+            raise ValueError("cannot project: the point is a critical point of sum(cos theta)")
         return theta
 
     def project_tangent(self, theta, u):
@@ -122,7 +117,7 @@ class RotorSystem:
                 if abs(np.sin(theta).max()) > 0.05 or self.n > 3:
                     break
         u = self.project_tangent(theta, rng.normal(size=self.n))
-        u *= speed / self.speed(u)
+        u *= speed / self.speed(u)  # not rescale_speed: its rounding would move every seeded state
         return theta, u
 
     # -- charts --------------------------------------------------------------------------

@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from ..flows.chart import chart_rates
-from ..geometry.atlas import ambient_index
+from ..geometry.atlas import ambient_index, eliminated_component, local_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
 from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
@@ -97,11 +97,7 @@ def _to_ambient_impl(y, par, ipar, row):
     C, sk, _ = _sin_k(y, n, ipar[3])
     row[k] = math.atan2(sk, -C) + par[1 + 2 * n + _OFF]
     for b in range(1 + nv):  # velocity and transported vectors
-        o = (1 + b) * d
-        acc = 0.0
-        for a in range(d):
-            acc += y[o + a] * math.sin(y[a])
-        row[(1 + b) * n + k] = -acc / sk
+        row[(1 + b) * n + k] = eliminated_component(y, y, (1 + b) * d, d, sk)
     for a in range(d):
         i = ambient_index(a, k)
         row[i] = y[a]
@@ -143,12 +139,9 @@ def _post(y, par, ipar, t, log):
         return DOMAIN
     code = POST_OK
     if par[1 + 2 * n + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
-        acc = 0.0
-        E = 0.0
+        E = par[n] * eliminated_component(y, y, d, d, sk) ** 2
         for a in range(d):
-            acc += y[d + a] * math.sin(y[a])
             E += par[1 + a] * y[d + a] ** 2
-        E += par[n] * (acc / sk) ** 2
         f = par[1 + 2 * n + _SPEED] / math.sqrt(E)
         for a in range(d):
             y[d + a] *= f
@@ -157,7 +150,7 @@ def _post(y, par, ipar, t, log):
     j = -1
     smax = -1.0
     for i in range(n):
-        s = abs(sk) if i == k else abs(math.sin(y[i if i < k else i - 1]))
+        s = abs(sk) if i == k else abs(math.sin(y[local_index(i, k)]))
         if s > smax:
             smax = s
             j = i
@@ -181,17 +174,13 @@ def _cap(y, par, ipar):
     n = ipar[0]
     d = n - 1
     C, sk, s2 = _sin_k(y, n, ipar[3])
-    S = s2
-    U = 0.0
-    acc = 0.0
-    for a in range(d):
-        s = math.sin(y[a])
-        S += s * s
-        U += y[d + a] ** 2
-        acc += y[d + a] * s
     if s2 <= 0.0:
         return 0.0
-    U += (acc / sk) ** 2
+    S = s2
+    U = eliminated_component(y, y, d, d, sk) ** 2
+    for a in range(d):
+        S += math.sin(y[a]) ** 2
+        U += y[d + a] ** 2
     if U == 0.0:
         return np.inf
     return min(step_cap(S, U, par[1 + 2 * n + _CAP]), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
