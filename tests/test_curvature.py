@@ -103,3 +103,14 @@ def test_masses_route_a_matches_gauss_route():
         Kg = gauss_sectional_curvature(res.theta[i], P[0], P[1], system.masses)
         assert res.K_exact[i, 0, 0] == pytest.approx(Kg, rel=GAUSS, abs=1e-10)
         assert res.K_numeric[i, 0, 0] == pytest.approx(Kg, abs=ABS_ERR_PER_DT2 * 1e-4 * (1 + Kg ** 2))
+
+
+def test_route_names_are_the_scenes_and_unknown_ones_are_refused():
+    system = RotorSystem(3)
+    theta, u = system.random_state(seed=2)
+    res = curvature_along_trajectory(system, theta, u, 1.0, t_transient=0.0, exact=False)
+    np.testing.assert_array_equal(res.diagonal("numerical"), res.diagonal("numeric"))
+    with pytest.raises(ValueError, match="exact route was not computed"):
+        res.diagonal("exact")
+    with pytest.raises(ValueError, match="route must be"):
+        res.fraction_positive("both")

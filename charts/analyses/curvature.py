@@ -192,12 +192,20 @@ class CurvatureResult:
     K_exact: np.ndarray | None
     params: dict
 
-    def diagonal(self, route="numeric"):
-        """K_ii, shape (S, N−2), of route 'numeric' (a) or 'exact' (b)."""
-        K = self.K_numeric if route == "numeric" else self.K_exact
+    def diagonal(self, route="numerical"):
+        """K_ii, shape (S, N−2), of route 'numerical' (a; the scenes' name, 'numeric' is
+        accepted too) or 'exact' (b)."""
+        if route in ("numerical", "numeric"):
+            K = self.K_numeric
+        elif route == "exact":
+            if self.K_exact is None:
+                raise ValueError("the exact route was not computed (exact=False)")
+            K = self.K_exact
+        else:
+            raise ValueError(f"route must be 'numerical' or 'exact', got {route!r}")
         return np.diagonal(K, axis1=1, axis2=2)
 
-    def fraction_positive(self, route="numeric"):
+    def fraction_positive(self, route="numerical"):
         """Fraction of positive values of each K_ii, shape (N−2,)."""
         return (self.diagonal(route) > 0).mean(axis=0)
 

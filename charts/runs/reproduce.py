@@ -73,7 +73,7 @@ def _task_curvature(n, seed, t):
     s = RotorSystem(n)
     th, u = s.random_state(seed=seed)
     r = curvature_along_trajectory(s, th, u, t)
-    out = dict(Ka=r.diagonal("numeric"), Kb=r.diagonal("exact"),
+    out = dict(Ka=r.diagonal("numerical"), Kb=r.diagonal("exact"),
                max_ab=float(np.abs(r.K_numeric - r.K_exact).max()),
                median_rel_ab=float(np.median(np.abs(r.K_numeric - r.K_exact).max(axis=(1, 2))
                                              / np.abs(r.K_exact).max(axis=(1, 2)))))
