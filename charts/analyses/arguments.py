@@ -12,7 +12,8 @@ import numpy as np
 
 from ..solvers.progress import progress_reporter
 
-__all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter"]
+__all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
+           "project_steps", "samples_of", "start_state"]
 
 
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
@@ -61,3 +62,23 @@ def positive_int(name, x, minimum=1) -> int:
     if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or x < minimum:
         raise ValueError(f"{name} must be an integer >= {minimum}, got {x!r}")
     return int(x)
+
+
+def project_steps(project_every, dt) -> int:
+    """Steps between projections onto the invariants (0 for ``project_every=None``: never)."""
+    return 0 if project_every is None else steps_of("project_every", project_every, dt)
+
+
+def samples_of(total, sample, t_final, sample_every) -> int:
+    """Samples in ``total`` steps, one every ``sample`` steps; ValueError unless whole."""
+    if total % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
+    return total // sample
+
+
+def start_state(system, theta0, u0):
+    """``system.check_state(theta0, u0)`` for a flow: the velocity must not be zero."""
+    theta0, u0 = system.check_state(theta0, u0)
+    if not system.speed(u0) > 0:
+        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    return theta0, u0

@@ -37,7 +37,8 @@ from ..geometry.kernels import compiled
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
-from .arguments import positive_int, positive_time, progress_reporter, steps_of
+from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
+                        samples_of, start_state, steps_of)
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
            "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
@@ -243,16 +244,13 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     dt = positive_time("dt", dt)
     sample = steps_of("sample_every", sample_every, dt)
     total = steps_of("t_final", t_final, dt)
-    if total % sample:
-        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
+    S = samples_of(total, sample, t_final, sample_every)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
-    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
     if not isinstance(exact, (bool, np.bool_)):
         raise ValueError(f"exact must be True or False, got {exact!r}")
-    theta0, u0 = system.check_state(theta0, u0)
-    if not system.speed(u0) > 0:
-        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    theta0, u0 = start_state(system, theta0, u0)
     k = n - 2
     flow = TangentFlow(system, theta0, u0, k, dt=dt, inner="theta", restricted=True,
                        reorth_every=1, project_every=project, seed=seed)
@@ -260,7 +258,6 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     where = "curvature_along_trajectory (ambient RK4)"
     flow.advance(transient, where=where)
     rep.update(transient * dt)
-    S = total // sample
     Ka = np.empty((S, k, k))
     Ys = np.empty((S, 2 * n))
     Ps = np.empty((S, k + 1, n))

@@ -37,7 +37,8 @@ from ..flows.ambient import adjoint_rate, state_stage
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.tangent import TangentFlow, orthonormalize
-from .arguments import positive_int, positive_time, progress_reporter, steps_of
+from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
+                        samples_of, start_state, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
@@ -184,14 +185,10 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     n_win = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt)
     ce = steps_of("checkpoint_every", checkpoint_every, dt)
-    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
-    theta0, u0 = system.check_state(theta0, u0)
-    if not system.speed(u0) > 0:
-        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
-    if n_win % sample:
-        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
-    S = n_win // sample
+    theta0, u0 = start_state(system, theta0, u0)
+    S = samples_of(n_win, sample, t_final, sample_every)
     if S < 1:
         raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")
     need = S * m * 2 * n * 8

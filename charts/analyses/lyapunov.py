@@ -22,7 +22,8 @@ import numpy as np
 
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
-from .arguments import positive_int, progress_reporter, steps_of
+from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
+                        start_state, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 from .statistics import batch_ends, batch_estimates
 
@@ -56,7 +57,6 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
                       space="restricted", t_transient=50.0, n_batches=20, reorth_every=0.1,
                       project_every=1.0, record_every=1.0, seed=0) -> LyapunovSettings:
     """Check the arguments of `lyapunov_spectrum` (ValueError naming the bad one)."""
-    from .arguments import positive_time
     n = system.n
     dt = positive_time("dt", dt)
     kmax = {"restricted": 2 * n - 2, "full": 2 * n}.get(space)
@@ -72,7 +72,7 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
                          f"space={space!r}; use inner='full' for more than N−1 exponents")
     n_batches = positive_int("n_batches", n_batches, 2)
     reorth = steps_of("reorth_every", reorth_every, dt)
-    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    project = project_steps(project_every, dt)
     record = steps_of("record_every", record_every, dt)
     if record % reorth:
         raise ValueError(f"record_every={record_every:g} must be a multiple of "
@@ -90,9 +90,7 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
 
 def lyapunov_flow(system, theta0, u0, cfg: LyapunovSettings) -> TangentFlow:
     """The tangent flow of a Lyapunov run from (theta0, u0) (validated here)."""
-    theta0, u0 = system.check_state(theta0, u0)
-    if not system.speed(u0) > 0:
-        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    theta0, u0 = start_state(system, theta0, u0)
     return TangentFlow(system, theta0, u0, cfg.k, dt=cfg.dt, inner=cfg.inner,
                        restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
                        project_every=cfg.project, seed=cfg.seed)

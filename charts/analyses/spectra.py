@@ -16,7 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solvers.tangent import TangentFlow
-from .arguments import positive_time, progress_reporter, steps_of
+from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
+                        start_state, steps_of)
 
 __all__ = ["Waveform", "waveform", "power_spectrum"]
 
@@ -39,16 +40,12 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_trans
     sample = steps_of("sample_every", sample_every, dt)
     total = steps_of("t_final", t_final, dt)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
-    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
-    if total % sample:
-        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
-    S = total // sample
+    project = project_steps(project_every, dt)
+    S = samples_of(total, sample, t_final, sample_every)
     if S < 2:
         raise ValueError(f"t_final={t_final:g} gives fewer than 2 samples of sample_every="
                          f"{sample_every:g}; increase t_final")
-    theta0, u0 = system.check_state(theta0, u0)
-    if not system.speed(u0) > 0:
-        raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    theta0, u0 = start_state(system, theta0, u0)
     flow = TangentFlow(system, theta0, u0, 0, dt=dt, project_every=project)
     out = np.empty((S, 2 * system.n))
     total = transient + S * sample

@@ -199,9 +199,8 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     if progress is True:  # a bar over simulated time; the callable form may also stop the run
         bar = progress_reporter(True, t_final, f"integrate N={system.n}")
 
-        def progress(t, total, _done=[0.0]):
-            bar.update(t - _done[0])
-            _done[0] = t
+        def progress(t, total):
+            bar.update(t - bar.done)
     elif progress is False:
         progress = None
     elif progress is not None and not callable(progress):
