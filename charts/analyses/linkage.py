@@ -27,7 +27,7 @@ from .arguments import positive_int, positive_time, progress_reporter, project_s
 from .lyapunov import exponents_from_marks
 from .statistics import batch_ends
 
-__all__ = ["LinkageResult", "linkage_run", "gauss_curvature", "cone_distance", "CONE_POINTS"]
+__all__ = ["LinkageResult", "linkage_run", "linkage_trajectory", "gauss_curvature", "cone_distance", "CONE_POINTS"]
 
 #: The six cone points of Σ cos θ = 0 (N = 4): two angles 0, two π.
 CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
@@ -35,14 +35,10 @@ CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
                      (1, 1, 0, 0)])
 
 
-def _par(system):
-    return np.concatenate([system.par, [system.disk_mass, system.disk_inertia]])
-
-
 def gauss_curvature(system, q, X, Y):
     """Sectional curvature of the plane (X, Y) ⊂ T_q M (tangent vectors, shape (7,)) by the
     Gauss equation (module doc); X, Y need not be orthonormal."""
-    par = _par(system)
+    par = system.par
     w = system.mass
 
     def acc(z):
@@ -164,6 +160,24 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
                   sample_every=sample * dt, speed=flow.speed, seed=seed)
     return LinkageResult(exps, stderr, batches, np.arange(1, S + 1) * sample * dt, states, K,
                          min_sin2, float(flow.health[0]), params)
+
+
+def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,
+                       project_every=1.0):
+    """The trajectory from (q0, v0) sampled every ``sample_every``: (t (S + 1,), states
+    (S + 1, 14)), row 0 the initial state (RK4 of ``charts.flows.linkage``)."""
+    q0, v0 = system.check_state(q0, v0)
+    dt = positive_time("dt", dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    total = steps_of("t_final", t_final, dt)
+    if total % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
+    flow = LinkageFlow(system, q0, v0, 0, dt=dt, project_every=project_steps(project_every, dt))
+    out = [flow.Z[0].copy()]
+    for _ in range(total // sample):
+        flow.advance(sample, where="linkage_trajectory (RK4)")
+        out.append(flow.Z[0].copy())
+    return np.arange(len(out)) * sample * dt, np.array(out)
 
 
 def cone_distance(system, cone, branch=1):

@@ -31,7 +31,7 @@ import numpy as np
 from numba import njit
 
 from ..geometry.linkage import (NC, NQ, gen_hessian_vector, gen_jacobian, gen_third_form,
-                                lu_factor, lu_solve)
+                                kkt_matrix, lu_factor, lu_solve)
 from ..solvers.rk import RHS_SIG
 
 __all__ = ["linkage_rhs", "acceleration", "disk_gram", "NY", "NK"]
@@ -39,23 +39,6 @@ __all__ = ["linkage_rhs", "acceleration", "disk_gram", "NY", "NK"]
 #: Length of the state (q, v) and of the KKT system.
 NY = 2 * NQ
 NK = NQ + NC
-
-
-@njit(cache=True, inline="always")
-def _kkt(J, m_d, I_d, K):
-    """The KKT matrix [[M, Jᵀ], [J, 0]] into K (11 × 11)."""
-    for i in range(NK):
-        for j in range(NK):
-            K[i, j] = 0.0
-    for j in range(4):
-        K[j, j] = 1.0
-    K[4, 4] = m_d
-    K[5, 5] = m_d
-    K[6, 6] = I_d
-    for i in range(NC):
-        for j in range(NQ):
-            K[NQ + i, j] = J[i, j]
-            K[j, NQ + i] = J[i, j]
 
 
 @njit(cache=True)
@@ -69,7 +52,7 @@ def acceleration(q, v, par, a):
     b = np.zeros(NK)
     gen_jacobian(q, par, J)
     gen_hessian_vector(q, v, par, H)
-    _kkt(J, par[3], par[4], K)
+    kkt_matrix(J, par, K)
     pmin = lu_factor(K, piv)
     for i in range(NC):
         b[NQ + i] = -(H[i] @ v)
@@ -108,7 +91,7 @@ def _rhs(Z, par, dZ):
     b = np.zeros(NK)
     gen_jacobian(q, par, J)
     gen_hessian_vector(q, v, par, Hv)
-    _kkt(J, par[3], par[4], K)
+    kkt_matrix(J, par, K)
     pmin = lu_factor(K, piv)
     if pmin == 0.0:
         dZ[:] = 0.0

@@ -19,7 +19,9 @@ positive definite everywhere on M (``LinkageSystem(disk_mass=…, disk_inertia=�
 State y = (q, v), shape (14,); tangent vectors ξ = (δq, δv), shape (14,).  Invariants:
 F(q) = 0, J(q) v = 0, and the energy ½ vᵀ M v.  Perturbations that keep them form
 T_r = {J δq = 0, J δv + H(δq) v = 0} (H(w) = ∂J/∂q·w), which the flow preserves.
-Projections are Euclidean in R⁷ (minimum-norm corrections through (J Jᵀ)⁻¹).
+The position projection is a Euclidean minimum-norm Newton step in R⁷, the velocity
+projection is orthogonal in the kinetic metric (a KKT solve), the tangent-vector projection
+Euclidean.
 """
 from __future__ import annotations
 
@@ -34,7 +36,7 @@ from .system import RotorSystem
 
 __all__ = ["LinkageSystem", "NQ", "NC", "gen_constraints", "gen_jacobian", "gen_hessian_vector",
            "gen_third_form", "lu_factor", "lu_solve", "project_configuration",
-           "project_velocity_linkage", "project_state_linkage", "project_tangent_linkage"]
+           "project_velocity_linkage", "kkt_matrix", "project_state_linkage", "project_tangent_linkage"]
 
 _gen = importlib.import_module("charts.generated.linkage")
 NQ = _gen.NQ
@@ -136,20 +138,57 @@ def project_configuration(q, par, iterations):
 
 
 @njit(cache=True)
+def kkt_matrix(J, par, K):
+    """The saddle-point matrix [[M, Jᵀ], [J, 0]], shape (11, 11), into K; par = (ε, ρ, R, m_d,
+    I_d) and M = diag(1, 1, 1, 1, m_d, m_d, I_d).  Invertible exactly where M is positive
+    definite on ker J (module doc)."""
+    K[:, :] = 0.0
+    for j in range(4):
+        K[j, j] = 1.0
+    K[4, 4] = par[3]
+    K[5, 5] = par[3]
+    K[6, 6] = par[4]
+    for i in range(NC):
+        for j in range(NQ):
+            K[NQ + i, j] = J[i, j]
+            K[j, NQ + i] = J[i, j]
+
+
+@njit(cache=True)
 def project_velocity_linkage(q, v, par):
-    """v −= Jᵀ(JJᵀ)⁻¹ J v (tangent to M), in place."""
+    """v ← the tangent vector (J v = 0) nearest v in the kinetic metric, in place: the KKT
+    solve [[M, Jᵀ], [J, 0]] (v', μ) = (M v, 0).  For a massless disk the θ-part is projected
+    Σ dθ²-orthogonally and the disk's velocity follows from it.  Where the KKT matrix is
+    singular (degenerate metric) the Euclidean projection v −= Jᵀ(JJᵀ)⁻¹ J v is used."""
     J = np.empty((NC, NQ))
-    G = np.empty((NC, NC))
-    piv = np.empty(NC, dtype=np.int64)
     gen_jacobian(q, par, J)
-    _gram(J, G, piv)
+    K = np.empty((NQ + NC, NQ + NC))
+    piv = np.empty(NQ + NC, dtype=np.int64)
+    kkt_matrix(J, par, K)
+    if lu_factor(K, piv) > 1e-12:
+        b = np.zeros(NQ + NC)
+        for j in range(NQ):
+            b[j] = _kinetic_mass(par, j) * v[j]
+        lu_solve(K, piv, b)
+        v[:] = b[:NQ]
+        return
+    G = np.empty((NC, NC))
+    pg = np.empty(NC, dtype=np.int64)
+    _gram(J, G, pg)
     r = J @ v
-    _remove(J, G, piv, r, v)
+    _remove(J, G, pg, r, v)
+
+
+@njit(cache=True, inline="always")
+def _kinetic_mass(par, j):
+    """Mⱼⱼ of the kinetic metric (see `kkt_matrix`)."""
+    return 1.0 if j < 4 else (par[3] if j < 6 else par[4])
 
 
 @njit(cache=True)
 def project_state_linkage(y, par, mass, speed):
-    """Put y = (q, v) back on F = 0 (3 Newton steps), J v = 0 and, if ``speed`` > 0,
+    """Put y = (q, v) back on F = 0 (3 Newton steps), J v = 0 (`project_velocity_linkage`;
+    par = (ε, ρ, R, m_d, I_d)) and, if ``speed`` > 0,
     vᵀ M v = speed² (`charts.geometry.projection.rescale_speed`), in place."""
     q = y[:NQ]
     v = y[NQ:]
@@ -183,7 +222,7 @@ class LinkageSystem:
     rotor moments, and disk mass ``disk_mass`` and moment ``disk_inertia`` (default 0: the
     Appendix's massless disk; see the module doc for when that needs the disk's inertia).
 
-    ``par`` = (ε, ρ, R) for the generated kernels; ``mass`` = diag(M), shape (7,).
+    ``par`` = (ε, ρ, R, m_d, I_d) for the kernels; ``mass`` = diag(M), shape (7,).
     """
 
     n = 4
@@ -199,7 +238,7 @@ class LinkageSystem:
         di = _nonnegative("disk_inertia", disk_inertia)
         self.eps, self.rho = eps, rho
         self.disk_mass, self.disk_inertia = dm, di
-        self.par = np.array([eps, rho, 1.0])
+        self.par = np.array([eps, rho, 1.0, dm, di])
         self.mass = np.array([1.0, 1.0, 1.0, 1.0, dm, dm, di])
 
     def __repr__(self):
@@ -267,10 +306,8 @@ class LinkageSystem:
         theta = np.asarray(theta, dtype=float)
         u = np.asarray(u, dtype=float)
         q = np.concatenate([theta, self.first_order_disk(theta, branch)])
-        J = self.jacobian(q)
-        vd = np.linalg.lstsq(J[:, 4:], -J[:, :4] @ u, rcond=None)[0]
-        return self.project(q, np.concatenate([u, vd]), speed=float(np.linalg.norm(u) if
-                                                                     self.massless_disk else 0))
+        return self.project(q, np.concatenate([u, np.zeros(3)]),
+                            speed=float(np.linalg.norm(u)) if self.massless_disk else None)
 
     def random_state(self, seed=0, speed=1.0, branch=1):
         """A random state on M (uniform θ₀…θ₂ with |Σ cos| ≤ 1, random sign of sin θ₃, the

@@ -94,7 +94,7 @@ class LinkageFlow:
     def __init__(self, system, q, v, k, *, dt, reorth_every=1, project_every=100, seed=0):
         self.system = system
         self.dt = float(dt)
-        self.par = np.concatenate([system.par, [system.disk_mass, system.disk_inertia]])
+        self.par = system.par
         self.w = np.concatenate([system.mass, np.zeros(system.mass.size)])
         self.reorth_every = int(reorth_every)
         self.project_every = int(project_every)
@@ -118,8 +118,8 @@ class LinkageFlow:
         """Advance ``nsteps`` steps; DegenerateMetricError / IntegrationError on failure."""
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_ROWS
-        status, done = linkage_kernel(linkage_rhs, self.Z, self.par, self.system.mass, self.speed, self.dt,
-                                      int(nsteps), self.counter, self.reorth_every,
+        status, done = linkage_kernel(linkage_rhs, self.Z, self.par, self.system.mass,
+                                      self.speed, self.dt, int(nsteps), self.counter, self.reorth_every,
                                       self.project_every, self.w, self.logsum, events,
                                       event_logs, self.health,
                                       self.system.massless_disk)
