@@ -9,6 +9,8 @@ mechanically coupled rotators".  The public surface, by concept:
   ``lyapunov_spectrum`` (eqs 17-18), ``curvature_along_trajectory``
   (eqs 19-21 and the exact Riemann tensor), ``hyperbolicity_angles`` (section 4),
   ``waveform`` and ``power_spectrum`` (figures 2-3);
+* the flat linkage of the Appendix (its exact constraint, eq (1) as its ε → 0 limit):
+  ``LinkageSystem``, ``linkage_run``, ``linkage_trajectory`` (docs/linkage.md);
 * declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``.
 """
 from .geometry.system import RotorSystem
@@ -19,6 +21,9 @@ from .analyses.lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spect
 from .analyses.curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
 from .analyses.hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
 from .analyses.spectra import power_spectrum, waveform
+from .geometry.linkage import LinkageSystem
+from .solvers.linkage import DegenerateMetricError
+from .analyses.linkage import LinkageResult, linkage_run, linkage_trajectory
 from .runs.scene import Scene, SceneError, load_scene, parse_scene
 from .runs.runner import RunError, plan_scene, run_scene
 from .runs.sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep
@@ -31,6 +36,7 @@ __all__ = [
     "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22",
     "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
     "waveform", "power_spectrum",
+    "LinkageSystem", "linkage_run", "linkage_trajectory", "LinkageResult", "DegenerateMetricError",
     "Scene", "SceneError", "load_scene", "parse_scene", "run_scene", "plan_scene", "RunError",
     "Sweep", "SweepError", "load_sweep", "parse_sweep", "run_sweep",
 ]

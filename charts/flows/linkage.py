@@ -41,22 +41,31 @@ NY = 2 * NQ
 NK = NQ + NC
 
 
+@njit(cache=True, inline="always")
+def _state_solve(q, v, par, J, Hv, K, piv, b):
+    """Factorise the KKT matrix at q into (K, piv) and solve it for (a, λ) of the velocity v
+    into b, shape (11,), with J and Hv = H(v) filled in.  Returns the smallest |pivot|."""
+    gen_jacobian(q, par, J)
+    gen_hessian_vector(q, v, par, Hv)
+    kkt_matrix(J, par, K)
+    pmin = lu_factor(K, piv)
+    if pmin == 0.0:
+        return 0.0
+    for j in range(NQ):
+        b[j] = 0.0
+    for i in range(NC):
+        b[NQ + i] = -(Hv[i] @ v)
+    lu_solve(K, piv, b)
+    return pmin
+
+
 @njit(cache=True)
 def acceleration(q, v, par, a):
     """a = q̈ of the geodesic with velocity v at q (the KKT solve above), shape (7,); returns
     the smallest |pivot|.  a is a quadratic form in v (the second fundamental form)."""
-    J = np.empty((NC, NQ))
-    H = np.empty((NC, NQ))
-    K = np.empty((NK, NK))
-    piv = np.empty(NK, dtype=np.int64)
-    b = np.zeros(NK)
-    gen_jacobian(q, par, J)
-    gen_hessian_vector(q, v, par, H)
-    kkt_matrix(J, par, K)
-    pmin = lu_factor(K, piv)
-    for i in range(NC):
-        b[NQ + i] = -(H[i] @ v)
-    lu_solve(K, piv, b)
+    b = np.empty(NK)
+    pmin = _state_solve(q, v, par, np.empty((NC, NQ)), np.empty((NC, NQ)), np.empty((NK, NK)),
+                        np.empty(NK, dtype=np.int64), b)
     for j in range(NQ):
         a[j] = b[j]
     return pmin
@@ -88,17 +97,10 @@ def _rhs(Z, par, dZ):
     T = np.empty(NC)
     K = np.empty((NK, NK))
     piv = np.empty(NK, dtype=np.int64)
-    b = np.zeros(NK)
-    gen_jacobian(q, par, J)
-    gen_hessian_vector(q, v, par, Hv)
-    kkt_matrix(J, par, K)
-    pmin = lu_factor(K, piv)
-    if pmin == 0.0:
+    b = np.empty(NK)
+    if _state_solve(q, v, par, J, Hv, K, piv, b) == 0.0:
         dZ[:] = 0.0
         return 0.0
-    for i in range(NC):
-        b[NQ + i] = -(Hv[i] @ v)
-    lu_solve(K, piv, b)
     a = b[:NQ].copy()
     lam = b[NQ:].copy()
     for j in range(NQ):
