@@ -6,6 +6,8 @@ it.  Writes a Markdown table to stdout and figures into docs/figures/linkage/.
 
     python scripts/linkage_study.py                     # the study of docs/linkage.md
     python scripts/linkage_study.py --quick             # a smoke run (short times)
+    python scripts/linkage_study.py --angles            # only the angle (tangency) study, added
+                                                        # to study.json
 """
 from __future__ import annotations
 
@@ -77,6 +79,31 @@ def dynamics(eps_list, seeds, t_final, t_transient):
     return out
 
 
+def angles(eps_list, seeds, t_final):
+    """Angles between E_u and E_cs (section 4), restricted variant, against RotorSystem(4)."""
+    import charts
+    from charts.analyses.linkage_angles import linkage_angles
+    from charts.geometry.linkage import LinkageSystem
+
+    out = []
+    R4 = charts.RotorSystem(4)
+    for eps in [None] + list(eps_list):
+        phi = []
+        for s in seeds:
+            if eps is None:
+                th, u = R4.random_state(seed=s, speed=1.0)
+                phi.append(charts.hyperbolicity_angles(R4, th, u, t_final, t_transient=50.0,
+                                                       seed=s).phi_restricted)
+            else:
+                L = LinkageSystem(eps)
+                q, v = L.random_state(seed=s, speed=1.0)
+                phi.append(linkage_angles(L, q, v, t_final, seed=s).phi)
+        st = charts.angle_statistics(np.concatenate(phi))
+        out.append(dict(eps=eps, **st))
+        print(json.dumps(out[-1]), file=sys.stderr, flush=True)
+    return out
+
+
 def figure(dyn, cones, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -117,11 +144,27 @@ def figure(dyn, cones, path):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--angles", action="store_true", help="run only the angle study")
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "figures" / "linkage")
     args = ap.parse_args(argv)
     eps_list = [0.2, 0.1, 0.05, 0.02, 0.01]
     seeds = range(2) if args.quick else range(8)
     t_final = 200.0 if args.quick else 4000.0
+    if args.angles:
+        seeds = seeds[:4]
+        ang = angles([0.2, 0.05, 0.01], seeds, 100.0 if args.quick else 1000.0)
+        path = args.out / "study.json"
+        data = json.loads(path.read_text()) if path.exists() else {}
+        data["angles"] = dict(rows=ang, seeds=len(seeds), t_final=100.0 if args.quick else 1000.0)
+        args.out.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(data, indent=1))
+        print("| ε | min φ | 0.1 % quantile | 1 % quantile | median | fraction φ < 0.05 | samples |")
+        print("|---|---|---|---|---|---|---|")
+        for r in ang:
+            name = "Σcos θ = 0 (RotorSystem(4))" if r["eps"] is None else f"{r['eps']:g}"
+            print(f"| {name} | {r['min']:.4f} | {r['p001']:.4f} | {r['p01']:.4f} | "
+                  f"{r['median']:.4f} | {r['frac_small']:.4f} | {r['n']} |")
+        return 0
     cones = cone_table([0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002])
     dyn = dynamics(eps_list, seeds, t_final, 50.0)
     args.out.mkdir(parents=True, exist_ok=True)
