@@ -20,7 +20,7 @@ VARIANTS = ("restricted", "full")
 #: (rtol 1e-11) against the CLV stored there.  The stored CLVs ride on the RK4 trajectory
 #: (dt = 0.01, local error ~1e-10 per unit of time) and the error is amplified by at most
 #: e^{(λ₁−λ_D)·1} ≈ 2; measured sine of the angle up to 6e-10 (N = 4, mixed masses, both
-#: variants); allow 1e-8.  A Gram–Schmidt vector in place of a CLV misses by ~0.1.
+#: variants); allow 1e-8.
 COVARIANCE_SIN = 1e-8
 #: the growth rates along a CLV average to its exponent up to the boundary terms
 #: log|v₀ in the Gram–Schmidt frame| / T of the window ends and the ln t / t of the
