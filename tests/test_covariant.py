@@ -148,10 +148,11 @@ def test_finite_time_statistics_and_domination_by_hand():
 
 def test_n3_splitting_is_dominated_and_n4_is_not_at_short_windows(n4_clvs):
     """N = 3 (restricted): the unstable CLV grows faster than the others over every window
-    of 0.1; N = 4 (both variants): windows where it does not occur at 0.1 and at 1."""
+    of 1 and 10 (over 0.1: in all but ~0.2 % of the windows, docs/reproduce.md); N = 4
+    (both variants): windows where it does not occur at 0.1."""
     s, th, u = state(3, 3)
     r3 = covariant_lyapunov_vectors(s, th, u, 100.0, t_transient=50.0)
-    assert all(d["split"] == 0.0 for d in r3.domination([0.1, 1.0]).values())
+    assert all(d["split"] == 0.0 for d in r3.domination([1.0, 10.0]).values())
     assert r3.finite_time([1.0])[1.0]["frac_nonpositive_leading"] == 0.0
     for r in n4_clvs[1].values():
         assert all(d["split"] > 0.0 for d in r.domination([0.1]).values())
