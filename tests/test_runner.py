@@ -139,7 +139,7 @@ def test_clv_scene_equals_the_api_and_agrees_with_the_angles_pass(tmp_path):
             api = covariant_lyapunov_vectors(s, th, u, 20.0, variant=v, t_transient=60.0)
             np.testing.assert_array_equal(a[f"clv_phi_{v}"], api.phi)
             np.testing.assert_array_equal(a[f"clv_phi_vectors_{v}"], api.phi_vectors)
-            # 60 time units of transients: agreement to 1e-3 relative (1e-9 median at 200)
+            # after 60 time units of transients: measured 1e-4 (full), 3e-8 (restricted)
             np.testing.assert_allclose(a[f"clv_phi_{v}"], a[f"angles_{v}"], rtol=1e-3)
             assert clv[v]["exponents"] == api.exponents.tolist()
             assert clv[v]["domination"]["5"]["split"] == api.domination([5.0])[5.0]["split"]
