@@ -41,7 +41,7 @@ from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        samples_of, start_state, steps_of)
+                        samples_of, start_state, steps_of, unstable_dimension)
 from .finite_time import domination, finite_time_statistics
 from .hyperbolicity import angle_statistics
 
@@ -227,9 +227,7 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     """
     n = system.n
     D = clv_dimension(n, variant)
-    m = n - 2 if n_unstable is None else positive_int("n_unstable", n_unstable)
-    if not 1 <= m <= n - 2:
-        raise ValueError(f"n_unstable must be in 1..{n - 2} (the positive exponents), got {m}")
+    m = unstable_dimension(n, n_unstable)
     dt = positive_time("dt", dt)
     n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)

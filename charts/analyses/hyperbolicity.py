@@ -44,7 +44,7 @@ from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import CAP_FRACTION, step_cap
 from ..solvers.tangent import TangentFlow, orthonormalize
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        samples_of, start_state, steps_of)
+                        samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
@@ -194,9 +194,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     AngleResult
     """
     n = system.n
-    m = n - 2 if n_unstable is None else positive_int("n_unstable", n_unstable)
-    if not 1 <= m <= n - 2:
-        raise ValueError(f"n_unstable must be in 1..{n - 2} (the positive exponents), got {m}")
+    m = unstable_dimension(n, n_unstable)
     dt = positive_time("dt", dt)
     n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)

@@ -362,26 +362,20 @@ def _check_effects(source, n, integ, run, effects):
                              "directions orthogonal to the velocity in the N−1-dim. manifold)")
         _multiple(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
                   "[integrator] dt")
-    if "angles" in effects:
-        a = effects["angles"]
+    for name in ("angles", "clv"):        # the two routes to the angles of section 4
+        if name not in effects:
+            continue
+        a = effects[name]
         if a["n_vectors"] is None:
             a["n_vectors"] = n - 2
         if a["n_vectors"] > n - 2:
-            raise SceneError(f"{_where(source, sect('angles'), 'n_vectors')} = {a['n_vectors']!r} "
+            raise SceneError(f"{_where(source, sect(name), 'n_vectors')} = {a['n_vectors']!r} "
                              f"is not allowed: expected 1..{n - 2} (at most the number of "
                              "positive exponents)")
-        _multiple(source, sect("angles"), "sample_every", a["sample_every"], integ["dt"],
+        _multiple(source, sect(name), "sample_every", a["sample_every"], integ["dt"],
                   "[integrator] dt")
     if "clv" in effects:
         c = effects["clv"]
-        if c["n_vectors"] is None:
-            c["n_vectors"] = n - 2
-        if c["n_vectors"] > n - 2:
-            raise SceneError(f"{_where(source, sect('clv'), 'n_vectors')} = {c['n_vectors']!r} "
-                             f"is not allowed: expected 1..{n - 2} (at most the number of "
-                             "positive exponents)")
-        _multiple(source, sect("clv"), "sample_every", c["sample_every"], integ["dt"],
-                  "[integrator] dt")
         _multiple(source, "run", "t_final", run["t_final"], c["sample_every"],
                   "[effects.clv] sample_every")
         if c["windows"] is None:

@@ -183,15 +183,24 @@ def lyapunov_result(st, out, *, t_done, **_):
     out.figures["lyapunov.png"] = figs.lyapunov_png(st.scene, T, L / T[:, None], res)
 
 
+def _pass_rows(st, out, name, keys):
+    """(result dict of the separate pass ``name`` holding its settings ``keys``, its recorded
+    rows as an array, or None with a note when the pass has not run yet)."""
+    e = st.scene.effects[name]
+    res = {k: e[k] for k in keys}
+    out.results[name] = res
+    if not st.rec[name]:
+        res["note"] = f"the {name} pass has not run yet"
+        return res, None
+    return res, np.array(st.rec[name])
+
+
 def angles_result(st, out, **_):
     sc = st.scene
     a = sc.effects["angles"]
-    res = {"variant": a["variant"], "n_vectors": a["n_vectors"]}
-    out.results["angles"] = res
-    if not st.rec["angles"]:
-        res["note"] = "the angles pass has not run yet"
+    res, A = _pass_rows(st, out, "angles", ("variant", "n_vectors"))
+    if A is None:
         return
-    A = np.array(st.rec["angles"])
     arr = {"angles_t": A[:, 0]}
     for j, variant in ((1, "full"), (2, "restricted")):
         if a["variant"] in (variant, "both"):
@@ -211,12 +220,9 @@ def clv_result(st, out, **_):
     fractions and the finite-time exponents per window (``charts.analyses.covariant``)."""
     sc = st.scene
     c = sc.effects["clv"]
-    res = {"variant": c["variant"], "n_vectors": c["n_vectors"], "windows": c["windows"]}
-    out.results["clv"] = res
-    if not st.rec["clv"]:
-        res["note"] = "the CLV pass has not run yet"
+    res, A = _pass_rows(st, out, "clv", ("variant", "n_vectors", "windows"))
+    if A is None:
         return
-    A = np.array(st.rec["clv"])
     arr = {"clv_t": A[:, 0]}
     variants = [v for v in ("full", "restricted") if c["variant"] in (v, "both")]
     E, Dm, F = (np.array(st.rec[k]) for k in ("clv_exponents", "clv_domination", "clv_ftle"))
