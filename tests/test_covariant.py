@@ -123,7 +123,7 @@ def test_factors_streamed_to_disk_give_the_same_numbers(tmp_path):
     for name in ("phi", "phi_vectors", "growth", "gs_rates", "states"):
         np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
     assert os.listdir(tmp_path) == []
-    assert a.params["bytes_per_sample"] == sample_bytes(3, "full") == 8 * (6 * 6 + 36 + 6 + 6)
+    assert a.params["bytes_per_sample"] == sample_bytes(3, "full") == 8 * (6 * 6 + 36 + 6)
 
 
 def test_finite_time_statistics_and_domination_by_hand():

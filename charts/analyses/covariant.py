@@ -23,10 +23,12 @@ Layout of the trajectory: the same as `hyperbolicity_angles` (transient, window 
 from t_transient, then at least one more sample interval and t_transient for the backward
 iteration), from the same start, dt and projection steps, hence the same trajectory.
 
-Memory: per stored sample 8·(D·2N + D² + 2N + D) bytes (Q, R, the state, the Gram–Schmidt
-logs): N = 3 restricted 384 B, N = 5 full 1.7 kB, i.e. 420 MB for 2.5·10⁵ samples of N = 5
-full.  Above ``max_memory`` the factors are streamed to ``.npy`` memory maps in a temporary
-folder (``scratch``), removed at the end; the backward pass reads them in chunks.
+Memory: the stored factors take 8·(D·2N + D² + 2N) bytes per sample (Q, R and the state;
+`sample_bytes`): N = 3 restricted 368 B, N = 5 full 1.68 kB, i.e. 420 MB for the 2.5·10⁵
+samples of t = 2.5·10⁴ at sample_every = 0.1.  Above ``max_memory`` they are streamed to
+``.npy`` memory maps in a temporary folder (``scratch``), removed at the end, and the
+backward pass reads them in chunks of `CHUNK` samples.  In memory in any case: the rates,
+8·3D bytes per sample, and the results (the CLVs themselves only with ``keep_vectors``).
 """
 from __future__ import annotations
 
@@ -64,9 +66,10 @@ def clv_dimension(n, variant):
 
 
 def sample_bytes(n, variant):
-    """Bytes stored per sample point by the forward pass (module docstring)."""
+    """Bytes of the factors stored per sample point by the forward pass: Q (D, 2N),
+    R (D, D) and the state (2N,)."""
     D = clv_dimension(n, variant)
-    return 8 * (D * 2 * n + D * D + 2 * n + D)
+    return 8 * (D * 2 * n + D * D + 2 * n)
 
 
 @njit(cache=True)
