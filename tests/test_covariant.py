@@ -185,3 +185,16 @@ def test_routes_agree_through_close_approaches_to_the_n4_singular_point(seed, t_
         r = covariant_lyapunov_vectors(s, th, u, 10.0, variant=variant, t_transient=t_transient)
         ref = a.phi_restricted if variant == "restricted" else a.phi_full
         assert (np.abs(r.phi - ref) / ref).max() < 1e-3, variant
+
+
+def test_progress_reaches_the_total_and_the_result_states_its_layout():
+    """The progress callback ends at the simulated time of the run: the transient, the S
+    samples of the window (the last at t_transient + t_final − sample_every) and a backward
+    transient after it; params give D, m and the stored samples (S + 20)."""
+    s, th, u = state(4, 1)
+    calls = []
+    r = covariant_lyapunov_vectors(s, th, u, 5.0, variant="full", t_transient=2.0,
+                                   progress=lambda done, total: calls.append((done, total)))
+    assert calls[-1][0] == pytest.approx(calls[-1][1]) == pytest.approx(2.0 + 4.9 + 2.0)
+    assert r.params["D"] == 8 and r.params["m"] == 2 and r.params["stored_samples"] == 70
+    assert r.t[0] == pytest.approx(2.0) and r.t.size == 50

@@ -242,15 +242,16 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     S = samples_of(n_win, sample, t_final, sample_every)
     n_back = max(1, -(-n_tr // sample))
     total = S + n_back                                  # stored samples
+    n_steps = n_tr + (total - 1) * sample               # the first one at the transient's end
     d = 2 * n
     tau = sample * dt
     restricted = variant == "restricted"
     # the kernel never re-orthonormalises (reorth_every beyond the run): `_factor` does, at
     # the samples, with the kernel's Gram–Schmidt, keeping R
     flow = TangentFlow(system, theta0, u0, D, dt=dt, inner="euclidean", restricted=restricted,
-                       reorth_every=n_tr + total * sample + 1, project_every=project, seed=seed)
+                       reorth_every=n_steps + 1, project_every=project, seed=seed)
     minv = system.minv
-    rep = progress_reporter(progress, (n_tr + total * sample) * dt, f"CLV N={n} {variant}")
+    rep = progress_reporter(progress, n_steps * dt, f"CLV N={n} {variant}")
     where = f"covariant_lyapunov_vectors (RK4, {variant})"
     Xraw = np.empty((D, d))
     Rk = np.empty((D, D))

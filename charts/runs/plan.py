@@ -143,8 +143,8 @@ def plan_scene(scene: Scene) -> Plan:
         stored = ticks(run["t_final"], c["sample_every"]) + max(1, -(-n_tr // sample))
         plan.clv = {"variants": variants,
                     "vectors": {v: clv_dimension(n, v) for v in variants},
-                    "steps": len(variants) * (n_tr + stored * sample),
-                    "rhs_evaluations": 4 * len(variants) * (n_tr + stored * sample),
+                    "steps": len(variants) * (n_tr + (stored - 1) * sample),
+                    "rhs_evaluations": 4 * len(variants) * (n_tr + (stored - 1) * sample),
                     "stored_samples": ticks(run["t_final"], c["sample_every"]),
                     "stored_factor_bytes": {v: stored * sample_bytes(n, v) for v in variants}}
     plan.tangent_vectors = k
