@@ -20,12 +20,14 @@ Variational equations (tangent vectors ξ = (δq, δv)): differentiating the KKT
     [ J  0  ] [ δλ ] = [ −H(δq) a − T(v, v, δq) − 2 H(v) δv   ],
 
 with H(w) = Σₖ ∂²F/∂q∂qₖ wₖ and T from the generated third derivatives; the same
-factorisation serves every vector.  ``linkage_rhs(Z, par, dZ)`` evaluates both for the flat
+factorisation serves every vector.  ``linkage_rhs()(Z, par, dZ)`` evaluates both for the flat
 stacked state Z = [y; ξ¹; …; ξᵏ] (the signature of ``charts.solvers.rk.RHS_SIG``), with
 ``par = (ε, ρ, R, m_d, I_d)``; it returns the health `disk_gram`: det(C̃ᵀC̃), C̃ = ∂F/∂(x, y,
 ρα) (→ 0 where the massless disk's metric degenerates; 0 if the KKT matrix is singular).
 """
 from __future__ import annotations
+
+from functools import cache
 
 import numpy as np
 from numba import njit
@@ -126,5 +128,8 @@ def _rhs(Z, par, dZ):
     return disk_gram(J, par[1])
 
 
-#: The right-hand side, compiled with the steppers' signature (``charts.solvers.rk``).
-linkage_rhs = njit(RHS_SIG, cache=True)(_rhs)
+@cache
+def linkage_rhs():
+    """The right-hand side, compiled with the steppers' signature (``charts.solvers.rk``) on
+    first use (cached on disk)."""
+    return njit(RHS_SIG, cache=True)(_rhs)

@@ -12,12 +12,14 @@ bit-identical numbers.
 """
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from ..flows.linkage import NY, linkage_rhs
 from ..geometry.linkage import project_state_linkage, project_tangent_linkage
-from .rk import rk4_step
+from .rk import RHS_TYPE, rk4_step
 from .status import NONFINITE, RUNNING, IntegrationError
 from .tangent import orthonormalize
 
@@ -34,9 +36,8 @@ class DegenerateMetricError(IntegrationError):
     """The pulled-back metric degenerated (the disk could move with the rotors at rest)."""
 
 
-@njit(cache=True)
-def linkage_kernel(f, Z, par, mass, speed, dt, nsteps, counter, reorth_every, project_every, w,
-                   logsum, events, event_logs, health, massless):
+def _kernel(f, Z, par, mass, speed, dt, nsteps, counter, reorth_every, project_every, w, logsum,
+            events, event_logs, health, massless):
     """Advance Z, shape (1 + k, 14), by ``nsteps`` RK4 steps of ``f`` (`linkage_rhs`).  Stores
     ``logsum`` in ``event_logs[e]`` at global step ``events[e]``; health[0] keeps the smallest
     health seen (``massless``: stop where it drops below `GRAM_MIN`).  Returns (status, steps
@@ -79,6 +80,19 @@ def linkage_kernel(f, Z, par, mass, speed, dt, nsteps, counter, reorth_every, pr
     return RUNNING, nsteps
 
 
+_f8, _i8 = types.float64, types.int64
+_KERNEL_SIG = types.Tuple((_i8, _i8))(
+    RHS_TYPE, _f8[:, ::1], _f8[::1], _f8[::1], _f8, _f8, _i8, _i8[::1], _i8, _i8, _f8[::1],
+    _f8[::1], _i8[::1], _f8[:, ::1], _f8[::1], types.boolean)
+
+
+@cache
+def linkage_kernel():
+    """`_kernel` compiled with its signature on first use (cached on disk; the right-hand side
+    is a first-class function argument, as in ``charts.solvers.loop``)."""
+    return njit(_KERNEL_SIG, cache=True)(_kernel)
+
+
 _NO_ROWS = np.empty((0, 0))
 _NO_EVENTS = np.empty(0, dtype=np.int64)
 
@@ -118,18 +132,18 @@ class LinkageFlow:
         """Advance ``nsteps`` steps; DegenerateMetricError / IntegrationError on failure."""
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_ROWS
-        status, done = linkage_kernel(linkage_rhs, self.Z, self.par, self.system.mass,
-                                      self.speed, self.dt, int(nsteps), self.counter, self.reorth_every,
-                                      self.project_every, self.w, self.logsum, events,
-                                      event_logs, self.health,
-                                      self.system.massless_disk)
+        status, done = linkage_kernel()(linkage_rhs(), self.Z, self.par, self.system.mass,
+                                        self.speed, self.dt, int(nsteps), self.counter,
+                                        self.reorth_every, self.project_every, self.w,
+                                        self.logsum, events, event_logs, self.health,
+                                        self.system.massless_disk)
         t = self.steps * self.dt
         if status == DEGENERATE:
             raise DegenerateMetricError(
                 f"{where}: the kinetic metric degenerated at t = {t:.17g} (the disk can move "
                 f"while the rotors stand still: ∂F/∂(x, y, α) lost rank, det(C̃ᵀC̃) < "
-                f"{GRAM_MIN:g}). Give the disk inertia: LinkageSystem(..., disk_mass=1e-3, "
-                "disk_inertia=1e-5), or use rho > eps (docs/linkage.md).")
+                f"{GRAM_MIN:g}). Give the disk inertia: LinkageSystem(..., disk_mass=1e-2, "
+                "disk_inertia=1e-3), or use rho > eps (docs/linkage.md).")
         if status != RUNNING:
             raise IntegrationError(f"{where}: the state became non-finite at t = {t:.17g}; "
                                    "reduce dt.")
