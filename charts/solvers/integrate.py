@@ -15,7 +15,6 @@ returning ``False`` stops the run with everything computed so far.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -23,6 +22,7 @@ from ..geometry.projection import invariants
 from ..geometry.system import RotorSystem
 from . import loop as D
 from .dense import DenseSolution
+from .trajectory import IntegrationResult
 from .events import EventTracker, check_events
 from .progress import progress_reporter
 from .status import (CAP_FRACTION, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
@@ -49,59 +49,6 @@ _METHODS = {"rk4": D.METHOD_RK4, "dop853": D.METHOD_DOP853}
 _FORMULATIONS = {"ambient": AmbientFlow, "chart": ChartFlow}
 _EVERY_STEP_BUFFER = 4096
 _LOG_CAPACITY = 1024
-
-
-@dataclass
-class IntegrationResult:
-    """Samples of a geodesic, in ambient coordinates for both formulations.
-
-    Attributes
-    ----------
-    t : ndarray, shape (m,)
-    theta, u : ndarray, shape (m, n)
-        Ambient angles (continuous, not wrapped) and velocities dθ/dt.
-    transported : ndarray, shape (m, k, n), or None
-        The transported vectors (eq 16 / eq 19), ambient components.
-    switches : list of (t, from_chart, to_chart)
-        Chart switches, in order (chart formulation; empty for the ambient one).
-    drift : dict
-        Max over every accepted step and every sample of ``constraint`` = |Σ cos θ|,
-        ``tangency`` = |Σ uᵢ sin θᵢ|, ``energy`` = |E − E₀|/E₀; with ``transport``, also
-        ``transport`` = max change of the Gram matrix of (u, p¹…pᵏ) relative to |u|·|p|.
-    n_steps, n_rejected, n_rhs : int
-        Accepted steps, rejected DOP853 attempts, right-hand-side evaluations (work done: after
-        a terminal event, steps of the last chunk beyond it count too).
-    status : str
-        ``"finished"``, ``"stopped"`` (by ``progress``) or ``"event"`` (a terminal event), or
-        the error status on ``IntegrationError.result``.
-    sol : DenseSolution or None
-        With ``dense_output=True``: ``sol(t)`` → ``[θ, u, p…]`` anywhere in ``t_span``.
-    t_events, y_events : list of ndarray, or None
-        With ``events``: per event, the times (m,) and ambient states (m, (2 + k)·n) of its
-        zeros, as in SciPy.
-    """
-
-    t: np.ndarray
-    theta: np.ndarray
-    u: np.ndarray
-    transported: np.ndarray | None
-    switches: list
-    drift: dict
-    n_steps: int
-    n_rejected: int
-    n_rhs: int
-    status: str
-    formulation: str
-    method: str
-    options: dict = field(default_factory=dict)
-    sol: DenseSolution | None = None
-    t_events: list | None = None
-    y_events: list | None = None
-
-    def __repr__(self):
-        return (f"IntegrationResult({self.formulation}/{self.method}, {self.t.size} samples, "
-                f"t = {self.t[-1] if self.t.size else 0.0:g}, {len(self.switches)} switches, "
-                f"{self.n_steps} steps, status={self.status!r})")
 
 
 def _positive(name, x):
@@ -344,7 +291,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         res = _make_result(system, t, Y, P.shape[0], mon, sw, ist, status, formulation,
                            method, dict(dt=dt, rtol=rtol_v, atol=atol_v, project=bool(project),
                                         tau=tau if formulation == "chart" else None,
-                                        chunk_steps=int(chunk_steps), t_span=(t0, t1)))
+                                        chunk_steps=int(chunk_steps), t_span=[t0, t1]))
         res.sol = sol if dense_output else None
         if tracker is not None:
             res.t_events, res.y_events = tracker.results()
