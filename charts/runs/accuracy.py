@@ -266,9 +266,17 @@ def table(study: dict) -> str:
 
 
 def figure(study: dict, path: Path) -> None:
+    """Write :func:`draw_figure` to ``path`` (PNG, atomically)."""
+    from .plotting import save_png
+
+    save_png(draw_figure(study), path)
+
+
+def draw_figure(study: dict):
+    """The three work–precision panels of the study, a matplotlib Figure."""
     from matplotlib.ticker import FormatStrFormatter, MaxNLocator, NullFormatter
 
-    from .plotting import new_figure, save_png
+    from .plotting import new_figure
 
     pts = study["points"]
     fig, axes = new_figure(1, 3, figsize=(15, 6.2))
@@ -327,7 +335,7 @@ def figure(study: dict, path: Path) -> None:
             ax.xaxis.set_major_formatter(FormatStrFormatter("%.2g"))
         if hi > 10 * lo or hi < 4 * lo:
             ax.xaxis.set_minor_formatter(NullFormatter())
-    save_png(fig, path)
+    return fig
 
 
 def main(argv=None, quiet=False) -> int:
