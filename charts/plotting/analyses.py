@@ -70,6 +70,8 @@ def plot_curvature(samples, *, quantiles=CURVATURE_QUANTILES, axes=None, ax=None
     """Histograms of sectional curvatures, one panel per direction: ``samples`` maps a route
     name to an array (S, k) (or (S,)).  Limits from the robust ``quantiles`` of all samples
     (widened to include K = 0, drawn as a line); the share of samples beyond them is stated."""
+    from matplotlib.ticker import MaxNLocator
+
     samples = {r: np.asarray(v, dtype=float).reshape(len(v), -1) for r, v in samples.items()}
     routes = list(samples)
     k = samples[routes[0]].shape[1]
@@ -93,6 +95,7 @@ def plot_curvature(samples, *, quantiles=CURVATURE_QUANTILES, axes=None, ax=None
                    label=f"{r} route" if i == 0 else None, **style)
         a.axvline(0.0, color="k", lw=0.8, label="K = 0" if i == 0 else None)
         a.set_xlim(lo, hi)
+        a.xaxis.set_major_locator(MaxNLocator(5))
         a.set_xlabel(f"$K_{{{i + 1}{i + 1}}}$ (1/rad²)")
         a.set_ylabel("probability density")
         v = samples[routes[-1]][:, i]
