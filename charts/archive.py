@@ -155,3 +155,13 @@ class Archivable:
     def save(self, path) -> Path:
         """Write this result to ``path`` as NetCDF (read it back with ``charts.load``)."""
         return save(self.to_xarray(), path)
+
+    def _repr_html_(self):
+        """Jupyter: the result's one-line repr above its dataset (dimensions, units,
+        settings); None (plain repr) without the extra ``charts[io]``."""
+        try:
+            require_xarray()
+        except ImportError:
+            return None
+        import html
+        return f"<pre>{html.escape(repr(self))}</pre>" + self.to_xarray()._repr_html_()
