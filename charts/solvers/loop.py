@@ -285,21 +285,30 @@ _im = types.int64[:, ::1]
 DRIVE_SIG = _i8(RHS_TYPE, _CAP_TYPE, _POST_TYPE, _OUT_TYPE, _v, _v, _iv, _v, _iv, _v, _v, _m, _m,
                 _v, _v, _m, _m, _v, _v, _v, _m, _im)
 
-_compiled = None
 
 
-def drive(*args):
-    """Compiled :func:`_drive` (compiled on first use, cached on disk)."""
-    global _compiled
-    if _compiled is None:
-        _compiled = njit(DRIVE_SIG, cache=True)(_drive)
-    return _compiled(*args)
+class _CompiledOnUse:
+    """``fn`` compiled with the signature ``sig`` on its first call (cached on disk)."""
+
+    def __init__(self, fn, sig):
+        self.fn, self.sig, self.compiled = fn, sig, None
+        self.__doc__ = f"Compiled :func:`{fn.__name__}` (compiled on first use, cached on disk)."
+
+    def __call__(self, *args):
+        if self.compiled is None:
+            self.compiled = njit(self.sig, cache=True)(self.fn)
+        return self.compiled(*args)
+
+
+drive = _CompiledOnUse(_drive, DRIVE_SIG)
 
 
 def _dense_sample(to_ambient, Seg, ISeg, ny, idx, x, out):
     """Rows ``out[j]`` = ambient state of the interpolant of segment ``idx[j]`` at fraction
     ``x[j]`` of its step (segments as written by :func:`drive`)."""
-    ys, Fs, ps, _ = (2, 2 + ny, 2 + ny + INTERPOLATOR_POWER * ny, 0)
+    ys = 2                                   # the columns of segment_layout
+    Fs = ys + ny
+    ps = Fs + INTERPOLATOR_POWER * ny
     npar = Seg.shape[1] - ps
     F = np.empty((INTERPOLATOR_POWER, ny))
     y0 = np.empty(ny)
@@ -319,16 +328,7 @@ def _dense_sample(to_ambient, Seg, ISeg, ny, idx, x, out):
     return 0
 
 
-_DENSE_SIG = _i8(_OUT_TYPE, _m, _im, _i8, _iv, _v, _m)
-_compiled_sample = None
-
-
-def dense_sample(*args):
-    """Compiled :func:`_dense_sample` (compiled on first use, cached on disk)."""
-    global _compiled_sample
-    if _compiled_sample is None:
-        _compiled_sample = njit(_DENSE_SIG, cache=True)(_dense_sample)
-    return _compiled_sample(*args)
+dense_sample = _CompiledOnUse(_dense_sample, _i8(_OUT_TYPE, _m, _im, _i8, _iv, _v, _m))
 
 
 class Formulation:
