@@ -101,6 +101,25 @@ def monitor(row, n, masses, e0, mon):
     return True
 
 
+@njit(cache=True)
+def _record_segment(row, irow, t, h, y, F, par, ipar):
+    """Write one step's interpolant into a row of the segment buffers (``segment_layout``)."""
+    ny = y.size
+    row[0] = t
+    row[1] = h
+    for i in range(ny):
+        row[2 + i] = y[i]
+    o = 2 + ny
+    for j in range(INTERPOLATOR_POWER):
+        for i in range(ny):
+            row[o + j * ny + i] = F[j, i]
+    o += INTERPOLATOR_POWER * ny
+    for i in range(par.size):
+        row[o + i] = par[i]
+    for i in range(ipar.size):
+        irow[i] = ipar[i]
+
+
 def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_out, log, mon,
            masses, K, F, ytmp, ynew, arow, Seg, ISeg):
     """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
@@ -119,8 +138,6 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
     method = ist[I_METHOD]
     use_eval = ist[I_USE_EVAL] != 0
     dense = ist[I_DENSE] != 0
-    ny_s = 2 + ny
-    nF = INTERPOLATOR_POWER * ny
     ne = t_eval.size
     t = st[S_T]
     t_final = st[S_TFINAL]
@@ -227,19 +244,8 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
                     ist[I_NOUT] += 1
                     ist[I_IEVAL] += 1
         if dense:  # the step's interpolant, in the formulation's coordinates of the step
-            r = ist[I_NSEG]
-            Seg[r, 0] = t
-            Seg[r, 1] = t_new - t
-            for i in range(ny):
-                Seg[r, 2 + i] = y[i]
-            for j in range(INTERPOLATOR_POWER):
-                for i in range(ny):
-                    Seg[r, ny_s + j * ny + i] = F[j, i]
-            for i in range(par.size):
-                Seg[r, ny_s + nF + i] = par[i]
-            for i in range(ipar.size):
-                ISeg[r, i] = ipar[i]
-            ist[I_NSEG] = r + 1
+            _record_segment(Seg[ist[I_NSEG]], ISeg[ist[I_NSEG]], t, t_new - t, y, F, par, ipar)
+            ist[I_NSEG] += 1
         # accept the step
         for i in range(ny):
             y[i] = ynew[i]
