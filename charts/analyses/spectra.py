@@ -62,6 +62,9 @@ class PowerSpectrum(Archivable, tuple):
         obj.params = dict(params)
         return obj
 
+    def __getnewargs__(self):       # pickling (worker processes)
+        return self[0], self[1], self.params
+
     @property
     def omega(self):
         return self[0]

@@ -274,7 +274,7 @@ def figure(study: dict, path: Path) -> None:
 
 def draw_figure(study: dict):
     """The three work–precision panels of the study, a matplotlib Figure."""
-    from matplotlib.ticker import FormatStrFormatter, MaxNLocator, NullFormatter
+    from matplotlib.ticker import FormatStrFormatter, LogLocator, MaxNLocator, NullFormatter
 
     from .plotting import new_figure
 
@@ -328,13 +328,16 @@ def draw_figure(study: dict):
     ax.set_ylabel("median |K − K_eq22| / |K_eq22|")
     ax.set_title("(c) N = 3 curvature vs eq (22)")
     ax.legend(fontsize=7, **below)
-    for ax in axes:   # over a decade: powers of 10 only; narrower than 4x: a few plain labels
-        lo, hi = ax.get_xlim()
+    for ax in axes:   # x labels readable at any span: two or more powers of 10 inside the
+        lo, hi = ax.get_xlim()      # axis: those only; else 1-2-5 labels; narrower than 4x: plain
+        decades = np.floor(np.log10(hi)) - np.ceil(np.log10(lo)) + 1
         if hi < 4 * lo:
             ax.xaxis.set_major_locator(MaxNLocator(4))
+        elif decades < 2:
+            ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+        if decades < 2:
             ax.xaxis.set_major_formatter(FormatStrFormatter("%.2g"))
-        if hi > 10 * lo or hi < 4 * lo:
-            ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.xaxis.set_minor_formatter(NullFormatter())
     return fig
 
 

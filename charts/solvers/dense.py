@@ -39,7 +39,7 @@ class DenseSolution:
         self._ny = int(ny)
         self._width = segment_layout(ny, npar)[3]
         self.n = int(n)
-        self._na = int(na)
+        self.n_y = int(na)
         self._t0 = float(t0)
         self._sign = float(sign)
         self._parts, self._iparts = [], []
@@ -53,7 +53,8 @@ class DenseSolution:
             self._iparts.append(ISeg[:count].copy())
             self._seg = None
 
-    def _segments(self):
+    def segments(self):
+        """``(Seg, ISeg)``: the rows of every step recorded so far (``segment_layout``)."""
         if self._seg is None:
             self._seg = (np.concatenate(self._parts) if self._parts else np.zeros((0, self._width)))
             self._iseg = (np.concatenate(self._iparts) if self._iparts
@@ -64,7 +65,7 @@ class DenseSolution:
     def close(self, s_end: float):
         """Fix the end of the valid interval at integration time ``s_end`` (≥ 0, measured from
         t0 in the direction of integration), dropping the segments that start after it."""
-        Seg, ISeg = self._segments()
+        Seg, ISeg = self.segments()
         keep = int(np.searchsorted(Seg[:, 0], s_end, side="left")) if s_end > 0 else min(1, len(Seg))
         keep = max(keep, min(1, len(Seg)))
         self._seg, self._iseg = Seg[:keep], ISeg[:keep]
@@ -81,16 +82,16 @@ class DenseSolution:
 
     @property
     def ts(self):
-        Seg, _ = self._segments()
+        Seg, _ = self.segments()
         s = np.append(Seg[:, 0], self._s_end) if len(Seg) else np.array([0.0])
         return self._t0 + self._sign * s
 
     def sample(self, s) -> np.ndarray:
         """Rows (m, n_y) at integration times ``s`` ≥ 0 (measured from t0 in the direction of
         integration; t = t0 ± s)."""
-        Seg, ISeg = self._segments()
+        Seg, ISeg = self.segments()
         s = np.ascontiguousarray(np.atleast_1d(np.asarray(s, dtype=float)))
-        out = np.zeros((s.size, self._na))
+        out = np.zeros((s.size, self.n_y))
         if s.size == 0:
             return out
         if len(Seg) == 0:

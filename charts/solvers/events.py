@@ -78,7 +78,7 @@ class EventTracker:
     def scan(self):
         if self.stop is not None or not self.events:
             return self.stop
-        Seg, _ = self.sol._segments()
+        Seg, _ = self.sol.segments()
         lo, hi = self._done, len(Seg)
         if hi == lo:
             return None
@@ -124,5 +124,5 @@ class EventTracker:
         for k in range(len(self.events)):
             s = np.array([r for r in self.found[k] if self.stop is None or r <= self.stop])
             t_events.append(np.array([self.t_of(si) for si in s], dtype=float))
-            y_events.append(self.sol.sample(s) if s.size else np.zeros((0, self.sol._na)))
+            y_events.append(self.sol.sample(s) if s.size else np.zeros((0, self.sol.n_y)))
         return t_events, y_events
