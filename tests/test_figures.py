@@ -149,12 +149,14 @@ def test_scene_spectrum_and_angles_figures(captured):
 def test_plotting_never_touches_the_backend():
     # (reading rcParams['backend'] would resolve the backend through pyplot: read it raw)
     code = ("import sys, matplotlib; b = dict.__getitem__(matplotlib.rcParams, 'backend')\n"
-            "import numpy as np, charts\n"
-            "s = charts.RotorSystem(3); th, u = s.random_state(1)\n"
-            "r = charts.integrate(s, th, u, 5.0)\n"
-            "r.plot('angles'); r.plot('surface'); anim = r.plot('animation')\n"
-            "from charts.plotting import plot_lyapunov\n"
-            "plot_lyapunov([1, 2], [[0.5], [0.4]], [0.4], [0.01])\n"
+            "import numpy as np\n"
+            "from charts import plotting as p\n"
+            "t = np.linspace(0, 10, 200); th = np.column_stack([t, -t, 2 * t])\n"
+            "p.plot_angles_time(t, th, switches=[(1.0, 0, 1)]); p.plot_surface(th)\n"
+            "anim = p.animate_rotors(t, th, every=50)\n"
+            "p.plot_lyapunov([1, 2], [[0.5], [0.4]], [0.4], [0.01])\n"
+            "p.plot_curvature({'a': np.random.default_rng(0).normal(size=(50, 2))})\n"
+            "p.plot_drift(t, [np.abs(np.sin(t))], ['x'])\n"
             "assert 'matplotlib.pyplot' not in sys.modules, 'pyplot imported'\n"
             "assert dict.__getitem__(matplotlib.rcParams, 'backend') == b\n")
     subprocess.run([sys.executable, "-c", code], check=True, timeout=300)
