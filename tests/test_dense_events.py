@@ -176,6 +176,11 @@ def test_backwards_integration_retraces_the_geodesic():
     assert np.max(np.abs(np.sort(back.t_events[0]) - fwd.t_events[0])) < 1e-9
     assert np.all(np.diff(back.t_events[0]) < 0)
     assert np.allclose(back.sol(T / 2), np.concatenate([back.theta[1], back.u[1]]), atol=1e-14)
+    term = _event(section, terminal=True)
+    stop = integrate(SYS3, end.theta[-1], end.u[-1], t_span=(T, 0.0), rtol=1e-13, events=term)
+    assert stop.status == "event" and stop.t[-1] == back.t_events[0][0]
+    assert np.array_equal(stop.u[-1], stop.y_events[0][0][3:])        # u in user time
+    assert np.max(np.abs(stop.u[-1] - back.sol.u(stop.t[-1]))) < 1e-12
     shifted = integrate(SYS3, TH3, U3, t_span=(5.0, 5.0 + T), rtol=1e-13, events=section)
     assert np.max(np.abs(shifted.t_events[0] - 5.0 - fwd.t_events[0])) < 1e-9
 

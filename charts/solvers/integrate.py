@@ -283,11 +283,12 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         Y = Y[keep]
         if sol is not None:
             sol.close(s_end)
-        if tracker is not None and tracker.stop is not None and not use_eval:
-            t = np.append(t, t0 + sign * s_end)  # the terminal event closes the output (SciPy)
-            Y = np.concatenate([Y, sol.sample([s_end])])
         if sign < 0:
-            Y[:, n:2 * n] *= -1.0
+            Y[:, n:2 * n] *= -1.0            # back from the forward run from (θ₀, −u₀)
+        if tracker is not None and tracker.stop is not None and not use_eval \
+                and not (s.size and s[keep][-1] == s_end):
+            t = np.append(t, t0 + sign * s_end)  # the terminal event closes the output (SciPy)
+            Y = np.concatenate([Y, sol.sample([s_end])])   # (sol's rows are in user time)
         res = _make_result(system, t, Y, P.shape[0], mon, sw, ist, status, formulation,
                            method, dict(dt=dt, rtol=rtol_v, atol=atol_v, project=bool(project),
                                         tau=tau if formulation == "chart" else None,
