@@ -38,6 +38,7 @@ from math import ceil, sin
 import numpy as np
 from numba import njit
 
+from ..archive import Archivable, attributes, dataset
 from ..flows.ambient import adjoint_rate, state_stage
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_stage_point
@@ -128,7 +129,7 @@ def _backward_kernel(ck, W, minv, dt, ck_every, first_sample, sample_every, Vs, 
 
 
 @dataclass
-class AngleResult:
+class AngleResult(Archivable):
     """Angles φ (rad) between E_u and E_cs at the S sample points.
 
     t : (S,) sample times; phi_full, phi_restricted : (S,) the two variants;
@@ -145,6 +146,31 @@ class AngleResult:
     def statistics(self, variant="restricted", small=SMALL_ANGLE):
         return angle_statistics(self.phi_restricted if variant == "restricted" else self.phi_full,
                                 small)
+
+    KIND = "angles"
+
+    def to_xarray(self):
+        return dataset(self.KIND, {
+            "phi_full": (("t",), self.phi_full, "rad", "angle, full 2N-dim tangent space"),
+            "phi_restricted": (("t",), self.phi_restricted, "rad",
+                               "angle, constraint-preserving tangent space"),
+            "forward_exponents": (("vector",), self.forward_exponents, "1 / time"),
+            "adjoint_exponents": (("vector",), self.adjoint_exponents, "1 / time")},
+            coords={"t": (("t",), self.t, "time")}, attrs={"params": self.params})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(t=ds["t"].values, phi_full=ds["phi_full"].values,
+                   phi_restricted=ds["phi_restricted"].values,
+                   forward_exponents=ds["forward_exponents"].values,
+                   adjoint_exponents=ds["adjoint_exponents"].values,
+                   params=attributes(ds)["params"])
+
+    def plot(self, ax=None, **kw):
+        """Histograms of the angles φ (both variants); ``(fig, axes)``
+        (``charts.plotting.plot_angles``)."""
+        from ..plotting import plot_angles
+        return plot_angles({"full": self.phi_full, "restricted": self.phi_restricted}, axes=ax, **kw)
 
 
 def angle_statistics(phi, small=SMALL_ANGLE):
