@@ -36,6 +36,7 @@ KINDS = {
     "lyapunov": "charts.analyses.lyapunov:LyapunovResult",
     "curvature": "charts.analyses.curvature:CurvatureResult",
     "angles": "charts.analyses.hyperbolicity:AngleResult",
+    "covariant": "charts.analyses.covariant:CovariantResult",
     "waveform": "charts.analyses.spectra:Waveform",
     "spectrum": "charts.analyses.spectra:PowerSpectrum",
     "ensemble": "charts.analyses.ensemble:EnsembleResult",
@@ -53,6 +54,7 @@ def require_xarray():
     try:
         import xarray
         import h5netcdf  # noqa: F401
+        import h5py  # noqa: F401  (h5netcdf's backend, optional in its own requirements)
     except ImportError as err:
         raise ImportError(f"saving and loading results needs xarray and h5netcdf ({err.name} is "
                           "missing): pip install 'charts[io]'") from None

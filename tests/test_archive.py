@@ -30,6 +30,8 @@ def results():
         "lyapunov": charts.lyapunov_spectrum(SYS4, TH4, U4, 20.0, t_transient=1.0),
         "curvature": charts.curvature_along_trajectory(SYS4, TH4, U4, 3.0, t_transient=1.0),
         "angles": charts.hyperbolicity_angles(SYS4, TH4, U4, 5.0, t_transient=5.0),
+        "covariant": charts.covariant_lyapunov_vectors(SYS4, TH4, U4, 2.0, t_transient=2.0,
+                                                       keep_vectors=True),
         "waveform": w,
         "spectrum": charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=10.0),
         "ensemble": charts.lyapunov_ensemble(SYS4, 2, 10.0, t_transient=1.0, workers=1),
@@ -58,7 +60,7 @@ def _same(a, b, where):
 
 
 @pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "waveform", "spectrum", "ensemble"])
+                                  "angles", "covariant", "waveform", "spectrum", "ensemble"])
 def test_round_trip_identical(results, name, tmp_path):
     res = results[name]
     path = res.save(tmp_path / f"{name}.nc")

@@ -67,6 +67,9 @@ def test_analysis_plots():
     fig, axes = charts.hyperbolicity_angles(system, th, u, 10.0, t_transient=5.0).plot()
     for a in axes:
         check_axes(a)
+    fig, axes = charts.covariant_lyapunov_vectors(system, th, u, 10.0, t_transient=5.0).plot()
+    for a in axes:
+        check_axes(a)
     w = charts.waveform(system, th, u, 100.0)
     check_axes(w.plot()[1])
     fig, ax = charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=20.0).plot()
