@@ -15,9 +15,11 @@ Jacobi equation c̈ + K c = 0 (eq 20 with the curvature operator of J'' + R(J, u
 Eq (21) as printed lacks the minus sign: with it the N = 3 result matches eq (22),
 which is negative.  Dividing by |u|² makes K independent of the speed.
 
-Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ = R_abcd p_i^a p_0^b p_j^c p_0^d from the
-generated Riemann tensor (``charts.geometry.kernels``) in the best-
-conditioned chart, evaluated at the same points and frames.
+Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ at the same points and frames: for the N
+with generated kernels R_abcd p_i^a p_0^b p_j^c p_0^d from the generated Riemann tensor in
+the best-conditioned chart; for the others (``charts.geometry.kernels.source``) the Gauss
+equation of the hypersurface in ambient form, [h(p_i,p_j)h(p_0,p_0) − h(p_i,p_0)h(p_j,p_0)] / |∇F|²
+(``charts.geometry.structured.gauss_frame_curvature``, O(N k²) instead of O(N⁴)).
 
 For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 (`gaussian_curvature_eq22`).
@@ -33,7 +35,8 @@ from numba import njit
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
-from ..geometry.kernels import compiled
+from ..geometry.kernels import geometry, source
+from ..geometry.structured import gauss_frame_curvature
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
@@ -166,12 +169,14 @@ def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, proje
 
 def exact_curvature_matrix(system, theta, P):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frame P,
-    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart.
-    Returns shape (k, k)."""
+    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart, or
+    by the Gauss equation where N has no generated kernels.  Returns shape (k, k)."""
+    if source(system.n) == "structured":
+        return gauss_frame_curvature(theta, P, system.masses, np.empty((P.shape[0] - 1,) * 2))
     k = system.best_chart(theta)
     idx = chart_coordinates(system.n, k)
     q = np.ascontiguousarray(theta[idx])
-    R = compiled(system.n).riemann(q, local_masses(system.masses, k), np.empty((system.dim,) * 4))
+    R = geometry(system.n).riemann(q, local_masses(system.masses, k), np.empty((system.dim,) * 4))
     Q = P[:, idx]
     Rp = np.einsum("abcd,b,d->ac", R, Q[0], Q[0])  # R_abcd p_i^a p0^b p_j^c p0^d
     return Q[1:] @ Rp @ Q[1:].T
