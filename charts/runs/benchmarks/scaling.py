@@ -13,13 +13,16 @@ import argparse
 import time
 
 import numpy as np
+from numba import njit
 
+from ...geometry.kernels import source
 from ...geometry.system import RotorSystem
+from ...solvers.rk import RHS_SIG
 from ...solvers.integrate import integrate
 from ...solvers.tangent import TangentFlow
 from ..plotting import new_figure, save_png
 
-__all__ = ["measure", "fit_slope", "main", "DEFAULT_N"]
+__all__ = ["measure", "fit_slope", "rhs_cost", "main", "DEFAULT_N"]
 
 DEFAULT_N = (3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)
 DT = 0.01
@@ -63,6 +66,41 @@ def measure(n, kind, *, min_cpu=0.3, repeat=3):
     return _cpu_per_step(run, 200, min_cpu, repeat) / DT
 
 
+@njit
+def _repeat_rhs(f, y, par, dy, reps):
+    acc = 0.0
+    for _ in range(reps):
+        acc += f(y, par, dy)
+    return acc
+
+
+def rhs_cost(n, which, reps=100_000, repeat=3):
+    """CPU seconds per evaluation of the chart right-hand side (eqs 14 + 16, one transported
+    vector) for N = ``n`` with the ``which`` = 'generated' or 'structured' kernels."""
+    from ...flows.chart import chart_rates, structured_rates
+    from ...solvers.chart_formulation import chart_rhs
+
+    if which == "structured":
+        rhs = njit(RHS_SIG)(structured_rates)
+    elif source(n) == "generated":
+        rhs = chart_rhs(n)
+    else:
+        return None
+    system = RotorSystem(n)
+    theta, u = system.random_state(seed=1)
+    k = system.best_chart(theta)
+    y = np.concatenate([np.delete(theta, k), np.delete(u, k), np.delete(u, k)])
+    par = np.concatenate([[n], np.delete(system.masses, k), system.masses[k:k + 1]])
+    dy = np.empty_like(y)
+    _repeat_rhs(rhs, y, par, dy, 10)
+    out = []
+    for _ in range(repeat):
+        t0 = time.process_time()
+        _repeat_rhs(rhs, y, par, dy, reps)
+        out.append((time.process_time() - t0) / reps)
+    return float(np.median(out))
+
+
 def fit_slope(ns, costs, fit_from):
     """Least-squares slope and intercept of log(cost) against log(N) over N >= fit_from."""
     pts = [(np.log(n), np.log(c)) for n, c in zip(ns, costs) if c is not None and n >= fit_from]
@@ -83,7 +121,17 @@ def main(argv=None):
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--fit-from", type=int, default=16)
     p.add_argument("--figure", default=None, help="write the log–log figure here (PNG)")
+    p.add_argument("--kernels", action="store_true",
+                   help="only compare the generated and structured chart right-hand sides")
     a = p.parse_args(argv)
+    if a.kernels:
+        print(f"{'N':>5} {'generated':>12} {'structured':>12}   (CPU µs per evaluation of eqs "
+              "14 + 16 with one transported vector)")
+        for n in a.n:
+            g, st = rhs_cost(n, "generated"), rhs_cost(n, "structured")
+            print(f"{n:>5} " + ("-".rjust(12) if g is None else f"{g * 1e6:12.3f}")
+                  + f" {st * 1e6:12.3f}", flush=True)
+        return 0
     res = {kind: [] for kind in KINDS}
     print(f"{'N':>5} " + " ".join(f"{k:>14}" for k in KINDS) + "   (CPU s per time unit)")
     for n in a.n:
