@@ -65,18 +65,24 @@ def _hess(q, s, C, sk2, x, y):
     return -(acc - C * sx * sy / sk2)
 
 
+@njit(cache=True, inline="always")
+def _diag_plus_rank_one(x, f, diag, out):
+    """out = diag(diag) + f x xᵀ."""
+    d = x.size
+    for a in range(d):
+        for b in range(d):
+            out[a, b] = f * x[a] * x[b]
+        out[a, a] += diag[a]
+    return out
+
+
 @njit(cache=True)
 def metric(q, m, out):
     """g_αβ, eq (13): diag(m_α) + mₖ s sᵀ / sin²θₖ; out shape (d, d)."""
     d = q.size
     s = np.empty(d)
     C, sk2, G = _chart_scalars(q, m, s)
-    f = m[d] / sk2
-    for a in range(d):
-        for b in range(d):
-            out[a, b] = f * s[a] * s[b]
-        out[a, a] += m[a]
-    return out
+    return _diag_plus_rank_one(s, m[d] / sk2, m[:d], out)
 
 
 @njit(cache=True)
@@ -85,11 +91,8 @@ def metric_inverse(q, m, out):
     d = q.size
     s = np.empty(d)
     C, sk2, G = _chart_scalars(q, m, s)
-    for a in range(d):
-        for b in range(d):
-            out[a, b] = -s[a] * s[b] / (m[a] * m[b] * G)
-        out[a, a] += 1.0 / m[a]
-    return out
+    minv = 1.0 / m[:d]
+    return _diag_plus_rank_one(s * minv, -1.0 / G, minv, out)
 
 
 @njit(cache=True)
