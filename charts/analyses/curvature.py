@@ -39,7 +39,7 @@ from ..geometry.kernels import geometry, source
 from ..geometry.structured import gauss_frame_curvature
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of)
 
@@ -142,10 +142,11 @@ def numerical_curvature(y, Xj, P, minv, m, dt, uu, K):
 
 
 @njit(cache=True)
-def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, project_every,
-                      Ka, Ys, Ps):
+def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth, w,
+                      project_every, Ka, Ys, Ps):
     """Advance the tangent flow Z = [y; X] ``sample_steps`` steps at a time (re-orthonormalised
-    every step) and at each sample store y, the frame and the route-(a) matrix.
+    every ``reorth`` steps, a divisor of ``sample_steps``) and at each sample store y, the
+    frame and the route-(a) matrix.
     Returns (status, samples done)."""
     n = Z.shape[1] // 2
     k = Z.shape[0] - 1
@@ -155,8 +156,8 @@ def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, proje
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     for smp in range(Ka.shape[0]):
-        status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, 1, w,
-                                      True, project_every, logs, 0, 0, none, no_events, none)
+        status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth,
+                                      w, True, project_every, logs, 0, 0, none, no_events, none)
         if status != RUNNING:
             return status, smp
         y = Z[0]
@@ -257,8 +258,9 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
         raise ValueError(f"exact must be True or False, got {exact!r}")
     theta0, u0 = start_state(system, theta0, u0)
     k = n - 2
+    reorth = reorth_steps(dt, sample, transient)  # orthonormal (and in T_r) at every sample
     flow = TangentFlow(system, theta0, u0, k, dt=dt, inner="theta", restricted=True,
-                       reorth_every=1, project_every=project, seed=seed)
+                       reorth_every=reorth, project_every=project, seed=seed)
     rep = progress_reporter(progress, (transient + total) * dt, f"curvature N={n}")
     where = "curvature_along_trajectory (ambient RK4)"
     flow.advance(transient, where=where)
@@ -269,8 +271,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
         status, done = _sample_curvature(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                                         flow.speed, dt, sample, flow.w, project, Ka[a:b],
-                                         Ys[a:b], Ps[a:b])
+                                         flow.speed, dt, sample, reorth, flow.w, project,
+                                         Ka[a:b], Ys[a:b], Ps[a:b])
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, where)
         rep.update((b - a) * sample * dt)
