@@ -55,7 +55,8 @@ class RunState:
         self.chart = -1                # chart in use (chart formulation), -1: not yet chosen
         self.rec = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature_num",
                                           "curvature_exact", "curvature_y", "switches", "angles",
-                                          "angles_exponents")}
+                                          "angles_exponents", "clv", "clv_exponents",
+                                          "clv_domination", "clv_ftle")}
         self.rec_t = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature")}
         self.elapsed = 0.0
         self.done = False

@@ -36,7 +36,7 @@ from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
 from .recorders import make_recorders
 from .run_state import CHECKPOINT, RunError, RunState, scene_hash, units_done
 from .scene import Scene
-from .scene_results import finalize, write_result
+from .scene_results import FTLE_STATS, finalize, write_result
 
 __all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS"]
 
@@ -82,13 +82,13 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         lyap_ends = {transient + e for e in lyapunov_batch_ends(scene, plan)}
 
     n_main = len(ends) if plan.main_pass else 0
-    n_units = n_main + (1 if plan.angles else 0)
+    passes = plan.passes
+    n_units = n_main + len(passes)
     st.n_main = n_main
 
     from tqdm.auto import tqdm
     t_total = (scene.run["t_transient"] + scene.run["t_final"]) * (1 if plan.main_pass else 0)
-    if plan.angles:
-        t_total += plan.angles["steps"] * scene.integrator["dt"]
+    t_total += plan.pass_steps() * scene.integrator["dt"] if passes else 0.0
     bar = tqdm(total=round(t_total, 10), unit="t", desc=scene.name, disable=quiet,
                leave=False, initial=round(units_done(st, ends) * unit, 10))
     status = "complete"
@@ -105,8 +105,9 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
                     st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
                 advanced = (ends[idx] - start) * unit
             else:
-                _angles_pass(st)
-                advanced = plan.angles["steps"] * scene.integrator["dt"]
+                name = passes[idx - n_main]
+                (_angles_pass if name == "angles" else _clv_pass)(st)
+                advanced = getattr(plan, name)["steps"] * scene.integrator["dt"]
             st.chunk_index = idx + 1
             st.elapsed += time.perf_counter() - t_wall
             st.done = st.chunk_index == n_units
@@ -158,6 +159,44 @@ def _angles_pass(st: RunState):
     st.rec["angles_exponents"] = [list(res.forward_exponents), list(res.adjoint_exponents)]
     st.rhs += st.plan.angles["rhs_evaluations"]
     st.steps += 2 * st.plan.angles["steps"]
+
+
+def _clv_pass(st: RunState):
+    """Covariant Lyapunov vectors from the initial state, each variant asked for
+    (``charts.analyses.covariant``): per sample t, φ and the angle between the leading
+    unstable and stable CLVs; per variant the mean growth rates along the CLVs, the
+    domination fractions and the finite-time exponents for each window."""
+    from ..analyses.covariant import covariant_lyapunov_vectors
+
+    sc, sys_ = st.scene, st.system
+    c = sc.effects["clv"]
+    dt = sc.integrator["dt"]
+    n = sys_.n
+    cols, dom, ftle, exps = [], [], [], []
+    for iv, variant in enumerate(("full", "restricted")):
+        if c["variant"] not in (variant, "both"):
+            continue
+        r = covariant_lyapunov_vectors(
+            sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], variant=variant, dt=dt,
+            n_unstable=c["n_vectors"], t_transient=sc.run["t_transient"],
+            sample_every=c["sample_every"], project_every=st.flow.project_every * dt or None,
+            seed=sc.initial["seed"] or 0)
+        cols += [r.phi, r.phi_vectors]
+
+        def pad(x):            # rows of one length (2N) for both variants
+            return list(x) + [np.nan] * (2 * n - len(x))
+        exps.append([iv] + pad(r.exponents))
+        for w, d in r.domination(c["windows"]).items():
+            dom.append([iv, w, d["split"], d["count"]])
+        for w, f in r.finite_time(c["windows"]).items():
+            ftle.append([iv, w, f["count"], f["frac_nonpositive_leading"]]
+                        + sum((pad(f[k]) for k in FTLE_STATS), []))
+    st.rec["clv"] = [list(row) for row in np.column_stack([r.t] + cols)]
+    st.rec["clv_exponents"] = exps
+    st.rec["clv_domination"] = dom
+    st.rec["clv_ftle"] = ftle
+    st.rhs += st.plan.clv["rhs_evaluations"]
+    st.steps += st.plan.clv["steps"]
 
 
 def _read_status(outdir):

@@ -10,7 +10,7 @@ import numpy as np
 
 from .plotting import new_figure, png_bytes
 
-__all__ = ["waveforms_png", "spectrum_png", "drift_png", "lyapunov_png", "angles_png",
+__all__ = ["waveforms_png", "spectrum_png", "drift_png", "lyapunov_png", "angles_png", "clv_png",
            "curvature_png", "CURVATURE_QUANTILES"]
 
 TIME = "t (time units of the flow)"
@@ -123,6 +123,35 @@ def angles_png(sc, arr) -> bytes:
         ax.set_ylabel("probability density")
         ax.set_title(f"{v} tangent space (min φ = {phi.min():.2g})", fontsize=10)
     fig.suptitle(_title(sc, "angles between $E_u$ and $E_{cs}$"))
+    return png_bytes(fig)
+
+
+def clv_png(sc, arr, res) -> bytes:
+    """Per variant: histograms of φ (CLV route) and of the angle between the leading
+    unstable and stable CLVs; the domination fractions against the window length."""
+    variants = [v for v in ("full", "restricted") if f"clv_phi_{v}" in arr]
+    fig, axes = new_figure(1, len(variants) + 1, figsize=(4.2 * (len(variants) + 1), 3.4),
+                           squeeze=False)
+    for ax, v in zip(axes[0], variants):
+        for key, label in ((f"clv_phi_{v}", "$E_u$ vs $E_{cs}$"),
+                           (f"clv_phi_vectors_{v}", "$v_1$ vs leading stable $v_s$")):
+            ax.hist(arr[key], bins=60, range=(0, np.pi / 2), density=True, histtype="step",
+                    label=f"{label} (min {arr[key].min():.2g})")
+        ax.set_xlabel("angle (rad)")
+        ax.set_ylabel("probability density")
+        ax.set_title(f"{v} tangent space", fontsize=10)
+        ax.legend(fontsize=7)
+    ax = axes[0, -1]
+    for v in variants:
+        d = res[v]["domination"]
+        w = [float(k) for k in d]
+        ax.plot(w, [d[k]["split"] for k in d], "o-", label=v)
+    ax.set_xscale("log")
+    ax.set_xlabel("window T (time units)")
+    ax.set_ylabel("fraction of windows")
+    ax.set_title("$E_u$ not dominating $E_{cs}$", fontsize=10)
+    ax.legend(fontsize=7)
+    fig.suptitle(_title(sc, "covariant Lyapunov vectors"))
     return png_bytes(fig)
 
 
