@@ -9,8 +9,6 @@ import time
 import uuid
 from pathlib import Path
 
-from ...codegen.names import SHIPPED_N
-from ...geometry.kernels import chart_module
 from ..io import atomic_text
 from ..scene import scene_to_dict
 from .points import digest, sweep_points
@@ -60,9 +58,6 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
     atomic_text(outdir / META, json.dumps(meta, indent=2, default=str) + "\n")
     info = {"points": len(points), "skipped": len(done), "computed": [], "failed": [],
             "lost": [], "run_id": run_id, "table": str(outdir / TABLE)}
-    for n in sorted({p.scene.system["n"] for p in todo} - set(SHIPPED_N)):
-        chart_module(n)     # derive a non-shipped N once, here (cost on stderr): local
-                            # workers then read it from the on-disk cache
     if todo:
         _compute(sweep, todo, len(points), len(done), columns, outdir, info, scheduler,
                  workers, quiet, on_point)
