@@ -12,7 +12,10 @@ mechanically coupled rotators".  The public surface, by concept:
   ``waveform`` and ``power_spectrum`` (figures 2-3);
 * the flat linkage of the Appendix (its exact constraint, eq (1) as its ε → 0 limit):
   ``LinkageSystem``, ``linkage_run``, ``linkage_trajectory`` (docs/linkage.md);
-* declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``.
+* declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``;
+* every result saves itself (``result.save(path)``, NetCDF) and ``load(path)`` reads it back
+  as its own type (``charts.archive``; the extra ``charts[io]``); results plot themselves
+  (``result.plot()``, ``charts.plotting``).
 """
 from .geometry.system import RotorSystem
 from .solvers.integrate import IntegrationResult, integrate
@@ -22,7 +25,8 @@ from .analyses.lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spect
 from .analyses.curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
 from .analyses.hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
 from .analyses.covariant import CovariantResult, covariant_lyapunov_vectors
-from .analyses.spectra import power_spectrum, waveform
+from .analyses.spectra import PowerSpectrum, Waveform, power_spectrum, waveform
+from .archive import load
 from .geometry.linkage import LinkageSystem
 from .solvers.linkage import DegenerateMetricError
 from .analyses.linkage import LinkageResult, linkage_run, linkage_trajectory
@@ -38,7 +42,7 @@ __all__ = [
     "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22",
     "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
     "covariant_lyapunov_vectors", "CovariantResult",
-    "waveform", "power_spectrum",
+    "waveform", "power_spectrum", "Waveform", "PowerSpectrum", "load",
     "LinkageSystem", "linkage_run", "linkage_trajectory", "LinkageResult", "DegenerateMetricError",
     "Scene", "SceneError", "load_scene", "parse_scene", "run_scene", "plan_scene", "RunError",
     "Sweep", "SweepError", "load_sweep", "parse_sweep", "run_sweep",

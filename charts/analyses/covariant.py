@@ -39,6 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from ..archive import Archivable, attributes, dataset
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize
@@ -146,7 +147,7 @@ class _Store:
 
 
 @dataclass
-class CovariantResult:
+class CovariantResult(Archivable):
     """CLV analysis along one trajectory, one variant; S samples, D = `clv_dimension` CLVs
     (index 0 the largest exponent).
 
@@ -189,6 +190,39 @@ class CovariantResult:
     def domination(self, windows):
         """`domination` test of the growth rates along the CLVs."""
         return domination(self.growth, self.params["m"], self.params["sample_every"], windows)
+
+    KIND = "covariant"
+
+    def to_xarray(self):
+        data = {
+            "phi": (("t",), self.phi, "rad", "angle between E_u and E_cs"),
+            "phi_vectors": (("t",), self.phi_vectors, "rad",
+                            "angle between the leading unstable and the leading stable CLV"),
+            "growth": (("t", "clv"), self.growth, "1 / time", "growth rate along each CLV"),
+            "gs_rates": (("t", "clv"), self.gs_rates, "1 / time",
+                         "growth rate of each Gram-Schmidt vector"),
+            "states": (("t", "component"), self.states, "rad | rad / time",
+                       "state (theta, u) at the samples")}
+        if self.vectors is not None:
+            data["vectors"] = (("t", "clv", "component"), self.vectors, "1", "unit CLVs")
+        return dataset(self.KIND, data, coords={"t": (("t",), self.t, "time")},
+                       attrs={"variant": self.variant, "params": self.params})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        a = attributes(ds)
+        return cls(t=ds["t"].values, variant=a["variant"], phi=ds["phi"].values,
+                   phi_vectors=ds["phi_vectors"].values, growth=ds["growth"].values,
+                   gs_rates=ds["gs_rates"].values, states=ds["states"].values,
+                   vectors=ds["vectors"].values if "vectors" in ds else None,
+                   params=a["params"])
+
+    def plot(self, axes=None, **kw):
+        """Histogram of φ(E_u, E_cs) by the CLV route; ``(fig, axes)``
+        (``charts.plotting.plot_angles``)."""
+        from ..plotting import plot_angles
+        kw.setdefault("title", "angles between $E_u$ and $E_{cs}$ (covariant Lyapunov vectors)")
+        return plot_angles({self.variant: self.phi}, axes=axes, **kw)
 
 
 def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restricted", dt=0.01,

@@ -23,7 +23,9 @@ checkpointed state), :mod:`~charts.runs.engines` (the integration of a chunk),
 from __future__ import annotations
 
 import json
+import sys
 import time
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -39,6 +41,10 @@ from .scene import Scene
 from .scene_results import FTLE_STATS, finalize, write_result
 
 __all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS"]
+
+
+#: Compile time above which a run says it compiled kernels (loading cached ones takes less).
+COMPILE_NOTE_S = 1.0
 
 
 def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False,
@@ -93,30 +99,9 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
                leave=False, initial=round(units_done(st, ends) * unit, 10))
     status = "complete"
     try:
-        for idx in range(st.chunk_index, n_units):
-            t_wall = time.perf_counter()
-            if idx < n_main:
-                start = ends[idx - 1] if idx else 0
-                engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
-                                 transient)
-                if ends[idx] == transient:      # the transient does not count for exponents
-                    st.logsum[:] = 0.0
-                if ends[idx] in lyap_ends:
-                    st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
-                advanced = (ends[idx] - start) * unit
-            else:
-                name = passes[idx - n_main]
-                (_angles_pass if name == "angles" else _clv_pass)(st)
-                advanced = getattr(plan, name)["steps"] * scene.integrator["dt"]
-            st.chunk_index = idx + 1
-            st.elapsed += time.perf_counter() - t_wall
-            st.done = st.chunk_index == n_units
-            arr = st.to_arrays()
-            arr["scene_hash"] = np.array(digest)
-            atomic_write(ck, npz_bytes(arr))
-            bar.update(advanced)
-            if on_chunk is not None:
-                on_chunk(idx, n_units)
+        with compile_timer(st):
+            _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders,
+                        lyap_ends, unit, digest, ck, bar, on_chunk)
     except (KeyboardInterrupt, RunError) as exc:
         status = "interrupted" if isinstance(exc, KeyboardInterrupt) else "failed"
         failure = None if status == "interrupted" else str(exc)
@@ -129,6 +114,9 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         st.n_main = n_main
     finally:
         bar.close()
+    if st.compile_s > COMPILE_NOTE_S and not quiet:
+        print(f"{scene.name}: compiled the kernels for N = {system.n} in {st.compile_s:.1f} s "
+              "(once: they are cached on disk for the next runs)", file=sys.stderr)
     result = finalize(st, status, ends, transient, unit, outdir)
     if status == "interrupted":
         raise KeyboardInterrupt(result)
@@ -137,6 +125,49 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         write_result(outdir, result)
         raise RunError(f"{failure} (the finished part is in {outdir}/result.json)")
     return result
+
+
+def _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders, lyap_ends,
+                unit, digest, ck, bar, on_chunk):
+    """The chunks from ``st.chunk_index`` on, a checkpoint after each."""
+    for idx in range(st.chunk_index, n_units):
+        t_wall = time.perf_counter()
+        if idx < n_main:
+            start = ends[idx - 1] if idx else 0
+            engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
+                             transient)
+            if ends[idx] == transient:      # the transient does not count for exponents
+                st.logsum[:] = 0.0
+            if ends[idx] in lyap_ends:
+                st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
+            advanced = (ends[idx] - start) * unit
+        else:
+            name = passes[idx - n_main]
+            (_angles_pass if name == "angles" else _clv_pass)(st)
+            advanced = getattr(st.plan, name)["steps"] * st.scene.integrator["dt"]
+        st.chunk_index = idx + 1
+        st.elapsed += time.perf_counter() - t_wall
+        st.done = st.chunk_index == n_units
+        arr = st.to_arrays()
+        arr["scene_hash"] = np.array(digest)
+        atomic_write(ck, npz_bytes(arr))
+        bar.update(advanced)
+        if on_chunk is not None:
+            on_chunk(idx, n_units)
+
+
+@contextmanager
+def compile_timer(st: RunState):
+    """Add to ``st.compile_s`` the time numba spends compiling or loading cached kernels inside
+    the block (numba's ``numba:compile`` events, outermost only), so that result.json keeps it
+    apart from the integration time."""
+    from numba.core.event import install_timer
+
+    def add(seconds):
+        st.compile_s += seconds
+
+    with install_timer("numba:compile", add):
+        yield
 
 
 def _angles_pass(st: RunState):

@@ -30,11 +30,11 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
-from .scene_schema import (EFFECTS, GRID_RTOL, MAX_N, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, Key,
+from .scene_schema import (EFFECTS, GRID_RTOL, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, Key,
                            SceneError)
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
-           "scene_to_dict", "MAX_N"]
+           "scene_to_dict"]
 
 
 

@@ -14,7 +14,9 @@ from ..analyses.lyapunov import exponents_from_marks
 from ..analyses.curvature import gaussian_curvature_eq22
 from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
 from ..analyses.spectra import power_spectrum
+from ..archive import require_xarray
 from . import scene_figures as figs
+from .archives import SCENE_NETCDF, SceneResult
 from .io import atomic_write, json_default, npz_bytes, versions
 from .paper import PAPER_EXPONENTS
 from .recorders import invariants
@@ -74,7 +76,8 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
         "progress": {"t_done": t_done, "t_final": sc.run["t_final"],
                      "t_transient": sc.run["t_transient"],
                      "chunks_done": st.chunk_index, "chunks": len(ends)},
-        "timings": {"integration_wall_s": round(st.elapsed, 4)},
+        "timings": {"integration_wall_s": round(max(st.elapsed - st.compile_s, 0.0), 4),
+                    "compile_wall_s": round(st.compile_s, 4)},
         "computation": comp,
         "initial_state": {"theta": st.y0[:n].tolist(), "u": st.y0[n:].tolist()},
         "final_state": {"theta": st.y[:n].tolist(), "u": st.y[n:].tolist()},
@@ -89,9 +92,22 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
         atomic_write(outdir / name, png)
     if out.arrays:
         atomic_write(outdir / "arrays.npz", npz_bytes(out.arrays))
+        _write_netcdf(outdir, result, out.arrays)
     result["timings"]["output_wall_s"] = round(time.perf_counter() - t0, 4)
     write_result(outdir, result)
     return result
+
+
+def _write_netcdf(outdir, result, arrays):
+    """``results.nc`` beside result.json (arrays with named dimensions and units, the result
+    and the scene text as attributes), when the extra ``charts[io]`` is installed."""
+    try:
+        require_xarray()
+    except ImportError as err:
+        result["netcdf"] = f"not written: {err}"
+        return
+    result["files"].insert(result["files"].index("arrays.npz") + 1, SCENE_NETCDF)
+    SceneResult.from_run(result, arrays, result["source"]).save(outdir / SCENE_NETCDF)
 
 
 def _drift_summary(st, out):

@@ -6,10 +6,8 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..analyses.arguments import GRID_RTOL
-from ..geometry.kernels import MAX_N
 
-__all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "MAX_N",
-           "GRID_RTOL"]
+__all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL"]
 
 
 class SceneError(ValueError):
@@ -49,8 +47,8 @@ TOP_KEYS = {
 
 SCHEMA: dict[str, dict[str, Key]] = {
     "system": {
-        "n": Key("int", None, "Number of rotors N (3..10; the manifold has dimension N−1).",
-                 check=_between(3, MAX_N), required=True),
+        "n": Key("int", None, "Number of rotors N (>= 3; the manifold has dimension N−1).",
+                 check=_ge(3), required=True),
         "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
                       "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
                       else "a list of numbers, each > 0"),
