@@ -59,6 +59,7 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
     """Check the arguments of `lyapunov_spectrum` (ValueError naming the bad one)."""
     n = system.n
     dt = positive_time("dt", dt)
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     kmax = {"restricted": 2 * n - 2, "full": 2 * n}.get(space)
     if kmax is None:
         raise ValueError(f"space must be 'restricted' or 'full', got {space!r}")
@@ -83,14 +84,13 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
     if total < n_batches * reorth:
         raise ValueError(f"t_final={t_final:g} is too short for {n_batches} batches of at least "
                          f"reorth_every={reorth_every:g}; increase t_final")
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     return LyapunovSettings(dt, k, inner, space, transient, total, reorth, project, record,
                             n_batches, positive_int("seed", seed, 0))
 
 
 def lyapunov_flow(system, theta0, u0, cfg: LyapunovSettings) -> TangentFlow:
     """The tangent flow of a Lyapunov run from (theta0, u0) (validated here)."""
-    theta0, u0 = start_state(system, theta0, u0)
+    theta0, u0 = start_state(system, theta0, u0, cfg.dt)
     return TangentFlow(system, theta0, u0, cfg.k, dt=cfg.dt, inner=cfg.inner,
                        restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
                        project_every=cfg.project, seed=cfg.seed)

@@ -19,12 +19,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..geometry.checks import finite_array, option
 from ..geometry.projection import invariants
 from ..geometry.system import RotorSystem
 from . import loop as D
 from .progress import progress_reporter
-from .status import (CAP_FRACTION, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
-                     IntegrationError, SingularPointError, status_error)
+from .status import (CAP_FRACTION, DT_SPEED, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
+                     IntegrationError, SingularPointError, status_error, check_step)
 from .ambient_formulation import AmbientFlow
 from .chart_formulation import DEFAULT_TAU, ChartFlow
 
@@ -40,7 +41,7 @@ TOLERANCES = {
     # the smallest rtol accepted (the error estimate is meaningless near rounding level).
     "rtol_min": 1e-15,
     # default RK4 step, in units of 1/speed: the paper's Δt = 0.01 at unit speed.
-    "dt_speed": 0.01,
+    "dt_speed": DT_SPEED,
 }
 
 _METHODS = {"rk4": D.METHOD_RK4, "dop853": D.METHOD_DOP853}
@@ -183,6 +184,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         if rtol is not None or atol is not None:
             raise ValueError("rtol/atol apply to method='dop853'; rk4 takes dt")
         dt = TOLERANCES["dt_speed"] / speed if dt is None else _positive("dt", dt)
+        check_step(dt, speed, system.n)
         rtol_v = atol_v = 0.0
     else:
         if dt is not None:
@@ -208,9 +210,9 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
 
     use_eval = t_eval is not None
     if use_eval:
-        te = np.array(t_eval, dtype=float).ravel()
-        if te.size == 0 or not np.all(np.isfinite(te)):
-            raise ValueError("t_eval must be a non-empty array of finite times")
+        te = np.atleast_1d(finite_array("t_eval", t_eval))
+        if te.ndim != 1 or te.size == 0:
+            raise ValueError(f"t_eval must be a non-empty 1-D array of times, got shape {te.shape}")
         if np.any(np.diff(te) <= 0):
             raise ValueError("t_eval must be strictly increasing")
         if te[0] < 0 or te[-1] > t_final:
@@ -218,6 +220,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     else:
         te = np.zeros(0)
 
+    project = option("project", project, (False, True))
     form_cls = _FORMULATIONS[formulation]
     kw = {"tau": tau, "chart": chart} if formulation == "chart" else {}
     if formulation == "ambient" and (chart is not None or tau != DEFAULT_TAU):
