@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..geometry.checks import integer, number
 from ..solvers.progress import progress_reporter
-from ..solvers.status import check_step
+from ..solvers.status import MAX_STEPS, check_step
 
 __all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
            "project_steps", "samples_of", "start_state"]
@@ -37,10 +37,18 @@ def nonnegative_time(name, x) -> float:
 
 def steps_of(name, t, dt, *, allow_zero=False) -> int:
     """The number of steps ``dt`` in the duration ``t``; ValueError naming ``name`` if ``t``
-    is not finite, negative (or zero unless ``allow_zero``), or not a whole number of steps."""
+    is not finite, negative (or zero unless ``allow_zero``), shorter than one step, more than
+    `MAX_STEPS` steps, or not a whole number of steps."""
     t = nonnegative_time(name, t) if allow_zero else positive_time(name, t)
-    k = round(t / dt)
-    if abs(k * dt - t) > GRID_RTOL * max(t, dt):
+    ratio = t / dt
+    if ratio > MAX_STEPS:
+        raise ValueError(f"{name}={t:g} is {ratio:.3g} steps of dt={dt:g}, more than "
+                         f"{MAX_STEPS:.3g}; use a larger dt or a shorter {name}")
+    k = round(ratio)
+    if t > 0 and k == 0:
+        raise ValueError(f"{name}={t:g} is shorter than one step dt={dt:g}; use a multiple of "
+                         f"dt (e.g. {dt:g}) or a smaller dt")
+    if abs(k * dt - t) > GRID_RTOL * t:
         raise ValueError(f"{name}={t:g} is not a whole number of steps dt={dt:g}; use a multiple "
                          f"of dt (e.g. {max(k, 1) * dt:g})")
     return int(k)

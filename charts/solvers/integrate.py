@@ -25,7 +25,7 @@ from ..geometry.system import RotorSystem
 from . import loop as D
 from .progress import progress_reporter
 from .status import (CAP_FRACTION, DT_SPEED, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
-                     IntegrationError, SingularPointError, status_error, check_step)
+                     IntegrationError, SingularPointError, check_duration, check_step, status_error)
 from .ambient_formulation import AmbientFlow
 from .chart_formulation import DEFAULT_TAU, ChartFlow
 
@@ -185,6 +185,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
             raise ValueError("rtol/atol apply to method='dop853'; rk4 takes dt")
         dt = TOLERANCES["dt_speed"] / speed if dt is None else _positive("dt", dt)
         check_step(dt, speed, system.n)
+        check_duration(t_final, speed, dt)
         rtol_v = atol_v = 0.0
     else:
         if dt is not None:
@@ -195,6 +196,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
                              "estimate is dominated by rounding; use a larger rtol")
         atol_v = rtol_v * min(1.0, speed) if atol is None else _positive("atol", atol)
         dt = 0.0
+        check_duration(t_final, speed)
     if isinstance(chunk_steps, bool) or not isinstance(chunk_steps, (int, np.integer)) or chunk_steps < 1:
         raise ValueError(f"chunk_steps must be a positive integer, got {chunk_steps!r}")
     bar = None

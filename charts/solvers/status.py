@@ -23,7 +23,8 @@ from numba import njit
 __all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
-           "status_error", "StepSizeWarning", "check_step", "MAX_STEP_LENGTH", "DT_SPEED"]
+           "status_error", "StepSizeWarning", "check_step", "check_duration", "MAX_STEP_LENGTH",
+           "MAX_STEPS", "DT_SPEED"]
 
 #: Largest step as a fraction of the distance √S to the nearest singular point, per method.
 CAP_FRACTION = {"dop853": 0.5, "rk4": 0.03}
@@ -49,6 +50,9 @@ def step_cap(S, U, fraction):
     return fraction * sqrt(S / U)
 
 
+#: Most steps one duration may hold (2⁴⁰ ≈ 1.1·10¹²: days of CPU time at the kernel's rate);
+#: beyond it a duration is an input error (t_final = 1e300, or dt = 1e-300), not a run.
+MAX_STEPS = 2.0 ** 40
 #: The default fixed step in units of 1/|u|: dt = DT_SPEED/|u| (10⁻² of a radian of geodesic
 #: length per step, the paper's dt = 0.01 at unit speed).
 DT_SPEED = 0.01
@@ -92,6 +96,17 @@ def check_step(dt: float, speed: float, n: int) -> float:
             f"sub-steps and only the samples stay on the dt grid; dt={DT_SPEED / speed:.3g} "
             "makes the step the step", StepSizeWarning, stacklevel=3)
     return dt
+
+
+def check_duration(t_final: float, speed: float, dt: float | None = None) -> float:
+    """Refuse (ValueError naming t_final) a run of more than `MAX_STEPS` steps: ``dt``, or
+    for an adaptive method the default fixed step DT_SPEED/|u| (a bound on its output)."""
+    step = dt if dt else DT_SPEED / speed
+    if t_final / step > MAX_STEPS:
+        raise ValueError(f"t_final={t_final:g} is {t_final / step:.3g} steps of {step:g}, more "
+                         f"than {MAX_STEPS:.3g}; use a shorter t_final"
+                         + (" or a larger dt" if dt else ""))
+    return t_final
 
 
 RUNNING, FINISHED, OUT_FULL, LOG_FULL = 0, 1, 2, 3
