@@ -126,7 +126,7 @@ def test_reproduce_reuses_finished_pieces_and_only_those(tmp_path, capsys):
     from charts.runs import reproduce as rp
 
     cfg = dict(lyap_members=1, lyap_t=20.0, lyap_batches=2, angle_members=1, angle_t=10.0,
-               curv_t=5.0, wave_t=250.0)
+               curv_t=5.0, wave_t=800.0)
     pieces = tmp_path / "pieces"
     pieces.mkdir()
     first = rp._run_all(cfg, 1, True, pieces)
