@@ -41,6 +41,7 @@ from .cli_parser import OneLineParser, positive_count
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
 
 NS = (3, 4, 5)
+EXIT_INTERRUPTED = 130
 
 PRESETS = {
     "quick": dict(lyap_members=4, lyap_t=5.0e3, lyap_batches=10, angle_members=2, angle_t=2.0e3,
@@ -127,7 +128,7 @@ def _run_all(cfg, workers, quiet, pieces=None):
             print(f"reusing {len(results)} of {len(tasks)} finished pieces from {pieces}",
                   file=sys.stderr)
     from tqdm.auto import tqdm
-    pool = ProcessPoolExecutor(max_workers=workers)
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=_quiet_interrupt)
     try:
         futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items() if key not in results}
         with tqdm(total=len(tasks), initial=len(results), desc="reproduce", disable=quiet) as bar:
@@ -139,12 +140,21 @@ def _run_all(cfg, workers, quiet, pieces=None):
                 bar.update(1)
     except BaseException:
         pool.shutdown(wait=False, cancel_futures=True)
+        for proc in list((getattr(pool, "_processes", None) or {}).values()):
+            proc.terminate()            # the pieces in flight are lost, the finished ones kept
         raise
     pool.shutdown()
     return results
 
 
 PIECES = "pieces"
+
+
+def _quiet_interrupt():
+    """In a worker process: Ctrl-C ends it silently (the main process reports what was
+    kept), instead of each worker printing a KeyboardInterrupt traceback."""
+    import signal
+    signal.signal(signal.SIGINT, lambda *_: os._exit(EXIT_INTERRUPTED))
 
 
 def _piece_path(folder, key):
@@ -264,7 +274,7 @@ def main(argv=None):
             print(f"\ninterrupted: {kept} of {len(_tasks(cfg))} pieces kept in {pieces}; run "
                   f"the same command again to continue:\n  charts reproduce --{preset} "
                   f"-o {out}", file=sys.stderr)
-            return 130
+            return EXIT_INTERRUPTED
 
 
 def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
