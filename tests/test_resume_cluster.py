@@ -199,3 +199,19 @@ def test_a_real_cluster_that_loses_a_worker_gives_the_local_table(tmp_path):
             p.wait()
         log.close()
     assert (out / TABLE).read_bytes() == (tmp_path / "local" / TABLE).read_bytes()
+
+
+def test_reproduce_interrupted_by_ctrl_c_says_what_it_kept(tmp_path):
+    """Ctrl-C (SIGINT to the process group, as a terminal sends it) once a piece is kept:
+    exit 130, one message naming the kept pieces and the command, no worker traceback."""
+    out = tmp_path / "rp"
+    proc = subprocess.Popen(CHARTS + ["reproduce", "--quick", "--workers", "2", "-o", str(out),
+                                      "--quiet"], stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    _wait_for(lambda: (out / "pieces").is_dir() and any((out / "pieces").glob("*.npz")), proc)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=WAIT_S)
+    kept = len(list((out / "pieces").glob("*.npz")))
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err and f"{kept} of 24 pieces kept" in err
+    assert f"charts reproduce --quick -o {out}" in err
