@@ -215,3 +215,18 @@ def test_reproduce_interrupted_by_ctrl_c_says_what_it_kept(tmp_path):
     assert proc.returncode == 130, err
     assert "Traceback" not in err and f"{kept} of 24 pieces kept" in err
     assert f"charts reproduce --quick -o {out}" in err
+
+
+def test_sweep_interrupted_by_ctrl_c_says_how_to_resume_without_worker_tracebacks(tmp_path):
+    spec = tmp_path / "s.toml"
+    spec.write_text(SWEEP.format(name="ctrlc", masses="0.5, 1.0, 2.0, 4.0"))
+    out = tmp_path / "out"
+    proc = subprocess.Popen(CHARTS + ["sweep", str(spec), "-o", str(out), "--workers", "2",
+                                      "--quiet", "--no-plots"], stderr=subprocess.PIPE,
+                            text=True, start_new_session=True)
+    _wait_for(lambda: (out / TABLE).exists() and len(read_table(out / TABLE)[1]) >= 1, proc)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=WAIT_S)
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err and "--resume" in err
+    assert not (out / ".charts.lock").exists()

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import json
 import os
+import signal
+import threading
 import time
 import uuid
 from pathlib import Path
@@ -128,8 +130,17 @@ def dask_client(scheduler, workers):
                              "one with `dask scheduler`, workers with `dask worker ADDRESS`)") \
                 from None
     n = (os.cpu_count() or 1) if workers is None else positive_int("workers", workers)
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=logging.ERROR)
+    # the worker processes start with Ctrl-C ignored (a disposition that survives their
+    # spawn): the main process reports the interrupt and closes the cluster, instead of
+    # every worker printing a KeyboardInterrupt traceback
+    main = threading.current_thread() is threading.main_thread()
+    old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+    try:
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                               dashboard_address=None, silence_logs=logging.ERROR)
+    finally:
+        if main:
+            signal.signal(signal.SIGINT, old)
     return Client(cluster), cluster
 
 
