@@ -15,9 +15,11 @@ Jacobi equation c̈ + K c = 0 (eq 20 with the curvature operator of J'' + R(J, u
 Eq (21) as printed lacks the minus sign: with it the N = 3 result matches eq (22),
 which is negative.  Dividing by |u|² makes K independent of the speed.
 
-Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ = R_abcd p_i^a p_0^b p_j^c p_0^d from the
-generated Riemann tensor (``charts.geometry.kernels``) in the best-
-conditioned chart, evaluated at the same points and frames.
+Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ at the same points and frames: for the N
+with generated kernels R_abcd p_i^a p_0^b p_j^c p_0^d from the generated Riemann tensor in
+the best-conditioned chart; for the others (``charts.geometry.kernels.source``) the Gauss
+equation of the hypersurface in ambient form, [h(p_i,p_j)h(p_0,p_0) − h(p_i,p_0)h(p_j,p_0)] / |∇F|²
+(``charts.geometry.structured.gauss_frame_curvature``, O(N k²) instead of O(N⁴)).
 
 For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 (`gaussian_curvature_eq22`).
@@ -30,15 +32,17 @@ from math import sqrt
 import numpy as np
 from numba import njit
 
+from ..archive import Archivable, attributes, dataset
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
 from ..geometry.checks import finite_array
-from ..geometry.kernels import compiled
+from ..geometry.kernels import geometry, source
+from ..geometry.structured import gauss_frame_curvature
 from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of)
 
@@ -146,10 +150,11 @@ def numerical_curvature(y, Xj, P, minv, m, dt, uu, K):
 
 
 @njit(cache=True)
-def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, project_every,
-                      Ka, Ys, Ps):
+def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth, w,
+                      project_every, Ka, Ys, Ps):
     """Advance the tangent flow Z = [y; X] ``sample_steps`` steps at a time (re-orthonormalised
-    every step) and at each sample store y, the frame and the route-(a) matrix.
+    every ``reorth`` steps, a divisor of ``sample_steps``) and at each sample store y, the
+    frame and the route-(a) matrix.
     Returns (status, samples done)."""
     n = Z.shape[1] // 2
     k = Z.shape[0] - 1
@@ -159,8 +164,8 @@ def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, proje
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     for smp in range(Ka.shape[0]):
-        status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, 1, w,
-                                      True, project_every, logs, 0, 0, none, no_events, none)
+        status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth,
+                                      w, True, project_every, logs, 0, 0, none, no_events, none)
         if status != RUNNING:
             return status, smp
         y = Z[0]
@@ -173,19 +178,21 @@ def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, w, proje
 
 def exact_curvature_matrix(system, theta, P):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frame P,
-    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart.
-    Returns shape (k, k)."""
+    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart, or
+    by the Gauss equation where N has no generated kernels.  Returns shape (k, k)."""
+    if source(system.n) == "structured":
+        return gauss_frame_curvature(theta, P, system.masses, np.empty((P.shape[0] - 1,) * 2))
     k = system.best_chart(theta)
     idx = chart_coordinates(system.n, k)
     q = np.ascontiguousarray(theta[idx])
-    R = compiled(system.n).riemann(q, local_masses(system.masses, k), np.empty((system.dim,) * 4))
+    R = geometry(system.n).riemann(q, local_masses(system.masses, k), np.empty((system.dim,) * 4))
     Q = P[:, idx]
     Rp = np.einsum("abcd,b,d->ac", R, Q[0], Q[0])  # R_abcd p_i^a p0^b p_j^c p0^d
     return Q[1:] @ Rp @ Q[1:].T
 
 
 @dataclass
-class CurvatureResult:
+class CurvatureResult(Archivable):
     """Curvature along a trajectory.
 
     t : (S,) sample times; theta, u : (S, N) states; frames : (S, N−1, N) the
@@ -216,6 +223,34 @@ class CurvatureResult:
     def fraction_positive(self, route="numerical"):
         """Fraction of positive values of each K_ii, shape (N−2,)."""
         return (self.diagonal(route) > 0).mean(axis=0)
+
+    KIND = "curvature"
+
+    def to_xarray(self):
+        """Dataset: theta, u (t, rotor); frames (t, frame, rotor); K_numeric[, K_exact]
+        (t, direction, direction2); the settings as attributes."""
+        dims = ("t", "direction", "direction2")
+        data = {"theta": (("t", "rotor"), self.theta, "rad"),
+                "u": (("t", "rotor"), self.u, "rad / time"),
+                "frames": (("t", "frame", "rotor"), self.frames, "rad", "M-orthonormal frame"),
+                "K_numeric": (dims, self.K_numeric, "1 / rad²", "route (a), eqs (19)–(21)")}
+        if self.K_exact is not None:
+            data["K_exact"] = (dims, self.K_exact, "1 / rad²", "route (b), Riemann tensor")
+        return dataset(self.KIND, data, attrs={"params": self.params},
+                       coords={"t": (("t",), self.t, "time")})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(t=ds["t"].values, theta=ds["theta"].values, u=ds["u"].values,
+                   frames=ds["frames"].values, K_numeric=ds["K_numeric"].values,
+                   K_exact=ds["K_exact"].values if "K_exact" in ds else None,
+                   params=attributes(ds)["params"])
+
+    def plot(self, route="numerical", ax=None, **kw):
+        """Histograms of K_ii (tails beyond robust quantiles clipped, the clipped share
+        stated); ``(fig, axes)`` (``charts.plotting.plot_curvature``)."""
+        from ..plotting import plot_curvature
+        return plot_curvature({route: self.diagonal(route)}, axes=ax, **kw)
 
 
 def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.1,
@@ -259,8 +294,9 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
         raise ValueError(f"exact must be True or False, got {exact!r}")
     theta0, u0 = start_state(system, theta0, u0, dt)
     k = n - 2
+    reorth = reorth_steps(dt, sample, transient)  # orthonormal (and in T_r) at every sample
     flow = TangentFlow(system, theta0, u0, k, dt=dt, inner="theta", restricted=True,
-                       reorth_every=1, project_every=project, seed=seed)
+                       reorth_every=reorth, project_every=project, seed=seed)
     rep = progress_reporter(progress, (transient + total) * dt, f"curvature N={n}")
     where = "curvature_along_trajectory (ambient RK4)"
     flow.advance(transient, where=where)
@@ -271,8 +307,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
         status, done = _sample_curvature(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                                         flow.speed, dt, sample, flow.w, project, Ka[a:b],
-                                         Ys[a:b], Ps[a:b])
+                                         flow.speed, dt, sample, reorth, flow.w, project,
+                                         Ka[a:b], Ys[a:b], Ps[a:b])
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, where)
         rep.update((b - a) * sample * dt)

@@ -1,54 +1,77 @@
 """The intrinsic equations in a chart: the geodesic equation (14) and parallel transport
-(16), with Γ from the generated kernels (``charts.geometry.kernels``).
+(16), with Γ from the chart kernels of ``charts.geometry.kernels.geometry`` (generated for the
+shipped N, structured otherwise).
 
 Chart k's state is y = (q, v, p¹, …, pᵏ), shape ((2 + k)·(N − 1),):
 
     q̇ᵃ = vᵃ,   v̇ᵃ = −Γᵃ_bc vᵇ vᶜ   (eq 14),   ṗᵃ = −Γᵃ_bc vᵇ pᶜ   (eq 16)
 
-Chart k is the canonical generated chart with θₖ moved last (``charts.geometry.atlas``), so
-one compiled function per N serves every chart: the local masses in ``par[1:1+N]`` select it.
+Chart k is the canonical chart with θₖ moved last (``charts.geometry.atlas``), so one
+compiled function per N (per kernel source) serves every chart: the local masses in
+``par[1:1+N]`` select it.  The equations are written once, in `rates`, which takes the two
+kernel functions as arguments; the structured kernels need no N, so their right-hand side
+(`structured_rates`) is one function for every N, compiled once and cached on disk.
 """
 from __future__ import annotations
 
 import math
 from functools import cache
 
-from ..geometry.kernels import compiled
+from numba import njit
 
-__all__ = ["chart_rates"]
+from ..geometry import structured
+from ..geometry.kernels import geometry, source
+
+__all__ = ["rates", "chart_rates", "structured_rates"]
+
+
+@njit(cache=True, inline="always")
+def rates(y, par, dy, ga, tr):
+    """Eqs (14) + (16) at y into dy with the kernels ``ga`` (geodesic_acceleration) and ``tr``
+    (transport_rate) of the chart whose local masses are ``par[1:1+N]``, N = ``par[0]``.
+    Returns S = Σ sin²θ, or −1 outside the chart (|Σ cos q| >= 1)."""
+    n = int(par[0])
+    d = n - 1
+    nv = (y.size - 2 * d) // d
+    C = 0.0
+    S = 0.0
+    for a in range(d):
+        C += math.cos(y[a])
+        S += math.sin(y[a]) ** 2
+    s2 = 1.0 - C * C
+    if s2 <= 0.0:
+        for i in range(y.size):
+            dy[i] = 0.0
+        return -1.0
+    m = par[1:1 + n]
+    q = y[:d]
+    v = y[d:2 * d]
+    ga(q, v, m, dy[d:2 * d])
+    for a in range(d):
+        dy[a] = y[d + a]
+    for r in range(nv):
+        o = (2 + r) * d
+        tr(q, v, y[o:o + d], m, dy[o:o + d])
+    return S + s2
+
+
+def structured_rates(y, par, dy):
+    """`rates` with the structured kernels: any N, one compilation (the caller's signature)."""
+    return rates(y, par, dy, structured.geodesic_acceleration, structured.transport_rate)
 
 
 @cache
 def chart_rates(n: int):
     """The right-hand side ``rhs(y, par, dy) -> health`` of eqs (14) + (16) for N = ``n``
     (any chart: the local masses in ``par[1:1+N]`` select it), to be compiled by the caller
-    with its signature.  Returns S = Σ sin²θ, or −1 outside the chart."""
-    kern = compiled(n)
+    with its signature: `structured_rates` unless N's kernels are generated."""
+    if source(n) == "structured":
+        return structured_rates
+    kern = geometry(n)
     ga = kern.geodesic_acceleration
     tr = kern.transport_rate
-    d = n - 1
 
     def rhs(y, par, dy):
-        nv = (y.size - 2 * d) // d
-        C = 0.0
-        S = 0.0
-        for a in range(d):
-            C += math.cos(y[a])
-            S += math.sin(y[a]) ** 2
-        s2 = 1.0 - C * C
-        if s2 <= 0.0:
-            for i in range(y.size):
-                dy[i] = 0.0
-            return -1.0
-        m = par[1:1 + n]
-        q = y[:d]
-        v = y[d:2 * d]
-        ga(q, v, m, dy[d:2 * d])
-        for a in range(d):
-            dy[a] = y[d + a]
-        for r in range(nv):
-            o = (2 + r) * d
-            tr(q, v, y[o:o + d], m, dy[o:o + d])
-        return S + s2
+        return rates(y, par, dy, ga, tr)
 
     return rhs

@@ -1,12 +1,17 @@
-"""Access to the generated chart kernels of one N, plain and numba-compiled.
+"""Access to the chart kernels of one N: generated (SymPy) or structured, plain and compiled.
 
 ``chart_module(n)`` imports ``charts.generated.rotor_n{n}`` (shipped for N = 3..6)
-or, for other N, derives it on demand through ``charts.codegen.cache``.
+or, for 7 <= N <= ``MAX_N``, derives it on demand through ``charts.codegen.cache``.
 ``compiled(n)`` returns the same functions compiled with ``numba.njit(cache=True)``.
+``geometry(n)`` is what the library uses: the compiled generated functions for the shipped
+N (``GENERATED_N``), the structured ones (``charts.geometry.structured``, one compilation
+for every N, any N >= 3) otherwise; both take the same arguments and agree to rounding
+(tests/test_structured.py).
 """
 from __future__ import annotations
 
 import importlib
+import numbers
 from functools import cache
 from types import SimpleNamespace
 
@@ -14,9 +19,20 @@ import numba
 
 from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 
-__all__ = ["chart_module", "compiled"]
+__all__ = ["chart_module", "compiled", "geometry", "source", "GENERATED_N", "MAX_N"]
 
+#: Largest N whose generated module can be derived on demand (tests compare it with the
+#: structured kernels; ``RotorSystem`` no longer needs it).
 MAX_N = 10
+#: N served by the generated code in ``geometry``: the shipped modules, compiled once and
+#: cached like the structured kernels.  For N = 7..10 the derivation (SymPy) and compilation of
+#: the generated module take 30–120 s in every process, the structured kernels none.
+GENERATED_N = SHIPPED_N
+
+
+def source(n: int) -> str:
+    """'generated' or 'structured': where ``geometry(n)`` takes its functions from."""
+    return "generated" if n in GENERATED_N else "structured"
 
 
 @cache
@@ -56,3 +72,16 @@ def compiled(n: int) -> SimpleNamespace:
         jit = name in KERNEL_FUNCTIONS or _lines(fn) <= JIT_MAX_LINES
         out[name] = numba.njit(cache=True)(fn) if jit else fn
     return SimpleNamespace(**out)
+
+
+@cache
+def geometry(n: int) -> SimpleNamespace:
+    """The compiled chart functions used for N rotors (see ``source``), with the names of
+    ``charts.codegen.names.GENERATED_FUNCTIONS`` and the arguments of the generated ones."""
+    if isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 3:
+        raise ValueError(f"n must be an integer >= 3, got {n!r}")
+    if source(int(n)) == "generated":
+        return compiled(n)
+    from . import structured
+
+    return SimpleNamespace(**{name: getattr(structured, name) for name in structured.FUNCTIONS})

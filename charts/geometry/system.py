@@ -11,8 +11,9 @@ import numpy as np
 
 from .atlas import chart_coordinates, local_masses
 from .checks import finite_array, integer, number
-from .kernels import chart_module
+from .kernels import geometry
 from .projection import project_constraint, tangent_part
+from .structured import gauss_sectional
 
 __all__ = ["RotorSystem", "TOL"]
 
@@ -20,6 +21,9 @@ __all__ = ["RotorSystem", "TOL"]
 #: the integrators satisfy the constraint to ~1e-13; 1e-8 accepts user input rounded
 #: to ~8 digits and rejects anything visibly off the manifold.
 TOL = {"constraint": 1e-8, "tangency": 1e-8, "chart_domain": 1e-10}
+#: Largest number of entries of an array returned by ``christoffel`` / ``riemann`` (1 GiB of
+#: floats): the Riemann array of N = 64 has 63⁴ ≈ 1.6e7 entries, that of N = 256 4.2e9.
+MAX_ENTRIES = 2 ** 27
 
 
 def plane_area2(vv, ww, vw) -> float:
@@ -54,7 +58,7 @@ class RotorSystem:
         self.masses = masses
         self.minv = 1.0 / masses
         self.dim = self.n - 1
-        self._gen = chart_module(self.n)
+        self._gen = geometry(self.n)  # generated for the shipped N, structured otherwise
 
     def __repr__(self):
         return f"RotorSystem(n={self.n}, masses={self.masses.tolist()})"
@@ -182,30 +186,55 @@ class RotorSystem:
         _, _, q, m = self._chart(theta, chart)
         return self._gen.metric_inverse(q, m, np.empty((self.dim, self.dim)))
 
+    def _array(self, name, rank):
+        if self.dim ** rank > MAX_ENTRIES:
+            raise ValueError(f"the {name} array of N={self.n} has {self.dim}^{rank} entries (more than "
+                             f"{MAX_ENTRIES}); use the contractions (christoffel_contract, "
+                             f"curvature_operator, sectional_curvature) instead")
+        return np.empty((self.dim,) * rank)
+
     def christoffel(self, theta, chart=None):
         """Γ^a_bc (eq 15), upper index first, shape (n−1,)*3."""
         _, _, q, m = self._chart(theta, chart)
-        return self._gen.christoffel(q, m, np.empty((self.dim,) * 3))
+        return self._gen.christoffel(q, m, self._array("Christoffel", 3))
+
+    def christoffel_contract(self, theta, v, w, chart=None):
+        """Γ^a_bc v^b w^c (eqs 14, 16) for ambient tangent vectors v, w, without the N³ array
+        (O(N) for the structured kernels); local components of ``chart``, shape (n−1,)."""
+        k, idx, q, m = self._chart(theta, chart)
+        v = self.check_tangent(theta, v, "v")
+        w = self.check_tangent(theta, w, "w")
+        return -self._gen.transport_rate(q, v[idx], w[idx], m, np.empty(self.dim))
 
     def riemann(self, theta, chart=None):
         """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩, all indices down, shape (n−1,)*4.
 
         Sectional curvature: K(X, Y) = R_abcd X^a Y^b X^c Y^d / (|X|²|Y|² − ⟨X,Y⟩²)."""
         _, _, q, m = self._chart(theta, chart)
-        return self._gen.riemann(q, m, np.empty((self.dim,) * 4))
+        return self._gen.riemann(q, m, self._array("Riemann", 4))
+
+    def curvature_operator(self, theta, x, y, chart=None):
+        """(R(x, y) y)^a in ``chart`` for ambient tangent vectors x, y (the Jacobi operator,
+        J'' + R(J, v) v = 0), shape (n−1,)."""
+        k, idx, q, m = self._chart(theta, chart)
+        x = self.check_tangent(theta, x, "x")
+        y = self.check_tangent(theta, y, "y")
+        return self._gen.curvature_operator(q, x[idx], y[idx], m, np.empty(self.dim))
 
     def sectional_curvature(self, theta, v, w, chart=None):
-        """Exact sectional curvature of the plane spanned by ambient tangent vectors v, w
-        at theta, from the generated Riemann tensor in the best-conditioned chart."""
+        """Exact sectional curvature of the plane spanned by ambient tangent vectors v, w at
+        theta: ⟨R(x, y)y, x⟩ / (|x|²|y|² − ⟨x,y⟩²) from the curvature operator of ``chart``
+        (default: best conditioned; generated or structured, see ``kernels``), O(N) when
+        structured (the ambient inner product is the chart's metric)."""
         theta = self.check_point(theta)
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")
         k, idx, q, m = self._chart(theta, chart)
-        x, y = v[idx], w[idx]
-        g = self._gen.metric(q, m, np.empty((self.dim, self.dim)))
-        R = self._gen.riemann(q, m, np.empty((self.dim,) * 4))
-        area2 = plane_area2(x @ g @ x, y @ g @ y, x @ g @ y)
-        return float(np.einsum("abcd,a,b,c,d->", R, x, y, x, y) / area2)
+        ip = lambda a, b: self.inner(theta, a, b)
+        area2 = plane_area2(ip(v, v), ip(w, w), ip(v, w))
+        r = self._gen.curvature_operator(q, v[idx], w[idx], m, np.empty(self.dim))
+        r = np.insert(r, k, self._gen.eliminated_component(q, r, np.sin(theta[k])))
+        return float(ip(v, r) / area2)
 
     def sectional_curvature_gauss(self, theta, v, w):
         """Sectional curvature by the Gauss equation of the hypersurface F = Σcos θ = 0 in
@@ -214,9 +243,6 @@ class RotorSystem:
         theta = self.check_point(theta)
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")
-        c = np.cos(theta)
-        h = lambda a, b: -np.sum(c * a * b)
-        grad2 = np.sum(np.sin(theta) ** 2 * self.minv)
-        ip = lambda a, b: self.inner(theta, a, b)
-        area2 = plane_area2(ip(v, v), ip(w, w), ip(v, w))
-        return float((h(v, v) * h(w, w) - h(v, w) ** 2) / (grad2 * area2))
+        plane_area2(self.inner(theta, v, v), self.inner(theta, w, w), self.inner(theta, v, w))
+        K, _ = gauss_sectional(theta, v, w, self.masses)
+        return float(K)

@@ -6,10 +6,8 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..analyses.arguments import GRID_RTOL
-from ..geometry.kernels import MAX_N
 
-__all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "MAX_N",
-           "GRID_RTOL"]
+__all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL"]
 
 
 class SceneError(ValueError):
@@ -49,8 +47,8 @@ TOP_KEYS = {
 
 SCHEMA: dict[str, dict[str, Key]] = {
     "system": {
-        "n": Key("int", None, "Number of rotors N (3..10; the manifold has dimension N−1).",
-                 check=_between(3, MAX_N), required=True),
+        "n": Key("int", None, "Number of rotors N (>= 3; the manifold has dimension N−1).",
+                 check=_ge(3), required=True),
         "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
                       "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
                       else "a list of numbers, each > 0"),
@@ -143,6 +141,21 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "sample_every": Key("float", 0.1, "Simulated time between angle samples; a multiple "
                             "of dt.", check=_gt(0)),
     },
+    "clv": {
+        "variant": Key("str", "both", "Covariant Lyapunov vectors (Ginelli's method) in "
+                       "\"full\": the 2N-dimensional tangent space; \"restricted\": the "
+                       "constraint-preserving subspace; or \"both\".",
+                       choices=("full", "restricted", "both")),
+        "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2, at "
+                         "most N−2).", check=_ge(1)),
+        "sample_every": Key("float", 0.1, "Simulated time between samples, which are also the "
+                            "re-orthonormalisations giving the R factors; a multiple of dt.",
+                            check=_gt(0)),
+        "windows": Key("floats", None, "Window lengths of the finite-time exponents and of the "
+                       "domination test (default [1.0, 10.0]); multiples of sample_every.",
+                       check=lambda v: None if v and all(x > 0 for x in v)
+                       else "a non-empty list of numbers, each > 0"),
+    },
     "switches": {},
     "drift": {
         "sample_every": Key("float", 1.0, "Simulated time between recorded invariant values; "
@@ -151,4 +164,4 @@ EFFECTS: dict[str, dict[str, Key]] = {
 }
 
 #: Effects that need tangent vectors (variational eq 17), integrated with ambient RK4.
-TANGENT_EFFECTS = ("lyapunov", "curvature", "angles")
+TANGENT_EFFECTS = ("lyapunov", "curvature", "angles", "clv")

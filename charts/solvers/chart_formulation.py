@@ -6,9 +6,9 @@ branches).  State ``y = (q, v, p¹, …, pᵏ)``, shape ((1 + 1 + k)·(N − 1),
 
     q̇ᵃ = vᵃ,   v̇ᵃ = −Γᵃ_bc vᵇ vᶜ   (eq 14),   ṗᵃ = −Γᵃ_bc vᵇ pᶜ   (eq 16)
 
-with Γ from the generated kernels ``charts.generated.rotor_nN`` (canonical chart; chart k
-is the canonical one after moving θₖ last, which is why the local masses are
-``(m without mₖ, mₖ)``).
+with Γ from the chart kernels (``charts.flows.chart``: generated for the shipped N, structured
+otherwise; canonical chart; chart k is the canonical one after moving θₖ last, which is why
+the local masses are ``(m without mₖ, mₖ)``).
 
 Switching (:func:`leave_chart`): after every accepted step the chart is left when
 |sin θₖ| < τ · maxᵢ |sin θᵢ| for the chart with the largest |sin θᵢ| (ties: lowest index).
@@ -32,7 +32,7 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from ..flows.chart import chart_rates
+from ..flows.chart import chart_rates, structured_rates
 from ..geometry.atlas import ambient_index, eliminated_component, local_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
@@ -188,8 +188,17 @@ def _cap(y, par, ipar):
 
 @cache
 def chart_rhs(n: int):
-    """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop."""
-    return njit(RHS_SIG)(chart_rates(n))
+    """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop: the
+    structured right-hand side once for every N (cached on disk), a generated one per N."""
+    rates = chart_rates(n)
+    if rates is structured_rates:
+        return _structured_rhs()
+    return njit(RHS_SIG)(rates)
+
+
+@cache
+def _structured_rhs():
+    return njit(RHS_SIG, cache=True)(structured_rates)
 
 
 @cache

@@ -20,7 +20,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 """
 from __future__ import annotations
 
-from math import ceil, cos, isfinite, log, sin, sqrt
+from math import ceil, cos, gcd, isfinite, log, sin, sqrt
 
 import numpy as np
 from numba import njit
@@ -31,7 +31,13 @@ from ..geometry.projection import project_state, project_tangent, project_tangen
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
-__all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos"]
+__all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos",
+           "reorth_steps", "REORTH_TIME"]
+
+#: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
+#: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
+#: step, so every step would dominate for large k (N = 64, k = 62: 4.8× the cost per time unit).
+REORTH_TIME = 0.1
 
 #: |δ| up to which sin/cos(θ + δ) (RK4 stages 2–4, and the new θ from the old) come from the
 #: angle-addition formula with the Taylor polynomials below instead of libm (beyond it:
@@ -237,6 +243,19 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
                 for j in range(nrec):
                     states[row, j] = Zf[j]
     return RUNNING, nsteps
+
+
+def reorth_steps(dt, *multiples) -> int:
+    """Steps between re-orthonormalisations: the largest count <= REORTH_TIME/dt (at least 1)
+    that divides every one of ``multiples`` (step counts; zeros are ignored), so that the
+    vectors are orthonormal at every step that is a multiple of them (the sample points)."""
+    g = 0
+    for m in multiples:
+        g = gcd(g, int(m))
+    target = max(1, int(round(REORTH_TIME / dt)))
+    if g == 0:
+        return target
+    return max(r for r in range(1, min(target, g) + 1) if g % r == 0)
 
 
 def inner_weights(system, inner):

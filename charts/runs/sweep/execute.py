@@ -12,18 +12,17 @@ import uuid
 from pathlib import Path
 
 from ...analyses.arguments import positive_int
-from ...codegen.names import SHIPPED_N
-from ...geometry.kernels import chart_module
 from ..io import atomic_text
 from ..outdir import OutputLock, prepare_output
-from .points import sweep_points
+from ..scene import scene_to_dict
+from .points import digest, sweep_points
 from .report import SUMMARY, plot_sweep, summarize, write_summary
 from .spec import Sweep, SweepError
 from .table import (TABLE, TableAppender, finish_table, point_columns, point_row,
                     prepare_table)
 from .worker import evaluate_point
 
-__all__ = ["run_sweep", "dask_client", "check_scheduler_address", "META",
+__all__ = ["run_sweep", "dask_client", "same_scene_groups", "check_scheduler_address", "META",
            "SCHEDULER_TIMEOUT_S"]
 
 META = "sweep.json"
@@ -95,9 +94,6 @@ def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
     atomic_text(outdir / META, json.dumps(meta, indent=2, default=str) + "\n")
     info = {"points": len(points), "skipped": len(done), "computed": [], "failed": [],
             "lost": [], "run_id": run_id, "table": str(outdir / TABLE)}
-    for n in sorted({p.scene.system["n"] for p in todo} - set(SHIPPED_N)):
-        chart_module(n)     # derive a non-shipped N once, here (cost on stderr): local
-                            # workers then read it from the on-disk cache
     if todo:
         _compute(sweep, todo, len(points), len(done), columns, outdir, info, scheduler,
                  workers, quiet, on_point)
@@ -108,6 +104,18 @@ def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
         info["summary"] = str(outdir / SUMMARY)
         info["figures"] = plot_sweep(summary, outdir / "figures", sweep.name) if plots else []
     return info
+
+
+def same_scene_groups(points) -> list[list]:
+    """The points grouped by identical scene (everything but name and description; the
+    seed is part of the scene), in first-seen order: two families that meet (e.g. equal
+    masses in both) keep a row each but are computed once."""
+    groups = {}
+    for p in points:
+        d = scene_to_dict(p.scene)
+        key = digest({k: v for k, v in d.items() if k not in ("name", "description")})
+        groups.setdefault(key, []).append(p)
+    return list(groups.values())
 
 
 def dask_client(scheduler, workers):
@@ -160,30 +168,32 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
             where = scheduler or f"a local cluster of {nw} workers"
             bar.write(f"{sweep.name}: {total} points ({n_done} finished before, {len(todo)} to "
                       f"compute) on {where}")
-        for p in todo:
-            fut = client.submit(evaluate_point, p.raw, key=f"charts-sweep-{p.point_id}",
-                                pure=False)
-            futures[fut] = p
+        for group in same_scene_groups(todo):    # identical scenes are computed once
+            fut = client.submit(evaluate_point, group[0].raw,
+                                key=f"charts-sweep-{group[0].point_id}", pure=False)
+            futures[fut] = group
         for fut in as_completed(list(futures)):
-            p = futures[fut]
+            group = futures[fut]
             try:
                 out = fut.result()
             except Exception as exc:        # the worker died or could not run it
-                info["lost"].append((p.index, f"{type(exc).__name__}: {exc}"))
-                bar.update(1)
+                info["lost"] += [(p.index, f"{type(exc).__name__}: {exc}") for p in group]
+                bar.update(len(group))
                 continue
-            app.add(point_row(p, out, columns),
-                    {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
-                     "status": out["status"], "wall_s": out["wall_s"], "worker": out["worker"],
-                     "finished": time.strftime("%Y-%m-%dT%H:%M:%S")})
-            info["computed"].append(p.point_id)
-            if out["status"] != "complete":
-                info["failed"].append((p.index, out["error"]))
-            bar.update(1)
+            for p in group:
+                app.add(point_row(p, out, columns),
+                        {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
+                         "status": out["status"], "wall_s": out["wall_s"],
+                         "worker": out["worker"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
+                         **({"same_scene_as": group[0].index} if p is not group[0] else {})})
+                info["computed"].append(p.point_id)
+                if out["status"] != "complete":
+                    info["failed"].append((p.index, out["error"]))
+                bar.update(1)
+                if on_point is not None:
+                    on_point(n_done + len(info["computed"]), total)
             lead = out["stats"].get("lambda_1")
-            bar.set_postfix_str(f"#{p.index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
-            if on_point is not None:
-                on_point(n_done + len(info["computed"]), total)
+            bar.set_postfix_str(f"#{group[0].index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
     except BaseException:
         client.cancel(list(futures))
         raise

@@ -62,11 +62,13 @@ def sweep_points(sweep: Sweep) -> list[SweepPoint]:
 
 def point_scene(sweep: Sweep, params: dict) -> dict:
     """The base scene (a deep copy) with the parameters of one point applied: ``n`` and
-    ``speed`` to [system], dotted keys to their table, the mass pattern evaluated, the seed
+    ``speed`` to [system] (a string speed is an expression in n), dotted keys to their table, the mass pattern evaluated, the seed
     to [initial]."""
     raw = json.loads(json.dumps(sweep.base))          # deep copy, TOML types only
     system = raw.setdefault("system", {})
     for key, val in params.items():
+        if key == "speed" and isinstance(val, str):  # a normalisation in n, e.g. "n ** 0.5"
+            val = float(evaluate_expression(val, {"n": params.get("n", system.get("n"))}))
         if key in SYSTEM_AXES:
             system[SYSTEM_AXES[key]] = val
         elif "." in key:

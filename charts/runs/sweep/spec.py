@@ -108,6 +108,11 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
                          "[sweep] seeds and the [sweep.masses] patterns")
     for name, vals in axes.items():
         _check_axis(f"{source}: [sweep.parameters] {name}", name, vals, mode)
+    for v in axes.get("speed", []) if isinstance(axes.get("speed"), list) else []:
+        if isinstance(v, str) and not _speed_expression(v):
+            raise SweepError(f"{source}: [sweep.parameters] speed = {v!r}: a speed given as a "
+                             "string must be an arithmetic expression in n (e.g. \"n ** 0.5\": "
+                             "kinetic energy ½ per rotor of unit mass)")
     symbols = {k for k in axes if "." not in k and k not in SYSTEM_AXES}
     unused = symbols - _pattern_symbols(source, masses, symbols)
     if unused:
@@ -117,6 +122,13 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     return Sweep(name=data.get("name", default_name), description=data.get("description", ""),
                  base=base, mode=mode, seeds=tuple(seeds), axes=dict(axes), masses=dict(masses),
                  n_points=n_points or 0, sample_seed=sample_seed, source=source, data=data)
+
+
+def _speed_expression(v: str) -> bool:
+    try:
+        return expression_symbols(v) <= {"n"}
+    except ExpressionError:
+        return False
 
 
 def _unknown(source, section, key, allowed):
