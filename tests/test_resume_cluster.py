@@ -125,7 +125,7 @@ def test_a_resume_into_another_sweeps_folder_refuses(tmp_path):
 def test_reproduce_reuses_finished_pieces_and_only_those(tmp_path, capsys):
     from charts.runs import reproduce as rp
 
-    cfg = dict(lyap_members=1, lyap_t=20.0, lyap_batches=2, angle_members=1, angle_t=10.0,
+    cfg = dict(lyap_members=1, lyap_t=20.0, lyap_batches=2, angle_members=1, angle_t=150.0,
                curv_t=5.0, wave_t=800.0, angle_transient=2.0)
     pieces = tmp_path / "pieces"
     pieces.mkdir()

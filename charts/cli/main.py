@@ -68,6 +68,7 @@ def _fail(msg: str) -> int:
 
 # ------------------------------------------------------------------------------- run
 def _cmd_run(args) -> int:
+    from ..runs.outdir import LOCK, check_output
     from ..runs.runner import RunError, run_scene
     from ..runs.scene import SceneError, load_scene
 
@@ -75,7 +76,9 @@ def _cmd_run(args) -> int:
     out = Path(args.output)
     if args.force and args.resume:
         return _fail("--force and --resume exclude each other (--force starts over)")
-    if not args.resume and not args.force and out.is_dir() and any(out.iterdir()):
+    check_output(out)                    # a file, under a file, too long: refused, nothing made
+    if not args.resume and not args.force and out.is_dir() and any(
+            p.name != LOCK for p in out.iterdir()):
         return _fail(f"{out} is not empty: use --force to overwrite its results, --resume to "
                      "continue an interrupted run there, or choose another output folder")
     try:

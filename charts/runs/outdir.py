@@ -22,7 +22,7 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["OutputError", "prepare_output", "OutputLock", "LOCK"]
+__all__ = ["OutputError", "prepare_output", "check_output", "OutputLock", "LOCK"]
 
 LOCK = ".charts.lock"
 #: A lock file still empty after this many seconds is the trace of a writer killed between
@@ -55,7 +55,24 @@ def _short(path: Path) -> str:
 
 
 def prepare_output(path, what: str = "-o") -> Path:
-    """Check ``path`` as an output folder and create it; :class:`OutputError` if unusable."""
+    """Check ``path`` as an output folder (:func:`check_output`) and create it;
+    :class:`OutputError` if unusable."""
+    path = check_output(path, what)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        probe = path / f".charts-write-probe-{os.getpid()}"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        raise OutputError(f"{what} {_short(path)}: cannot create or write the folder ({reason}); "
+                          "choose a writable place") from None
+    return path
+
+
+def check_output(path, what: str = "-o") -> Path:
+    """Refuse (:class:`OutputError`) an output folder that is a file, lies under a file, or
+    whose name or path is too long; creates nothing."""
     path = Path(path)
     limit = _name_max(Path(path.anchor or "."))
     for name in path.parts:
@@ -75,15 +92,6 @@ def prepare_output(path, what: str = "-o") -> Path:
     if not anchor.is_dir():
         raise OutputError(f"{what} {path}: {anchor} is a file, so no folder can be created "
                           "under it; choose another place")
-    try:
-        path.mkdir(parents=True, exist_ok=True)
-        probe = path / f".charts-write-probe-{os.getpid()}"
-        probe.write_bytes(b"")
-        probe.unlink()
-    except OSError as exc:
-        reason = exc.strerror or str(exc)
-        raise OutputError(f"{what} {_short(path)}: cannot create or write the folder ({reason}); "
-                          "choose a writable place") from None
     return path
 
 
