@@ -53,9 +53,12 @@ def finite_array(name, x, shape=None, ndim=None) -> np.ndarray:
     """``x`` as a float array of the given ``shape`` (a tuple; None entries are free) or
     ``ndim``, every entry finite; ValueError naming ``name`` otherwise."""
     try:
+        raw = np.asarray(x)
+        if raw.dtype.kind == "c":                 # never drop an imaginary part silently
+            raise TypeError
         a = np.asarray(x, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of numbers, got {_show(x)}") from None
+        raise ValueError(f"{name} must be an array of real numbers, got {_show(x)}") from None
     if ndim is not None and a.ndim != ndim:
         raise ValueError(f"{name} must be a {ndim}-D array, got shape {a.shape}")
     if shape is not None and (a.ndim != len(shape) or any(

@@ -4,6 +4,7 @@ and the figures."""
 from __future__ import annotations
 
 import json
+import logging
 import os
 import signal
 import threading
@@ -121,7 +122,6 @@ def same_scene_groups(points) -> list[list]:
 def dask_client(scheduler, workers):
     """``(client, cluster)``: a client of the cluster at ``scheduler`` (cluster None), or of
     a new LocalCluster of ``workers`` single-threaded processes (default: every core)."""
-    import logging
 
     from dask.distributed import Client, LocalCluster
 
@@ -194,7 +194,11 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
                     on_point(n_done + len(info["computed"]), total)
             lead = out["stats"].get("lambda_1")
             bar.set_postfix_str(f"#{group[0].index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
-    except BaseException:
+    except BaseException as exc:
+        if isinstance(exc, KeyboardInterrupt):
+            # the teardown of an interrupted client logs its cancelled tasks' errors with
+            # tracebacks; the user is told what was kept and how to resume instead
+            logging.getLogger("distributed").setLevel(logging.CRITICAL)
         client.cancel(list(futures))
         raise
     finally:
