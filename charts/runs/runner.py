@@ -51,7 +51,8 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     """
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
-    system = RotorSystem(scene.system["n"], scene.system["masses"])
+    system = RotorSystem(scene.system["n"], scene.system["masses"], scene.system.get("weights"),
+                         scene.system.get("level", 0.0))
     plan = plan_scene(scene)
     st = RunState(scene, plan, system)
     ck = outdir / CHECKPOINT

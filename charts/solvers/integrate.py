@@ -236,7 +236,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     arow = np.zeros(na)
     log = np.zeros((_LOG_CAPACITY, 3))
     mon = np.zeros(3)
-    masses = system.masses.copy()
+    mpar = np.concatenate([system.masses, system.weights, [system.level]])
 
     ts, rows = [], []
     row0 = np.concatenate([theta0, u0, P.ravel()])  # the t = 0 sample is the input, exactly
@@ -278,7 +278,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     status_name = "finished"
     while True:
         status = D.drive(rhs, cap, post, to_amb, y, par, ipar, st, ist, te, T_out, Y_out, log,
-                         mon, masses, K, F, ytmp, ynew, arow)
+                         mon, mpar, K, F, ytmp, ynew, arow)
         drain()
         if status < 0:
             res = result(f"failed at t = {st[D.S_T]:.17g}")
@@ -300,7 +300,7 @@ def _make_result(system, t, Y, k, mon, switches, ist, status, formulation, metho
     theta = Y[:, :n]
     u = Y[:, n:2 * n]
     transported = Y[:, 2 * n:].reshape(-1, k, n) if k else None
-    F, G, E = invariants(theta, u, system.masses)
+    F, G, E = invariants(theta, u, system.masses, system.weights, system.level)
     drift = {
         "constraint": float(max(mon[0], np.max(np.abs(F), initial=0.0))),
         "tangency": float(max(mon[1], np.max(np.abs(G), initial=0.0))),
