@@ -12,6 +12,7 @@ import pytest
 from charts import RotorSystem, integrate
 from charts.runs import accuracy
 
+from figure_checks import check_axes, legend_off_data
 from scenarios import REFERENCE_EXPONENTS, REFERENCE_STDERR, TOL, eq8_rhs
 
 #: a preset small enough for the test suite, same structure as "quick"
@@ -37,6 +38,17 @@ def study(tmp_path_factory):
         mp.setitem(accuracy.PRESETS, "quick", TINY)
         assert accuracy.main(["--quick", "-o", str(out), "--n", "3", "-q"]) == 0
     return out, json.loads((out / "accuracy.json").read_text())
+
+
+def test_figure_panels_readable(study):
+    """Every panel: labels, visible tick labels, finite limits, the legend off the data."""
+    _, st = study
+    fig = accuracy.draw_figure(st)
+    assert len(fig.axes) == 3
+    for ax in fig.axes:
+        check_axes(ax)
+        assert ax.get_title()
+        assert ax.get_legend() is not None and legend_off_data(ax, ax.get_legend())
 
 
 def _points(study, name):

@@ -213,3 +213,21 @@ def test_tangent_run_through_a_singular_point_fails_clearly_not_nan(tmp_path, ca
     assert res["status"] == "failed"
     assert 0.5 <= res["progress"]["t_done"] < 1.1
     assert np.all(np.isfinite(res["results"]["lyapunov"]["exponents"]))
+
+
+def test_run_refuses_a_non_empty_folder_without_force(tmp_path, capsys):
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine")
+    assert main(["run", "fig2-n3", "-o", str(out), "--quiet"]) == 2
+    assert "is not empty: use --force" in capsys.readouterr().err
+    assert main(["run", "fig2-n3", "-o", str(out), "--quiet", "--force", "--resume"]) == 2
+    assert main(["run", "fig2-n3", "-o", str(out), "--quiet", "--force"]) == 0
+    assert (out / "result.json").exists() and (out / "notes.txt").exists()
+
+
+def test_sweep_prints_a_bundled_sweep(capsys):
+    assert main(["sweep", "--print", "masses-n4-quick"]) == 0
+    text = capsys.readouterr().out
+    assert "[sweep" in text and "masses" in text
+    assert main(["sweep", "--print", "no-such-sweep"]) == 2

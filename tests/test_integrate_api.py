@@ -30,7 +30,7 @@ TH3, U3 = SYS3.random_state(7)
     (dict(rtol=1e-17), "below"),
     (dict(atol=-1.0), "atol must be positive"),
     (dict(t_eval=[0.0, 2.0, 1.0]), "strictly increasing"),
-    (dict(t_eval=[0.0, 20.0]), r"t_eval must lie in \[0, t_final\]"),
+    (dict(t_eval=[0.0, 20.0]), r"t_eval must lie in t_span = \(0, 1\)"),
     (dict(t_eval=[]), "non-empty"),
     (dict(tau=1.0), "tau must be a number in"),
     (dict(chart=3), "chart must be None or an integer"),

@@ -15,6 +15,18 @@ def test_readme_python_example_runs():
     assert namespace["traj"].theta.shape[1] == 4
 
 
+def test_readme_notebook_example_runs(tmp_path, monkeypatch):
+    """The second example (events, dense output, plots, save/load) runs after the first."""
+    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
+    monkeypatch.chdir(tmp_path)
+    namespace = {}
+    exec(compile(blocks[0], "README.md", "exec"), namespace)
+    exec(compile(blocks[1], "README.md", "exec"), namespace)
+    res = namespace["res"]
+    assert len(res.t_events[0]) > 100 and res.sol(12.5).shape == (6,)
+    assert (tmp_path / "lyap.nc").exists()
+
+
 def test_every_package_folder_is_installed():
     """pyproject.toml lists packages explicitly (charts.generated lives in generated/): a new
     subpackage missing from the list would be absent from a non-editable install."""

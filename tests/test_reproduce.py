@@ -14,7 +14,7 @@ from charts.cli.main import main
 from scenarios import PAPER_EXPONENTS, REFERENCE_EXPONENTS, REFERENCE_STDERR, TOL
 
 PNG = b"\x89PNG\r\n\x1a\n"
-FIGURES = ("fig2.png", "fig3.png", "fig4.png", "fig5.png")
+FIGURES = ("fig2.png", "fig3.png", "fig4.png", "fig5.png", "clv.png", "ftle.png")
 
 
 def _png_image(path):
@@ -70,8 +70,17 @@ def test_reproduce_quick_end_to_end(tmp_path):
         assert ours == pytest.approx(lyap["exponents"][k - 1], abs=5e-5)
         assert se == pytest.approx(lyap["stderr"][k - 1], abs=5e-5)
     report = (out / "report.md").read_text()
-    for section in ("## Lyapunov exponents", "## Curvature", "## Hyperbolicity angles"):
+    for section in ("## Lyapunov exponents", "## Curvature", "## Hyperbolicity angles",
+                    "## Hyperbolicity by a second route"):
         assert section in report
+    # the two routes to the angles agree on the same samples (tests/test_covariant.py:
+    # median below 1e-9 restricted, 1e-6 full), and N = 3 stays away from 0 in both
+    for n in ("3", "4", "5"):
+        for variant, median in (("restricted", 1e-9), ("full", 1e-6)):
+            c = results["clv"][n][variant]
+            assert c["median_rel"] < median and c["max_rel"] < 1e-3, (n, variant, c)
+            assert c["clv"]["n"] == c["adjoint"]["n"] == 2 * 20000
+    assert min(results["clv"]["3"][v]["clv"]["min"] for v in ("full", "restricted")) > 0.15
     assert (out / "table.md").read_text().strip() in report
     # N = 3: curvature negative everywhere, the numerical route within 'five digits' of eq (22)
     c3 = results["curvature"]["3"]
@@ -136,3 +145,18 @@ def test_the_package_quotes_the_papers_exponents():
     from charts.runs.paper import PAPER_EXPONENTS as quoted
 
     assert {n: tuple(v) for n, v in quoted.items()} == PAPER_EXPONENTS
+
+
+def test_clv_figures_write_drawn_pngs(tmp_path):
+    """The second route's figures (charts.runs.reproduce_clv) on small synthetic data."""
+    from charts.runs import reproduce_clv as rc
+
+    rng = np.random.default_rng(1)
+    pairs = {n: {v: (a, a * (1 + 1e-9 * rng.normal(size=a.size)))
+                 for v in ("full", "restricted")
+                 for a in [rng.uniform(1e-3, 1.5, 500)]} for n in (3, 4)}
+    ftle = {n: {w: rng.normal(0.4, 0.2 / np.sqrt(w), int(1000 / w)) for w in rc.FTLE_WINDOWS}
+            for n in (3, 4)}
+    for fn, data, name in ((rc.figure_clv, pairs, "clv.png"), (rc.figure_ftle, ftle, "ftle.png")):
+        assert str(fn(data, tmp_path / name)) == str(tmp_path / name)
+        _assert_drawn(tmp_path / name)

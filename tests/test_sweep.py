@@ -196,3 +196,41 @@ def test_a_half_written_last_row_is_dropped_on_resume(tmp_path):
     assert (tmp_path / TABLE).read_text() == text
     with pytest.raises(SweepError, match="different columns"):
         prepare_table(tmp_path, cols[:-1], pts, True, "t.toml")
+
+
+def test_clv_columns_are_read_from_the_scene_result(tmp_path):
+    """A sweep point asking for the CLV effect gives one column per variant, angle statistic
+    and domination window, each filled from the run's result.json."""
+    from charts.runs.runner import run_scene
+    from charts.runs.scene import parse_scene
+    from charts.runs.sweep.statistics import result_statistics, stat_columns
+
+    sc = parse_scene({"system": {"n": 3}, "run": {"t_final": 10.0, "t_transient": 10.0},
+                      "effects": {"clv": {"windows": [0.5, 2.0]}}})
+    result = run_scene(sc, tmp_path / "p", quiet=True)
+    cols = stat_columns(sc)
+    assert "clv_split_full_0.5" in cols and "clv_phi_restricted_min" in cols
+    stats = result_statistics(result, None)
+    assert set(stats) == set(cols)
+    assert stats["clv_phi_restricted_min"] == result["results"]["clv"]["restricted"]["phi"]["min"]
+    assert stats["clv_split_restricted_2"] == 0.0          # N = 3: dominated over windows of 2
+
+
+def test_identical_scenes_are_computed_once():
+    """Two families that meet (m = 1 makes both mass vectors (1, 1, 1, 1)) keep a row each
+    but share one computation."""
+    from charts.runs.sweep.execute import same_scene_groups
+    sw = _sweep(seeds=[1, 2], parameters={"m": [1.0, 2.0]},
+                masses={"p": [1, 1, "m", 1], "q": [1, "m", 1, 1]})
+    pts = sweep_points(sw)
+    groups = same_scene_groups(pts)
+    assert len(pts) == 8 and len(groups) == 6
+    shared = [g for g in groups if len(g) == 2]
+    assert len(shared) == 2 and all(g[0].params["m"] == 1.0 for g in shared)
+    assert all(g[0].point_id != g[1].point_id for g in shared)
+
+
+def test_summary_keeps_integers_integers():
+    from charts.runs.sweep.report import _num
+    assert _num("4") == 4 and isinstance(_num("4"), int)
+    assert _num("0.5") == 0.5 and _num("1e-3") == 1e-3 and _num("(1,1,1,m)") == "(1,1,1,m)"

@@ -13,7 +13,7 @@ import numpy as np
 from ..solvers.progress import progress_reporter
 
 __all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
-           "project_steps", "samples_of", "start_state"]
+           "project_steps", "samples_of", "start_state", "unstable_dimension"]
 
 
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
@@ -74,6 +74,14 @@ def samples_of(total, sample, t_final, sample_every) -> int:
     if total % sample:
         raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
     return total // sample
+
+
+def unstable_dimension(n, n_unstable) -> int:
+    """m, the dimension of the expanding subspace: N−2 for None, else 1..N−2 (ValueError)."""
+    m = n - 2 if n_unstable is None else positive_int("n_unstable", n_unstable)
+    if not 1 <= m <= n - 2:
+        raise ValueError(f"n_unstable must be in 1..{n - 2} (the positive exponents), got {m}")
+    return m
 
 
 def start_state(system, theta0, u0):

@@ -32,6 +32,7 @@ from math import sqrt
 import numpy as np
 from numba import njit
 
+from ..archive import Archivable, attributes, dataset
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
@@ -186,7 +187,7 @@ def exact_curvature_matrix(system, theta, P):
 
 
 @dataclass
-class CurvatureResult:
+class CurvatureResult(Archivable):
     """Curvature along a trajectory.
 
     t : (S,) sample times; theta, u : (S, N) states; frames : (S, N−1, N) the
@@ -217,6 +218,34 @@ class CurvatureResult:
     def fraction_positive(self, route="numerical"):
         """Fraction of positive values of each K_ii, shape (N−2,)."""
         return (self.diagonal(route) > 0).mean(axis=0)
+
+    KIND = "curvature"
+
+    def to_xarray(self):
+        """Dataset: theta, u (t, rotor); frames (t, frame, rotor); K_numeric[, K_exact]
+        (t, direction, direction2); the settings as attributes."""
+        dims = ("t", "direction", "direction2")
+        data = {"theta": (("t", "rotor"), self.theta, "rad"),
+                "u": (("t", "rotor"), self.u, "rad / time"),
+                "frames": (("t", "frame", "rotor"), self.frames, "rad", "M-orthonormal frame"),
+                "K_numeric": (dims, self.K_numeric, "1 / rad²", "route (a), eqs (19)–(21)")}
+        if self.K_exact is not None:
+            data["K_exact"] = (dims, self.K_exact, "1 / rad²", "route (b), Riemann tensor")
+        return dataset(self.KIND, data, attrs={"params": self.params},
+                       coords={"t": (("t",), self.t, "time")})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(t=ds["t"].values, theta=ds["theta"].values, u=ds["u"].values,
+                   frames=ds["frames"].values, K_numeric=ds["K_numeric"].values,
+                   K_exact=ds["K_exact"].values if "K_exact" in ds else None,
+                   params=attributes(ds)["params"])
+
+    def plot(self, route="numerical", ax=None, **kw):
+        """Histograms of K_ii (tails beyond robust quantiles clipped, the clipped share
+        stated); ``(fig, axes)`` (``charts.plotting.plot_curvature``)."""
+        from ..plotting import plot_curvature
+        return plot_curvature({route: self.diagonal(route)}, axes=ax, **kw)
 
 
 def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.1,

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..archive import Archivable, attributes, dataset, require_xarray
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
 from .statistics import standard_error
@@ -14,7 +15,7 @@ __all__ = ["EnsembleResult", "run_ensemble"]
 
 
 @dataclass
-class EnsembleResult:
+class EnsembleResult(Archivable):
     """Results of one analysis on independent trajectories (seeds seed, seed+1, …).
 
     members : list of the analysis' results, in seed order.
@@ -38,6 +39,47 @@ class EnsembleResult:
     def concatenate(self, attribute):
         """The members' array ``attribute`` joined along its first axis."""
         return np.concatenate([getattr(m, attribute) for m in self.members])
+
+    KIND = "ensemble"
+
+    def to_xarray(self):
+        """The members' datasets stacked along a ``member`` dimension (members of one
+        analysis share their shapes); each member's settings in ``member_attrs``."""
+        xr = require_xarray()
+        if not self.members:
+            raise ValueError("an empty ensemble has nothing to save")
+        parts = [m.to_xarray() for m in self.members]
+        kinds = {p.attrs["charts_kind"] for p in parts}
+        if len(kinds) != 1:
+            raise ValueError(f"members of different kinds cannot be saved together: {sorted(kinds)}")
+        stacked = xr.concat(parts, dim="member", combine_attrs="drop")
+        data = {k: (v.dims, v.values, v.attrs.get("units", "1")) for k, v in stacked.data_vars.items()}
+        coords = {k: (v.dims, v.values, v.attrs.get("units", "1")) for k, v in stacked.coords.items()}
+        if self.exponents is not None:
+            data["ensemble_exponents"] = (("exponent",), self.exponents, "1 / time", "mean")
+            data["ensemble_stderr"] = (("exponent",), self.stderr, "1 / time",
+                                       "two-sided standard error of the mean")
+        return dataset(self.KIND, data, coords=coords, attrs={
+            "params": self.params, "member_kind": kinds.pop(),
+            "member_attrs": [dict(p.attrs) for p in parts]})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        import importlib
+
+        from ..archive import KINDS
+        a = attributes(ds)
+        module, name = KINDS[a["member_kind"]].split(":")
+        member_cls = getattr(importlib.import_module(module), name)
+        body = ds.drop_vars([v for v in ("ensemble_exponents", "ensemble_stderr") if v in ds])
+        members = []
+        for i, attrs in enumerate(a["member_attrs"]):
+            m = body.isel(member=i)
+            m.attrs = attrs
+            members.append(member_cls.from_xarray(m))
+        ex = ds["ensemble_exponents"].values if "ensemble_exponents" in ds else None
+        se = ds["ensemble_stderr"].values if "ensemble_stderr" in ds else None
+        return cls(members=members, exponents=ex, stderr=se, params=a["params"])
 
     def __repr__(self):
         if self.exponents is None:

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..archive import Archivable, attributes, dataset
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
@@ -124,7 +125,7 @@ def identify_nonphysical(system, theta, u, X):
 
 
 @dataclass
-class LyapunovResult:
+class LyapunovResult(Archivable):
     """Result of `lyapunov_spectrum`.
 
     exponents : (k,)  the computed exponents, largest first (1/time).
@@ -142,6 +143,38 @@ class LyapunovResult:
     history: np.ndarray
     batches: np.ndarray
     params: dict = field(default_factory=dict)
+
+    KIND = "lyapunov"
+
+    def to_xarray(self):
+        """Dataset: exponents, stderr (exponent); history (record, exponent) at history_t;
+        batches (batch, exponent); full_spectrum (spectrum_index); the settings as attributes."""
+        k = len(self.exponents)
+        data = {"exponents": (("exponent",), self.exponents, "1 / time"),
+                "stderr": (("exponent",), self.stderr, "1 / time", "two-sided standard error"),
+                "history": (("record", "exponent"), self.history, "1 / time",
+                            "running estimates"),
+                "batches": (("batch", "exponent"), self.batches, "1 / time", "batch estimates")}
+        if self.spectrum is not None:
+            data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",
+                                     "the relevant spectrum (reconstructed or computed)")
+        return dataset(self.KIND, data, attrs={"params": self.params}, coords={
+            "exponent": (("exponent",), np.arange(1, k + 1), "1"),
+            "history_t": (("record",), self.history_t, "time", "averaging time")})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(exponents=ds["exponents"].values, stderr=ds["stderr"].values,
+                   spectrum=ds["full_spectrum"].values if "full_spectrum" in ds else None,
+                   history_t=ds["history_t"].values, history=ds["history"].values,
+                   batches=ds["batches"].values, params=attributes(ds)["params"])
+
+    def plot(self, ax=None, **kw):
+        """Running estimates against the averaging time (log axis) with the final estimate ±
+        its standard error as bands; ``(fig, ax)`` (``charts.plotting.plot_lyapunov``;
+        ``paper=[...]`` adds reference values)."""
+        from ..plotting import plot_lyapunov
+        return plot_lyapunov(self.history_t, self.history, self.exponents, self.stderr, ax=ax, **kw)
 
     def __repr__(self):
         pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))

@@ -16,19 +16,79 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..solvers.tangent import TangentFlow
+from ..archive import Archivable, attributes, dataset
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
                         start_state, steps_of)
 
-__all__ = ["Waveform", "waveform", "power_spectrum"]
+__all__ = ["Waveform", "PowerSpectrum", "waveform", "power_spectrum"]
 
 
 @dataclass
-class Waveform:
+class Waveform(Archivable):
     """Sampled trajectory: t (S,), theta (S, N), u (S, N); sample spacing ``dt_sample``."""
     t: np.ndarray
     theta: np.ndarray
     u: np.ndarray
     dt_sample: float
+
+    KIND = "waveform"
+
+    def to_xarray(self):
+        return dataset(self.KIND, {"theta": (("t", "rotor"), self.theta, "rad"),
+                                   "u": (("t", "rotor"), self.u, "rad / time")},
+                       coords={"t": (("t",), self.t, "time"),
+                               "rotor": (("rotor",), np.arange(1, self.theta.shape[1] + 1), "1")},
+                       attrs={"dt_sample": self.dt_sample})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(ds["t"].values, ds["theta"].values, ds["u"].values,
+                   attributes(ds)["dt_sample"])
+
+    def plot(self, ax=None, **kw):
+        """θᵢ(t) wrapped to (−π, π]; ``(fig, ax)`` (``charts.plotting.plot_angles_time``)."""
+        from ..plotting import plot_angles_time
+        return plot_angles_time(self.t, self.theta, ax=ax, **kw)
+
+
+class PowerSpectrum(Archivable, tuple):
+    """``(omega, density)`` of :func:`power_spectrum` — still unpacks as that pair — with
+    ``params`` (dt_sample, segment_time), ``to_xarray``/``save`` and ``plot``."""
+
+    KIND = "spectrum"
+
+    def __new__(cls, omega, density, params):
+        obj = tuple.__new__(cls, (np.asarray(omega), np.asarray(density)))
+        obj.params = dict(params)
+        return obj
+
+    def __getnewargs__(self):       # pickling (worker processes)
+        return self[0], self[1], self.params
+
+    @property
+    def omega(self):
+        return self[0]
+
+    @property
+    def density(self):
+        return self[1]
+
+    def to_xarray(self):
+        return dataset(self.KIND, {"density": (("omega",), self.density, "signal² · time / rad",
+                                               "one-sided power spectral density per unit ω")},
+                       coords={"omega": (("omega",), self.omega, "rad / time",
+                                         "angular frequency ω")},
+                       attrs={"params": self.params})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(ds["omega"].values, ds["density"].values, attributes(ds)["params"])
+
+    def plot(self, ax=None, **kw):
+        """Log density against ω (rad per unit time); ``(fig, ax)``
+        (``charts.plotting.plot_spectrum``)."""
+        from ..plotting import plot_spectrum
+        return plot_spectrum(self.omega, self.density, ax=ax, **kw)
 
 
 def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_transient=0.0,
@@ -64,7 +124,8 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_trans
 def power_spectrum(signal, dt_sample, *, segment_time=200.0):
     """Welch estimate of the one-sided power spectral density of ``signal`` (shape (S,))
     sampled every ``dt_sample``: segments of ``segment_time`` with 50 % overlap and a
-    Hann window.  Returns (ω (F,), rad per unit time; density per unit ω (F,))."""
+    Hann window.  Returns a :class:`PowerSpectrum`, the pair (ω (F,), rad per unit time;
+    density per unit ω (F,))."""
     signal = np.asarray(signal, dtype=float)
     if signal.ndim != 1 or not np.all(np.isfinite(signal)):
         raise ValueError("signal must be a 1-D array of finite values")
@@ -80,4 +141,5 @@ def power_spectrum(signal, dt_sample, *, segment_time=200.0):
     from scipy.signal import welch  # imported here: scipy.signal costs seconds at import
 
     f, p = welch(signal, fs=1.0 / dt_sample, window="hann", nperseg=nper, detrend="constant")
-    return 2 * np.pi * f, p / (2 * np.pi)
+    return PowerSpectrum(2 * np.pi * f, p / (2 * np.pi),
+                         {"dt_sample": dt_sample, "segment_time": segment_time})

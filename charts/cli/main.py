@@ -1,6 +1,6 @@
 """The ``charts`` command line.
 
-    charts run SCENE -o DIR [--resume] [--quiet]   run a scene (a .toml file or a bundled name)
+    charts run SCENE -o DIR [--resume|--force] [--quiet]   run a scene (a .toml file or a bundled name)
     charts scenes [NAME]                          list the bundled scenes, or print one
     charts reproduce ...                          the paper's figures and table
     charts generate [--check]                     regenerate generated/ (code generator)
@@ -65,8 +65,17 @@ def _cmd_run(args) -> int:
     from ..runs.scene import SceneError, load_scene
 
     path = resolve_scene(args.scene)
+    out = Path(args.output)
+    if args.force and args.resume:
+        return _fail("--force and --resume exclude each other (--force starts over)")
+    if not args.resume and not args.force and out.is_dir() and any(out.iterdir()):
+        return _fail(f"{out} is not empty: use --force to overwrite its results, --resume to "
+                     "continue an interrupted run there, or choose another output folder")
     try:
         scene = load_scene(path)
+        if args.force:
+            (out / "checkpoint.npz").unlink(missing_ok=True)   # start over, as asked
+            (out / "result.json").unlink(missing_ok=True)
         result = run_scene(scene, args.output, resume=args.resume, quiet=args.quiet)
     except SceneError as exc:
         return _fail(str(exc))
@@ -229,6 +238,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="output folder (created if missing)")
     p.add_argument("--resume", action="store_true",
                    help="continue an interrupted run from DIR/checkpoint.npz")
+    p.add_argument("--force", action="store_true",
+                   help="write into DIR even if it is not empty (its results are replaced)")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
     p.set_defaults(func=_cmd_run)
 

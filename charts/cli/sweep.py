@@ -33,6 +33,8 @@ def add_parser(sub) -> None:
                    help="continue the table in DIR without recomputing finished points")
     p.add_argument("--no-plots", action="store_true", help="skip DIR/figures")
     p.add_argument("--list", action="store_true", help="list the bundled sweeps and exit")
+    p.add_argument("--print", action="store_true", dest="print_sweep",
+                   help="print the sweep file (e.g. a bundled one, to copy and edit) and exit")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
     p.set_defaults(func=cmd_sweep)
 
@@ -52,6 +54,14 @@ def cmd_sweep(args) -> int:
             except (SweepError, IndexError):
                 desc = ""
             print(f"{name}  {desc}")
+        return 0
+    if args.print_sweep:
+        if args.sweep is None:
+            return _fail("charts sweep --print needs SWEEP (a bundled name or a path)")
+        try:
+            sys.stdout.write(Path(resolve_sweep(args.sweep)).read_text(encoding="utf-8"))
+        except (SweepError, OSError) as exc:
+            return _fail(str(exc))
         return 0
     if args.sweep is None or args.output is None:
         return _fail("charts sweep needs SWEEP and -o DIR (see `charts sweep --help`)")

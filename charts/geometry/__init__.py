@@ -1,2 +1,3 @@
 """The manifold (eqs 1-13, 22): ``RotorSystem`` (validation, charts, metric, Christoffel
-symbols, Riemann tensor, sectional curvature) and the compiled generated chart kernels."""
+symbols, Riemann tensor, sectional curvature) and the chart kernels: generated for the shipped
+N, structured (``structured``, any N) otherwise (``kernels``)."""

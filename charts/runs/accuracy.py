@@ -267,9 +267,17 @@ def table(study: dict) -> str:
 
 
 def figure(study: dict, path: Path) -> None:
-    from matplotlib.ticker import FormatStrFormatter, MaxNLocator, NullFormatter
+    """Write :func:`draw_figure` to ``path`` (PNG, atomically)."""
+    from .plotting import save_png
 
-    from .plotting import new_figure, save_png
+    save_png(draw_figure(study), path)
+
+
+def draw_figure(study: dict):
+    """The three work–precision panels of the study, a matplotlib Figure."""
+    from matplotlib.ticker import FormatStrFormatter, LogLocator, MaxNLocator, NullFormatter
+
+    from .plotting import new_figure
 
     pts = study["points"]
     fig, axes = new_figure(1, 3, figsize=(15, 6.2))
@@ -321,14 +329,17 @@ def figure(study: dict, path: Path) -> None:
     ax.set_ylabel("median |K − K_eq22| / |K_eq22|")
     ax.set_title("(c) N = 3 curvature vs eq (22)")
     ax.legend(fontsize=7, **below)
-    for ax in axes:   # over a decade: powers of 10 only; narrower than 4x: a few plain labels
-        lo, hi = ax.get_xlim()
+    for ax in axes:   # x labels readable at any span: two or more powers of 10 inside the
+        lo, hi = ax.get_xlim()      # axis: those only; else 1-2-5 labels; narrower than 4x: plain
+        decades = np.floor(np.log10(hi)) - np.ceil(np.log10(lo)) + 1
         if hi < 4 * lo:
             ax.xaxis.set_major_locator(MaxNLocator(4))
+        elif decades < 2:
+            ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+        if decades < 2:
             ax.xaxis.set_major_formatter(FormatStrFormatter("%.2g"))
-        if hi > 10 * lo or hi < 4 * lo:
-            ax.xaxis.set_minor_formatter(NullFormatter())
-    save_png(fig, path)
+        ax.xaxis.set_minor_formatter(NullFormatter())
+    return fig
 
 
 def main(argv=None, quiet=False) -> int:

@@ -1,5 +1,5 @@
 """Figures 2-5 of the paper in its panel layouts (PNG, in the figure style of
-:mod:`charts.runs.plotting`).
+:mod:`charts.plotting`; the curvature histograms drawn by its ``plot_curvature``).
 
 Each function takes the computed data keyed by N and a path, writes the figure and
 returns the path.  Time is in units where the speed along the geodesic is 1 (the
@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..plotting import CURVATURE_QUANTILES, plot_curvature
 from .plotting import new_figure, save_png
-from .scene_figures import CURVATURE_QUANTILES
 
 __all__ = ["figure2", "figure3", "figure4", "figure5"]
 
@@ -64,19 +64,16 @@ def figure4(curvatures, path, bins=100):
     L = iter(_LETTERS)
     for row, n in enumerate(sorted(curvatures)):
         K = curvatures[n]
-        for i in range(K.shape[1]):
-            ax = fig.add_subplot(gs[row, i])
-            k = K[:, i]
-            lo, hi = np.percentile(k, CURVATURE_QUANTILES)
-            ax.hist(k, bins=bins, range=(min(lo, -0.05), max(hi, 0.05)), density=True, color="C0")
-            ax.axvline(0.0, color="k", lw=0.6)
-            ax.set_title(f"({next(L)}) N = {n}: $K_{{{i + 1}{i + 1}}}$ "
-                         f"(K > 0: {100 * (k > 0).mean():.2f} %, n = {k.size})", fontsize=9)
-            ax.set_xlabel("sectional curvature (1/rad²)", fontsize=8)
-            ax.set_ylabel("probability density", fontsize=8)
+        axes = [fig.add_subplot(gs[row, i]) for i in range(K.shape[1])]
+        plot_curvature({"K": K}, axes=axes, bins=bins)
+        for ax in axes:
+            ax.set_title(f"({next(L)}) N = {n}: " + ax.get_title(), fontsize=8)
+            if ax.get_legend() is not None:
+                ax.get_legend().remove()
     q0, q1 = CURVATURE_QUANTILES
     fig.suptitle("Sectional curvatures along the geodesic (velocity × i-th Lyapunov vector); "
-                 f"tails beyond the {q0:g} %–{q1:g} % quantiles clipped", fontsize=10)
+                 f"axes: the {q0:g} %–{q1:g} % quantiles (share beyond them in each panel)",
+                 fontsize=10)
     return _save(fig, path)
 
 

@@ -8,6 +8,9 @@ what is integrated (no integration happens here).
   the backward adjoint pass (m vectors) along the trajectory re-integrated from sparse
   checkpoints; it runs as one unit after the main pass (which is skipped when nothing
   else needs it);
+* the CLV pass (``charts.analyses.covariant``) — only for ``clv``: D = 2N−2 (restricted)
+  and/or 2N (full) forward vectors with their Q and R factors stored at every sample (in
+  memory or streamed to disk), then the backward iteration; one unit after the angles pass;
 * the parallel-transport frame (eq 19) — only for the numerical curvature route, N−1
   vectors moved one step back and forth at each curvature sample;
 * stored samples — only the window of the requested waveforms, the one rotor of the
@@ -38,7 +41,10 @@ class Plan:
     adjoint_vectors : int   vectors of the backward adjoint pass (angles pass only).
     angles : dict   the angles pass (forward/adjoint vectors, steps, stored checkpoints and
         samples), empty when not requested.
-    main_pass : bool   whether the chunked main pass runs (False for an angles-only scene).
+    clv : dict   the CLV pass (vectors per variant, steps, stored samples and bytes), empty
+        when not requested.
+    main_pass : bool   whether the chunked main pass runs (False when only the angles and
+        CLV passes are requested).
     stored : dict   name -> number of stored samples (rows).
     every : dict   name -> recording interval in integrator steps (kernel engine) or
         samples (integrate engine).
@@ -54,7 +60,17 @@ class Plan:
     every: dict = field(default_factory=dict)
     needs_trajectory_store: bool = False
     angles: dict = field(default_factory=dict)
+    clv: dict = field(default_factory=dict)
     main_pass: bool = True
+
+    @property
+    def passes(self) -> list[str]:
+        """The separate passes after the main pass, in order."""
+        return [p for p in ("angles", "clv") if getattr(self, p)]
+
+    def pass_steps(self) -> int:
+        """RK4 steps of the separate passes (their share of the progress bar)."""
+        return sum(getattr(self, p)["steps"] for p in self.passes)
 
     def as_dict(self):
         return {"engine": self.engine, "formulation": self.formulation, "method": self.method,
@@ -63,7 +79,8 @@ class Plan:
                 "adjoint_vectors": self.adjoint_vectors,
                 "stored_samples": dict(self.stored),
                 "stored_trajectory": self.needs_trajectory_store,
-                "main_pass": self.main_pass, "angles_pass": dict(self.angles)}
+                "main_pass": self.main_pass, "angles_pass": dict(self.angles),
+                "clv_pass": dict(self.clv)}
 
 
 def ticks(t, unit):
@@ -116,6 +133,20 @@ def plan_scene(scene: Scene) -> Plan:
                        "rhs_evaluations": 2 * 4 * nseg * ce,
                        "stored_trajectory_checkpoints": nseg + 1,
                        "stored_samples": ticks(run["t_final"], a["sample_every"])}
+    if "clv" in eff:
+        from ..analyses.covariant import clv_dimension, sample_bytes
+        c = eff["clv"]
+        dt = integ["dt"]
+        variants = ["full", "restricted"] if c["variant"] == "both" else [c["variant"]]
+        sample = ticks(c["sample_every"], dt)
+        n_tr = ticks(run["t_transient"], dt)
+        stored = ticks(run["t_final"], c["sample_every"]) + max(1, -(-n_tr // sample))
+        plan.clv = {"variants": variants,
+                    "vectors": {v: clv_dimension(n, v) for v in variants},
+                    "steps": len(variants) * (n_tr + (stored - 1) * sample),
+                    "rhs_evaluations": 4 * len(variants) * (n_tr + (stored - 1) * sample),
+                    "stored_samples": ticks(run["t_final"], c["sample_every"]),
+                    "stored_factor_bytes": {v: stored * sample_bytes(n, v) for v in variants}}
     plan.tangent_vectors = k
-    plan.main_pass = any(e != "angles" for e in eff)
+    plan.main_pass = any(e not in ("angles", "clv") for e in eff)
     return plan

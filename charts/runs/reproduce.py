@@ -5,7 +5,9 @@
 
 Writes into DIR (default ``reproduce-out``): ``table.md`` (Lyapunov exponents with
 error bars beside the paper's), ``fig2.png`` … ``fig5.png`` (the paper's panel layouts),
-``results.json`` (all numbers), and ``report.md`` tying each result to the paper's claim.
+``results.json`` (all numbers), ``report.md`` tying each result to the paper's claim, and
+the hyperbolicity test by a second route (covariant Lyapunov vectors on the trajectories of
+the angle test, ``charts.runs.reproduce_clv``: ``clv.png``, ``ftle.png``).
 Independent trajectories run in parallel processes (all cores by default).
 
 Presets (unit speed, equal masses, RK4 dt = 0.01 everywhere):
@@ -16,6 +18,9 @@ preset          Lyapunov                              angles / curvature
 quick           4 trajectories × t = 5·10³ per N      2 × 2·10³ / t = 10³
 full            8 trajectories × t = 2.5·10⁴ per N    4 × 2.5·10⁴ / t = 10⁴
 =============  ====================================  ==========================
+
+The angles of both routes (adjoint and CLV) use transients of ``angle_transient`` = 200
+forward and backward.
 """
 from __future__ import annotations
 
@@ -32,6 +37,7 @@ import numpy as np
 
 from ..analyses.statistics import standard_error
 from .io import atomic_text
+from . import reproduce_clv
 from .paper import PAPER_EXPONENTS
 
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
@@ -40,9 +46,9 @@ NS = (3, 4, 5)
 
 PRESETS = {
     "quick": dict(lyap_members=4, lyap_t=5.0e3, lyap_batches=10, angle_members=2, angle_t=2.0e3,
-                  curv_t=1.0e3, wave_t=4.0e3),
+                  curv_t=1.0e3, wave_t=4.0e3, angle_transient=200.0),
     "full": dict(lyap_members=8, lyap_t=2.5e4, lyap_batches=25, angle_members=4, angle_t=2.5e4,
-                 curv_t=1.0e4, wave_t=2.0e4),
+                 curv_t=1.0e4, wave_t=2.0e4, angle_transient=200.0),
 }
 
 
@@ -57,12 +63,12 @@ def _task_lyapunov(n, seed, t, batches):
                 history_t=r.history_t, history=r.history)
 
 
-def _task_angles(n, seed, t):
+def _task_angles(n, seed, t, t_transient):
     from ..analyses.hyperbolicity import hyperbolicity_angles
     from ..geometry.system import RotorSystem
     s = RotorSystem(n)
     th, u = s.random_state(seed=seed)
-    r = hyperbolicity_angles(s, th, u, t, seed=seed)
+    r = hyperbolicity_angles(s, th, u, t, t_transient=t_transient, seed=seed)
     return dict(phi_full=r.phi_full, phi_restricted=r.phi_restricted,
                 forward=r.forward_exponents, adjoint=r.adjoint_exponents)
 
@@ -103,7 +109,9 @@ def _run_all(cfg, workers, quiet):
         for i in range(cfg["lyap_members"]):
             tasks[("lyap", n, i)] = (_task_lyapunov, (n, 100 + i, cfg["lyap_t"], cfg["lyap_batches"]))
         for i in range(cfg["angle_members"]):
-            tasks[("angle", n, i)] = (_task_angles, (n, 200 + i, cfg["angle_t"]))
+            a = (n, 200 + i, cfg["angle_t"], cfg["angle_transient"])
+            tasks[("angle", n, i)] = (_task_angles, a)
+            tasks[("clv", n, i)] = (reproduce_clv.task_clv, a)
         tasks[("curv", n, 0)] = (_task_curvature, (n, 300, cfg["curv_t"]))
         tasks[("wave", n, 0)] = (_task_waveform, (n, 400, cfg["wave_t"]))
     results = {}
@@ -141,7 +149,7 @@ def _fmt_table(rows):
     return "\n".join(lines)
 
 
-def _report(out, preset, rows, curv, ang, elapsed, workers):
+def _report(out, preset, rows, curv, ang, elapsed, workers, clv_lines):
     from ..analyses.hyperbolicity import SMALL_ANGLE
     L = [f"# Reproduction of Kuznetsov, rotators with Σcos θ = 0 — preset `{preset}`", "",
          f"Command: `charts reproduce --{preset} -o {out}`; wall time {elapsed:.0f} s on "
@@ -179,7 +187,7 @@ def _report(out, preset, rows, curv, ang, elapsed, workers):
           "invariant constraint-preserving subspace T_r (the physical phase space's tangent "
           "space).  Only the restricted angles are intrinsic: the full variant depends on how "
           "eq (8) is continued off the constraint manifold.  Paper's claim: N = 3 stays away "
-          "from φ = 0 (hyperbolic), N = 4, 5 reach φ ≈ 0.", ""]
+          "from φ = 0 (hyperbolic), N = 4, 5 reach φ ≈ 0.", ""] + clv_lines
     atomic_text(out / "report.md", "\n".join(L) + "\n")
 
 
@@ -215,6 +223,16 @@ def main(argv=None):
         ang[n] = dict(full=angle_statistics(pf), restricted=angle_statistics(pr),
                       forward=[m["forward"].tolist() for m in mem],
                       adjoint=[m["adjoint"].tolist() for m in mem])
+    clv, pairs, ftle = {}, {}, {}
+    for n in NS:
+        mem = [results[("clv", n, i)] for i in range(cfg["angle_members"])]
+        amem = [results[("angle", n, i)] for i in range(cfg["angle_members"])]
+        clv[n] = reproduce_clv.summarise(mem, amem)
+        pairs[n] = {v: (ang_raw[n][v == "restricted"],
+                        np.concatenate([m[v]["phi"] for m in mem])) for v in ("full", "restricted")}
+        ftle[n] = {w: np.concatenate([m["ftle"][w] for m in mem]) for w in reproduce_clv.FTLE_WINDOWS}
+    reproduce_clv.figure_clv(pairs, out / "clv.png")
+    reproduce_clv.figure_ftle(ftle, out / "ftle.png")
     waves = {n: results[("wave", n, 0)] for n in NS}
     paper_figures.figure2({n: Waveform(w["t"], None, w["u"], w["dt_sample"]) for n, w in waves.items()},
                     out / "fig2.png")
@@ -228,12 +246,14 @@ def main(argv=None):
                    curvature={n: {k: v for k, v in c.items() if not isinstance(v, np.ndarray)}
                               | dict(fraction_positive=(c["Kb"] > 0).mean(0).tolist(),
                                      samples=int(c["Kb"].shape[0])) for n, c in curv.items()},
-                   angles=ang)
+                   angles=ang, clv=clv)
     atomic_text(out / "results.json", json.dumps(summary, indent=1, default=float))
-    _report(out, preset, rows, curv, ang, elapsed, workers)
+    _report(out, preset, rows, curv, ang, elapsed, workers,
+            reproduce_clv.report_lines(clv, NS, cfg["angle_transient"]))
     if not args.quiet:
         print(_fmt_table(rows))
-        print(f"wrote {out}/report.md, table.md, results.json, fig2-5.png in {elapsed:.0f} s")
+        print(f"wrote {out}/report.md, table.md, results.json, fig2-5.png, clv.png, ftle.png "
+              f"in {elapsed:.0f} s")
     return 0
 
 

@@ -55,9 +55,11 @@ class RunState:
         self.chart = -1                # chart in use (chart formulation), -1: not yet chosen
         self.rec = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature_num",
                                           "curvature_exact", "curvature_y", "switches", "angles",
-                                          "angles_exponents")}
+                                          "angles_exponents", "clv", "clv_exponents",
+                                          "clv_domination", "clv_ftle")}
         self.rec_t = {name: [] for name in ("waveforms", "spectrum", "drift", "curvature")}
         self.elapsed = 0.0
+        self.compile_s = 0.0   # of this process's chunks (compiling or loading kernels; not checkpointed)
         self.done = False
         self.chunk_index = 0
         self.n_main = None             # chunks of the main pass (set by the runner)

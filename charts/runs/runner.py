@@ -23,7 +23,9 @@ checkpointed state), :mod:`~charts.runs.engines` (the integration of a chunk),
 from __future__ import annotations
 
 import json
+import sys
 import time
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -36,9 +38,13 @@ from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
 from .recorders import make_recorders
 from .run_state import CHECKPOINT, RunError, RunState, scene_hash, units_done
 from .scene import Scene
-from .scene_results import finalize, write_result
+from .scene_results import FTLE_STATS, finalize, write_result
 
 __all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS"]
+
+
+#: Compile time above which a run says it compiled kernels (loading cached ones takes less).
+COMPILE_NOTE_S = 1.0
 
 
 def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False,
@@ -83,40 +89,20 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         lyap_ends = {transient + e for e in lyapunov_batch_ends(scene, plan)}
 
     n_main = len(ends) if plan.main_pass else 0
-    n_units = n_main + (1 if plan.angles else 0)
+    passes = plan.passes
+    n_units = n_main + len(passes)
     st.n_main = n_main
 
     from tqdm.auto import tqdm
     t_total = (scene.run["t_transient"] + scene.run["t_final"]) * (1 if plan.main_pass else 0)
-    if plan.angles:
-        t_total += plan.angles["steps"] * scene.integrator["dt"]
+    t_total += plan.pass_steps() * scene.integrator["dt"] if passes else 0.0
     bar = tqdm(total=round(t_total, 10), unit="t", desc=scene.name, disable=quiet,
                leave=False, initial=round(units_done(st, ends) * unit, 10))
     status = "complete"
     try:
-        for idx in range(st.chunk_index, n_units):
-            t_wall = time.perf_counter()
-            if idx < n_main:
-                start = ends[idx - 1] if idx else 0
-                engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
-                                 transient)
-                if ends[idx] == transient:      # the transient does not count for exponents
-                    st.logsum[:] = 0.0
-                if ends[idx] in lyap_ends:
-                    st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
-                advanced = (ends[idx] - start) * unit
-            else:
-                _angles_pass(st)
-                advanced = plan.angles["steps"] * scene.integrator["dt"]
-            st.chunk_index = idx + 1
-            st.elapsed += time.perf_counter() - t_wall
-            st.done = st.chunk_index == n_units
-            arr = st.to_arrays()
-            arr["scene_hash"] = np.array(digest)
-            atomic_write(ck, npz_bytes(arr))
-            bar.update(advanced)
-            if on_chunk is not None:
-                on_chunk(idx, n_units)
+        with compile_timer(st):
+            _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders,
+                        lyap_ends, unit, digest, ck, bar, on_chunk)
     except (KeyboardInterrupt, RunError) as exc:
         status = "interrupted" if isinstance(exc, KeyboardInterrupt) else "failed"
         failure = None if status == "interrupted" else str(exc)
@@ -129,6 +115,9 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         st.n_main = n_main
     finally:
         bar.close()
+    if st.compile_s > COMPILE_NOTE_S and not quiet:
+        print(f"{scene.name}: compiled the kernels for N = {system.n} in {st.compile_s:.1f} s "
+              "(once: they are cached on disk for the next runs)", file=sys.stderr)
     result = finalize(st, status, ends, transient, unit, outdir)
     if status == "interrupted":
         raise KeyboardInterrupt(result)
@@ -137,6 +126,49 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         write_result(outdir, result)
         raise RunError(f"{failure} (the finished part is in {outdir}/result.json)")
     return result
+
+
+def _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders, lyap_ends,
+                unit, digest, ck, bar, on_chunk):
+    """The chunks from ``st.chunk_index`` on, a checkpoint after each."""
+    for idx in range(st.chunk_index, n_units):
+        t_wall = time.perf_counter()
+        if idx < n_main:
+            start = ends[idx - 1] if idx else 0
+            engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
+                             transient)
+            if ends[idx] == transient:      # the transient does not count for exponents
+                st.logsum[:] = 0.0
+            if ends[idx] in lyap_ends:
+                st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
+            advanced = (ends[idx] - start) * unit
+        else:
+            name = passes[idx - n_main]
+            (_angles_pass if name == "angles" else _clv_pass)(st)
+            advanced = getattr(st.plan, name)["steps"] * st.scene.integrator["dt"]
+        st.chunk_index = idx + 1
+        st.elapsed += time.perf_counter() - t_wall
+        st.done = st.chunk_index == n_units
+        arr = st.to_arrays()
+        arr["scene_hash"] = np.array(digest)
+        atomic_write(ck, npz_bytes(arr))
+        bar.update(advanced)
+        if on_chunk is not None:
+            on_chunk(idx, n_units)
+
+
+@contextmanager
+def compile_timer(st: RunState):
+    """Add to ``st.compile_s`` the time numba spends compiling or loading cached kernels inside
+    the block (numba's ``numba:compile`` events, outermost only), so that result.json keeps it
+    apart from the integration time."""
+    from numba.core.event import install_timer
+
+    def add(seconds):
+        st.compile_s += seconds
+
+    with install_timer("numba:compile", add):
+        yield
 
 
 def _angles_pass(st: RunState):
@@ -159,6 +191,44 @@ def _angles_pass(st: RunState):
     st.rec["angles_exponents"] = [list(res.forward_exponents), list(res.adjoint_exponents)]
     st.rhs += st.plan.angles["rhs_evaluations"]
     st.steps += 2 * st.plan.angles["steps"]
+
+
+def _clv_pass(st: RunState):
+    """Covariant Lyapunov vectors from the initial state, each variant asked for
+    (``charts.analyses.covariant``): per sample t, φ and the angle between the leading
+    unstable and stable CLVs; per variant the mean growth rates along the CLVs, the
+    domination fractions and the finite-time exponents for each window."""
+    from ..analyses.covariant import covariant_lyapunov_vectors
+
+    sc, sys_ = st.scene, st.system
+    c = sc.effects["clv"]
+    dt = sc.integrator["dt"]
+    n = sys_.n
+    cols, dom, ftle, exps = [], [], [], []
+    for iv, variant in enumerate(("full", "restricted")):
+        if c["variant"] not in (variant, "both"):
+            continue
+        r = covariant_lyapunov_vectors(
+            sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], variant=variant, dt=dt,
+            n_unstable=c["n_vectors"], t_transient=sc.run["t_transient"],
+            sample_every=c["sample_every"], project_every=st.flow.project_every * dt or None,
+            seed=sc.initial["seed"] or 0)
+        cols += [r.phi, r.phi_vectors]
+
+        def pad(x):            # rows of one length (2N) for both variants
+            return list(x) + [np.nan] * (2 * n - len(x))
+        exps.append([iv] + pad(r.exponents))
+        for w, d in r.domination(c["windows"]).items():
+            dom.append([iv, w, d["split"], d["count"]])
+        for w, f in r.finite_time(c["windows"]).items():
+            ftle.append([iv, w, f["count"], f["frac_nonpositive_leading"]]
+                        + sum((pad(f[k]) for k in FTLE_STATS), []))
+    st.rec["clv"] = [list(row) for row in np.column_stack([r.t] + cols)]
+    st.rec["clv_exponents"] = exps
+    st.rec["clv_domination"] = dom
+    st.rec["clv_ftle"] = ftle
+    st.rhs += st.plan.clv["rhs_evaluations"]
+    st.steps += st.plan.clv["steps"]
 
 
 def _read_status(outdir):

@@ -2,7 +2,7 @@
 
 A scene names the system (N, masses, speed), the initial state (a seed, or explicit θ and
 u), the integrator, the duration and sampling, and the **effects** wanted (waveforms, power
-spectrum, Lyapunov spectrum, curvature, hyperbolicity angles, chart-switch log, invariant
+spectrum, Lyapunov spectrum, curvature, hyperbolicity angles, covariant Lyapunov vectors, chart-switch log, invariant
 drift).  ``load_scene(path)`` / ``parse_scene(dict)`` return a frozen :class:`Scene`; every
 problem is reported as one :class:`SceneError` naming the key, the value and what is allowed
 (a misspelt key suggests the right one).  Every key is documented in ``docs/scenes.md``,
@@ -387,16 +387,27 @@ def _check_effects(source, n, integ, run, effects):
                              "directions orthogonal to the velocity in the N−1-dim. manifold)")
         _multiple(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
                   "[integrator] dt")
-    if "angles" in effects:
-        a = effects["angles"]
+    for name in ("angles", "clv"):        # the two routes to the angles of section 4
+        if name not in effects:
+            continue
+        a = effects[name]
         if a["n_vectors"] is None:
             a["n_vectors"] = n - 2
         if a["n_vectors"] > n - 2:
-            raise SceneError(f"{_where(source, sect('angles'), 'n_vectors')} = {a['n_vectors']!r} "
+            raise SceneError(f"{_where(source, sect(name), 'n_vectors')} = {a['n_vectors']!r} "
                              f"is not allowed: expected 1..{n - 2} (at most the number of "
                              "positive exponents)")
-        _multiple(source, sect("angles"), "sample_every", a["sample_every"], integ["dt"],
+        _multiple(source, sect(name), "sample_every", a["sample_every"], integ["dt"],
                   "[integrator] dt")
+    if "clv" in effects:
+        c = effects["clv"]
+        _multiple(source, "run", "t_final", run["t_final"], c["sample_every"],
+                  "[effects.clv] sample_every")
+        if c["windows"] is None:
+            c["windows"] = [1.0, 10.0]
+        for w in c["windows"]:
+            _multiple(source, sect("clv"), "windows", w, c["sample_every"],
+                      "[effects.clv] sample_every")
     if "drift" in effects:
         d = effects["drift"]
         _multiple(source, sect("drift"), "sample_every", d["sample_every"], run["sample_dt"],

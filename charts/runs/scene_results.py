@@ -14,7 +14,9 @@ from ..analyses.lyapunov import exponents_from_marks
 from ..analyses.curvature import gaussian_curvature_eq22
 from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
 from ..analyses.spectra import power_spectrum
+from ..archive import require_xarray
 from . import scene_figures as figs
+from .archives import SCENE_NETCDF, SceneResult
 from .io import atomic_write, json_default, npz_bytes, versions
 from .paper import PAPER_EXPONENTS
 from .recorders import invariants
@@ -22,7 +24,11 @@ from .run_state import CHECKPOINT, RunState, units_done
 from .scene import scene_to_dict
 
 __all__ = ["finalize", "write_result", "waveforms_result", "spectrum_result", "drift_result",
-           "lyapunov_result", "curvature_result", "angles_result", "switches_result"]
+           "lyapunov_result", "curvature_result", "angles_result", "clv_result",
+           "switches_result", "FTLE_STATS"]
+
+#: the finite-time exponent statistics of a CLV pass, in the order of its record rows.
+FTLE_STATS = ("mean", "std", "p01", "p50", "p99")
 
 
 class _Outputs:
@@ -44,12 +50,13 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
     n = system.n
     eff = sc.effects
     t_done = max(0, units_done(st, ends) - transient) * unit
-    if not plan.main_pass:
-        t_done = sc.run["t_final"] if st.rec["angles"] else 0.0
+    if not plan.main_pass:    # the separate passes only: done when the last one has run
+        t_done = sc.run["t_final"] if st.chunk_index == len(plan.passes) else 0.0
     out = _Outputs()
     for name, build in (("waveforms", waveforms_result), ("spectrum", spectrum_result),
                         ("drift", drift_result), ("lyapunov", lyapunov_result),
                         ("curvature", curvature_result), ("angles", angles_result),
+                        ("clv", clv_result),
                         ("switches", switches_result)):
         if name in eff:
             build(st, out, t_done=t_done, status=status)
@@ -69,7 +76,8 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
         "progress": {"t_done": t_done, "t_final": sc.run["t_final"],
                      "t_transient": sc.run["t_transient"],
                      "chunks_done": st.chunk_index, "chunks": len(ends)},
-        "timings": {"integration_wall_s": round(st.elapsed, 4)},
+        "timings": {"integration_wall_s": round(max(st.elapsed - st.compile_s, 0.0), 4),
+                    "compile_wall_s": round(st.compile_s, 4)},
         "computation": comp,
         "initial_state": {"theta": st.y0[:n].tolist(), "u": st.y0[n:].tolist()},
         "final_state": {"theta": st.y[:n].tolist(), "u": st.y[n:].tolist()},
@@ -84,9 +92,22 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
         atomic_write(outdir / name, png)
     if out.arrays:
         atomic_write(outdir / "arrays.npz", npz_bytes(out.arrays))
+        _write_netcdf(outdir, result, out.arrays)
     result["timings"]["output_wall_s"] = round(time.perf_counter() - t0, 4)
     write_result(outdir, result)
     return result
+
+
+def _write_netcdf(outdir, result, arrays):
+    """``results.nc`` beside result.json (arrays with named dimensions and units, the result
+    and the scene text as attributes), when the extra ``charts[io]`` is installed."""
+    try:
+        require_xarray()
+    except ImportError as err:
+        result["netcdf"] = f"not written: {err}"
+        return
+    result["files"].insert(result["files"].index("arrays.npz") + 1, SCENE_NETCDF)
+    SceneResult.from_run(result, arrays, result["source"]).save(outdir / SCENE_NETCDF)
 
 
 def _drift_summary(st, out):
@@ -178,15 +199,24 @@ def lyapunov_result(st, out, *, t_done, **_):
     out.figures["lyapunov.png"] = figs.lyapunov_png(st.scene, T, L / T[:, None], res)
 
 
+def _pass_rows(st, out, name, keys):
+    """(result dict of the separate pass ``name`` holding its settings ``keys``, its recorded
+    rows as an array, or None with a note when the pass has not run yet)."""
+    e = st.scene.effects[name]
+    res = {k: e[k] for k in keys}
+    out.results[name] = res
+    if not st.rec[name]:
+        res["note"] = f"the {name} pass has not run yet"
+        return res, None
+    return res, np.array(st.rec[name])
+
+
 def angles_result(st, out, **_):
     sc = st.scene
     a = sc.effects["angles"]
-    res = {"variant": a["variant"], "n_vectors": a["n_vectors"]}
-    out.results["angles"] = res
-    if not st.rec["angles"]:
-        res["note"] = "the angles pass has not run yet"
+    res, A = _pass_rows(st, out, "angles", ("variant", "n_vectors"))
+    if A is None:
         return
-    A = np.array(st.rec["angles"])
     arr = {"angles_t": A[:, 0]}
     for j, variant in ((1, "full"), (2, "restricted")):
         if a["variant"] in (variant, "both"):
@@ -198,6 +228,39 @@ def angles_result(st, out, **_):
     out.arrays.update(arr)
     out.stored["angles"] = (len(arr["angles_t"]), int(sum(v.size for v in arr.values())))
     out.figures["angles.png"] = figs.angles_png(sc, arr)
+
+
+def clv_result(st, out, **_):
+    """Per variant: angle statistics of φ (CLV route) and of the angle between the leading
+    unstable and stable CLVs, the mean growth rates along the CLVs, the domination
+    fractions and the finite-time exponents per window (``charts.analyses.covariant``)."""
+    sc = st.scene
+    c = sc.effects["clv"]
+    res, A = _pass_rows(st, out, "clv", ("variant", "n_vectors", "windows"))
+    if A is None:
+        return
+    arr = {"clv_t": A[:, 0]}
+    variants = [v for v in ("full", "restricted") if c["variant"] in (v, "both")]
+    E, Dm, F = (np.array(st.rec[k]) for k in ("clv_exponents", "clv_domination", "clv_ftle"))
+    d2 = 2 * st.system.n
+    for j, v in enumerate(variants):
+        iv = ("full", "restricted").index(v)
+        arr[f"clv_phi_{v}"], arr[f"clv_phi_vectors_{v}"] = A[:, 1 + 2 * j], A[:, 2 + 2 * j]
+        ex = E[E[:, 0] == iv][0, 1:]
+        r = {"phi": angle_statistics(arr[f"clv_phi_{v}"], SMALL_ANGLE),
+             "phi_vectors": angle_statistics(arr[f"clv_phi_vectors_{v}"], SMALL_ANGLE),
+             "exponents": ex[np.isfinite(ex)].tolist(),
+             "domination": {f"{w:g}": {"split": s, "windows": int(k)}
+                            for _, w, s, k in Dm[Dm[:, 0] == iv]}, "finite_time": {}}
+        for row in F[F[:, 0] == iv]:
+            st_ = row[4:].reshape(len(FTLE_STATS), d2)
+            r["finite_time"][f"{row[1]:g}"] = dict(
+                windows=int(row[2]), frac_nonpositive_leading=float(row[3]),
+                **{k: x[np.isfinite(x)].tolist() for k, x in zip(FTLE_STATS, st_)})
+        res[v] = r
+    out.arrays.update(arr)
+    out.stored["clv"] = (len(arr["clv_t"]), int(sum(x.size for x in arr.values())))
+    out.figures["clv.png"] = figs.clv_png(sc, arr, res)
 
 
 def curvature_result(st, out, **_):

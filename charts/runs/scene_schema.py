@@ -148,6 +148,21 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "sample_every": Key("float", 0.1, "Simulated time between angle samples; a multiple "
                             "of dt.", check=_gt(0)),
     },
+    "clv": {
+        "variant": Key("str", "both", "Covariant Lyapunov vectors (Ginelli's method) in "
+                       "\"full\": the 2N-dimensional tangent space; \"restricted\": the "
+                       "constraint-preserving subspace; or \"both\".",
+                       choices=("full", "restricted", "both")),
+        "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2, at "
+                         "most N−2).", check=_ge(1)),
+        "sample_every": Key("float", 0.1, "Simulated time between samples, which are also the "
+                            "re-orthonormalisations giving the R factors; a multiple of dt.",
+                            check=_gt(0)),
+        "windows": Key("floats", None, "Window lengths of the finite-time exponents and of the "
+                       "domination test (default [1.0, 10.0]); multiples of sample_every.",
+                       check=lambda v: None if v and all(x > 0 for x in v)
+                       else "a non-empty list of numbers, each > 0"),
+    },
     "switches": {},
     "drift": {
         "sample_every": Key("float", 1.0, "Simulated time between recorded invariant values; "
@@ -156,4 +171,4 @@ EFFECTS: dict[str, dict[str, Key]] = {
 }
 
 #: Effects that need tangent vectors (variational eq 17), integrated with ambient RK4.
-TANGENT_EFFECTS = ("lyapunov", "curvature", "angles")
+TANGENT_EFFECTS = ("lyapunov", "curvature", "angles", "clv")

@@ -15,13 +15,15 @@ returning ``False`` stops the run with everything computed so far.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..geometry.projection import invariants
 from ..geometry.system import RotorSystem
 from . import loop as D
+from .dense import DenseSolution
+from .trajectory import IntegrationResult
+from .events import EventTracker, check_events
 from .progress import progress_reporter
 from .status import (CAP_FRACTION, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
                      IntegrationError, SingularPointError, status_error)
@@ -29,7 +31,7 @@ from .ambient_formulation import AmbientFlow
 from .chart_formulation import DEFAULT_TAU, ChartFlow
 
 __all__ = ["integrate", "IntegrationResult", "IntegrationError", "SingularPointError",
-           "ChartDomainError", "TOLERANCES"]
+           "ChartDomainError", "TOLERANCES", "DenseSolution"]
 
 #: Named tolerances of the integrators.
 TOLERANCES = {
@@ -49,50 +51,6 @@ _EVERY_STEP_BUFFER = 4096
 _LOG_CAPACITY = 1024
 
 
-@dataclass
-class IntegrationResult:
-    """Samples of a geodesic, in ambient coordinates for both formulations.
-
-    Attributes
-    ----------
-    t : ndarray, shape (m,)
-    theta, u : ndarray, shape (m, n)
-        Ambient angles (continuous, not wrapped) and velocities dθ/dt.
-    transported : ndarray, shape (m, k, n), or None
-        The transported vectors (eq 16 / eq 19), ambient components.
-    switches : list of (t, from_chart, to_chart)
-        Chart switches, in order (chart formulation; empty for the ambient one).
-    drift : dict
-        Max over every accepted step and every sample of ``constraint`` = |Σ cos θ|,
-        ``tangency`` = |Σ uᵢ sin θᵢ|, ``energy`` = |E − E₀|/E₀; with ``transport``, also
-        ``transport`` = max change of the Gram matrix of (u, p¹…pᵏ) relative to |u|·|p|.
-    n_steps, n_rejected, n_rhs : int
-        Accepted steps, rejected DOP853 attempts, right-hand-side evaluations.
-    status : str
-        ``"finished"`` or ``"stopped"`` (by ``progress``), or the error status on
-        ``IntegrationError.result``.
-    """
-
-    t: np.ndarray
-    theta: np.ndarray
-    u: np.ndarray
-    transported: np.ndarray | None
-    switches: list
-    drift: dict
-    n_steps: int
-    n_rejected: int
-    n_rhs: int
-    status: str
-    formulation: str
-    method: str
-    options: dict = field(default_factory=dict)
-
-    def __repr__(self):
-        return (f"IntegrationResult({self.formulation}/{self.method}, {self.t.size} samples, "
-                f"t = {self.t[-1] if self.t.size else 0.0:g}, {len(self.switches)} switches, "
-                f"{self.n_steps} steps, status={self.status!r})")
-
-
 def _positive(name, x):
     if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
         raise ValueError(f"{name} must be a positive number, got {x!r}")
@@ -101,10 +59,44 @@ def _positive(name, x):
     return float(x)
 
 
-def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", method="dop853",
-              dt=None, rtol=None, atol=None, t_eval=None, project=False, transport=None,
-              tau=DEFAULT_TAU, chart=None, progress=None, chunk_steps=20000) -> IntegrationResult:
-    """Integrate the geodesic through (θ₀, u₀) from t = 0 to ``t_final``.
+def _span(t_final, t_span):
+    """``(t0, t1)`` from the two ways of giving the interval."""
+    if (t_final is None) == (t_span is None):
+        raise ValueError("give either t_final (from t = 0) or t_span=(t0, t1), not both")
+    if t_span is None:
+        if isinstance(t_final, bool) or not isinstance(t_final, (int, float, np.integer, np.floating)) \
+                or not math.isfinite(t_final) or t_final < 0:
+            raise ValueError(f"t_final must be a finite number >= 0, got {t_final!r}")
+        return 0.0, float(t_final)
+    try:
+        t0, t1 = (float(x) for x in t_span)
+    except (TypeError, ValueError):
+        raise ValueError(f"t_span must be a pair of numbers (t0, t1), got {t_span!r}") from None
+    if not (math.isfinite(t0) and math.isfinite(t1)):
+        raise ValueError(f"t_span must be finite, got {t_span!r}")
+    return t0, t1
+
+
+def _eval_times(t_eval, t0, t1, sign):
+    """The t_eval times as integration times s = ±(t − t0) ≥ 0, increasing."""
+    te = np.array(t_eval, dtype=float).ravel()
+    if te.size == 0 or not np.all(np.isfinite(te)):
+        raise ValueError("t_eval must be a non-empty array of finite times")
+    if np.any(sign * np.diff(te) <= 0):
+        raise ValueError(f"t_eval must be strictly {'increasing' if sign > 0 else 'decreasing'} "
+                         "(monotonic in the direction of integration)")
+    if min(te[0], te[-1]) < min(t0, t1) or max(te[0], te[-1]) > max(t0, t1):
+        raise ValueError(f"t_eval must lie in t_span = ({t0:g}, {t1:g})")
+    s = np.minimum(np.maximum(sign * (te - t0), 0.0), abs(t1 - t0))
+    return te, np.maximum.accumulate(s)
+
+
+def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, formulation="chart",
+              method="dop853", dt=None, rtol=None, atol=None, t_eval=None, dense_output=False,
+              events=None, project=False, transport=None, tau=DEFAULT_TAU, chart=None,
+              progress=None, chunk_steps=20000) -> IntegrationResult:
+    """Integrate the geodesic through (θ₀, u₀) from t = 0 to ``t_final``, or over
+    ``t_span = (t0, t1)`` (t1 < t0 integrates backwards), as ``scipy.integrate.solve_ivp``.
 
     Parameters
     ----------
@@ -112,6 +104,10 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     theta0, u0 : array_like, shape (n,)
         Initial point on Σ cos θ = 0 (eq 9) and tangent velocity, Σ uᵢ sin θᵢ = 0 (eq 10).
     t_final : float ≥ 0
+        The end time, from t = 0 (the same as ``t_span=(0, t_final)``).
+    t_span : (float, float), optional
+        ``(t0, t1)``: the state is given at t0.  Backwards (t1 < t0) is exact time reversal
+        of the geodesic flow: the run goes forwards from (θ₀, −u₀) and u is negated back.
     formulation : {"chart", "ambient"}
         Eq (14)/(16) in switching charts, or eq (8)/(19) in ambient angles.
     method : {"dop853", "rk4"}
@@ -122,7 +118,16 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     rtol, atol : float, optional (dop853 only)
         Local error tolerances, default 1e-10 and rtol·min(1, |u₀|).
     t_eval : array_like, shape (m,), optional
-        Strictly increasing sample times in [0, t_final]; default: t = 0 and every step.
+        Sample times in the span, strictly monotonic in the direction of integration;
+        default: t0 and every step.
+    dense_output : bool
+        Also return ``result.sol``, a :class:`DenseSolution`: DOP853's own 7th-order
+        interpolant, or the cubic Hermite one for RK4, in the coordinates of each step and
+        mapped to ambient (θ, u), so valid across chart switches (``charts.solvers.dense``).
+    events : callable or list of callables, optional
+        ``event(t, y)`` with y = [θ, u] (+ transported vectors), attributes ``terminal`` and
+        ``direction``: SciPy's contract (``charts.solvers.events``); zeros in
+        ``result.t_events``, ``result.y_events``.
     project : bool
         Ambient: project onto constraint, tangency and energy after every step.
         Chart: rescale the velocity to the initial energy after every step (constraint
@@ -157,10 +162,10 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         raise ValueError(f"unknown formulation {formulation!r}; use one of {sorted(_FORMULATIONS)}")
     if method not in _METHODS:
         raise ValueError(f"unknown method {method!r}; use one of {sorted(_METHODS)}")
-    if isinstance(t_final, bool) or not isinstance(t_final, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(t_final) or t_final < 0:
-        raise ValueError(f"t_final must be a finite number >= 0, got {t_final!r}")
-    t_final = float(t_final)
+    t0, t1 = _span(t_final, t_span)
+    sign = -1.0 if t1 < t0 else 1.0
+    t_final = abs(t1 - t0)  # the run below goes from s = 0 to s = t_final
+    event_list = check_events(events)
     theta0, u0 = system.check_state(theta0, u0)
     S0 = float(np.sum(np.sin(theta0) ** 2))
     if S0 < TOLERANCES["singular_S"]:
@@ -207,26 +212,20 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         raise ValueError("progress must be True, False, None or callable(t, t_final)")
 
     use_eval = t_eval is not None
-    if use_eval:
-        te = np.array(t_eval, dtype=float).ravel()
-        if te.size == 0 or not np.all(np.isfinite(te)):
-            raise ValueError("t_eval must be a non-empty array of finite times")
-        if np.any(np.diff(te) <= 0):
-            raise ValueError("t_eval must be strictly increasing")
-        if te[0] < 0 or te[-1] > t_final:
-            raise ValueError(f"t_eval must lie in [0, t_final] = [0, {t_final:g}]")
-    else:
-        te = np.zeros(0)
+    te_user, te = _eval_times(t_eval, t0, t1, sign) if use_eval else (None, np.zeros(0))
+    dense = bool(dense_output) or bool(event_list)
+    if any(ev[1] for ev in event_list):
+        chunk_steps = min(int(chunk_steps), 256)  # bounds the work done past a terminal event
 
     form_cls = _FORMULATIONS[formulation]
     kw = {"tau": tau, "chart": chart} if formulation == "chart" else {}
     if formulation == "ambient" and (chart is not None or tau != DEFAULT_TAU):
         raise ValueError("tau and chart apply to formulation='chart'")
     form = form_cls(system, project=project, cap_fraction=CAP_FRACTION[method], **kw)
-    y, par, ipar = form.initial(theta0, u0, P)
+    y, par, ipar = form.initial(theta0, sign * u0, P)
     rhs, cap, post, to_amb = form.hooks()
     st, ist = D.new_state(_METHODS[method], t_final, dt, rtol_v, atol_v, float(system.energy(u0)),
-                          TOLERANCES["singular_S"], use_eval, int(chunk_steps))
+                          TOLERANCES["singular_S"], use_eval, int(chunk_steps), dense)
     ny = y.size
     na = (2 + P.shape[0]) * n
     K = np.zeros((16, ny))
@@ -237,9 +236,14 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
     log = np.zeros((_LOG_CAPACITY, 3))
     mon = np.zeros(3)
     mpar = np.concatenate([system.masses, system.weights, [system.level]])
+    seg_cap = min(int(chunk_steps), 4096) if dense else 1
+    Seg = np.zeros((seg_cap, D.segment_layout(ny, par.size)[3]))
+    ISeg = np.zeros((seg_cap, ipar.size), dtype=np.int64)
+    sol = DenseSolution(to_amb, ny, par.size, n, na, t0, sign) if dense else None
+    tracker = EventTracker(event_list, sol, lambda s: t0 + sign * s) if event_list else None
 
     ts, rows = [], []
-    row0 = np.concatenate([theta0, u0, P.ravel()])  # the t = 0 sample is the input, exactly
+    row0 = np.concatenate([theta0, sign * u0, P.ravel()])  # the t = 0 sample is the input, exactly
     if use_eval:
         first = 1 if te[0] == 0.0 else 0
         if first:
@@ -262,27 +266,51 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
             rows.append(Y_out[:nout].copy())
             ist[D.I_NOUT] = 0
         switches.extend(form.drain_log(log, ipar))
+        if dense:
+            sol.extend(Seg, ISeg, int(ist[D.I_NSEG]))
+            ist[D.I_NSEG] = 0
 
-    def result(status):
+    def result(status, s_end):
         if use_eval:
             nout = int(ist[D.I_NOUT])
             ts.append(T_out[:nout])
             rows.append(Y_out[:nout])
-        t = np.concatenate(ts)
+        s = np.concatenate(ts)
         Y = np.concatenate(rows, axis=0)
-        return _make_result(system, t, Y, P.shape[0], mon, switches, ist, status, formulation,
-                            method, dict(dt=dt, rtol=rtol_v, atol=atol_v, project=bool(project),
-                                         tau=tau if formulation == "chart" else None,
-                                         chunk_steps=int(chunk_steps)))
+        sw = [(t0 + sign * w[0],) + tuple(w[1:]) for w in switches if w[0] <= s_end]
+        keep = s <= s_end
+        t = te_user[:s.size][keep] if use_eval else t0 + sign * s[keep]
+        Y = Y[keep]
+        if sol is not None:
+            sol.close(s_end)
+        if sign < 0:
+            Y[:, n:2 * n] *= -1.0            # back from the forward run from (θ₀, −u₀)
+        if tracker is not None and tracker.stop is not None and not use_eval \
+                and not (s.size and s[keep][-1] == s_end):
+            t = np.append(t, t0 + sign * s_end)  # the terminal event closes the output (SciPy)
+            Y = np.concatenate([Y, sol.sample([s_end])])   # (sol's rows are in user time)
+        res = _make_result(system, t, Y, P.shape[0], mon, sw, ist, status, formulation,
+                           method, dict(dt=dt, rtol=rtol_v, atol=atol_v, project=bool(project),
+                                        tau=tau if formulation == "chart" else None,
+                                        chunk_steps=int(chunk_steps), t_span=[t0, t1]))
+        res.sol = sol if dense_output else None
+        if tracker is not None:
+            res.t_events, res.y_events = tracker.results()
+        return res
 
     status_name = "finished"
     while True:
         status = D.drive(rhs, cap, post, to_amb, y, par, ipar, st, ist, te, T_out, Y_out, log,
-                         mon, mpar, K, F, ytmp, ynew, arow)
+                         mon, mpar, K, F, ytmp, ynew, arow, Seg, ISeg)
         drain()
         if status < 0:
-            res = result(f"failed at t = {st[D.S_T]:.17g}")
-            raise status_error(status, st[D.S_T], f"{formulation}/{method}", res)
+            t_fail = t0 + sign * st[D.S_T]
+            res = result(f"failed at t = {t_fail:.17g}", st[D.S_T])
+            raise status_error(status, t_fail, f"{formulation}/{method}", res)
+        if tracker is not None and tracker.scan() is not None:
+            if bar is not None:
+                bar.close()
+            return result("event", tracker.stop)
         if status == FINISHED:
             if progress is not None:
                 progress(st[D.S_T], t_final)
@@ -292,7 +320,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final, *, formulation="chart", 
         if status == RUNNING and progress is not None and progress(st[D.S_T], t_final) is False:
             status_name = "stopped"
             break
-    return result(status_name)
+    return result(status_name, st[D.S_T])
 
 
 def _make_result(system, t, Y, k, mon, switches, ist, status, formulation, method, options):

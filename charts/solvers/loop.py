@@ -32,10 +32,11 @@ from numba import njit, types
 from ..geometry.projection import invariants_of
 from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FULL, RUNNING,
                      SINGULAR, UNDERFLOW)
-from .rk import (RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense, dop853_step, initial_step,
-                 rk4_step, step_factor)
+from .rk import (INTERPOLATOR_POWER, RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense, dop853_step,
+                 hermite_dense, initial_step, rk4_step, step_factor)
 
 __all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "drive", "new_state", "monitor", "Formulation",
+           "segment_layout", "dense_sample",
            "POST_OK", "POST_CHANGED", "POST_LOG_FULL", "METHOD_RK4", "METHOD_DOP853"]
 
 _f8 = types.float64
@@ -52,7 +53,7 @@ OUT_SIG = _f8(_v, _v, _iv, _v)
 S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
 # int state
 (I_METHOD, I_NOUT, I_IEVAL, I_USE_EVAL, I_STATUS, I_NSTEPS, I_NREJ, I_NRHS, I_CHUNK,
- I_FRESH) = range(10)
+ I_FRESH, I_DENSE, I_NSEG) = range(12)
 
 METHOD_RK4, METHOD_DOP853 = 0, 1
 
@@ -60,15 +61,30 @@ POST_OK, POST_CHANGED, POST_LOG_FULL = 0, 1, 3
 
 
 def new_state(method: int, t_final: float, dt: float, rtol: float, atol: float, e0: float,
-              s_sing: float, use_eval: bool, chunk_steps: int):
-    """Fresh ``(st, ist)`` for :func:`drive` at t = 0."""
+              s_sing: float, use_eval: bool, chunk_steps: int, dense: bool = False):
+    """Fresh ``(st, ist)`` for :func:`drive` at t = 0.  ``dense``: record every step's
+    interpolant (see :func:`segment_layout`)."""
     st = np.zeros(9)
     st[S_TFINAL], st[S_DT], st[S_RTOL], st[S_ATOL] = t_final, dt, rtol, atol
     st[S_E0], st[S_SSING], st[S_HEALTH] = e0, s_sing, 1.0
     st[S_H] = -1.0  # DOP853: choose the initial step on first use
-    ist = np.zeros(10, dtype=np.int64)
+    ist = np.zeros(12, dtype=np.int64)
     ist[I_METHOD], ist[I_USE_EVAL], ist[I_CHUNK], ist[I_FRESH] = method, use_eval, chunk_steps, 1
+    ist[I_DENSE] = dense
     return st, ist
+
+
+def segment_layout(ny: int, npar: int):
+    """Columns of a row of the segment buffer ``Seg`` written by :func:`drive` when dense
+    output is on: ``(t, h, y (ny), F (INTERPOLATOR_POWER·ny, row-major), par (npar))`` — the
+    step's start time and size, the formulation state at its start, the coefficients of its
+    interpolant (:func:`charts.solvers.rk.dense_eval`) and the formulation's parameters during
+    the step; the int parameters go to the same row of ``ISeg``.  Returns the slices
+    ``(y, F, par)`` and the row width."""
+    y = slice(2, 2 + ny)
+    F = slice(y.stop, y.stop + INTERPOLATOR_POWER * ny)
+    par = slice(F.stop, F.stop + npar)
+    return y, F, par, par.stop
 
 
 @njit(cache=True)
@@ -85,13 +101,35 @@ def monitor(row, n, mpar, e0, mon):
     return True
 
 
+@njit(cache=True)
+def _record_segment(row, irow, t, h, y, F, par, ipar):
+    """Write one step's interpolant into a row of the segment buffers (``segment_layout``)."""
+    ny = y.size
+    row[0] = t
+    row[1] = h
+    for i in range(ny):
+        row[2 + i] = y[i]
+    o = 2 + ny
+    for j in range(INTERPOLATOR_POWER):
+        for i in range(ny):
+            row[o + j * ny + i] = F[j, i]
+    o += INTERPOLATOR_POWER * ny
+    for i in range(par.size):
+        row[o + i] = par[i]
+    for i in range(ipar.size):
+        irow[i] = ipar[i]
+
+
 def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_out, log, mon,
-           mpar, K, F, ytmp, ynew, arow):
+           mpar, K, F, ytmp, ynew, arow, Seg, ISeg):
     """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
     accepted steps.  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
     times ``t_eval`` (if ``ist[I_USE_EVAL]``; ``Y_out`` then has a row for every one of
     them) or after every step (until ``Y_out`` is full).  Returns the status code, also
-    stored in ``ist[I_STATUS]``.
+    stored in ``ist[I_STATUS]``.  With ``ist[I_DENSE]``, every accepted step also writes a row
+    of ``Seg``/``ISeg`` (:func:`segment_layout`): DOP853's own 7th-order interpolant, or for
+    RK4 the cubic Hermite interpolant of the step's end values and slopes (one more
+    right-hand-side evaluation a step); ``OUT_FULL`` when the buffer is full.
 
     Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); arow (na,);
     mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
@@ -99,6 +137,7 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
     ny = y.size
     method = ist[I_METHOD]
     use_eval = ist[I_USE_EVAL] != 0
+    dense = ist[I_DENSE] != 0
     ne = t_eval.size
     t = st[S_T]
     t_final = st[S_TFINAL]
@@ -114,6 +153,9 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
         if steps >= ist[I_CHUNK]:
             break
         if not use_eval and ist[I_NOUT] >= Y_out.shape[0]:
+            status = OUT_FULL
+            break
+        if dense and ist[I_NSEG] >= Seg.shape[0]:
             status = OUT_FULL
             break
         hcap = cap(y, par, ipar)
@@ -140,6 +182,10 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
             if hs < s_sing:
                 status = SINGULAR
                 break
+            if dense:  # cubic Hermite from f(y) = K[0] and f(ynew)
+                rhs(ynew, par, K[12])
+                ist[I_NRHS] += 1
+                hermite_dense(y, ynew, h, K[0], K[12], F)
         else:
             if ist[I_FRESH] != 0:
                 st[S_HEALTH] = rhs(y, par, K[0])
@@ -186,9 +232,10 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
                 break
             st[S_HEALTH] = hs
             # samples strictly inside the step, from the 7th-order interpolant
-            if use_eval and ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
+            if dense or (use_eval and ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new):
                 dop853_dense(rhs, y, ynew, h, par, K, ytmp, F)
                 ist[I_NRHS] += 3
+            if use_eval and ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
                 while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
                     te = t_eval[ist[I_IEVAL]]
                     dense_eval(F, y, (te - t) / h, ytmp)
@@ -196,6 +243,9 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
                     T_out[ist[I_NOUT]] = te
                     ist[I_NOUT] += 1
                     ist[I_IEVAL] += 1
+        if dense:  # the step's interpolant, in the formulation's coordinates of the step
+            _record_segment(Seg[ist[I_NSEG]], ISeg[ist[I_NSEG]], t, t_new - t, y, F, par, ipar)
+            ist[I_NSEG] += 1
         # accept the step
         for i in range(ny):
             y[i] = ynew[i]
@@ -237,18 +287,54 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
 _CAP_TYPE = types.FunctionType(CAP_SIG)
 _POST_TYPE = types.FunctionType(POST_SIG)
 _OUT_TYPE = types.FunctionType(OUT_SIG)
+_im = types.int64[:, ::1]
 DRIVE_SIG = _i8(RHS_TYPE, _CAP_TYPE, _POST_TYPE, _OUT_TYPE, _v, _v, _iv, _v, _iv, _v, _v, _m, _m,
-                _v, _v, _m, _m, _v, _v, _v)
-
-_compiled = None
+                _v, _v, _m, _m, _v, _v, _v, _m, _im)
 
 
-def drive(*args):
-    """Compiled :func:`_drive` (compiled on first use, cached on disk)."""
-    global _compiled
-    if _compiled is None:
-        _compiled = njit(DRIVE_SIG, cache=True)(_drive)
-    return _compiled(*args)
+
+class _CompiledOnUse:
+    """``fn`` compiled with the signature ``sig`` on its first call (cached on disk)."""
+
+    def __init__(self, fn, sig):
+        self.fn, self.sig, self.compiled = fn, sig, None
+        self.__doc__ = f"Compiled :func:`{fn.__name__}` (compiled on first use, cached on disk)."
+
+    def __call__(self, *args):
+        if self.compiled is None:
+            self.compiled = njit(self.sig, cache=True)(self.fn)
+        return self.compiled(*args)
+
+
+drive = _CompiledOnUse(_drive, DRIVE_SIG)
+
+
+def _dense_sample(to_ambient, Seg, ISeg, ny, idx, x, out):
+    """Rows ``out[j]`` = ambient state of the interpolant of segment ``idx[j]`` at fraction
+    ``x[j]`` of its step (segments as written by :func:`drive`)."""
+    ys = 2                                   # the columns of segment_layout
+    Fs = ys + ny
+    ps = Fs + INTERPOLATOR_POWER * ny
+    npar = Seg.shape[1] - ps
+    F = np.empty((INTERPOLATOR_POWER, ny))
+    y0 = np.empty(ny)
+    yx = np.empty(ny)
+    par = np.empty(npar)
+    for j in range(idx.size):
+        r = idx[j]
+        for i in range(ny):
+            y0[i] = Seg[r, ys + i]
+        for k in range(INTERPOLATOR_POWER):
+            for i in range(ny):
+                F[k, i] = Seg[r, Fs + k * ny + i]
+        for i in range(npar):
+            par[i] = Seg[r, ps + i]
+        dense_eval(F, y0, x[j], yx)
+        to_ambient(yx, par, ISeg[r].copy(), out[j])
+    return 0
+
+
+dense_sample = _CompiledOnUse(_dense_sample, _i8(_OUT_TYPE, _m, _im, _i8, _iv, _v, _m))
 
 
 class Formulation:

@@ -28,7 +28,7 @@ from .dop853_coefficients import A, B, D, E3, E5, INTERPOLATOR_POWER, N_STAGES, 
 __all__ = [
     "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "rk4_stage_point",
     "rk4_combine",
-    "rk4_step", "dop853_step", "dop853_dense", "dense_eval", "initial_step", "step_factor",
+    "rk4_step", "dop853_step", "dop853_dense", "hermite_dense", "dense_eval", "initial_step", "step_factor",
     "N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER",
 ]
 
@@ -174,16 +174,35 @@ def dop853_dense(f, y, ynew, h, par, K, ytmp, F):
     n = y.size
     for s in range(N_STAGES + 1, N_STAGES_EXTENDED):
         _stage(f, y, h, par, K, s, ytmp)
+    _hermite_rows(y, ynew, h, K[0], K[N_STAGES], F)
     for i in range(n):
-        dy = ynew[i] - y[i]
-        F[0, i] = dy
-        F[1, i] = h * K[0, i] - dy
-        F[2, i] = 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
         for r in range(INTERPOLATOR_POWER - 3):
             acc = 0.0
             for j in range(N_STAGES_EXTENDED):
                 acc += D[r, j] * K[j, i]
             F[3 + r, i] = h * acc
+
+
+@njit(cache=True, inline="always")
+def _hermite_rows(y, ynew, h, f0, f1, F):
+    """Rows 0–2 of the interpolant coefficients: with the other rows zero, :func:`dense_eval`
+    is the cubic Hermite interpolant of (y, f0) and (ynew, f1) over the step h."""
+    for i in range(y.size):
+        dy = ynew[i] - y[i]
+        F[0, i] = dy
+        F[1, i] = h * f0[i] - dy
+        F[2, i] = 2.0 * dy - h * (f1[i] + f0[i])
+
+
+@njit(cache=True)
+def hermite_dense(y, ynew, h, f0, f1, F):
+    """Coefficients (``F``, shape (7, n), for :func:`dense_eval`) of the cubic Hermite
+    interpolant of a step from ``y`` to ``ynew`` of size h with slopes f0 = f(y), f1 = f(ynew):
+    third order, the dense output of the RK4 routes."""
+    _hermite_rows(y, ynew, h, f0, f1, F)
+    for r in range(3, INTERPOLATOR_POWER):
+        for i in range(y.size):
+            F[r, i] = 0.0
 
 
 @njit(cache=True)

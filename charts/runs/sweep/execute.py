@@ -10,14 +10,15 @@ import uuid
 from pathlib import Path
 
 from ..io import atomic_text
-from .points import sweep_points
+from ..scene import scene_to_dict
+from .points import digest, sweep_points
 from .report import SUMMARY, plot_sweep, summarize, write_summary
 from .spec import Sweep, SweepError
 from .table import (TABLE, TableAppender, finish_table, point_columns, point_row,
                     prepare_table)
 from .worker import evaluate_point
 
-__all__ = ["run_sweep", "dask_client", "META"]
+__all__ = ["run_sweep", "dask_client", "same_scene_groups", "META"]
 
 META = "sweep.json"
 
@@ -69,6 +70,18 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
     return info
 
 
+def same_scene_groups(points) -> list[list]:
+    """The points grouped by identical scene (everything but name and description; the
+    seed is part of the scene), in first-seen order: two families that meet (e.g. equal
+    masses in both) keep a row each but are computed once."""
+    groups = {}
+    for p in points:
+        d = scene_to_dict(p.scene)
+        key = digest({k: v for k, v in d.items() if k not in ("name", "description")})
+        groups.setdefault(key, []).append(p)
+    return list(groups.values())
+
+
 def dask_client(scheduler, workers):
     """``(client, cluster)``: a client of the cluster at ``scheduler`` (cluster None), or of
     a new LocalCluster of ``workers`` single-threaded processes (default: every core)."""
@@ -110,30 +123,32 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
             where = scheduler or f"a local cluster of {nw} workers"
             bar.write(f"{sweep.name}: {total} points ({n_done} finished before, {len(todo)} to "
                       f"compute) on {where}")
-        for p in todo:
-            fut = client.submit(evaluate_point, p.raw, key=f"charts-sweep-{p.point_id}",
-                                pure=False)
-            futures[fut] = p
+        for group in same_scene_groups(todo):    # identical scenes are computed once
+            fut = client.submit(evaluate_point, group[0].raw,
+                                key=f"charts-sweep-{group[0].point_id}", pure=False)
+            futures[fut] = group
         for fut in as_completed(list(futures)):
-            p = futures[fut]
+            group = futures[fut]
             try:
                 out = fut.result()
             except Exception as exc:        # the worker died or could not run it
-                info["lost"].append((p.index, f"{type(exc).__name__}: {exc}"))
-                bar.update(1)
+                info["lost"] += [(p.index, f"{type(exc).__name__}: {exc}") for p in group]
+                bar.update(len(group))
                 continue
-            app.add(point_row(p, out, columns),
-                    {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
-                     "status": out["status"], "wall_s": out["wall_s"], "worker": out["worker"],
-                     "finished": time.strftime("%Y-%m-%dT%H:%M:%S")})
-            info["computed"].append(p.point_id)
-            if out["status"] != "complete":
-                info["failed"].append((p.index, out["error"]))
-            bar.update(1)
+            for p in group:
+                app.add(point_row(p, out, columns),
+                        {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
+                         "status": out["status"], "wall_s": out["wall_s"],
+                         "worker": out["worker"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
+                         **({"same_scene_as": group[0].index} if p is not group[0] else {})})
+                info["computed"].append(p.point_id)
+                if out["status"] != "complete":
+                    info["failed"].append((p.index, out["error"]))
+                bar.update(1)
+                if on_point is not None:
+                    on_point(n_done + len(info["computed"]), total)
             lead = out["stats"].get("lambda_1")
-            bar.set_postfix_str(f"#{p.index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
-            if on_point is not None:
-                on_point(n_done + len(info["computed"]), total)
+            bar.set_postfix_str(f"#{group[0].index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
     except BaseException:
         client.cancel(list(futures))
         raise

@@ -27,10 +27,14 @@ PLOTTED = ("lambda_", "Kpos_", "phi_full_min", "phi_restricted_min", "phi_full_f
 
 # --------------------------------------------------------------------------- summary
 def _num(s):
-    try:
-        return float(s)
-    except (TypeError, ValueError):
-        return s
+    """A table cell as a number: an integer stays an integer (N, seeds, counts), others
+    float; non-numbers as they are."""
+    for kind in (int, float):
+        try:
+            return kind(s)
+        except (TypeError, ValueError):
+            continue
+    return s
 
 
 def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> dict:

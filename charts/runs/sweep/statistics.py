@@ -6,7 +6,8 @@ from ..scene import Scene
 
 __all__ = ["stat_columns", "result_statistics"]
 
-#: The angle statistics, per variant (``phi_<variant>_<stat>``).
+#: The angle statistics, per variant (``phi_<variant>_<stat>``; CLV route:
+#: ``clv_phi_<variant>_<stat>``).
 ANGLE_STATS = ("min", "p001", "median", "frac_small")
 
 
@@ -28,6 +29,11 @@ def stat_columns(scene: Scene) -> list[str]:
         v = eff["angles"]["variant"]
         for var in (["full", "restricted"] if v == "both" else [v]):
             cols += [f"phi_{var}_{s}" for s in ANGLE_STATS]
+    if "clv" in eff:
+        c = eff["clv"]
+        for var in (["full", "restricted"] if c["variant"] == "both" else [c["variant"]]):
+            cols += [f"clv_phi_{var}_{s}" for s in ANGLE_STATS]
+            cols += [f"clv_split_{var}_{w:g}" for w in c["windows"]]
     return cols
 
 
@@ -52,4 +58,11 @@ def result_statistics(result: dict, arrays) -> dict:
         if var in an:
             for s in ANGLE_STATS:
                 out[f"phi_{var}_{s}"] = an[var][s]
+    cl = res.get("clv", {})
+    for var in ("full", "restricted"):
+        if var in cl:
+            for s in ANGLE_STATS:
+                out[f"clv_phi_{var}_{s}"] = cl[var]["phi"][s]
+            for w, d in cl[var]["domination"].items():
+                out[f"clv_split_{var}_{w}"] = d["split"]
     return out

@@ -1,0 +1,351 @@
+"""Covariant Lyapunov vectors (Ginelli et al., PRL 99, 130601 (2007)) and, from them, the
+hyperbolicity test of section 4 by a route independent of the backward adjoint one.
+
+Along one reference trajectory of eq (8), with D tangent vectors (eq 17):
+
+1. forward: the tangent kernel (``charts.solvers.tangent.TangentFlow``) advances the state and
+   D vectors sample by sample; at every sample point the vectors are projected onto T_r (the
+   restricted variant) and re-orthonormalised by the kernel's Gram–Schmidt (eq 18) in the
+   Euclidean product of R^{2N} (the angle test's).  The Gram–Schmidt vectors Q_j and the
+   upper-triangular R_j with M(t_{j−1} → t_j) Q_{j−1} = Q_j R_j are stored at every sample;
+2. backward: from a random upper-triangular C at the last sample, C_{j−1} = R_j⁻¹ C_j with
+   unit columns; after a backward transient the columns give the CLVs v_j^i = Σ_q C_j[q, i] Q_j[q]
+   (unit, largest exponent first), and the norm lost in each step the growth rate along v^i;
+3. at each sample: sin φ = the smallest singular value of the part of E_u = span(Q_j[:m])
+   orthogonal to E_cs = span(v_j^{m+1} … v_j^D) — the angle of `hyperbolicity_angles`.
+
+Variants (as the angle test's): ``restricted`` keeps the D = 2N−2 vectors in the invariant
+constraint-preserving subspace T_r (``charts.geometry.projection``); ``full`` uses D = 2N
+vectors in all of R^{2N}, so E_cs contains the two non-physical directions.  Masses enter
+through eq (8); the product is Euclidean in both variants.
+
+Layout of the trajectory: the same as `hyperbolicity_angles` (transient, window of S samples
+from t_transient, then at least one more sample interval and t_transient for the backward
+iteration), from the same start, dt and projection steps, hence the same trajectory.
+
+Memory: the stored factors take 8·(D·2N + D² + 2N) bytes per sample (Q, R and the state;
+`sample_bytes`): N = 3 restricted 368 B, N = 5 full 1.68 kB, i.e. 420 MB for the 2.5·10⁵
+samples of t = 2.5·10⁴ at sample_every = 0.1.  Above ``max_memory`` they are streamed to
+``.npy`` memory maps in a temporary folder (``scratch``), removed at the end, and the
+backward pass reads them in chunks of `CHUNK` samples.  In memory in any case: the rates,
+8·3D bytes per sample, and the results (the CLVs themselves only with ``keep_vectors``).
+"""
+from __future__ import annotations
+
+import shutil
+import tempfile
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from ..archive import Archivable, attributes, dataset
+from ..geometry.projection import project_tangent_sc
+from ..solvers.status import NONFINITE, status_error
+from ..solvers.tangent import TangentFlow, orthonormalize
+from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
+                        samples_of, start_state, steps_of, unstable_dimension)
+from .finite_time import domination, finite_time_statistics
+from .hyperbolicity import angle_statistics
+
+__all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
+           "MAX_MEMORY"]
+
+#: default limit (bytes) of the stored factors kept in memory; beyond it they go to disk.
+MAX_MEMORY = 256 << 20
+#: samples per chunk of the forward buffers and of the backward pass.
+CHUNK = 2048
+
+
+def clv_dimension(n, variant):
+    """D, the number of CLVs: 2N−2 (``restricted``) or 2N (``full``)."""
+    if variant == "restricted":
+        return 2 * n - 2
+    if variant == "full":
+        return 2 * n
+    raise ValueError(f"variant must be 'restricted' or 'full', got {variant!r}")
+
+
+def sample_bytes(n, variant):
+    """Bytes of the factors stored per sample point by the forward pass: Q (D, 2N),
+    R (D, D) and the state (2N,)."""
+    D = clv_dimension(n, variant)
+    return 8 * (D * 2 * n + D * D + 2 * n)
+
+
+@njit(cache=True)
+def _factor(y, X, minv, s, c, w, restricted, logs, Xraw, Rout):
+    """Project X (D, 2N) onto T_r at y (if ``restricted``), keep a copy in Xraw, Gram–Schmidt
+    it in place (eq 18, `orthonormalize`, logs added to ``logs``) and store the upper-
+    triangular factor Rout[q, r] = ⟨Q_q, X_r⟩ (q ≤ r) of X = Rᵀ Q (rows)."""
+    if restricted:
+        project_tangent_sc(y, X, minv, s, c)
+    D, d = X.shape
+    for r in range(D):
+        for i in range(d):
+            Xraw[r, i] = X[r, i]
+    orthonormalize(X, w, logs)
+    for q in range(D):
+        for r in range(D):
+            a = 0.0
+            if r >= q:
+                for i in range(d):
+                    a += w[i] * X[q, i] * Xraw[r, i]
+            Rout[q, r] = a
+
+
+@njit(cache=True)
+def _backward(R, C, Cs, lost):
+    """Ginelli's backward step over one chunk, last sample first: Cs[b] = C (unit columns,
+    the coefficients at sample b), then C ← R[b]⁻¹ C (back substitution), lost[b, i] = log of
+    the norm of column i (minus the log growth along CLV i from sample b−1 to b), normalised."""
+    B, D, _ = R.shape
+    x = np.empty(D)
+    for b in range(B - 1, -1, -1):
+        Cs[b] = C
+        for i in range(D):
+            for r in range(D - 1, -1, -1):
+                a = C[r, i]
+                for q in range(r + 1, D):
+                    a -= R[b, r, q] * x[q]
+                x[r] = a / R[b, r, r]
+            nrm = 0.0
+            for r in range(D):
+                nrm += x[r] * x[r]
+            nrm = np.sqrt(nrm)
+            lost[b, i] = np.log(nrm)
+            for r in range(D):
+                C[r, i] = x[r] / nrm
+
+
+def _angle(A, B):
+    """Smallest angle (rad) between span(rows of A) and span(rows of B), stacked over the
+    first axis; A has orthonormal rows.  From the sine (the part of A orthogonal to B)."""
+    Bq, _ = np.linalg.qr(np.swapaxes(B, 1, 2))                       # (S, d, kB)
+    P = A - (A @ Bq) @ np.swapaxes(Bq, 1, 2)
+    sv = np.linalg.svd(P, compute_uv=False)[:, -1]
+    return np.arcsin(np.clip(sv, 0.0, 1.0))
+
+
+class _Store:
+    """Q (S, D, 2N), R (S, D, D) and states (S, 2N) in memory or as .npy memory maps."""
+
+    def __init__(self, shape_q, shape_r, shape_y, on_disk, scratch):
+        self.folder = None
+        if on_disk:
+            self.folder = tempfile.mkdtemp(prefix="charts-clv-", dir=scratch)
+            mk = lambda name, shp: np.lib.format.open_memmap(    # noqa: E731
+                f"{self.folder}/{name}.npy", mode="w+", dtype=float, shape=shp)
+        else:
+            mk = lambda name, shp: np.empty(shp)                   # noqa: E731
+        self.Q, self.R, self.y = mk("Q", shape_q), mk("R", shape_r), mk("y", shape_y)
+
+    def close(self):
+        if self.folder is not None:
+            del self.Q, self.R, self.y
+            shutil.rmtree(self.folder, ignore_errors=True)
+
+
+@dataclass
+class CovariantResult(Archivable):
+    """CLV analysis along one trajectory, one variant; S samples, D = `clv_dimension` CLVs
+    (index 0 the largest exponent).
+
+    t : (S,) sample times.   phi : (S,) angle (rad) between E_u and E_cs (section 4).
+    phi_vectors : (S,) angle (rad, in [0, π/2]) between the leading unstable CLV (index 0)
+        and the leading stable one (index D − (N−2), the first negative exponent).
+    growth : (S, D) growth rates along the CLVs over [t_j, t_j + sample_every] (1/time).
+    gs_rates : (S, D) the same for the Gram–Schmidt vectors, log R_ii / sample_every.
+    exponents, gs_exponents : (D,) their means over the window (the Lyapunov spectrum).
+    states : (S, 2N) the trajectory (θ, u) at the samples.
+    vectors : (S, D, 2N) or None  the CLVs (unit, Euclidean), if ``keep_vectors``.
+    """
+    t: np.ndarray
+    variant: str
+    phi: np.ndarray
+    phi_vectors: np.ndarray
+    growth: np.ndarray
+    gs_rates: np.ndarray
+    states: np.ndarray
+    vectors: np.ndarray | None
+    params: dict
+
+    @property
+    def exponents(self):
+        return self.growth.mean(axis=0)
+
+    @property
+    def gs_exponents(self):
+        return self.gs_rates.mean(axis=0)
+
+    def statistics(self, **kw):
+        """`angle_statistics` of ``phi``."""
+        return angle_statistics(self.phi, **kw)
+
+    def finite_time(self, windows):
+        """`finite_time_statistics` of the Gram–Schmidt rates for the window lengths
+        ``windows`` (time units, multiples of sample_every)."""
+        return finite_time_statistics(self.gs_rates, self.params["sample_every"], windows)
+
+    def domination(self, windows):
+        """`domination` test of the growth rates along the CLVs."""
+        return domination(self.growth, self.params["m"], self.params["sample_every"], windows)
+
+    KIND = "covariant"
+
+    def to_xarray(self):
+        data = {
+            "phi": (("t",), self.phi, "rad", "angle between E_u and E_cs"),
+            "phi_vectors": (("t",), self.phi_vectors, "rad",
+                            "angle between the leading unstable and the leading stable CLV"),
+            "growth": (("t", "clv"), self.growth, "1 / time", "growth rate along each CLV"),
+            "gs_rates": (("t", "clv"), self.gs_rates, "1 / time",
+                         "growth rate of each Gram-Schmidt vector"),
+            "states": (("t", "component"), self.states, "rad | rad / time",
+                       "state (theta, u) at the samples")}
+        if self.vectors is not None:
+            data["vectors"] = (("t", "clv", "component"), self.vectors, "1", "unit CLVs")
+        return dataset(self.KIND, data, coords={"t": (("t",), self.t, "time")},
+                       attrs={"variant": self.variant, "params": self.params})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        a = attributes(ds)
+        return cls(t=ds["t"].values, variant=a["variant"], phi=ds["phi"].values,
+                   phi_vectors=ds["phi_vectors"].values, growth=ds["growth"].values,
+                   gs_rates=ds["gs_rates"].values, states=ds["states"].values,
+                   vectors=ds["vectors"].values if "vectors" in ds else None,
+                   params=a["params"])
+
+    def plot(self, axes=None, **kw):
+        """Histogram of φ(E_u, E_cs) by the CLV route; ``(fig, axes)``
+        (``charts.plotting.plot_angles``)."""
+        from ..plotting import plot_angles
+        kw.setdefault("title", "angles between $E_u$ and $E_{cs}$ (covariant Lyapunov vectors)")
+        return plot_angles({self.variant: self.phi}, axes=axes, **kw)
+
+
+def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restricted", dt=0.01,
+                               n_unstable=None, t_transient=100.0, sample_every=0.1,
+                               project_every=1.0, seed=0, keep_vectors=False,
+                               max_memory=MAX_MEMORY, scratch=None,
+                               progress=False) -> CovariantResult:
+    """CLVs by Ginelli's method along the trajectory from (theta0, u0), and the angles,
+    growth rates and finite-time exponents built on them (module docstring).
+
+    Parameters
+    ----------
+    system : RotorSystem
+    theta0, u0 : ndarray, shape (N,)
+    t_final : float
+        Length of the analysed window (a multiple of ``sample_every``).
+    variant : {'restricted', 'full'}
+        CLVs in T_r (D = 2N−2) or in R^{2N} (D = 2N).
+    dt : float
+        RK4 step; every other time is a whole number of steps.
+    n_unstable : int, optional
+        m, the dimension of E_u (default N−2).
+    t_transient : float
+        Convergence time of the forward Gram–Schmidt vectors and of the backward iteration.
+    sample_every : float
+        Time between samples, i.e. between re-orthonormalisations (10 steps at the default:
+        the vectors grow by at most e^{(λ₁−λ_D)·0.1} ≈ 1.1 in between).
+    project_every : float or None
+        Time between projections of the state onto the invariants (None: never).
+    seed : int
+        Seed of the random initial vectors and of the random initial C.
+    keep_vectors : bool
+        Return the CLVs (S·D·2N·8 bytes).
+    max_memory : int
+        Bytes of stored factors kept in memory; more goes to a temporary folder on disk.
+    scratch : str, optional
+        Parent folder of that temporary folder (default: the system's temporary folder).
+    progress : bool or callable(t_done, t_total)
+    """
+    n = system.n
+    D = clv_dimension(n, variant)
+    m = unstable_dimension(n, n_unstable)
+    dt = positive_time("dt", dt)
+    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    n_win = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    project = project_steps(project_every, dt)
+    seed = positive_int("seed", seed, 0)
+    max_memory = positive_int("max_memory", max_memory, 0)
+    theta0, u0 = start_state(system, theta0, u0)
+    S = samples_of(n_win, sample, t_final, sample_every)
+    n_back = max(1, -(-n_tr // sample))
+    total = S + n_back                                  # stored samples
+    n_steps = n_tr + (total - 1) * sample               # the first one at the transient's end
+    d = 2 * n
+    tau = sample * dt
+    restricted = variant == "restricted"
+    # the kernel never re-orthonormalises (reorth_every beyond the run): `_factor` does, at
+    # the samples, with the kernel's Gram–Schmidt, keeping R
+    flow = TangentFlow(system, theta0, u0, D, dt=dt, inner="euclidean", restricted=restricted,
+                       reorth_every=n_steps + 1, project_every=project, seed=seed)
+    minv = system.minv
+    rep = progress_reporter(progress, n_steps * dt, f"CLV N={n} {variant}")
+    where = f"covariant_lyapunov_vectors (RK4, {variant})"
+    Xraw = np.empty((D, d))
+    Rk = np.empty((D, D))
+    logs = np.zeros(D)
+    done = 0
+    while done < n_tr:                                   # forward transient
+        k = min(sample, n_tr - done)
+        flow.advance(k, where=where)
+        _factor(flow.y, flow.X, minv, flow.sc[0], flow.sc[1], flow.w, restricted, logs, Xraw, Rk)
+        done += k
+        rep.update(k * dt)
+    store = _Store((total, D, d), (total, D, D), (total, d),
+                   total * sample_bytes(n, variant) > max_memory, scratch)
+    try:
+        gs = np.empty((total, D))
+        bq, br, by = np.empty((CHUNK, D, d)), np.empty((CHUNK, D, D)), np.empty((CHUNK, d))
+        for a in range(0, total, CHUNK):                  # forward: store Q_j, R_j, y_j
+            b = min(total, a + CHUNK)
+            for j in range(a, b):
+                if j > 0:
+                    flow.advance(sample, where=where)
+                    rep.update(tau)
+                logs[:] = 0.0
+                _factor(flow.y, flow.X, minv, flow.sc[0], flow.sc[1], flow.w, restricted, logs,
+                        Xraw, br[j - a])
+                if not np.isfinite(logs).all():
+                    raise status_error(NONFINITE, flow.steps * dt, where)
+                gs[j] = logs / tau
+                bq[j - a] = flow.X
+                by[j - a] = flow.y
+            store.Q[a:b], store.R[a:b], store.y[a:b] = bq[:b - a], br[:b - a], by[:b - a]
+        rng = np.random.default_rng([seed, 2])
+        C = np.triu(rng.uniform(0.5, 1.5, size=(D, D)))
+        C /= np.linalg.norm(C, axis=0)
+        lost = np.zeros((total, D))
+        phi, phi_v = np.empty(S), np.empty(S)
+        states = np.empty((S, d))
+        vectors = np.empty((S, D, d)) if keep_vectors else None
+        ist = D - (n - 2)                                  # the leading stable CLV
+        for b in range(total, 0, -CHUNK):                  # backward, last chunk first
+            a = max(0, b - CHUNK)
+            Cs = np.empty((b - a, D, D))
+            _backward(np.ascontiguousarray(store.R[a:b]), C, Cs, lost[a:b])
+            hi = min(b, S)
+            if a < hi:
+                Q = np.asarray(store.Q[a:hi])
+                V = np.einsum("kqi,kqx->kix", Cs[:hi - a], Q)       # rows: the CLVs
+                phi[a:hi] = _angle(Q[:, :m], V[:, m:])
+                phi_v[a:hi] = _angle(V[:, :1], V[:, ist:ist + 1])
+                states[a:hi] = store.y[a:hi]
+                if keep_vectors:
+                    vectors[a:hi] = V
+    finally:
+        store.close()
+    rep.close()
+    t = (n_tr + np.arange(S) * sample) * dt
+    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, variant=variant, dt=dt, m=m, D=D,
+                  t_final=n_win * dt, t_transient=n_tr * dt, sample_every=tau,
+                  speed=flow.speed, project_every=project * dt or None, seed=seed,
+                  bytes_per_sample=sample_bytes(n, variant), stored_samples=total)
+    return CovariantResult(t, variant, phi, phi_v, -lost[1:S + 1] / tau, gs[1:S + 1], states,
+                           vectors, params)

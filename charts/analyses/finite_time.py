@@ -1,0 +1,63 @@
+"""Finite-time Lyapunov exponents and the domination test of the Oseledets splitting.
+
+Input: local growth rates ``rates`` (S, D) (1/time) over S consecutive intervals of length
+``sample_every`` — the Gram–Schmidt rates log R_ii/τ of eq (18) or the rates along the
+covariant Lyapunov vectors (``charts.analyses.covariant``).  A finite-time exponent over a
+window of length T = k·sample_every is the mean of k consecutive rates; windows do not
+overlap, so the S // k windows of one length are as independent as the trajectory allows.
+
+Domination (a third view of hyperbolicity besides the angles): the splitting E_u ⊕ E_cs is
+dominated if for some window length T every finite-time exponent along the unstable CLVs
+exceeds every one along the centre-stable CLVs, at every time.  `domination` reports the
+fraction of windows where that order fails, for several T: for a dominated splitting it
+vanishes beyond some T, for a non-dominated one it decays without vanishing.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .arguments import positive_time, steps_of
+
+__all__ = ["window_means", "finite_time_statistics", "domination"]
+
+
+def window_means(rates, sample_every, window):
+    """Finite-time exponents (W, D): means of ``rates`` (S, D) over the W = S // k
+    non-overlapping windows of ``window`` = k·sample_every (a whole multiple; ValueError
+    otherwise or if no window fits)."""
+    rates = np.asarray(rates, dtype=float)
+    tau = positive_time("sample_every", sample_every)
+    k = steps_of("window", window, tau)
+    W = rates.shape[0] // k
+    if W < 1:
+        raise ValueError(f"window={window:g} is longer than the {rates.shape[0] * tau:g} time "
+                         f"units of rates; use a shorter window")
+    return rates[:W * k].reshape(W, k, rates.shape[1]).mean(axis=1)
+
+
+def finite_time_statistics(rates, sample_every, windows):
+    """Distribution of the finite-time exponents for each window length in ``windows``:
+    {window: dict(count, mean (D,), std (D,), p01, p50, p99 (D,) percentiles 1/50/99,
+    frac_nonpositive_leading: fraction of windows whose leading exponent is <= 0)}."""
+    out = {}
+    for w in windows:
+        L = window_means(rates, sample_every, w)
+        p01, p50, p99 = np.percentile(L, [1, 50, 99], axis=0)
+        out[float(w)] = dict(count=int(L.shape[0]), mean=L.mean(0), std=L.std(0), p01=p01,
+                             p50=p50, p99=p99,
+                             frac_nonpositive_leading=float((L[:, 0] <= 0).mean()))
+    return out
+
+
+def domination(growth, m, sample_every, windows):
+    """Order of the finite-time exponents along the CLVs, ``growth`` (S, D) (index 0 the
+    largest exponent), for each window length: {window: dict(count, split: fraction of
+    windows where min over the m unstable CLVs <= max over the others (E_u does not dominate
+    E_cs), pairs (D−1,): fraction where CLV i grows slower than CLV i+1)}."""
+    out = {}
+    for w in windows:
+        L = window_means(growth, sample_every, w)
+        split = L[:, :m].min(axis=1) <= L[:, m:].max(axis=1)
+        out[float(w)] = dict(count=int(L.shape[0]), split=float(split.mean()),
+                             pairs=(L[:, :-1] < L[:, 1:]).mean(axis=0))
+    return out

@@ -1,0 +1,173 @@
+"""Figures of the analyses: Lyapunov convergence, curvature and angle histograms, power
+spectra, drift of the invariants.  The one home of these pictures: the result classes'
+``plot()`` and the figures scenes write both draw with them.  Each returns ``(fig, ax)``
+(or ``(fig, axes)``) on a pyplot-free figure or the axes given.
+
+Robust axes: nothing at or below :data:`LOG_FLOOR` goes on a log axis (those samples are
+counted in the legend instead), histogram tails beyond :data:`CURVATURE_QUANTILES` are
+clipped and the clipped share stated, reference values are drawn only where they exist."""
+from __future__ import annotations
+
+import numpy as np
+
+from .style import TIME, figure_axes, new_figure
+
+__all__ = ["plot_lyapunov", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
+           "CURVATURE_QUANTILES", "LOG_FLOOR"]
+
+#: Quantiles (in %) of the curvature samples that set the histogram limits; the share of
+#: samples beyond them is written in each panel (the numbers elsewhere use every sample).
+CURVATURE_QUANTILES = (2.0, 99.5)
+#: Values at or below this are not drawn on a log axis (exact zeros, subnormal numbers and
+#: values far below double rounding of O(1) quantities, ~1e-16).
+LOG_FLOOR = 1e-18
+
+
+def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="paper (dotted)",
+                  ax=None, title=None):
+    """Running estimates ``H`` (m, k) of the exponents against the averaging time ``T`` (m,)
+    on a log axis; the final ``exponents`` ± ``stderr`` as bands and error bars (when there
+    are standard errors); ``paper`` values as dotted lines (only when given)."""
+    T = np.asarray(T, dtype=float)
+    H = np.asarray(H, dtype=float).reshape(len(T), -1)
+    fig, ax = figure_axes(ax, figsize=(7, 4.6))
+    keep = T > 0
+    for i in range(H.shape[1]):
+        color = f"C{i}"
+        lam = exponents[i]
+        se = None if stderr is None else stderr[i]
+        if se is None:
+            lab = f"λ{i + 1} = {lam:.4g} (one batch: no error bar)"
+        else:
+            lab = f"λ{i + 1} = {lam:.4g} ± {se:.2g}"
+            ax.axhspan(lam - se, lam + se, color=color, alpha=0.18, lw=0)
+            if keep.any():
+                ax.errorbar([T[keep][-1]], [lam], yerr=[se], color=color, capsize=4, lw=1.4)
+        ax.plot(T[keep], H[keep, i], marker="o" if keep.sum() < 60 else None, ms=3, lw=1.0,
+                color=color, label=lab)
+    for i, p in enumerate(paper if paper is not None else []):
+        ax.axhline(p, color="k", lw=1.0, ls=":", label=paper_label if i == 0 else None)
+    if keep.sum() >= 2 and T[keep][-1] > T[keep][0]:
+        from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+        ax.set_xscale("log")
+        decades = np.log10(T[keep][-1] / T[keep][0])
+        ax.xaxis.set_major_locator(LogLocator(subs=(1.0,) if decades > 3 else (1.0, 2.0, 5.0)))
+        ax.xaxis.set_major_formatter(FuncFormatter(lambda x, _: f"{x:g}"))
+        ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.set_xlabel("averaging time T (time units of the flow)")
+    ax.set_ylabel("λ (1 / time unit)")
+    how = "running estimates"
+    if stderr is not None:
+        how += "; band and bar: final estimate ± standard error"
+    ax.set_title(title or f"Lyapunov exponents ({how})", fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    return fig, ax
+
+
+def plot_curvature(samples, *, quantiles=CURVATURE_QUANTILES, axes=None, ax=None, title=None,
+                   bins=60):
+    """Histograms of sectional curvatures, one panel per direction: ``samples`` maps a route
+    name to an array (S, k) (or (S,)).  Limits from the robust ``quantiles`` of all samples
+    (widened to include K = 0, drawn as a line); the share of samples beyond them is stated."""
+    from matplotlib.ticker import MaxNLocator
+
+    samples = {r: np.asarray(v, dtype=float).reshape(len(v), -1) for r, v in samples.items()}
+    routes = list(samples)
+    k = samples[routes[0]].shape[1]
+    if ax is not None:
+        axes = [ax]
+    if axes is None:
+        fig, grid = new_figure(1, k, figsize=(4 * k + 1.0, 3.6), squeeze=False)
+        axes = list(grid[0])
+    fig = axes[0].figure
+    for i in range(k):
+        a = axes[i]
+        allv = np.concatenate([samples[r][:, i] for r in routes])
+        lo, hi = np.percentile(allv, quantiles)
+        lo, hi = min(lo, 0.0), max(hi, 0.0)
+        pad = 0.03 * (hi - lo) or 0.05
+        lo, hi = lo - pad, hi + pad
+        for j, r in enumerate(routes[::-1]):   # thin dashed over wide solid
+            style = (dict(ls="--", lw=1.0, color="k") if j == len(routes) - 1 and len(routes) > 1
+                     else dict(lw=2.0, color=f"C{j}", alpha=0.8))
+            a.hist(samples[r][:, i], bins=bins, range=(lo, hi), histtype="step", density=True,
+                   label=f"{r} route" if i == 0 else None, **style)
+        a.axvline(0.0, color="k", lw=0.8, label="K = 0" if i == 0 else None)
+        a.set_xlim(lo, hi)
+        a.xaxis.set_major_locator(MaxNLocator(5))
+        a.set_xlabel(f"$K_{{{i + 1}{i + 1}}}$ (1/rad²)")
+        a.set_ylabel("probability density")
+        v = samples[routes[-1]][:, i]
+        clipped = float(np.mean((v < lo) | (v > hi)))
+        a.set_title(f"$K_{{{i + 1}{i + 1}}}$ > 0: {100 * (v > 0).mean():.2f} % of {v.size}\n"
+                    f"beyond the axis (clipped): {100 * clipped:.2f} %", fontsize=9)
+    q0, q1 = quantiles
+    fig.suptitle(title or f"sectional curvatures (axis: {q0:g} %–{q1:g} % quantiles)", fontsize=10)
+    axes[0].legend(loc="upper left", fontsize=7)
+    return fig, axes
+
+
+def plot_angles(phis, *, axes=None, title=None, bins=60):
+    """Histograms of the angles φ ∈ [0, π/2] (rad) between the expanding and the
+    contracting-neutral subspaces, one panel per variant (``phis``: name → array)."""
+    names = list(phis)
+    if axes is None:
+        fig, grid = new_figure(1, len(names), figsize=(4.5 * len(names), 3.4), squeeze=False)
+        axes = list(grid[0])
+    fig = axes[0].figure
+    for a, v in zip(axes, names):
+        phi = np.asarray(phis[v], dtype=float)
+        a.hist(phi, bins=bins, range=(0, np.pi / 2), density=True)
+        a.set_xlim(0, np.pi / 2)
+        a.set_xlabel("φ (rad)")
+        a.set_ylabel("probability density")
+        a.set_title(f"{v} tangent space (min φ = {phi.min():.2g}, {phi.size} samples)", fontsize=9)
+    fig.suptitle(title or "angles between $E_u$ and $E_{cs}$", fontsize=10)
+    return fig, axes
+
+
+def plot_spectrum(omega, density, *, ax=None, label=None, title=None):
+    """Power spectral density against angular frequency ω (rad per unit time), log scale;
+    ω = 0 and non-positive densities are left out."""
+    omega = np.asarray(omega, dtype=float)
+    density = np.asarray(density, dtype=float)
+    fig, ax = figure_axes(ax, figsize=(6.5, 3.8))
+    sel = (omega > 0) & (density > LOG_FLOOR)
+    ax.semilogy(omega[sel], density[sel], lw=0.8, label=label)
+    ax.set_xlabel("ω (rad per unit time)")
+    ax.set_ylabel("power spectral density (per unit ω)")
+    ax.set_title(title or "power spectrum", fontsize=10)
+    return fig, ax
+
+
+def plot_drift(t, columns, names, *, ax=None, title=None):
+    """|drift| of invariants against time on a log axis.  Samples at or below
+    :data:`LOG_FLOOR` (exact zeros, rounding) are not drawn and are counted in the legend;
+    the y axis spans the drawn values only."""
+    fig, ax = figure_axes(ax, figsize=(7.5, 3.8))
+    t = np.asarray(t, dtype=float)
+    drawn = []
+    for col, lab in zip(columns, names):
+        a = np.abs(np.asarray(col, dtype=float))
+        low = a <= LOG_FLOOR
+        if low.any():
+            lab += f"\n  ≤ {LOG_FLOOR:.0e} at {low.sum()} of {a.size} samples (not drawn)"
+        ax.plot(t, np.where(low, np.nan, a), lw=0.8, marker="." if a.size < 60 else None,
+                label=lab)
+        drawn.append(a[~low])
+    ax.set_yscale("log")
+    vals = np.concatenate(drawn) if drawn else np.zeros(0)
+    if vals.size:
+        ax.set_ylim(vals.min() / 3, vals.max() * 3)
+    else:
+        ax.set_ylim(LOG_FLOOR, 1.0)
+        ax.text(0.5, 0.5, f"every recorded drift is ≤ {LOG_FLOOR:.0e}", transform=ax.transAxes,
+                ha="center", va="center")
+    if t.size:
+        ax.set_xlim(t[0], t[-1] if t[-1] > t[0] else t[0] + 1.0)
+    ax.set_xlabel(TIME)
+    ax.set_ylabel("|drift of the invariant|")
+    ax.set_title(title or "drift of the invariants", fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    return fig, ax

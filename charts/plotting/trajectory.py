@@ -1,0 +1,162 @@
+"""Figures of trajectories: angles against time, the N = 3 path on its surface, Poincaré
+sections, an animation of the rotors.  Every function draws on a pyplot-free figure (or on
+the axes it is given) and returns ``(fig, ax)``; the global matplotlib backend is never
+touched.  Angles are shown wrapped to (−π, π] with lines broken at the wrap."""
+from __future__ import annotations
+
+import numpy as np
+
+from .style import TIME, broken_at_wraps, figure_axes, new_figure, wrap
+
+__all__ = ["plot_angles_time", "plot_surface", "plot_poincare", "animate_rotors",
+           "plot_trajectory", "save_animation"]
+
+
+def plot_angles_time(t, theta, *, switches=(), ax=None, title=None):
+    """θᵢ(t) wrapped to (−π, π], one line per rotor; chart switches ``(t, from, to)`` as
+    thin vertical lines."""
+    fig, ax = figure_axes(ax, figsize=(7.5, 3.6))
+    theta = np.asarray(theta)
+    for i in range(theta.shape[1]):
+        w, tt = broken_at_wraps([theta[:, i]], extra=[t])
+        ax.plot(tt, w, lw=1.0, label=f"θ$_{i + 1}$")
+    for j, (ts, a, b) in enumerate(switches):
+        ax.axvline(ts, color="0.5", lw=0.6, ls="--",
+                   label="chart switch" if j == 0 else None)
+    ax.set_xlabel(TIME)
+    ax.set_ylabel("θᵢ (rad, wrapped to (−π, π])")
+    ax.set_ylim(-np.pi * 1.05, np.pi * 1.05)
+    ax.set_yticks([-np.pi, -np.pi / 2, 0, np.pi / 2, np.pi], ["−π", "−π/2", "0", "π/2", "π"])
+    ax.set_title(title or f"angles against time ({len(switches)} chart switches)", fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    return fig, ax
+
+
+def _surface_sheets(system, m=61):
+    """The surface Σ cos θ = 0 of N = 3 over (θ₁, θ₂) ∈ (−π, π]²: θ₃ on its two branches
+    (``RotorSystem.from_chart`` of chart 2), NaN where |cos θ₁ + cos θ₂| ≥ 1."""
+    g = np.linspace(-np.pi, np.pi, m)
+    T1, T2 = np.meshgrid(g, g)
+    sheets = []
+    for branch in (1, -1):
+        Z = np.full(T1.shape, np.nan)
+        for idx in np.ndindex(T1.shape):
+            q = np.array([T1[idx], T2[idx]])
+            if abs(np.cos(q).sum()) < 1.0:
+                Z[idx] = system.from_chart(q, np.zeros(2), 2, branch)[0][2]
+        sheets.append(Z)
+    return T1, T2, sheets
+
+
+def plot_surface(theta, *, system=None, ax=None, title=None):
+    """N = 3: the path θ(t) (wrapped) on the surface cos θ₁ + cos θ₂ + cos θ₃ = 0 in the
+    cube (−π, π]³ (a 3D axes)."""
+    theta = np.asarray(theta)
+    if theta.ndim != 2 or theta.shape[1] != 3:
+        raise ValueError(f"the surface plot is for N = 3; theta has shape {theta.shape}")
+    if system is None:
+        from ..geometry.system import RotorSystem
+        system = RotorSystem(3)
+    if ax is None:
+        fig, _ = new_figure(0, figsize=(6, 5.5))
+        ax = fig.add_subplot(projection="3d")
+    fig = ax.figure
+    T1, T2, sheets = _surface_sheets(system)
+    for Z in sheets:
+        ax.plot_surface(T1, T2, Z, color="0.75", alpha=0.35, lw=0, rstride=2, cstride=2)
+    x, y, z = broken_at_wraps([theta[:, 0], theta[:, 1], theta[:, 2]])
+    ax.plot(x, y, z, color="C3", lw=1.0, label="trajectory")
+    ax.set_xlabel("θ₁ (rad)")
+    ax.set_ylabel("θ₂ (rad)")
+    ax.set_zlabel("θ₃ (rad)")
+    for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+        set_lim(-np.pi, np.pi)
+    ax.set_title(title or "N = 3: the path on cos θ₁ + cos θ₂ + cos θ₃ = 0", fontsize=10)
+    return fig, ax
+
+
+def _state_label(i, n):
+    return f"θ$_{i + 1}$ (rad)" if i < n else f"u$_{i - n + 1}$ (rad / time)"
+
+
+def plot_poincare(result, *, coords=(1, 4), event=0, ax=None, title=None, **scatter_kw):
+    """The points of ``result.y_events[event]`` (an ``integrate`` run with ``events=``) in the
+    plane of two state components ``coords`` (indices into [θ, u]; angles wrapped)."""
+    if result.y_events is None:
+        raise ValueError("the result has no events: integrate with events=[...]")
+    n = result.theta.shape[1]
+    Y = result.y_events[event]
+    xy = [wrap(Y[:, c]) if c < n else Y[:, c] for c in coords]
+    fig, ax = figure_axes(ax, figsize=(5, 4.6))
+    kw = dict(s=4, color="k", lw=0)
+    kw.update(scatter_kw)
+    ax.scatter(xy[0], xy[1], **kw)
+    ax.set_xlabel(_state_label(coords[0], n))
+    ax.set_ylabel(_state_label(coords[1], n))
+    ax.set_title(title or f"Poincaré section: {len(Y)} crossings", fontsize=10)
+    return fig, ax
+
+
+def animate_rotors(t, theta, *, every=1, interval=40, title=None):
+    """An animation of the N rotors (a ``matplotlib.animation.FuncAnimation`` on a
+    pyplot-free figure): rotor i is a rod at angle θᵢ from the vertical, in its own circle.
+    Frames every ``every`` samples, ``interval`` ms apart.  Save it with
+    :func:`save_animation`."""
+    from matplotlib.animation import FuncAnimation
+
+    theta = np.asarray(theta)[::every]
+    t = np.asarray(t)[::every]
+    n = theta.shape[1]
+    fig, ax = new_figure(figsize=(1.6 * n + 0.6, 2.2))
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.2, 2.5 * (n - 1) + 1.2)
+    ax.set_ylim(-1.3, 1.3)
+    ax.set_axis_off()
+    phi = np.linspace(0, 2 * np.pi, 100)
+    rods = []
+    for i in range(n):
+        cx = 2.5 * i
+        ax.plot(cx + np.cos(phi), np.sin(phi), color="0.7", lw=0.8)
+        ax.text(cx, -1.25, f"θ$_{i + 1}$", ha="center", va="top", fontsize=9)
+        rods.append(ax.plot([cx, cx], [0, 1], color=f"C{i}", lw=2.5, marker="o", ms=3)[0])
+    label = ax.text(0.0, 1.02, "", transform=ax.transAxes, fontsize=9)
+    if title:
+        fig.suptitle(title, fontsize=10)
+
+    def draw(k):
+        for i, rod in enumerate(rods):
+            cx = 2.5 * i
+            rod.set_data([cx, cx + np.sin(theta[k, i])], [0, np.cos(theta[k, i])])
+        label.set_text(f"t = {t[k]:.2f}")
+        return rods + [label]
+
+    return FuncAnimation(fig, draw, frames=len(t), interval=interval, blit=False)
+
+
+def save_animation(anim, path, *, fps=25):
+    """Write the animation: ``.gif`` with the pillow writer, ``.mp4`` with ffmpeg.  A
+    RuntimeError names the missing writer."""
+    from matplotlib.animation import writers
+
+    name = {".gif": "pillow", ".mp4": "ffmpeg"}.get(str(path)[-4:].lower())
+    if name is None:
+        raise ValueError(f"animation path must end in .gif or .mp4, got {path}")
+    if not writers.is_available(name):
+        raise RuntimeError(f"no '{name}' animation writer available for {path}: install "
+                           f"{'pillow' if name == 'pillow' else 'ffmpeg'} or use the other format")
+    anim.save(str(path), writer=name, fps=fps)
+    return path
+
+
+def plot_trajectory(result, kind="angles", **kw):
+    """``IntegrationResult.plot``: ``kind`` = ``"angles"``, ``"surface"`` (N = 3),
+    ``"poincare"`` or ``"animation"``."""
+    if kind == "angles":
+        return plot_angles_time(result.t, result.theta, switches=result.switches, **kw)
+    if kind == "surface":
+        return plot_surface(result.theta, **kw)
+    if kind == "poincare":
+        return plot_poincare(result, **kw)
+    if kind == "animation":
+        return animate_rotors(result.t, result.theta, **kw)
+    raise ValueError(f"kind must be 'angles', 'surface', 'poincare' or 'animation', got {kind!r}")

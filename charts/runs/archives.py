@@ -1,0 +1,126 @@
+"""Scene results and sweep tables as NetCDF (``charts.archive``): ``SceneResult`` (what a
+scene run writes: ``results.nc`` beside ``result.json``) and ``SweepTable`` (``sweep.csv``
+as a dataset along a ``point`` dimension)."""
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+import numpy as np
+
+from ..archive import Archivable, attributes, dataset
+from .io import json_default
+
+__all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT"]
+
+#: The file a scene run writes its arrays to, beside result.json.
+SCENE_NETCDF = "results.nc"
+
+#: Dimensions and units of the arrays a scene stores (``arrays.npz`` keys).
+ARRAY_LAYOUT = {
+    "waveforms_t": (("waveforms_sample",), "time"),
+    "waveforms_u": (("waveforms_sample", "waveforms_rotor"), "rad / time"),
+    "spectrum_omega": (("frequency",), "rad / time"),
+    "spectrum_psd": (("frequency",), "(rad / time)² per unit ω"),
+    "drift_t": (("drift_sample",), "time"),
+    "drift_constraint": (("drift_sample",), "1"),
+    "drift_tangency": (("drift_sample",), "rad / time"),
+    "drift_energy": (("drift_sample",), "1"),
+    "lyapunov_history_t": (("lyapunov_record",), "time"),
+    "lyapunov_history": (("lyapunov_record", "exponent"), "1 / time"),
+    "angles_t": (("angles_sample",), "time"),
+    "angles_full": (("angles_sample",), "rad"),
+    "angles_restricted": (("angles_sample",), "rad"),
+    "curvature_t": (("curvature_sample",), "time"),
+    "curvature_numerical": (("curvature_sample", "direction"), "1 / rad²"),
+    "curvature_exact": (("curvature_sample", "direction"), "1 / rad²"),
+    "curvature_eq22": (("curvature_sample",), "1 / rad²"),
+    "switches": (("switch", "switch_field"), "time | chart | chart"),
+}
+
+
+class SceneResult(Archivable):
+    """A scene run's results: ``result`` (the dict of result.json), ``arrays`` (name →
+    array, as in arrays.npz) and ``scene_text`` (the scene file's text, when it was a file).
+    ``charts.load(outdir / "results.nc")`` returns one."""
+
+    KIND = "scene"
+
+    def __init__(self, result: dict, arrays: dict, scene_text: str = ""):
+        self.result = result
+        self.arrays = dict(arrays)
+        self.scene_text = scene_text
+
+    @classmethod
+    def from_run(cls, result: dict, arrays: dict, source: str):
+        path = Path(source)
+        text = path.read_text(encoding="utf-8") if path.is_file() else ""
+        return cls(json.loads(json.dumps(result, default=json_default)), arrays, text)
+
+    def to_xarray(self):
+        data = {}
+        for name, arr in self.arrays.items():
+            dims, units = ARRAY_LAYOUT.get(name, (None, "1"))
+            arr = np.asarray(arr)
+            if dims is None or len(dims) != arr.ndim:
+                dims = tuple(f"{name}_dim{i}" for i in range(arr.ndim))
+            data[name] = (dims, arr, units)
+        return dataset(self.KIND, data, attrs={"result": self.result,
+                                               "scene_text": self.scene_text})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        a = attributes(ds)
+        return cls(a["result"], {k: v.values for k, v in ds.data_vars.items()}, a["scene_text"])
+
+    def __repr__(self):
+        return (f"SceneResult({self.result.get('scene', {}).get('name')!r}, "
+                f"status={self.result.get('status')!r}, arrays={sorted(self.arrays)})")
+
+
+def _column(values):
+    """A table column as an array: integers, floats (empty cells NaN) or strings."""
+    for kind in (int, float):
+        try:
+            return np.array([kind(v) if v != "" else (np.nan if kind is float else None)
+                             for v in values], dtype=kind)
+        except (TypeError, ValueError):
+            continue
+    return np.array(values, dtype=str)
+
+
+class SweepTable(Archivable):
+    """A sweep's table: ``columns`` (name → array along the points, in table order) and
+    ``attrs`` (the sweep's source).  ``SweepTable.from_csv(outdir / "sweep.csv")``."""
+
+    KIND = "sweep"
+
+    def __init__(self, columns: dict, attrs: dict | None = None):
+        self.columns = dict(columns)
+        self.attrs = dict(attrs or {})
+
+    @classmethod
+    def from_csv(cls, path):
+        path = Path(path)
+        with open(path, newline="", encoding="utf-8") as fh:
+            rows = list(csv.reader(fh))
+        if not rows:
+            raise ValueError(f"{path} is empty: not a sweep table")
+        header, body = rows[0], [r for r in rows[1:] if len(r) == len(rows[0])]
+        cols = {h: _column([r[i] for r in body]) for i, h in enumerate(header)}
+        return cls(cols, {"source": str(path)})
+
+    def to_xarray(self):
+        data = {k: (("point",), v, "1") for k, v in self.columns.items()}
+        return dataset(self.KIND, data, attrs={"table": self.attrs,
+                                               "column_order": list(self.columns)})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        a = attributes(ds)
+        return cls({k: ds[k].values for k in a["column_order"]}, a["table"])
+
+    def __repr__(self):
+        n = len(next(iter(self.columns.values()))) if self.columns else 0
+        return f"SweepTable({n} points, columns={list(self.columns)})"

@@ -1,0 +1,120 @@
+"""``IntegrationResult``: the samples of a geodesic that ``integrate`` returns, in ambient
+coordinates for both formulations; saved and loaded as NetCDF (``charts.archive``), plotted
+by ``charts.plotting``."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..archive import Archivable, attributes, dataset
+from .dense import DenseSolution
+
+__all__ = ["IntegrationResult"]
+
+
+@dataclass
+class IntegrationResult(Archivable):
+    """Samples of a geodesic, in ambient coordinates for both formulations.
+
+    Attributes
+    ----------
+    t : ndarray, shape (m,)
+    theta, u : ndarray, shape (m, n)
+        Ambient angles (continuous, not wrapped) and velocities dθ/dt.
+    transported : ndarray, shape (m, k, n), or None
+        The transported vectors (eq 16 / eq 19), ambient components.
+    switches : list of (t, from_chart, to_chart)
+        Chart switches, in order (chart formulation; empty for the ambient one).
+    drift : dict
+        Max over every accepted step and every sample of ``constraint`` = |Σ cos θ|,
+        ``tangency`` = |Σ uᵢ sin θᵢ|, ``energy`` = |E − E₀|/E₀; with ``transport``, also
+        ``transport`` = max change of the Gram matrix of (u, p¹…pᵏ) relative to |u|·|p|.
+    n_steps, n_rejected, n_rhs : int
+        Accepted steps, rejected DOP853 attempts, right-hand-side evaluations (work done: after
+        a terminal event, steps of the last chunk beyond it count too).
+    status : str
+        ``"finished"``, ``"stopped"`` (by ``progress``) or ``"event"`` (a terminal event), or
+        the error status on ``IntegrationError.result``.
+    sol : DenseSolution or None
+        With ``dense_output=True``: ``sol(t)`` → ``[θ, u, p…]`` anywhere in ``t_span``.
+    t_events, y_events : list of ndarray, or None
+        With ``events``: per event, the times (m,) and ambient states (m, (2 + k)·n) of its
+        zeros, as in SciPy.
+    """
+
+    t: np.ndarray
+    theta: np.ndarray
+    u: np.ndarray
+    transported: np.ndarray | None
+    switches: list
+    drift: dict
+    n_steps: int
+    n_rejected: int
+    n_rhs: int
+    status: str
+    formulation: str
+    method: str
+    options: dict = field(default_factory=dict)
+    sol: DenseSolution | None = None
+    t_events: list | None = None
+    y_events: list | None = None
+
+    KIND = "trajectory"
+
+    def to_xarray(self):
+        """Dataset with dims (t, rotor[, vector]; switch; event): theta, u[, transported],
+        the chart switches, the events; settings, drift and counters as attributes (the dense
+        output ``sol`` is not saved)."""
+        n = self.theta.shape[1]
+        sw = np.array(self.switches, dtype=float).reshape(-1, 3)
+        data = {"theta": (("t", "rotor"), self.theta, "rad", "ambient angles θᵢ (not wrapped)"),
+                "u": (("t", "rotor"), self.u, "rad / time", "angular velocities dθᵢ/dt"),
+                "switch_t": (("switch",), sw[:, 0], "time", "time of the chart switch"),
+                "switch_from": (("switch",), sw[:, 1].astype(np.int64), "1", "chart left"),
+                "switch_to": (("switch",), sw[:, 2].astype(np.int64), "1", "chart entered")}
+        if self.transported is not None:
+            data["transported"] = (("t", "vector", "rotor"), self.transported, "rad",
+                                   "parallel-transported vectors, ambient components")
+        attrs = dict(drift=self.drift, n_steps=self.n_steps, n_rejected=self.n_rejected,
+                     n_rhs=self.n_rhs, status=self.status, formulation=self.formulation,
+                     method=self.method, options=self.options)
+        if self.t_events is not None:
+            ids = np.concatenate([np.full(len(te), i) for i, te in enumerate(self.t_events)])
+            data["event_t"] = (("event",), np.concatenate(self.t_events), "time", "event time")
+            data["event_index"] = (("event",), ids.astype(np.int64), "1", "index in events")
+            data["event_y"] = (("event", "state"), np.concatenate(self.y_events), "rad, rad / time",
+                               "ambient state [θ, u, p…] at the event")
+            attrs["n_events"] = len(self.t_events)
+        return dataset(self.KIND, data, coords={"t": (("t",), self.t, "time"),
+                                                "rotor": (("rotor",), np.arange(1, n + 1), "1")},
+                       attrs=attrs)
+
+    @classmethod
+    def from_xarray(cls, ds):
+        a = attributes(ds)
+        sw = [(float(t), int(i), int(j)) for t, i, j in
+              zip(ds["switch_t"].values, ds["switch_from"].values, ds["switch_to"].values)]
+        res = cls(t=ds["t"].values, theta=ds["theta"].values, u=ds["u"].values,
+                  transported=ds["transported"].values if "transported" in ds else None,
+                  switches=sw, drift=a["drift"], n_steps=a["n_steps"], n_rejected=a["n_rejected"],
+                  n_rhs=a["n_rhs"], status=a["status"], formulation=a["formulation"],
+                  method=a["method"], options=a["options"])
+        if "n_events" in a:
+            ids = ds["event_index"].values
+            res.t_events = [ds["event_t"].values[ids == i] for i in range(a["n_events"])]
+            res.y_events = [ds["event_y"].values[ids == i] for i in range(a["n_events"])]
+        return res
+
+    def plot(self, kind="angles", **kw):
+        """Figure of the trajectory: ``"angles"`` (θᵢ(t) wrapped to (−π, π] with the chart
+        switches marked), ``"surface"`` (N = 3: the path on Σ cos θ = 0 in 3D), or
+        ``"animation"`` (the rotors; a ``matplotlib.animation.FuncAnimation``).  Returns
+        ``(fig, ax)`` (the animation for ``"animation"``); see ``charts.plotting``."""
+        from .. import plotting
+        return plotting.plot_trajectory(self, kind, **kw)
+
+    def __repr__(self):
+        return (f"IntegrationResult({self.formulation}/{self.method}, {self.t.size} samples, "
+                f"t = {self.t[-1] if self.t.size else 0.0:g}, {len(self.switches)} switches, "
+                f"{self.n_steps} steps, status={self.status!r})")

@@ -1,0 +1,162 @@
+"""Every result type round-trips through save/load (NetCDF) with identical arrays and
+attributes; load returns the saved type; a missing extra gives an error that names it."""
+import json
+import sys
+
+import numpy as np
+import pytest
+
+import charts
+from charts.archive import KINDS, load
+from charts.runs.archives import SceneResult, SweepTable
+
+SYS4 = charts.RotorSystem(4)
+TH4, U4 = SYS4.random_state(0)
+SYS3 = charts.RotorSystem(3)
+TH3, U3 = SYS3.random_state(7)
+
+
+def _section(t, y):
+    return np.sin(y[0])
+
+
+@pytest.fixture(scope="module")
+def results():
+    w = charts.waveform(SYS4, TH4, U4, 60.0)
+    return {
+        "trajectory": charts.integrate(SYS3, TH3, U3, 12.0, events=[_section, lambda t, y: y[3]],
+                                       transport=SYS3.project_tangent(TH3, np.array([1.0, 0, 0]))),
+        "trajectory_plain": charts.integrate(SYS4, TH4, U4, 2.0, method="rk4", formulation="ambient"),
+        "lyapunov": charts.lyapunov_spectrum(SYS4, TH4, U4, 20.0, t_transient=1.0),
+        "curvature": charts.curvature_along_trajectory(SYS4, TH4, U4, 3.0, t_transient=1.0),
+        "angles": charts.hyperbolicity_angles(SYS4, TH4, U4, 5.0, t_transient=5.0),
+        "covariant": charts.covariant_lyapunov_vectors(SYS4, TH4, U4, 2.0, t_transient=2.0,
+                                                       keep_vectors=True),
+        "waveform": w,
+        "spectrum": charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=10.0),
+        "ensemble": charts.lyapunov_ensemble(SYS4, 2, 10.0, t_transient=1.0, workers=1),
+    }
+
+
+def _same(a, b, where):
+    """Deep equality: arrays equal in value and dtype, dicts/lists element by element."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        assert isinstance(a, np.ndarray) and isinstance(b, np.ndarray), where
+        assert a.dtype == b.dtype and a.shape == b.shape, (where, a.dtype, b.dtype)
+        assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), where
+    elif isinstance(a, dict):
+        assert isinstance(b, dict) and a.keys() == b.keys(), where
+        for k in a:
+            _same(a[k], b[k], f"{where}.{k}")
+    elif isinstance(a, (list, tuple)) and not isinstance(a, str):
+        assert type(a) is type(b) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            _same(x, y, f"{where}[{i}]")
+    elif hasattr(a, "__dict__") and not isinstance(a, (int, float, str)):
+        fields = {k: v for k, v in vars(a).items() if k != "sol"}
+        _same(fields, {k: v for k, v in vars(b).items() if k != "sol"}, where)
+    else:
+        assert a == b and type(a) is type(b), (where, a, b)
+
+
+@pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
+                                  "angles", "covariant", "waveform", "spectrum", "ensemble"])
+def test_round_trip_identical(results, name, tmp_path):
+    res = results[name]
+    path = res.save(tmp_path / f"{name}.nc")
+    back = load(path)
+    assert type(back) is type(res)
+    if name == "spectrum":
+        _same(tuple(res), tuple(back), name)
+        assert back.params == res.params
+    elif name == "ensemble":
+        assert len(back) == len(res)
+        for i, (m, mb) in enumerate(zip(res, back)):
+            _same(m, mb, f"member {i}")
+        _same(res.exponents, back.exponents, "exponents")
+        _same(res.stderr, back.stderr, "stderr")
+        assert back.params == res.params
+    else:
+        _same(res, back, name)
+
+
+def test_datasets_have_named_dims_units_and_stamps(results):
+    for name, res in results.items():
+        ds = res.to_xarray()
+        assert ds.attrs["charts_kind"] in KINDS and ds.attrs["charts_version"] == charts.__version__
+        for v in list(ds.data_vars.values()) + list(ds.coords.values()):
+            assert "units" in v.attrs, (name, v.name)
+            assert not any(d.startswith("dim_") for d in v.dims), (name, v.dims)
+    ds = results["lyapunov"].to_xarray()
+    assert ds["exponents"].attrs["units"] == "1 / time"
+    assert json.loads(ds.attrs["params"][5:])["t_final"] == 20.0
+
+
+def test_scene_writes_netcdf_beside_result_json(tmp_path):
+    text = """name = "tiny"
+[system]
+n = 3
+[initial]
+seed = 1
+[integrator]
+dt = 0.01
+[run]
+t_final = 20.0
+t_transient = 1.0
+sample_dt = 0.1
+[effects.lyapunov]
+[effects.drift]
+[effects.curvature]
+route = "both"
+"""
+    src = tmp_path / "tiny.toml"
+    src.write_text(text)
+    scene = charts.load_scene(src)
+    out = tmp_path / "out"
+    result = charts.run_scene(scene, out, quiet=True)
+    assert "results.nc" in result["files"] and (out / "results.nc").exists()
+    back = load(out / "results.nc")
+    assert isinstance(back, SceneResult)
+    assert back.scene_text == text
+    with np.load(out / "arrays.npz") as npz:
+        assert sorted(npz.files) == sorted(back.arrays)
+        for k in npz.files:
+            assert np.array_equal(npz[k], back.arrays[k]) and npz[k].dtype == back.arrays[k].dtype
+    on_disk = json.loads((out / "result.json").read_text())
+    assert back.result["results"] == on_disk["results"]
+    assert back.result["scene"] == on_disk["scene"]
+    ds = back.to_xarray()
+    assert ds["lyapunov_history"].dims == ("lyapunov_record", "exponent")
+    assert ds["drift_t"].attrs["units"] == "time"
+    assert ds["curvature_exact"].dims == ("curvature_sample", "direction")
+    back.save(tmp_path / "again.nc")
+    again = load(tmp_path / "again.nc")
+    _same(back.arrays, again.arrays, "arrays")
+    assert again.result == back.result
+
+
+def test_sweep_table_round_trip(tmp_path):
+    csv = tmp_path / "sweep.csv"
+    csv.write_text("index,point_id,status,n,lyap_1,error\n0,a1,ok,3,0.5001,\n1,b2,failed,4,,boom\n")
+    table = SweepTable.from_csv(csv)
+    assert table.columns["index"].dtype.kind == "i" and table.columns["n"].tolist() == [3, 4]
+    assert np.isnan(table.columns["lyap_1"][1]) and table.columns["status"].tolist() == ["ok", "failed"]
+    back = load(table.save(tmp_path / "sweep.nc"))
+    assert isinstance(back, SweepTable) and list(back.columns) == list(table.columns)
+    _same(table.columns, back.columns, "columns")
+    assert back.attrs == table.attrs
+
+
+def test_missing_extra_is_named(monkeypatch, results, tmp_path):
+    monkeypatch.setitem(sys.modules, "xarray", None)
+    with pytest.raises(ImportError, match=r"charts\[io\]"):
+        results["lyapunov"].save(tmp_path / "x.nc")
+
+
+def test_load_refuses_foreign_files(tmp_path):
+    import xarray as xr
+    xr.Dataset({"a": ("x", [1.0])}).to_netcdf(tmp_path / "f.nc", engine="h5netcdf")
+    with pytest.raises(ValueError, match="not a charts result"):
+        load(tmp_path / "f.nc")
+    with pytest.raises(FileNotFoundError):
+        load(tmp_path / "missing.nc")
