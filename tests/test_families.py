@@ -295,3 +295,20 @@ def test_every_analysis_runs_with_weights_and_level_from_the_command_line(tmp_pa
     capsys.readouterr()
     assert main(["run", str(bad), "-o", str(tmp_path / "bad"), "--quiet"]) != 0
     assert "[system] level = 5.0 is not allowed" in capsys.readouterr().err
+
+
+def test_sweep_axes_for_level_and_weights():
+    """`level` is a system axis like n and speed; weight patterns are the dotted axis
+    "system.weights"; each point's scene carries them."""
+    from charts.runs.sweep import parse_sweep, sweep_points
+
+    data = {"name": "fam", "scene": {"system": {"n": 4}, "run": {"t_final": 10.0},
+                                     "effects": {"lyapunov": {}}},
+            "sweep": {"seeds": [0],
+                      "parameters": {"level": [0.5, 1.0],
+                                     "system.weights": [[1, 1, 1, 1], [1, 2, 1, 2]]}}}
+    pts = sweep_points(parse_sweep(data))
+    assert len(pts) == 4
+    got = {(p.scene.system["level"], tuple(p.scene.system["weights"])) for p in pts}
+    assert got == {(0.5, (1, 1, 1, 1)), (1.0, (1, 1, 1, 1)), (0.5, (1, 2, 1, 2)),
+                   (1.0, (1, 2, 1, 2))}
