@@ -295,6 +295,10 @@ def test_every_analysis_runs_with_weights_and_level_from_the_command_line(tmp_pa
     capsys.readouterr()
     assert main(["run", str(bad), "-o", str(tmp_path / "bad"), "--quiet"]) != 0
     assert "[system] level = 5.0 is not allowed" in capsys.readouterr().err
+    bad.write_text('[system]\nn = 4\nlevel = 0.5\n[integrator]\nformulation = "chart"\n'
+                   'method = "dop853"\n[run]\nt_final = 1.0\n[effects.drift]\n')
+    assert main(["run", str(bad), "-o", str(tmp_path / "bad"), "--quiet"]) != 0
+    assert "formulation = 'chart'" in capsys.readouterr().err
 
 
 def test_sweep_axes_for_level_and_weights():

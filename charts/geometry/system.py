@@ -125,7 +125,8 @@ class RotorSystem:
             raise ValueError(f"theta has non-finite entries: {theta.tolist()}")
         F = float(self.weights @ np.cos(theta)) - self.level
         if abs(F) > TOL["constraint"]:
-            raise ValueError(f"theta is off the manifold: sum(a cos theta) - level = {F:.3e} "
+            what = "sum(cos theta)" if self.is_paper_family else "sum(a cos theta) - level"
+            raise ValueError(f"theta is off the manifold: {what} = {F:.3e} "
                              f"(tolerance {TOL['constraint']:g}); use RotorSystem.project_point")
         return theta
 
@@ -138,7 +139,8 @@ class RotorSystem:
         G = float(u @ (self.weights * np.sin(theta)))
         scale = max(1.0, float(np.linalg.norm(u)))
         if abs(G) > TOL["tangency"] * scale:
-            raise ValueError(f"{name} is not tangent to the manifold: sum({name} a sin theta) = {G:.3e} "
+            what = f"sum({name} sin theta)" if self.is_paper_family else f"sum({name} a sin theta)"
+            raise ValueError(f"{name} is not tangent to the manifold: {what} = {G:.3e} "
                              f"(tolerance {TOL['tangency']:g}); use RotorSystem.project_tangent")
         return u
 

@@ -201,6 +201,11 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         raise SceneError(f"{_where(source, 'system', 'weights')} = {system['weights']!r} is not "
                          f"allowed: expected a list of n = {n} positive numbers")
     _check_family(source, system)
+    # the paper's constraint leaves no trace: scenes (and sweep point ids) stay as they were
+    if system["weights"] is None:
+        del system["weights"]
+    if system["level"] == 0.0 and "level" not in raw_sys:
+        del system["level"]
 
     # -- initial state ---------------------------------------------------------------------
     explicit = ("theta" in raw_init) or ("u" in raw_init)
@@ -219,8 +224,8 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         if "speed" in raw_sys:
             raise SceneError(f"{_where(source, 'system', 'speed')} = {raw_sys['speed']!r} is not "
                              "allowed with an explicit [initial] u (the speed is that of u)")
-        _check_state(source, n, masses, initial["theta"], initial["u"], system["weights"],
-                     system["level"])
+        _check_state(source, n, masses, initial["theta"], initial["u"], system.get("weights"),
+                     system.get("level", 0.0))
         initial["seed"] = None
         system["speed"] = float(math.sqrt(sum(m * x * x for m, x in zip(masses, initial["u"]))))
         if not system["speed"] > 0:
@@ -228,6 +233,11 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                              "allowed: the velocity must be nonzero (a geodesic needs a speed)")
 
     # -- integrator --------------------------------------------------------------------------
+    family = any(x != 1 for x in system.get("weights") or [])
+    if integ["formulation"] == "chart" and (family or system.get("level", 0.0) != 0.0):
+        raise SceneError(f"{source}: [system] weights/level other than 1/0 are not allowed with "
+                         "formulation = 'chart' (not yet written for the constraint family, "
+                         "docs/families.md): set [integrator] formulation = 'ambient'")
     method = integ["method"]
     if method == "rk4":
         for key in ("rtol", "atol"):
