@@ -10,6 +10,8 @@ mechanically coupled rotators".  The public surface, by concept:
   (eqs 19-21 and the exact Riemann tensor), ``hyperbolicity_angles`` (section 4) and
   ``covariant_lyapunov_vectors`` (the same test by a second route, finite-time exponents),
   ``waveform`` and ``power_spectrum`` (figures 2-3);
+* the flat linkage of the Appendix (its exact constraint, eq (1) as its ε → 0 limit):
+  ``LinkageSystem``, ``linkage_run``, ``linkage_trajectory`` (docs/linkage.md);
 * declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``;
 * every result saves itself (``result.save(path)``, NetCDF) and ``load(path)`` reads it back
   as its own type (``charts.archive``; the extra ``charts[io]``); results plot themselves
@@ -25,6 +27,9 @@ from .analyses.hyperbolicity import AngleResult, angle_statistics, hyperbolicity
 from .analyses.covariant import CovariantResult, covariant_lyapunov_vectors
 from .analyses.spectra import PowerSpectrum, Waveform, power_spectrum, waveform
 from .archive import load
+from .geometry.linkage import LinkageSystem
+from .solvers.linkage import DegenerateMetricError
+from .analyses.linkage import LinkageResult, linkage_run, linkage_trajectory
 from .runs.scene import Scene, SceneError, load_scene, parse_scene
 from .runs.runner import RunError, plan_scene, run_scene
 from .runs.sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep
@@ -38,6 +43,7 @@ __all__ = [
     "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
     "covariant_lyapunov_vectors", "CovariantResult",
     "waveform", "power_spectrum", "Waveform", "PowerSpectrum", "load",
+    "LinkageSystem", "linkage_run", "linkage_trajectory", "LinkageResult", "DegenerateMetricError",
     "Scene", "SceneError", "load_scene", "parse_scene", "run_scene", "plan_scene", "RunError",
     "Sweep", "SweepError", "load_sweep", "parse_sweep", "run_sweep",
 ]

@@ -1,7 +1,7 @@
 #!/usr/bin/env python
 """Write the generated chart kernels into ``generated/`` (the only writer of it).
 
-    python scripts/generate.py            # regenerate N = 3..6
+    python scripts/generate.py            # regenerate N = 3..6 and the linkage of the Appendix
     python scripts/generate.py --check    # regenerate into a temp folder, diff, exit 1 if stale
 """
 from __future__ import annotations
@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def write_all(outdir: Path, ns, verbose=True) -> dict[str, float]:
     from charts.atomic import atomic_write
-    from charts.codegen.emit import init_source, module_name, module_source
+    from charts.codegen.emit import init_source, linkage_source, module_name, module_source
 
     outdir.mkdir(parents=True, exist_ok=True)
     timings = {}
@@ -29,6 +29,11 @@ def write_all(outdir: Path, ns, verbose=True) -> dict[str, float]:
         timings[f"N={n}"] = time.perf_counter() - t0
         if verbose:
             print(f"  N={n}: {timings[f'N={n}']:.1f} s", flush=True)
+    t0 = time.perf_counter()
+    atomic_write(outdir / "linkage.py", linkage_source().encode("utf-8"))  # the Appendix's linkage
+    timings["linkage"] = time.perf_counter() - t0
+    if verbose:
+        print(f"  linkage: {timings['linkage']:.1f} s", flush=True)
     return timings
 
 

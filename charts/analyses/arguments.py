@@ -6,11 +6,9 @@ rounded silently.
 """
 from __future__ import annotations
 
-import math
-
-import numpy as np
-
+from ..geometry.checks import integer, number
 from ..solvers.progress import progress_reporter
+from ..solvers.status import MAX_STEPS, check_step
 
 __all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
            "project_steps", "samples_of", "start_state", "unstable_dimension"]
@@ -21,18 +19,9 @@ __all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "pro
 GRID_RTOL = 1e-9
 
 
-def _number(name, x):
-    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise ValueError(f"{name} must be a number, got {x!r}")
-    x = float(x)
-    if not math.isfinite(x):
-        raise ValueError(f"{name} must be finite, got {x!r}")
-    return x
-
-
 def positive_time(name, x) -> float:
     """``x`` as a float; ValueError naming ``name`` unless finite and > 0."""
-    x = _number(name, x)
+    x = number(name, x)
     if not x > 0:
         raise ValueError(f"{name} must be positive, got {x!r}")
     return x
@@ -40,7 +29,7 @@ def positive_time(name, x) -> float:
 
 def nonnegative_time(name, x) -> float:
     """``x`` as a float; ValueError naming ``name`` unless finite and >= 0."""
-    x = _number(name, x)
+    x = number(name, x)
     if x < 0:
         raise ValueError(f"{name} must be >= 0, got {x!r}")
     return x
@@ -48,20 +37,27 @@ def nonnegative_time(name, x) -> float:
 
 def steps_of(name, t, dt, *, allow_zero=False) -> int:
     """The number of steps ``dt`` in the duration ``t``; ValueError naming ``name`` if ``t``
-    is not finite, negative (or zero unless ``allow_zero``), or not a whole number of steps."""
+    is not finite, negative (or zero unless ``allow_zero``), shorter than one step, more than
+    `MAX_STEPS` steps, or not a whole number of steps."""
     t = nonnegative_time(name, t) if allow_zero else positive_time(name, t)
-    k = round(t / dt)
-    if abs(k * dt - t) > GRID_RTOL * max(t, dt):
+    ratio = t / dt
+    if ratio > MAX_STEPS:
+        raise ValueError(f"{name}={t:g} is {ratio:.3g} steps of dt={dt:g}, more than "
+                         f"{MAX_STEPS:.3g}; use a larger dt or a shorter {name}")
+    k = round(ratio)
+    if t > 0 and k == 0:
+        raise ValueError(f"{name}={t:g} is shorter than one step dt={dt:g}; use a multiple of "
+                         f"dt (e.g. {dt:g}) or a smaller dt")
+    if abs(k * dt - t) > GRID_RTOL * t:
         raise ValueError(f"{name}={t:g} is not a whole number of steps dt={dt:g}; use a multiple "
                          f"of dt (e.g. {max(k, 1) * dt:g})")
     return int(k)
 
 
 def positive_int(name, x, minimum=1) -> int:
-    """``x`` as an int; ValueError naming ``name`` unless an integer >= ``minimum``."""
-    if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or x < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {x!r}")
-    return int(x)
+    """``x`` as an int; ValueError naming ``name`` unless an integer >= ``minimum`` (an
+    integral float such as 4.0 counts, 2.7 and True do not: ``charts.geometry.checks``)."""
+    return integer(name, x, minimum)
 
 
 def project_steps(project_every, dt) -> int:
@@ -84,9 +80,14 @@ def unstable_dimension(n, n_unstable) -> int:
     return m
 
 
-def start_state(system, theta0, u0):
-    """``system.check_state(theta0, u0)`` for a flow: the velocity must not be zero."""
+def start_state(system, theta0, u0, dt=None):
+    """``system.check_state(theta0, u0)`` for a flow: the velocity must not be zero; with a
+    fixed step ``dt``, the step is checked against the speed (``status.check_step``: refused
+    when meaningless, a StepSizeWarning when every step is cut by the step cap)."""
     theta0, u0 = system.check_state(theta0, u0)
-    if not system.speed(u0) > 0:
+    speed = float(system.speed(u0))
+    if not speed > 0:
         raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
+    if dt is not None:
+        check_step(dt, speed, system.n)
     return theta0, u0

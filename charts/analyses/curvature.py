@@ -36,8 +36,10 @@ from ..archive import Archivable, attributes, dataset
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
+from ..geometry.checks import finite_array
 from ..geometry.kernels import geometry, source
 from ..geometry.structured import gauss_frame_curvature
+from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
@@ -49,11 +51,16 @@ __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_mat
 
 
 def gaussian_curvature_eq22(theta):
-    """Eq (22): Gaussian curvature of the N = 3 surface (equal masses), theta (..., 3)."""
-    theta = np.asarray(theta, dtype=float)
+    """Eq (22): Gaussian curvature of the N = 3 surface (equal masses), theta (..., 3), every
+    point on the manifold (|Σ cos θ| within ``charts.geometry.system.TOL['constraint']``)."""
+    theta = finite_array("theta", theta)
     if theta.shape[-1:] != (3,):
         raise ValueError(f"eq (22) is the curvature of the N = 3 surface: theta must have shape "
                          f"(..., 3), got {theta.shape}")
+    F = np.abs(np.cos(theta).sum(-1))
+    if np.any(F > TOL["constraint"]):
+        raise ValueError(f"theta is off the manifold: |sum(cos theta)| = {F.max():.3e} "
+                         f"(tolerance {TOL['constraint']:g}); use RotorSystem.project_point")
     return -(np.cos(theta) ** 2).sum(-1) / (2.0 * ((np.sin(theta) ** 2).sum(-1)) ** 2)
 
 
@@ -287,7 +294,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     seed = positive_int("seed", seed, 0)
     if not isinstance(exact, (bool, np.bool_)):
         raise ValueError(f"exact must be True or False, got {exact!r}")
-    theta0, u0 = start_state(system, theta0, u0)
+    theta0, u0 = start_state(system, theta0, u0, dt)
     k = n - 2
     reorth = reorth_steps(dt, sample, transient)  # orthonormal (and in T_r) at every sample
     flow = TangentFlow(system, theta0, u0, k, dt=dt, inner="theta", restricted=True,

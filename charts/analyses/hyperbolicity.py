@@ -41,6 +41,7 @@ from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..flows.ambient import adjoint_rate, state_stage
+from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import CAP_FRACTION, step_cap
@@ -178,8 +179,12 @@ class AngleResult(Archivable):
 
 
 def angle_statistics(phi, small=SMALL_ANGLE):
-    """dict(min, fraction below ``small`` rad, percentiles 0.1 % and 1 %, sample size)."""
-    phi = np.asarray(phi)
+    """dict(min, fraction below ``small`` rad, percentiles 0.1 % and 1 %, sample size) of
+    the finite angles ``phi`` (a non-empty 1-D array)."""
+    phi = finite_array("phi", phi, ndim=1)
+    if phi.size == 0:
+        raise ValueError("phi must hold at least one angle, got an empty array")
+    small = positive_time("small", small)
     return dict(min=float(phi.min()), frac_small=float((phi < small).mean()),
                 p001=float(np.percentile(phi, 0.1)), p01=float(np.percentile(phi, 1)),
                 median=float(np.median(phi)), n=int(phi.size), small=small)
@@ -232,7 +237,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     ce = steps_of("checkpoint_every", checkpoint_every, dt)
     project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
-    theta0, u0 = start_state(system, theta0, u0)
+    theta0, u0 = start_state(system, theta0, u0, dt)
     S = samples_of(n_win, sample, t_final, sample_every)
     if S < 1:
         raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")

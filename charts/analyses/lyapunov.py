@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..archive import Archivable, attributes, dataset
+from ..geometry.checks import option
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
@@ -60,11 +61,11 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
     """Check the arguments of `lyapunov_spectrum` (ValueError naming the bad one)."""
     n = system.n
     dt = positive_time("dt", dt)
-    kmax = {"restricted": 2 * n - 2, "full": 2 * n}.get(space)
-    if kmax is None:
-        raise ValueError(f"space must be 'restricted' or 'full', got {space!r}")
-    if inner not in ("theta", "full"):
-        raise ValueError(f"inner must be 'theta' (the paper's θ-only product) or 'full', got {inner!r}")
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    space = option("space", space, ("restricted", "full"))
+    kmax = {"restricted": 2 * n - 2, "full": 2 * n}[space]
+    inner = option("inner (the paper's θ-only product 'theta', or 'full')", inner,
+                   ("theta", "full"))
     if inner == "theta":
         kmax = min(kmax, n - 1 if space == "restricted" else n)
     k = n - 2 if n_exponents is None else positive_int("n_exponents", n_exponents)
@@ -82,16 +83,15 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
     if total % reorth:
         raise ValueError(f"t_final={t_final:g} must be a multiple of reorth_every={reorth_every:g}")
     if total < n_batches * reorth:
-        raise ValueError(f"t_final={t_final:g} is too short for {n_batches} batches of at least "
+        raise ValueError(f"t_final={t_final:g} is too short for n_batches={n_batches} of at least "
                          f"reorth_every={reorth_every:g}; increase t_final")
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     return LyapunovSettings(dt, k, inner, space, transient, total, reorth, project, record,
                             n_batches, positive_int("seed", seed, 0))
 
 
 def lyapunov_flow(system, theta0, u0, cfg: LyapunovSettings) -> TangentFlow:
     """The tangent flow of a Lyapunov run from (theta0, u0) (validated here)."""
-    theta0, u0 = start_state(system, theta0, u0)
+    theta0, u0 = start_state(system, theta0, u0, cfg.dt)
     return TangentFlow(system, theta0, u0, cfg.k, dt=cfg.dt, inner=cfg.inner,
                        restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
                        project_every=cfg.project, seed=cfg.seed)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
 from ..archive import Archivable, attributes, dataset
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
@@ -105,7 +106,7 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_trans
     if S < 2:
         raise ValueError(f"t_final={t_final:g} gives fewer than 2 samples of sample_every="
                          f"{sample_every:g}; increase t_final")
-    theta0, u0 = start_state(system, theta0, u0)
+    theta0, u0 = start_state(system, theta0, u0, dt)
     flow = TangentFlow(system, theta0, u0, 0, dt=dt, project_every=project)
     out = np.empty((S, 2 * system.n))
     total = transient + S * sample
@@ -126,9 +127,7 @@ def power_spectrum(signal, dt_sample, *, segment_time=200.0):
     sampled every ``dt_sample``: segments of ``segment_time`` with 50 % overlap and a
     Hann window.  Returns a :class:`PowerSpectrum`, the pair (ω (F,), rad per unit time;
     density per unit ω (F,))."""
-    signal = np.asarray(signal, dtype=float)
-    if signal.ndim != 1 or not np.all(np.isfinite(signal)):
-        raise ValueError("signal must be a 1-D array of finite values")
+    signal = finite_array("signal", signal, ndim=1)
     dt_sample = positive_time("dt_sample", dt_sample)
     segment_time = positive_time("segment_time", segment_time)
     nper = int(round(segment_time / dt_sample))
@@ -136,8 +135,9 @@ def power_spectrum(signal, dt_sample, *, segment_time=200.0):
         raise ValueError(f"segment_time={segment_time:g} is not a whole number of samples "
                          f"dt_sample={dt_sample:g}")
     if nper < 2 or nper > signal.size // 4:
-        raise ValueError(f"signal of {signal.size * dt_sample:g} time units is too short for "
-                         f"Welch segments of {segment_time:g}; need at least 4 segments")
+        raise ValueError(f"signal ({signal.size} samples of dt_sample={dt_sample:g}) is too short "
+                         f"for Welch segments of segment_time={segment_time:g}: need at least 4 "
+                         "segments of at least 2 samples")
     from scipy.signal import welch  # imported here: scipy.signal costs seconds at import
 
     f, p = welch(signal, fs=1.0 / dt_sample, window="hann", nperseg=nper, detrend="constant")

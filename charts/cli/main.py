@@ -7,24 +7,31 @@
     charts bench accuracy | integrators | performance   accuracy vs time; integrators; peers
     charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask
 
-Every subcommand has ``--help``.  Errors in the input are reported in one line on stderr
-with exit status 2; a run that started and failed (e.g. a trajectory through a singular
-point) exits with 1 and keeps its finished part; an interrupted run exits with 130 and
-says how to resume it.
+Every subcommand has ``--help``.  No command prints a traceback for anything a user can
+do: errors in the input (arguments, scene or sweep files, output folders, a folder another
+process is writing) are reported in one line on stderr, ``charts: error: …``, with exit
+status 2; a run that started and failed (e.g. a trajectory through a singular point, or
+an unexpected error) exits with 1 and keeps its finished part; an interrupted run exits
+with 130 and says what was kept and how to resume it.  ``charts --debug …`` or
+``CHARTS_DEBUG=1`` shows the traceback of a failure (for developers).
 """
 from __future__ import annotations
 
 import argparse
 import importlib.util
+import os
 import sys
+import traceback
 from pathlib import Path
 
 from ..atomic import atomic_write
 from ..runs.bundled import bundled_files
+from ..runs.cli_parser import OneLineParser
 
 __all__ = ["main", "bundled_scenes", "resolve_scene"]
 
 EXIT_USAGE = 2
+EXIT_FAILED = 1
 EXIT_INTERRUPTED = 130
 
 
@@ -61,6 +68,7 @@ def _fail(msg: str) -> int:
 
 # ------------------------------------------------------------------------------- run
 def _cmd_run(args) -> int:
+    from ..runs.outdir import LOCK, check_output
     from ..runs.runner import RunError, run_scene
     from ..runs.scene import SceneError, load_scene
 
@@ -68,7 +76,9 @@ def _cmd_run(args) -> int:
     out = Path(args.output)
     if args.force and args.resume:
         return _fail("--force and --resume exclude each other (--force starts over)")
-    if not args.resume and not args.force and out.is_dir() and any(out.iterdir()):
+    check_output(out)                    # a file, under a file, too long: refused, nothing made
+    if not args.resume and not args.force and out.is_dir() and any(
+            p.name != LOCK for p in out.iterdir()):
         return _fail(f"{out} is not empty: use --force to overwrite its results, --resume to "
                      "continue an interrupted run there, or choose another output folder")
     try:
@@ -221,11 +231,13 @@ def _cmd_bench(args) -> int:
 def build_parser() -> argparse.ArgumentParser:
     from ..version import __version__
 
-    ap = argparse.ArgumentParser(
+    ap = OneLineParser(
         prog="charts", description="Geodesic flows of coupled rotators (Kuznetsov): run scenes, "
         "reproduce the paper, regenerate code, benchmark.",
         epilog="`charts COMMAND --help` describes each command.")
     ap.add_argument("--version", action="version", version=f"charts {__version__}")
+    ap.add_argument("--debug", action="store_true",
+                    help="show the traceback of a failure (also CHARTS_DEBUG=1)")
     sub = ap.add_subparsers(dest="command", metavar="COMMAND")
 
     p = sub.add_parser("run", help="run a scene (TOML file or bundled name) into a folder",
@@ -286,11 +298,46 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
+    """Run ``charts ARGV``; return the exit status (0, 1 failed, 2 usage, 130 interrupted)."""
     argv = list(sys.argv[1:] if argv is None else argv)
+    debug = os.environ.get("CHARTS_DEBUG", "") not in ("", "0")
+    if argv[:1] == ["--debug"]:
+        debug, argv = True, argv[1:]
+    try:
+        return _dispatch(argv)
+    except KeyboardInterrupt:            # outside the run and sweep handlers (which resume)
+        print("\ncharts: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except BrokenPipeError:              # `charts scenes | head`
+        return 0
+    except Exception as exc:             # noqa: BLE001 - the one place that reports them all
+        return _report_exception(exc, debug)
+
+
+def _report_exception(exc: BaseException, debug: bool) -> int:
+    """One line ``charts: error: …`` (the traceback with ``debug``); the exit status: 2 for
+    input refused by a check (ValueError, TypeError, charts' own input errors), 1 otherwise."""
+    if debug:
+        traceback.print_exception(exc)
+    usage = isinstance(exc, (ValueError, TypeError))
+    text = " ".join(str(exc).split()) or type(exc).__name__
+    if len(text) > 400:
+        text = f"{text[:200]} … {text[-150:]}"
+    if not usage:
+        text = f"{type(exc).__name__}: {text}"
+    hint = "" if debug else " (run with --debug or CHARTS_DEBUG=1 for the traceback)"
+    print(f"charts: error: {text}" + ("" if usage else hint), file=sys.stderr)
+    return EXIT_USAGE if usage else EXIT_FAILED
+
+
+def _dispatch(argv) -> int:
     ap = build_parser()
     if argv[:1] == ["reproduce"]:        # pass everything through, --help included
         return _cmd_reproduce(argparse.Namespace(rest=argv[1:]))
-    args = ap.parse_args(argv)
+    try:
+        args = ap.parse_args(argv)
+    except SystemExit as exc:            # --help, --version (0) or a usage error (2)
+        return exc.code if isinstance(exc.code, int) else EXIT_USAGE
     if args.command is None:
         ap.print_help()
         return EXIT_USAGE
@@ -298,8 +345,6 @@ def main(argv=None) -> int:
         return int(args.func(args) or 0)
     except SystemExit as exc:            # resolve_scene and delegated parsers
         return exc.code if isinstance(exc.code, int) else EXIT_USAGE
-    except BrokenPipeError:              # `charts scenes | head`
-        return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

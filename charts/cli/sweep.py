@@ -4,6 +4,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from ..runs.cli_parser import positive_count
 from ..runs.sweep import (TABLE, SweepError, bundled_sweeps, load_sweep, resolve_sweep,
                           run_sweep)
 
@@ -27,7 +28,7 @@ def add_parser(sub) -> None:
     p.add_argument("-o", "--output", type=Path, metavar="DIR", help="output folder")
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="address of an existing Dask scheduler (e.g. tcp://host:8786)")
-    p.add_argument("--workers", type=int, metavar="N",
+    p.add_argument("--workers", type=positive_count, metavar="N",
                    help="worker processes of the local cluster (default: every core)")
     p.add_argument("--resume", action="store_true",
                    help="continue the table in DIR without recomputing finished points")

@@ -5,9 +5,19 @@ The same generator (``charts.codegen.emit.module_source``) writes the same bytes
 (``$CHARTS_CACHE_DIR``, default ``~/.cache/charts``) keyed by N, the SymPy version and a
 hash of the generator's source,
 and imported from there.  The first derivation's cost is reported on stderr.
+
+What is loaded is checked: beside each module ``rotor_nN.py`` lies ``rotor_nN.py.sha256``,
+the SHA-256 of its bytes, written after the module.  A module whose hash is missing or does
+not match (half-written by a full disk, edited, or left by an interrupted derivation), or
+that does not import, is derived again with a message on stderr.  Derivation is serialised
+by a file lock (``rotor_nN.lock``, ``fcntl.flock``; released by the kernel if the process
+dies): two processes that need the same N at once derive it once, the second waits and
+loads the first one's file.
 """
 from __future__ import annotations
 
+import contextlib
+import hashlib
 import importlib.util
 import os
 import sys
@@ -38,19 +48,80 @@ def cache_dir() -> Path:
     return Path(root) / f"generated-sympy{sympy.__version__}-{_generator_digest()}"
 
 
-def load_or_generate(n: int):
-    path = cache_dir() / f"{module_name(n)}.py"
+def _digest(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def _say(msg: str) -> None:
+    print(f"charts: {msg}", file=sys.stderr, flush=True)
+
+
+@contextlib.contextmanager
+def _derivation_lock(path: Path, n: int):
+    """An exclusive ``flock`` on ``path`` (waits, saying so, while another process holds it)."""
+    try:
+        import fcntl
+    except ImportError:                 # no flock on this platform: atomic writes only
+        yield
+        return
+    with open(path, "a") as fh:
+        try:
+            fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            _say(f"waiting for another process deriving the geometry for N={n} ({path})")
+            fcntl.flock(fh, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(fh, fcntl.LOCK_UN)
+
+
+def _problem(path: Path) -> str | None:
+    """Why the cached module at ``path`` cannot be used (None if its hash matches)."""
     if not path.exists():
-        path.parent.mkdir(parents=True, exist_ok=True)
-        t0 = time.perf_counter()
-        print(f"charts: deriving geometry for N={n} (not shipped); cached at {path}",
-              file=sys.stderr, flush=True)
-        src = module_source(n)
-        atomic_write(path, src.encode("utf-8"))  # concurrent workers never see half a file
-        print(f"charts: N={n} derived in {time.perf_counter() - t0:.1f} s", file=sys.stderr, flush=True)
+        return "missing"
+    sidecar = path.with_name(path.name + ".sha256")
+    if not sidecar.exists():
+        return "its hash file is missing (an interrupted derivation?)"
+    if sidecar.read_text().strip() != _digest(path.read_bytes()):
+        return "its contents do not match the stored hash (corrupt or stale)"
+    return None
+
+
+def _derive(n: int, path: Path, reason: str) -> None:
+    if reason != "missing":
+        _say(f"the cached geometry for N={n} at {path} is unusable: {reason}; deriving it again")
+    t0 = time.perf_counter()
+    _say(f"deriving geometry for N={n} (not shipped); cached at {path}")
+    data = module_source(n).encode("utf-8")
+    atomic_write(path, data)            # concurrent readers never see half a file
+    atomic_write(path.with_name(path.name + ".sha256"), (_digest(data) + "\n").encode())
+    _say(f"N={n} derived in {time.perf_counter() - t0:.1f} s")
+
+
+def _import(n: int, path: Path):
     name = f"charts_ondemand_{module_name(n)}"
     spec = importlib.util.spec_from_file_location(name, path)
     mod = importlib.util.module_from_spec(spec)
-    sys.modules[name] = mod
     spec.loader.exec_module(mod)
+    sys.modules[name] = mod
     return mod
+
+
+def load_or_generate(n: int):
+    """The generated module for N rotors from the cache, derived (once, under a file lock)
+    when missing, corrupt or stale."""
+    folder = cache_dir()
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"{module_name(n)}.py"
+    with _derivation_lock(folder / f"{module_name(n)}.lock", n):
+        reason = _problem(path)
+        if reason is not None:
+            _derive(n, path, reason)
+        try:
+            return _import(n, path)
+        except Exception as exc:        # noqa: BLE001 - a hash-valid file that fails to import
+            if reason is not None:      # freshly derived: a real error, not a corrupt cache
+                raise
+            _derive(n, path, f"it does not import ({type(exc).__name__}: {exc})")
+            return _import(n, path)

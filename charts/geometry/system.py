@@ -21,6 +21,7 @@ import warnings
 import numpy as np
 
 from .atlas import chart_coordinates, local_masses
+from .checks import finite_array, integer, number
 from .kernels import geometry
 from .projection import project_constraint, tangent_part
 from .structured import gauss_sectional
@@ -82,19 +83,32 @@ def _check_family(n, weights, level):
     return a, level
 
 
+def plane_area2(vv, ww, vw) -> float:
+    """|v|²|w|² − ⟨v,w⟩², the squared area of the plane of a sectional curvature; ValueError
+    when v, w do not span a plane (a zero vector, or parallel to ~1e-14 rad)."""
+    if not (vv > 0 and ww > 0):
+        raise ValueError("v and w must be nonzero tangent vectors: a zero vector spans no plane")
+    area2 = vv * ww - vw ** 2
+    if not area2 > 1e-28 * vv * ww:
+        raise ValueError("v and w are (nearly) parallel: they do not span a 2-plane")
+    return float(area2)
+
+
 class RotorSystem:
     """N rotors with moments of inertia ``masses`` (default all 1, the paper's case) on the
     constraint Σ ``weights``ᵢ cos θᵢ = ``level`` (default weights all 1, level 0: eq 9)."""
 
     def __init__(self, n: int, masses=None, weights=None, level=0.0):
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
-            raise ValueError(f"n must be an integer number of rotors, got {n!r}")
+        n = integer("n (the number of rotors)", n)      # 4.0 and np.int64(4) count; 3.5 no
         if n < 3:
             raise ValueError(f"n must be >= 3 (n=2 has no 1-dimensional smooth manifold), got n={n}")
         self.n = int(n)
         if masses is None:
             masses = np.ones(self.n)
-        masses = np.asarray(masses, dtype=float)
+        try:
+            masses = np.asarray(masses, dtype=float)
+        except (TypeError, ValueError):
+            raise ValueError(f"masses must be {self.n} numbers, got {masses!r}") from None
         if masses.shape != (self.n,):
             raise ValueError(f"masses must have length n={self.n}, got shape {masses.shape}")
         if not np.all(np.isfinite(masses)) or np.any(masses <= 0):
@@ -118,11 +132,7 @@ class RotorSystem:
 
     # -- validation --------------------------------------------------------------------
     def check_point(self, theta) -> np.ndarray:
-        theta = np.asarray(theta, dtype=float)
-        if theta.shape != (self.n,):
-            raise ValueError(f"theta must have shape ({self.n},), got {theta.shape}")
-        if not np.all(np.isfinite(theta)):
-            raise ValueError(f"theta has non-finite entries: {theta.tolist()}")
+        theta = finite_array("theta", theta, shape=(self.n,))
         F = float(self.weights @ np.cos(theta)) - self.level
         if abs(F) > TOL["constraint"]:
             what = "sum(cos theta)" if self.is_paper_family else "sum(a cos theta) - level"
@@ -131,11 +141,7 @@ class RotorSystem:
         return theta
 
     def check_tangent(self, theta, u, name="u") -> np.ndarray:
-        u = np.asarray(u, dtype=float)
-        if u.shape != (self.n,):
-            raise ValueError(f"{name} must have shape ({self.n},), got {u.shape}")
-        if not np.all(np.isfinite(u)):
-            raise ValueError(f"{name} has non-finite entries: {u.tolist()}")
+        u = finite_array(name, u, shape=(self.n,))
         G = float(u @ (self.weights * np.sin(theta)))
         scale = max(1.0, float(np.linalg.norm(u)))
         if abs(G) > TOL["tangency"] * scale:
@@ -161,27 +167,30 @@ class RotorSystem:
 
     def inner(self, theta, a, b):
         """Metric inner product of ambient tangent vectors: Σ mᵢ aᵢ bᵢ."""
-        return float(np.sum(self.masses * np.asarray(a) * np.asarray(b)))
+        a = finite_array("a", a, shape=(self.n,))
+        b = finite_array("b", b, shape=(self.n,))
+        return float(np.sum(self.masses * a * b))
 
     def project_point(self, theta, iterations=50):
         """Nearest-ish point on the manifold (Newton along M⁻¹∇F, ``projection.project_constraint``)."""
         theta = np.array(theta, dtype=float)
         if theta.shape != (self.n,) or not np.all(np.isfinite(theta)):
             raise ValueError(f"theta must be {self.n} finite angles, got {theta.tolist()}")
-        if not project_constraint(theta, self.masses, self.weights, self.level, int(iterations)):
+        if not project_constraint(theta, self.masses, self.weights, self.level,
+                                  integer("iterations", iterations, 1)):
             raise ValueError("cannot project: the point is a critical point of sum(a cos theta)")
         return theta
 
     def project_tangent(self, theta, u):
         """M-orthogonal projection of an ambient vector onto the tangent space."""
-        return tangent_part(np.asarray(theta, dtype=float), np.asarray(u, dtype=float), self.minv,
-                            self.weights)
+        return tangent_part(finite_array("theta", theta, shape=(self.n,)),
+                            finite_array("u", u, shape=(self.n,)), self.minv, self.weights)
 
     def random_state(self, seed=0, speed=1.0):
         """Random (theta, u) on the manifold with Σ mᵢuᵢ² = speed²."""
-        if not np.isfinite(speed) or speed <= 0:
+        if not number("speed", speed) > 0:
             raise ValueError(f"speed must be positive and finite, got {speed}")
-        rng = np.random.default_rng(seed)
+        rng = np.random.default_rng(integer("seed", seed, 0))
         a, c = self.weights, self.level
         for _ in range(100000):
             theta = rng.uniform(-np.pi, np.pi, self.n)
@@ -217,8 +226,14 @@ class RotorSystem:
             raise ValueError(f"chart must be an integer in 0..{self.n - 1}, got {chart!r}")
         sk = np.sin(theta[k])
         if abs(sk) < TOL["chart_domain"]:
+            best = self.best_chart(theta)
+            if abs(np.sin(theta[best])) < TOL["chart_domain"]:
+                raise ValueError(f"theta = {theta.tolist()} is a singular point of the manifold "
+                                 "(every sin theta_i = 0: the gradient of sum(cos theta) "
+                                 "vanishes); the metric and curvature are not defined there in "
+                                 "any chart")
             raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = {sk:.2e}; "
-                             f"use chart={self.best_chart(theta)} (the best conditioned) or chart=None")
+                             f"use chart={best} (the best conditioned) or chart=None")
         idx = chart_coordinates(self.n, k)
         return int(k), idx, theta[idx], local_masses(self.masses, k)
 
@@ -229,8 +244,12 @@ class RotorSystem:
 
     def from_chart(self, q, v, chart, branch):
         """Ambient (theta, u) from local (q, v) of ``chart`` on sign branch ``branch`` = ±1."""
-        q = np.asarray(q, dtype=float)
-        v = np.asarray(v, dtype=float)
+        chart = integer("chart", chart, 0, self.n - 1)
+        if isinstance(branch, bool) or branch not in (1, -1):
+            raise ValueError(f"branch must be +1 or -1 (the sign of sin theta_{chart}), "
+                             f"got {branch!r}")
+        q = finite_array("q", q, shape=(self.dim,))
+        v = finite_array("v", v, shape=(self.dim,))
         C = np.cos(q).sum()
         if abs(C) >= 1.0:
             raise ValueError(f"q is outside the domain of chart {chart}: |sum cos q| = {abs(C):.6f} >= 1")
@@ -293,9 +312,7 @@ class RotorSystem:
         w = self.check_tangent(theta, w, "w")
         k, idx, q, m = self._chart(theta, chart)
         ip = lambda a, b: self.inner(theta, a, b)
-        area2 = ip(v, v) * ip(w, w) - ip(v, w) ** 2
-        if not area2 > 1e-28 * max(1.0, ip(v, v) * ip(w, w)):
-            raise ValueError("v and w are (nearly) parallel: they do not span a 2-plane")
+        area2 = plane_area2(ip(v, v), ip(w, w), ip(v, w))
         r = self._gen.curvature_operator(q, v[idx], w[idx], m, np.empty(self.dim))
         r = np.insert(r, k, self._gen.eliminated_component(q, r, np.sin(theta[k])))
         return float(ip(v, r) / area2)
@@ -307,7 +324,6 @@ class RotorSystem:
         theta = self.check_point(theta)
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")
-        K, area2 = gauss_sectional(theta, v, w, self.masses, self.weights)
-        if not area2 > 1e-28 * max(1.0, self.inner(theta, v, v) * self.inner(theta, w, w)):
-            raise ValueError("v and w are (nearly) parallel: they do not span a 2-plane")
+        plane_area2(self.inner(theta, v, v), self.inner(theta, w, w), self.inner(theta, v, w))
+        K, _ = gauss_sectional(theta, v, w, self.masses, self.weights)
         return float(K)

@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from ..geometry.system import RotorSystem
+from .cli_parser import OneLineParser
 
 __all__ = ["Point", "trajectory_study", "lyapunov_study", "curvature_study", "run_study", "main"]
 
@@ -343,7 +344,7 @@ def draw_figure(study: dict):
 
 
 def main(argv=None, quiet=False) -> int:
-    ap = argparse.ArgumentParser(
+    ap = OneLineParser(
         prog="charts bench accuracy",
         description="Work–precision diagrams: error against wall time for the trajectory "
         "(every formulation and method, with and without projection), the leading Lyapunov "

@@ -8,7 +8,9 @@ error bars beside the paper's), ``fig2.png`` … ``fig5.png`` (the paper's panel
 ``results.json`` (all numbers), ``report.md`` tying each result to the paper's claim, and
 the hyperbolicity test by a second route (covariant Lyapunov vectors on the trajectories of
 the angle test, ``charts.runs.reproduce_clv``: ``clv.png``, ``ftle.png``).
-Independent trajectories run in parallel processes (all cores by default).
+Independent trajectories run in parallel processes (all cores by default).  Each finished
+trajectory is kept in ``DIR/pieces/`` as it finishes: a reproduction interrupted (Ctrl-C,
+exit 130) and run again with the same command computes only the missing pieces.
 
 Presets (unit speed, equal masses, RK4 dt = 0.01 everywhere):
 
@@ -27,6 +29,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import pickle
 import platform
 import sys
 import time
@@ -36,13 +39,16 @@ from pathlib import Path
 import numpy as np
 
 from ..analyses.statistics import standard_error
-from .io import atomic_text
+from .io import atomic_text, atomic_write
+from .outdir import OutputLock, prepare_output
 from . import reproduce_clv
 from .paper import PAPER_EXPONENTS
+from .cli_parser import OneLineParser, positive_count
 
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
 
 NS = (3, 4, 5)
+EXIT_INTERRUPTED = 130
 
 PRESETS = {
     "quick": dict(lyap_members=4, lyap_t=5.0e3, lyap_batches=10, angle_members=2, angle_t=2.0e3,
@@ -103,7 +109,7 @@ def _task_waveform(n, seed, t):
 
 
 # ------------------------------------------------------------------------ orchestration
-def _run_all(cfg, workers, quiet):
+def _tasks(cfg):
     tasks = {}
     for n in NS:
         for i in range(cfg["lyap_members"]):
@@ -114,15 +120,74 @@ def _run_all(cfg, workers, quiet):
             tasks[("clv", n, i)] = (reproduce_clv.task_clv, a)
         tasks[("curv", n, 0)] = (_task_curvature, (n, 300, cfg["curv_t"]))
         tasks[("wave", n, 0)] = (_task_waveform, (n, 400, cfg["wave_t"]))
+    return tasks
+
+
+def _run_all(cfg, workers, quiet, pieces=None):
+    """Every task's result; with ``pieces`` (a folder), each finished task is kept there
+    (:func:`save_piece`) and a task already kept with the same arguments is not run again."""
+    tasks = _tasks(cfg)
     results = {}
+    if pieces is not None:
+        for key, (f, a) in tasks.items():
+            got = load_piece(pieces, key, a)
+            if got is not None:
+                results[key] = got
+        if results and not quiet:
+            print(f"reusing {len(results)} of {len(tasks)} finished pieces from {pieces}",
+                  file=sys.stderr)
     from tqdm.auto import tqdm
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items()}
-        with tqdm(total=len(futs), desc="reproduce", disable=quiet) as bar:
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=_quiet_interrupt)
+    try:
+        futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items() if key not in results}
+        with tqdm(total=len(tasks), initial=len(results), desc="reproduce", disable=quiet) as bar:
             for fut in as_completed(futs):
-                results[futs[fut]] = fut.result()
+                key = futs[fut]
+                results[key] = fut.result()
+                if pieces is not None:
+                    save_piece(pieces, key, tasks[key][1], results[key])
                 bar.update(1)
+    except BaseException:
+        pool.shutdown(wait=False, cancel_futures=True)
+        for proc in list((getattr(pool, "_processes", None) or {}).values()):
+            proc.terminate()            # the pieces in flight are lost, the finished ones kept
+        raise
+    pool.shutdown()
     return results
+
+
+PIECES = "pieces"
+
+
+def _quiet_interrupt():
+    """In a worker process: Ctrl-C ends it silently (the main process reports what was
+    kept), instead of each worker printing a KeyboardInterrupt traceback."""
+    import signal
+    signal.signal(signal.SIGINT, lambda *_: os._exit(EXIT_INTERRUPTED))
+
+
+def _piece_path(folder, key):
+    return Path(folder) / f"{key[0]}-n{key[1]}-{key[2]}.pkl"
+
+
+def save_piece(folder, key, args, result: dict) -> None:
+    """Keep one task's result (nested dicts of arrays and numbers, pickled: the folder is
+    the user's own output) with the arguments that produced it."""
+    atomic_write(_piece_path(folder, key), pickle.dumps({"args": json.dumps(list(args)),
+                                                         "result": result}))
+
+
+def load_piece(folder, key, args):
+    """The kept result of task ``key`` if it was computed with ``args``; None otherwise
+    (missing, another preset, or unreadable: then it is computed again)."""
+    path = _piece_path(folder, key)
+    if not path.exists():
+        return None
+    try:
+        piece = pickle.loads(path.read_bytes())
+        return piece["result"] if piece["args"] == json.dumps(list(args)) else None
+    except Exception:                   # noqa: BLE001 - a torn or foreign file: recompute
+        return None
 
 
 def _lyapunov_table(results, cfg):
@@ -192,7 +257,7 @@ def _report(out, preset, rows, curv, ang, elapsed, workers, clv_lines):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(prog="charts reproduce", description=__doc__.splitlines()[0])
+    p = OneLineParser(prog="charts reproduce", description=__doc__.splitlines()[0])
     g = p.add_mutually_exclusive_group()
     g.add_argument("--quick", dest="preset", action="store_const", const="quick",
                    help="a few minutes on 2 cores (default)")
@@ -200,15 +265,27 @@ def main(argv=None):
                    help="publication accuracy (exponents to ±0.001)")
     p.add_argument("-o", "--output", default="reproduce-out", help="output folder")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
-    p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    p.add_argument("--workers", type=positive_count, default=None, help="processes (default: all cores)")
     args = p.parse_args(argv)
     preset = args.preset or "quick"
     cfg = PRESETS[preset]
-    out = Path(args.output)
-    out.mkdir(parents=True, exist_ok=True)
+    out = prepare_output(args.output)
     workers = args.workers or os.cpu_count() or 1
+    with OutputLock(out, f"charts reproduce --{preset}"):
+        pieces = prepare_output(out / PIECES)
+        try:
+            return _reproduce(out, pieces, preset, cfg, workers, args.quiet)
+        except KeyboardInterrupt:
+            kept = len(list(pieces.glob("*.pkl")))
+            print(f"\ninterrupted: {kept} of {len(_tasks(cfg))} pieces kept in {pieces}; run "
+                  f"the same command again to continue:\n  charts reproduce --{preset} "
+                  f"-o {out}", file=sys.stderr)
+            return EXIT_INTERRUPTED
+
+
+def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
     t0 = time.time()
-    results = _run_all(cfg, workers, args.quiet)
+    results = _run_all(cfg, workers, quiet, pieces)
     from . import paper_figures
     from ..analyses.hyperbolicity import angle_statistics
     from ..analyses.spectra import Waveform
@@ -250,7 +327,7 @@ def main(argv=None):
     atomic_text(out / "results.json", json.dumps(summary, indent=1, default=float))
     _report(out, preset, rows, curv, ang, elapsed, workers,
             reproduce_clv.report_lines(clv, NS, cfg["angle_transient"]))
-    if not args.quiet:
+    if not quiet:
         print(_fmt_table(rows))
         print(f"wrote {out}/report.md, table.md, results.json, fig2-5.png, clv.png, ftle.png "
               f"in {elapsed:.0f} s")

@@ -33,6 +33,7 @@ import numpy as np
 from ..geometry.system import RotorSystem
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
+from .outdir import OutputLock, prepare_output
 from .paper import PAPER_EXPONENTS
 from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
 from .recorders import make_recorders
@@ -53,10 +54,16 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
 
     ``on_chunk(index, n_chunks)`` is called after each checkpoint (tests use it to simulate
     Ctrl-C by raising KeyboardInterrupt).  An interrupt writes a partial result with
-    status "interrupted" and re-raises ``KeyboardInterrupt``.
+    status "interrupted" and re-raises ``KeyboardInterrupt``.  ``outdir`` is checked before
+    any work (:func:`~charts.runs.outdir.prepare_output`) and locked while the run writes
+    into it: a second run into the same folder refuses (:class:`~charts.runs.outdir.OutputLock`).
     """
-    outdir = Path(outdir)
-    outdir.mkdir(parents=True, exist_ok=True)
+    outdir = prepare_output(outdir)
+    with OutputLock(outdir, f"charts run {scene.name}"):
+        return _run_locked(scene, outdir, resume, quiet, on_chunk)
+
+
+def _run_locked(scene: Scene, outdir: Path, resume: bool, quiet: bool, on_chunk) -> dict:
     system = RotorSystem(scene.system["n"], scene.system["masses"], scene.system.get("weights"),
                          scene.system.get("level", 0.0))
     plan = plan_scene(scene)

@@ -30,6 +30,7 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
+from ..solvers.status import check_step
 from .scene_schema import (EFFECTS, GRID_RTOL, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, Key,
                            SceneError)
 
@@ -246,6 +247,10 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                                  "allowed with method = 'rk4' (fixed step: set dt, or use "
                                  "method = 'dop853')")
         integ["dt"] = integ["dt"] if integ["dt"] is not None else 0.01
+        try:                                  # the API's step-size policy (status.check_step)
+            check_step(integ["dt"], system["speed"], n)
+        except ValueError as exc:
+            raise SceneError(f"{_where(source, 'integrator', 'dt')}: {exc}") from None
     else:
         if "dt" in raw_int:
             raise SceneError(f"{_where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "

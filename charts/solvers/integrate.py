@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 
+from ..geometry.checks import finite_array, option
 from ..geometry.projection import invariants
 from ..geometry.system import RotorSystem
 from . import loop as D
@@ -25,8 +26,8 @@ from .dense import DenseSolution
 from .trajectory import IntegrationResult
 from .events import EventTracker, check_events
 from .progress import progress_reporter
-from .status import (CAP_FRACTION, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
-                     IntegrationError, SingularPointError, status_error)
+from .status import (CAP_FRACTION, DT_SPEED, FINISHED, RUNNING, SINGULAR_S, ChartDomainError,
+                     IntegrationError, SingularPointError, check_duration, check_step, status_error)
 from .ambient_formulation import AmbientFlow
 from .chart_formulation import DEFAULT_TAU, ChartFlow
 
@@ -42,7 +43,7 @@ TOLERANCES = {
     # the smallest rtol accepted (the error estimate is meaningless near rounding level).
     "rtol_min": 1e-15,
     # default RK4 step, in units of 1/speed: the paper's Δt = 0.01 at unit speed.
-    "dt_speed": 0.01,
+    "dt_speed": DT_SPEED,
 }
 
 _METHODS = {"rk4": D.METHOD_RK4, "dop853": D.METHOD_DOP853}
@@ -79,9 +80,9 @@ def _span(t_final, t_span):
 
 def _eval_times(t_eval, t0, t1, sign):
     """The t_eval times as integration times s = ±(t − t0) ≥ 0, increasing."""
-    te = np.array(t_eval, dtype=float).ravel()
-    if te.size == 0 or not np.all(np.isfinite(te)):
-        raise ValueError("t_eval must be a non-empty array of finite times")
+    te = np.atleast_1d(finite_array("t_eval", t_eval))
+    if te.ndim != 1 or te.size == 0:
+        raise ValueError(f"t_eval must be a non-empty 1-D array of times, got shape {te.shape}")
     if np.any(sign * np.diff(te) <= 0):
         raise ValueError(f"t_eval must be strictly {'increasing' if sign > 0 else 'decreasing'} "
                          "(monotonic in the direction of integration)")
@@ -188,6 +189,8 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         if rtol is not None or atol is not None:
             raise ValueError("rtol/atol apply to method='dop853'; rk4 takes dt")
         dt = TOLERANCES["dt_speed"] / speed if dt is None else _positive("dt", dt)
+        check_step(dt, speed, system.n)
+        check_duration(t_final, speed, dt)
         rtol_v = atol_v = 0.0
     else:
         if dt is not None:
@@ -198,6 +201,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
                              "estimate is dominated by rounding; use a larger rtol")
         atol_v = rtol_v * min(1.0, speed) if atol is None else _positive("atol", atol)
         dt = 0.0
+        check_duration(t_final, speed)
     if isinstance(chunk_steps, bool) or not isinstance(chunk_steps, (int, np.integer)) or chunk_steps < 1:
         raise ValueError(f"chunk_steps must be a positive integer, got {chunk_steps!r}")
     bar = None
@@ -217,6 +221,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
     if any(ev[1] for ev in event_list):
         chunk_steps = min(int(chunk_steps), 256)  # bounds the work done past a terminal event
 
+    project = option("project", project, (False, True))
     form_cls = _FORMULATIONS[formulation]
     kw = {"tau": tau, "chart": chart} if formulation == "chart" else {}
     if formulation == "ambient" and (chart is not None or tau != DEFAULT_TAU):

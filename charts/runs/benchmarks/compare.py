@@ -32,6 +32,7 @@ import tempfile
 from pathlib import Path
 
 from .environment import load, machine, spread
+from ..cli_parser import OneLineParser
 
 __all__ = ["Engine", "parse_engine", "main"]
 
@@ -137,7 +138,7 @@ def parse_engine(text: str) -> tuple[str, str, str | None]:
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="charts bench compare", description=__doc__,
+    ap = OneLineParser(prog="charts bench compare", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--engine", action="append", type=parse_engine, metavar="LABEL=PYTHON[:SRC]",
                     help="an installation to measure (repeatable; the first is the baseline of "

@@ -26,6 +26,7 @@ from ...flows.ambient import flow_rhs
 from ...geometry.system import RotorSystem
 from ...solvers.integrate import integrate
 from .environment import load, machine, spread
+from ..cli_parser import OneLineParser
 
 __all__ = ["routes", "main"]
 
@@ -71,7 +72,7 @@ def routes(system, theta, u, T, tc, rtol):
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="charts bench integrators", description=__doc__,
+    ap = OneLineParser(prog="charts bench integrators", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--t", type=float, default=200.0, help="simulated time per run (default 200)")
     ap.add_argument("--rtol", type=float, default=1e-10,

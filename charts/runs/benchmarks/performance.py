@@ -34,6 +34,7 @@ import numpy as np
 
 from ...analyses.lyapunov import lyapunov_spectrum
 from ...geometry.system import RotorSystem
+from ..cli_parser import OneLineParser
 from .environment import load, machine, spread
 from .peers import (K, N, SEED, TRANSIENT, fixed_state, jitcode_run, jitcode_setup, scipy_run,
                     trajectory_errors)
@@ -134,7 +135,7 @@ def _fmt(values):
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="charts bench performance", description=__doc__,
+    ap = OneLineParser(prog="charts bench performance", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--t", type=float, default=None,
                     help="averaging time (default 2000; 500 with --quick)")

@@ -5,11 +5,15 @@ from __future__ import annotations
 
 import json
 import os
+import signal
+import threading
 import time
 import uuid
 from pathlib import Path
 
+from ...analyses.arguments import positive_int
 from ..io import atomic_text
+from ..outdir import OutputLock, prepare_output
 from ..scene import scene_to_dict
 from .points import digest, sweep_points
 from .report import SUMMARY, plot_sweep, summarize, write_summary
@@ -18,9 +22,29 @@ from .table import (TABLE, TableAppender, finish_table, point_columns, point_row
                     prepare_table)
 from .worker import evaluate_point
 
-__all__ = ["run_sweep", "dask_client", "same_scene_groups", "META"]
+__all__ = ["run_sweep", "dask_client", "same_scene_groups", "check_scheduler_address", "META",
+           "SCHEDULER_TIMEOUT_S"]
 
 META = "sweep.json"
+#: How long a client waits for an existing scheduler before the sweep fails.
+SCHEDULER_TIMEOUT_S = 10
+
+
+def check_scheduler_address(scheduler) -> str:
+    """``scheduler`` if it is a well-formed Dask address (``tcp://host:port``, ``host:port``);
+    :class:`SweepError` naming it otherwise.  Called before any work."""
+    from distributed.comm import parse_address, parse_host_port
+
+    try:
+        if not isinstance(scheduler, str) or not scheduler.strip():
+            raise ValueError("empty")
+        proto, loc = parse_address(scheduler)
+        if proto in ("tcp", "tls", "ws", "wss"):
+            parse_host_port(loc)
+    except (ValueError, TypeError) as exc:
+        raise SweepError(f"--scheduler {scheduler!r} is not a Dask scheduler address ({exc}); "
+                         "expected e.g. tcp://host:8786") from None
+    return scheduler
 
 
 def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=False,
@@ -44,11 +68,23 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
     -------
     dict with 'points', 'skipped' (finished before), 'computed', 'failed', 'lost' (worker
     errors, not in the table), 'run_id', 'table', 'summary', 'figures'.
-    An interrupt leaves the table valid and re-raises ``KeyboardInterrupt``.
+    An interrupt leaves the table valid and re-raises ``KeyboardInterrupt``.  ``outdir`` is
+    checked before any work and locked while the sweep writes into it (a second sweep or run
+    into it refuses, :mod:`charts.runs.outdir`).
     """
-    outdir = Path(outdir)
-    outdir.mkdir(parents=True, exist_ok=True)
-    points = sweep_points(sweep)
+    if scheduler:
+        check_scheduler_address(scheduler)
+    if workers is not None:
+        positive_int("workers", workers)
+    points = sweep_points(sweep)          # every point's scene validated before any file
+    outdir = prepare_output(outdir)
+    with OutputLock(outdir, f"charts sweep {sweep.name}"):
+        return _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
+                           on_point)
+
+
+def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
+                on_point) -> dict:
     columns = point_columns(points)
     done = prepare_table(outdir, columns, points, resume, sweep.source)
     todo = [p for p in points if p.point_id not in done]
@@ -93,17 +129,26 @@ def dask_client(scheduler, workers):
         if workers:
             raise SweepError("--workers applies to the local cluster only; an existing cluster "
                              "(--scheduler) has its own workers")
+        check_scheduler_address(scheduler)
         try:
-            return Client(scheduler, timeout="20s"), None
-        except (OSError, TimeoutError) as exc:
-            raise SweepError(f"cannot reach the Dask scheduler at {scheduler!r}: {exc} (start "
+            return Client(scheduler, timeout=f"{SCHEDULER_TIMEOUT_S}s"), None
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise SweepError(f"cannot reach the Dask scheduler at {scheduler!r} within "
+                             f"{SCHEDULER_TIMEOUT_S} s: {exc} (start "
                              "one with `dask scheduler`, workers with `dask worker ADDRESS`)") \
                 from None
-    n = int(workers or os.cpu_count() or 1)
-    if n < 1:
-        raise SweepError(f"--workers must be >= 1, got {n}")
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=logging.ERROR)
+    n = (os.cpu_count() or 1) if workers is None else positive_int("workers", workers)
+    # the worker processes start with Ctrl-C ignored (a disposition that survives their
+    # spawn): the main process reports the interrupt and closes the cluster, instead of
+    # every worker printing a KeyboardInterrupt traceback
+    main = threading.current_thread() is threading.main_thread()
+    old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+    try:
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                               dashboard_address=None, silence_logs=logging.ERROR)
+    finally:
+        if main:
+            signal.signal(signal.SIGINT, old)
     return Client(cluster), cluster
 
 

@@ -7,6 +7,7 @@ and names the parameters it uses; :func:`evaluate_expression` computes it.
 from __future__ import annotations
 
 import ast
+import math
 import operator
 
 __all__ = ["ExpressionError", "expression_symbols", "evaluate_expression", "ALLOWED"]
@@ -40,7 +41,26 @@ def expression_symbols(expr: str) -> set:
 
 
 def evaluate_expression(expr: str, env: dict) -> float:
-    """The value of a validated expression, its names taken from ``env``."""
+    """The value of a validated expression, its names taken from ``env``;
+    :class:`ExpressionError` quoting it when the arithmetic fails (division by zero, a
+    result too large, complex or not finite)."""
+    try:
+        value = _evaluate(ast.parse(expr, mode="eval"), env)
+    except (ZeroDivisionError, OverflowError, TypeError, ValueError) as exc:
+        raise ExpressionError(f"{expr!r} cannot be computed with {_values(expr, env)}: "
+                              f"{exc}") from None
+    if not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ExpressionError(f"{expr!r} is {value!r} with {_values(expr, env)}: "
+                              "not a finite real number")
+    return float(value)
+
+
+def _values(expr: str, env: dict) -> str:
+    names = sorted(expression_symbols(expr))
+    return ", ".join(f"{k}={env.get(k)!r}" for k in names) or "no parameters"
+
+
+def _evaluate(tree, env: dict):
     def ev(node):
         if isinstance(node, ast.Expression):
             return ev(node.body)
@@ -51,4 +71,4 @@ def evaluate_expression(expr: str, env: dict) -> float:
         if isinstance(node, ast.BinOp):
             return _OPS[type(node.op)](ev(node.left), ev(node.right))
         return _OPS[type(node.op)](ev(node.operand))
-    return ev(ast.parse(expr, mode="eval"))
+    return ev(tree)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..scene import Scene, SceneError, parse_scene, scene_to_dict
-from .expressions import evaluate_expression
+from .expressions import ExpressionError, evaluate_expression
 from .spec import SYSTEM_AXES, Sweep, SweepError
 
 __all__ = ["SweepPoint", "sweep_points", "point_scene", "digest"]
@@ -36,11 +36,15 @@ def sweep_points(sweep: Sweep) -> list[SweepPoint]:
         for seed in sweep.seeds:
             params = dict(combo, seed=seed)
             index = len(points)
-            raw = point_scene(sweep, params)
+            desc = ", ".join(f"{k}={v}" for k, v in params.items())
+            try:
+                raw = point_scene(sweep, params)
+            except ExpressionError as exc:
+                raise SweepError(f"{sweep.source} point {index} ({desc}): mass pattern "
+                                 f"{params.get('masses')!r}: {exc}") from None
             raw["name"] = f"{sweep.name}-{index:04d}"
             if sweep.description:
                 raw.setdefault("description", sweep.description)
-            desc = ", ".join(f"{k}={v}" for k, v in params.items())
             try:
                 scene = parse_scene(raw, source=f"{sweep.source} point {index} ({desc})")
             except SceneError as exc:

@@ -1,0 +1,198 @@
+"""Analyses of the linkage of the Appendix: Lyapunov exponents (eqs 17–18 for the linkage's
+flow), sectional curvature along the trajectory (Gauss equation), the distance of the manifold
+from the cone points of Σ cos θ = 0, and the state of the ε → 0 comparison.
+
+Curvature.  M ⊂ (R⁷, M) is a submanifold whose geodesics have the normal acceleration
+a(X) = q̈ (``charts.flows.linkage.acceleration``, a quadratic form in the velocity X), which is
+its second fundamental form: II(X, X) = a(X), II(X, Y) = (a(X + Y) − a(X − Y))/4.  The Gauss
+equation gives, for M-orthonormal X, Y,
+
+    K(X, Y) = ⟨a(X), a(Y)⟩_M − |II(X, Y)|²_M .
+
+For a massless disk the inner product counts θ only: the θ-projection of M is an isometrically
+immersed hypersurface of R⁴ and a_θ is its normal acceleration.  Along a run, as in
+``charts.analyses.curvature``, the planes are (unit velocity, eᵢ) with eᵢ the Lyapunov vectors
+orthonormalised against it; ``fraction_positive`` counts K > 0.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..flows.linkage import NY, acceleration
+from ..geometry.linkage import NQ
+from ..solvers.linkage import LinkageFlow
+from .arguments import positive_int, positive_time, progress_reporter, project_steps, steps_of
+from .lyapunov import exponents_from_marks
+from .statistics import batch_ends
+
+__all__ = ["LinkageResult", "linkage_run", "linkage_trajectory", "gauss_curvature", "cone_distance", "CONE_POINTS"]
+
+#: The six cone points of Σ cos θ = 0 (N = 4): two angles 0, two π.
+CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
+                    [(0, 0, 1, 1), (0, 1, 0, 1), (0, 1, 1, 0), (1, 0, 0, 1), (1, 0, 1, 0),
+                     (1, 1, 0, 0)])
+
+
+def gauss_curvature(system, q, X, Y):
+    """Sectional curvature of the plane (X, Y) ⊂ T_q M (tangent vectors, shape (7,)) by the
+    Gauss equation (module doc); X, Y need not be orthonormal."""
+    par = system.par
+    w = system.mass
+
+    def acc(z):
+        a = np.empty(NQ)
+        acceleration(np.asarray(q, dtype=float), np.asarray(z, dtype=float), par, a)
+        return a
+
+    X = np.asarray(X, dtype=float)
+    Y = np.asarray(Y, dtype=float)
+    aX, aY = acc(X), acc(Y)
+    IIxy = (acc(X + Y) - acc(X - Y)) / 4.0
+    ip = lambda a, b: float(np.sum(w * a * b))
+    area = ip(X, X) * ip(Y, Y) - ip(X, Y) ** 2
+    return (ip(aX, aY) - ip(IIxy, IIxy)) / area
+
+
+@dataclass
+class LinkageResult:
+    """One run of `linkage_run`.
+
+    exponents, stderr : (k,)  Lyapunov exponents (1/time) with batch-means standard errors.
+    batches : (n_batches, k)  per-block estimates.
+    t : (S,)  sample times after the transient; states : (S, 14) the sampled (q, v).
+    K : (S, k)  sectional curvatures K(v̂, eᵢ) (module doc).
+    min_sin2 : float  smallest Σ sin²θᵢ at the samples (0 at a cone point of Σ cos θ = 0).
+    min_health : float  smallest det(C̃ᵀC̃) seen (``charts.flows.linkage.disk_gram``).
+    """
+    exponents: np.ndarray
+    stderr: np.ndarray
+    batches: np.ndarray
+    t: np.ndarray
+    states: np.ndarray
+    K: np.ndarray
+    min_sin2: float
+    min_health: float
+    params: dict = field(default_factory=dict)
+
+    def fraction_positive(self):
+        """Fraction of samples with K(v̂, eᵢ) > 0, shape (k,)."""
+        return (self.K > 0).mean(axis=0)
+
+    def __repr__(self):
+        pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
+        return f"LinkageResult([{pm}], eps={self.params.get('eps')})"
+
+
+def _frame(system, row, k):
+    """(v̂, e₁…e_k) from a recorded row [y; ξ¹…ξᵏ]: the position parts, M-orthonormalised."""
+    w = system.mass
+    vecs = [row[NQ:NY]] + [row[NY * (r + 1):NY * (r + 1) + NQ] for r in range(k)]
+    out = []
+    for x in vecs:
+        x = x.copy()
+        for e in out:
+            x -= np.sum(w * x * e) * e
+        out.append(x / np.sqrt(np.sum(w * x * x)))
+    return out
+
+
+def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=50.0,
+                n_batches=20, reorth_every=0.1, project_every=1.0, sample_every=1.0,
+                curvature=True, seed=0, progress=False) -> LinkageResult:
+    """Lyapunov exponents and curvature samples of the linkage from (q0, v0).
+
+    Parameters as in ``lyapunov_spectrum`` (times in time units, whole multiples of dt):
+    ``t_final`` averaging time after ``t_transient``; ``n_exponents`` (≤ 3, the dimension)
+    leading exponents in the product of the kinetic metric on positions; ``sample_every``
+    time between curvature samples (a multiple of ``reorth_every``); ``curvature=False``
+    skips the Gauss-equation evaluations.
+    """
+    q0, v0 = system.check_state(q0, v0)
+    if not system.speed(v0) > 0:
+        raise ValueError("v0 has zero kinetic speed: the geodesic flow needs a nonzero speed")
+    dt = positive_time("dt", dt)
+    k = positive_int("n_exponents", n_exponents)
+    if k > system.dim:
+        raise ValueError(f"n_exponents={k} is out of range 1..{system.dim}")
+    reorth = steps_of("reorth_every", reorth_every, dt)
+    total = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    if total % reorth or sample % reorth:
+        raise ValueError(f"t_final={t_final:g} and sample_every={sample_every:g} must be "
+                         f"multiples of reorth_every={reorth_every:g}")
+    if total % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
+    n_batches = positive_int("n_batches", n_batches, 2)
+    if total < n_batches * reorth:
+        raise ValueError(f"t_final={t_final:g} is too short for {n_batches} batches")
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    seed = positive_int("seed", seed, 0)
+    flow = LinkageFlow(system, q0, v0, k, dt=dt, reorth_every=reorth,
+                       project_every=project_steps(project_every, dt), seed=seed)
+    rep = progress_reporter(progress, (transient + total) * dt, f"linkage eps={system.eps:g}")
+    where = "linkage_run (RK4)"
+    flow.advance(transient, where=where)
+    rep.update(transient * dt)
+    flow.logsum[:] = 0.0
+    ends = batch_ends(total, n_batches, reorth)
+    at = np.array(ends, dtype=np.int64) + flow.steps
+    logs = np.zeros((len(ends), k))
+    S = total // sample
+    rows = np.zeros((S, NY * (1 + k)))
+    for i in range(S):
+        flow.advance(sample, events=at, event_logs=logs, where=where)
+        rows[i] = flow.Z.ravel()
+        rep.update(sample * dt)
+    rep.close()
+    exps, batches, stderr = exponents_from_marks(logs, ends, dt)
+    K = np.full((S, k), np.nan)
+    if curvature:
+        for i in range(S):
+            fr = _frame(system, rows[i], k)
+            K[i] = [gauss_curvature(system, rows[i, :NQ], fr[0], e) for e in fr[1:]]
+    states = rows[:, :NY].copy()
+    min_sin2 = float(np.min(np.sum(np.sin(states[:, :4]) ** 2, axis=1)))
+    params = dict(eps=system.eps, rho=system.rho, disk_mass=system.disk_mass,
+                  disk_inertia=system.disk_inertia, t_final=total * dt, dt=dt,
+                  t_transient=transient * dt, n_batches=n_batches, reorth_every=reorth * dt,
+                  sample_every=sample * dt, speed=flow.speed, seed=seed)
+    return LinkageResult(exps, stderr, batches, np.arange(1, S + 1) * sample * dt, states, K,
+                         min_sin2, float(flow.health[0]), params)
+
+
+def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,
+                       project_every=1.0):
+    """The trajectory from (q0, v0) sampled every ``sample_every``: (t (S + 1,), states
+    (S + 1, 14)), row 0 the initial state (RK4 of ``charts.flows.linkage``)."""
+    q0, v0 = system.check_state(q0, v0)
+    dt = positive_time("dt", dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    total = steps_of("t_final", t_final, dt)
+    if total % sample:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
+    flow = LinkageFlow(system, q0, v0, 0, dt=dt, project_every=project_steps(project_every, dt))
+    out = [flow.Z[0].copy()]
+    for _ in range(total // sample):
+        flow.advance(sample, where="linkage_trajectory (RK4)")
+        out.append(flow.Z[0].copy())
+    return np.arange(len(out)) * sample * dt, np.array(out)
+
+
+def cone_distance(system, cone, branch=1):
+    """Euclidean distance in θ from the cone point ``cone`` (shape (4,), a `CONE_POINTS`
+    entry) to the linkage's manifold on disk branch ``branch`` (sign of sin α): the minimum
+    of |θ − cone| over F(q) = 0 (SLSQP from the first-order point near the cone point)."""
+    from scipy.optimize import minimize
+
+    cone = np.asarray(cone, dtype=float)
+    start = cone + 0.05 * np.array([1.0, -1.0, 1.0, -1.0])
+    q0 = np.concatenate([start, system.first_order_disk(start, branch)])
+    fun = lambda q: float(np.sum((q[:4] - cone) ** 2))
+    jac = lambda q: np.concatenate([2 * (q[:4] - cone), np.zeros(3)])
+    res = minimize(fun, q0, jac=jac, method="SLSQP", tol=1e-14, options=dict(maxiter=500),
+                   constraints=[dict(type="eq", fun=system.constraints, jac=system.jacobian)])
+    if not res.success or np.max(np.abs(system.constraints(res.x))) > 1e-10:
+        raise RuntimeError(f"cone_distance did not converge: {res.message}")
+    return float(np.sqrt(res.fun)), res.x

@@ -1,0 +1,81 @@
+"""The argument checks of the public surface, written once (every layer above uses them;
+``charts.analyses.arguments`` builds the time-grid rules on top).
+
+Each check returns the value in its working type or raises ``ValueError`` whose message
+names the argument, shows the value and says what is allowed.  Numbers users commonly pass
+in another type keep working: NumPy scalars, and integral floats where a count is expected
+(``4.0`` rotors); ``True``, ``2.7`` and ``"2"`` are not counts.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["number", "integer", "finite_array", "option"]
+
+
+def _show(x) -> str:
+    text = repr(x.tolist() if isinstance(x, np.ndarray) else x)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def number(name, x) -> float:
+    """``x`` as a finite float; ValueError naming ``name`` otherwise (bool and strings are
+    not numbers)."""
+    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise ValueError(f"{name} must be a number, got {_show(x)}")
+    x = float(x)
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {x!r}")
+    return x
+
+
+def integer(name, x, minimum=None, maximum=None) -> int:
+    """``x`` as an int in [minimum, maximum]; integral floats (``4.0``) and NumPy integers
+    are accepted, bool, fractions and strings are not."""
+    if isinstance(x, (float, np.floating)) and not isinstance(x, bool) and math.isfinite(x) \
+            and float(x).is_integer():
+        x = int(x)
+    if isinstance(x, bool) or not isinstance(x, (int, np.integer)):
+        allowed = ("an integer" if minimum is None else f"an integer >= {minimum}"
+                   if maximum is None else f"an integer in {minimum}..{maximum}")
+        raise ValueError(f"{name} must be {allowed}, got {_show(x)}")
+    x = int(x)
+    if (minimum is not None and x < minimum) or (maximum is not None and x > maximum):
+        allowed = (f"an integer >= {minimum}" if maximum is None
+                   else f"an integer in {minimum}..{maximum}")
+        raise ValueError(f"{name} must be {allowed}, got {x}")
+    return x
+
+
+def finite_array(name, x, shape=None, ndim=None) -> np.ndarray:
+    """``x`` as a float array of the given ``shape`` (a tuple; None entries are free) or
+    ``ndim``, every entry finite; ValueError naming ``name`` otherwise."""
+    try:
+        a = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be an array of numbers, got {_show(x)}") from None
+    if ndim is not None and a.ndim != ndim:
+        raise ValueError(f"{name} must be a {ndim}-D array, got shape {a.shape}")
+    if shape is not None and (a.ndim != len(shape) or any(
+            s is not None and s != d for s, d in zip(shape, a.shape))):
+        want = "(" + ", ".join("k" if s is None else str(s) for s in shape) + \
+            ("," if len(shape) == 1 else "") + ")"
+        raise ValueError(f"{name} must have shape {want}, got {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{name} has non-finite entries: {_show(a)}")
+    return a
+
+
+def option(name, x, allowed):
+    """``x`` if it is one of ``allowed`` (compared by equality, bools only to bools)."""
+    if isinstance(x, np.bool_):
+        x = bool(x)
+    for a in allowed:
+        if type(a) is bool or type(x) is bool:
+            if type(x) is type(a) and x == a:
+                return x
+        elif isinstance(x, type(a)) and x == a:
+            return x
+    raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {_show(x)}")

@@ -1,0 +1,149 @@
+"""The linkage's flow and tangent vectors advanced together: RK4 (``charts.solvers.rk``) of
+``charts.flows.linkage``, projection onto the invariants, Gram–Schmidt re-orthonormalisation
+(``charts.solvers.tangent.orthonormalize``, eq 18) and log-norm sums — the linkage's
+counterpart of `TangentFlow`, built from the same pieces.
+
+Stacked state Z = [y; ξ¹; …; ξᵏ], shape (1 + k, 14).  After global step i: y is projected
+onto F = 0, J v = 0 and the energy (``project_state_linkage``) when i % project_every == 0
+(0: never); the ξ are projected onto T_r and re-orthonormalised in the product Σ Mⱼⱼ δqⱼ²
+(the kinetic metric on positions: for a massless disk Σ δθᵢ², the pulled-back metric) when
+i % reorth_every == 0.  The phases follow a global step counter, so chunked runs give
+bit-identical numbers.
+"""
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+from numba import njit, types
+
+from ..flows.linkage import NY, linkage_rhs
+from ..geometry.linkage import project_state_linkage, project_tangent_linkage
+from .rk import RHS_TYPE, rk4_step
+from .status import NONFINITE, RUNNING, IntegrationError
+from .tangent import orthonormalize
+
+__all__ = ["LinkageFlow", "linkage_kernel", "DegenerateMetricError", "DEGENERATE", "GRAM_MIN"]
+
+#: Status: the KKT matrix became singular (massless disk where C = ∂F/∂(x, y, α) loses rank).
+DEGENERATE = -10
+#: Smallest health det(C̃ᵀC̃) of `linkage_rhs` (``charts.flows.linkage.disk_gram``) accepted in a
+#: step with a massless disk (typical values on the default linkage ρ = 2ε: 7·10² for ε ≤ 0.2).
+GRAM_MIN = 1e-12
+
+
+class DegenerateMetricError(IntegrationError):
+    """The pulled-back metric degenerated (the disk could move with the rotors at rest)."""
+
+
+def _kernel(f, Z, par, mass, speed, dt, nsteps, counter, reorth_every, project_every, w, logsum,
+            events, event_logs, health, massless):
+    """Advance Z, shape (1 + k, 14), by ``nsteps`` RK4 steps of ``f`` (`linkage_rhs`).  Stores
+    ``logsum`` in ``event_logs[e]`` at global step ``events[e]``; health[0] keeps the smallest
+    health seen (``massless``: stop where it drops below `GRAM_MIN`).  Returns (status, steps
+    done); Z is then at the start of a failing step."""
+    R = Z.shape[0]
+    L = R * NY
+    Zf = Z.reshape(L)
+    y = Z[0]
+    X = Z[1:]
+    K = np.empty((4, L))
+    zt = np.empty(L)
+    zn = np.empty(L)
+    ev = 0
+    while ev < events.size and events[ev] <= counter[0]:
+        ev += 1
+    for it in range(nsteps):
+        hmin = rk4_step(f, Zf, dt, par, K, zt, zn)
+        if not np.isfinite(hmin):
+            return NONFINITE, it
+        if not hmin > (GRAM_MIN if massless else 0.0):
+            return DEGENERATE, it
+        for i in range(L):
+            Zf[i] = zn[i]
+        health[0] = min(health[0], hmin)
+        counter[0] += 1
+        i = counter[0]
+        if project_every > 0 and i % project_every == 0:
+            project_state_linkage(y, par, mass, speed)
+        if R > 1 and i % reorth_every == 0:
+            project_tangent_linkage(y, X, par)
+            orthonormalize(X, w, logsum)
+            if not np.isfinite(logsum[R - 2]):
+                return NONFINITE, it + 1
+        if not np.isfinite(Zf[0] + Zf[NY - 1]):
+            return NONFINITE, it + 1
+        if ev < events.size and i == events[ev]:
+            for r in range(R - 1):
+                event_logs[ev, r] = logsum[r]
+            ev += 1
+    return RUNNING, nsteps
+
+
+_f8, _i8 = types.float64, types.int64
+_KERNEL_SIG = types.Tuple((_i8, _i8))(
+    RHS_TYPE, _f8[:, ::1], _f8[::1], _f8[::1], _f8, _f8, _i8, _i8[::1], _i8, _i8, _f8[::1],
+    _f8[::1], _i8[::1], _f8[:, ::1], _f8[::1], types.boolean)
+
+
+@cache
+def linkage_kernel():
+    """`_kernel` compiled with its signature on first use (cached on disk; the right-hand side
+    is a first-class function argument, as in ``charts.solvers.loop``)."""
+    return njit(_KERNEL_SIG, cache=True)(_kernel)
+
+
+_NO_ROWS = np.empty((0, 0))
+_NO_EVENTS = np.empty(0, dtype=np.int64)
+
+
+class LinkageFlow:
+    """The linkage state (q, v) and ``k`` tangent vectors (random, projected onto T_r and
+    orthonormalised; ``seed``), advanced by `linkage_kernel`.
+
+    Parameters: ``system`` a `LinkageSystem`; (q, v) a validated state; ``dt`` the RK4 step;
+    ``reorth_every``, ``project_every`` in steps (project_every = 0: never).
+    """
+
+    def __init__(self, system, q, v, k, *, dt, reorth_every=1, project_every=100, seed=0):
+        self.system = system
+        self.dt = float(dt)
+        self.par = system.par
+        self.w = np.concatenate([system.mass, np.zeros(system.mass.size)])
+        self.reorth_every = int(reorth_every)
+        self.project_every = int(project_every)
+        self.speed = system.speed(v)
+        self.Z = np.empty((1 + k, NY))
+        self.Z[0] = np.concatenate([q, v])
+        if k:
+            X = np.random.default_rng(seed).normal(size=(k, NY))
+            project_tangent_linkage(self.Z[0], X, self.par)
+            orthonormalize(X, self.w, np.zeros(k))
+            self.Z[1:] = X
+        self.counter = np.zeros(1, dtype=np.int64)
+        self.logsum = np.zeros(k)
+        self.health = np.array([np.inf])
+
+    @property
+    def steps(self) -> int:
+        return int(self.counter[0])
+
+    def advance(self, nsteps, *, events=None, event_logs=None, where="linkage RK4"):
+        """Advance ``nsteps`` steps; DegenerateMetricError / IntegrationError on failure."""
+        if events is None:
+            events, event_logs = _NO_EVENTS, _NO_ROWS
+        status, done = linkage_kernel()(linkage_rhs(), self.Z, self.par, self.system.mass,
+                                        self.speed, self.dt, int(nsteps), self.counter,
+                                        self.reorth_every, self.project_every, self.w,
+                                        self.logsum, events, event_logs, self.health,
+                                        self.system.massless_disk)
+        t = self.steps * self.dt
+        if status == DEGENERATE:
+            raise DegenerateMetricError(
+                f"{where}: the kinetic metric degenerated at t = {t:.17g} (the disk can move "
+                f"while the rotors stand still: ∂F/∂(x, y, α) lost rank, det(C̃ᵀC̃) < "
+                f"{GRAM_MIN:g}). Give the disk inertia: LinkageSystem(..., disk_mass=1e-2, "
+                "disk_inertia=1e-3), or use rho > eps (docs/linkage.md).")
+        if status != RUNNING:
+            raise IntegrationError(f"{where}: the state became non-finite at t = {t:.17g}; "
+                                   "reduce dt.")

@@ -1,0 +1,296 @@
+"""The flat linkage of the Appendix: generated derivatives, the flow and its variational
+equations, invariants, degeneracy, curvature, cone points and the ε → 0 limit.
+
+Independent routes: the Appendix's hinge coordinates written here in plain NumPy, finite
+differences, the shape operator from finite differences of the unit normal, and the library's
+RotorSystem(4) (integrate, sectional_curvature, lyapunov_spectrum) for the limit.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import charts
+from charts.analyses.linkage import (CONE_POINTS, cone_distance, gauss_curvature, linkage_run,
+                                     linkage_trajectory)
+from charts.flows.linkage import acceleration, linkage_rhs
+from charts.geometry.linkage import LinkageSystem
+from charts.solvers.linkage import DegenerateMetricError, LinkageFlow
+
+
+def appendix_constraints(q, eps, rho, R=1.0):
+    """The Appendix's four equations, transcribed from the paper (not from the package)."""
+    t0, t1, t2, t3, x, y, a = q
+    c, s = np.cos, np.sin
+    return np.array([
+        (1 - eps * c(t0) - x - rho * c(a)) ** 2 + (eps * s(t0) - y - rho * s(a)) ** 2 - R ** 2,
+        (eps * s(t1) - x + rho * s(a)) ** 2 + (1 + eps * c(t1) - y - rho * c(a)) ** 2 - R ** 2,
+        (-1 + eps * c(t2) - x + rho * c(a)) ** 2 + (-eps * s(t2) - y + rho * s(a)) ** 2 - R ** 2,
+        (-eps * s(t3) - x - rho * s(a)) ** 2 + (-1 - eps * c(t3) - y + rho * c(a)) ** 2 - R ** 2,
+    ])
+
+
+@pytest.fixture(scope="module")
+def L01():
+    return LinkageSystem(0.1)
+
+
+def test_generated_constraints_and_derivatives_against_appendix_and_differences(L01):
+    rng = np.random.default_rng(1)
+    h = 1e-5
+    for _ in range(5):
+        q = rng.uniform(-3, 3, 7) * np.array([1, 1, 1, 1, 0.05, 0.05, 1])
+        assert np.allclose(L01.constraints(q), appendix_constraints(q, 0.1, 0.2), atol=1e-15, rtol=0)
+        J = L01.jacobian(q)
+        E = np.eye(7)
+        fd = np.array([(appendix_constraints(q + h * e, 0.1, 0.2)
+                        - appendix_constraints(q - h * e, 0.1, 0.2)) / (2 * h) for e in E]).T
+        assert np.max(np.abs(J - fd)) < 1e-9  # O(h²) ≈ 1e-10 · third derivatives ≤ 4
+        from charts.geometry.linkage import gen_hessian_vector, gen_third_form
+        v, w = rng.normal(size=7), rng.normal(size=7)
+        H = gen_hessian_vector(q, w, L01.par, np.empty((4, 7)))
+        fdH = (L01.jacobian(q + h * w) - L01.jacobian(q - h * w)) / (2 * h)
+        assert np.max(np.abs(H - fdH)) < 1e-8
+        T = gen_third_form(q, v, w, L01.par, np.empty(4))
+        quad = lambda z: gen_hessian_vector(z, v, L01.par, np.empty((4, 7))) @ v
+        assert np.max(np.abs(T - (quad(q + h * w) - quad(q - h * w)) / (2 * h))) < 1e-8
+
+
+def test_first_order_constraints_are_the_appendix_and_sum_to_sum_cos():
+    import sympy as sp
+
+    from charts.codegen.linkage import LinkageSymbols
+    S = LinkageSymbols()
+    t0, t1, t2, t3 = S.q[:4]
+    a = S.q[6]
+    xi, eta, r = sp.symbols("xi eta r", real=True)
+    # the Appendix's first-order equations, with (x, y, ρ) = ε (ξ, η, r), divided by ε
+    expected = [-sp.cos(t0) - xi - r * sp.cos(a), -sp.cos(t1) + eta + r * sp.cos(a),
+                -sp.cos(t2) + xi - r * sp.cos(a), -sp.cos(t3) - eta + r * sp.cos(a)]
+    got = S.first_order()
+    signs = [1, -1, 1, -1]  # the Appendix writes rows 1 and 3 with the opposite overall sign
+    for g, e, sg in zip(got, expected, signs):
+        assert sp.simplify(g - sg * e) == 0
+    assert sp.simplify(sum(expected) + sum(sp.cos(t) for t in (t0, t1, t2, t3))) == 0
+
+
+def test_variational_equations_match_finite_differences(L01):
+    q, v = L01.random_state(seed=1)
+    y = np.concatenate([q, v])
+    xi = np.random.default_rng(0).normal(size=14)
+    par = L01.par
+    dZ = np.empty(28)
+    rhs = linkage_rhs()
+    rhs(np.concatenate([y, xi]), par, dZ)
+    h = 1e-6
+    dp, dm = np.empty(14), np.empty(14)
+    rhs(y + h * xi, par, dp)
+    rhs(y - h * xi, par, dm)
+    fd = (dp - dm) / (2 * h)
+    # measured 6.6e-11 against |fd| ≈ 3.8: central differences' O(h²) and rounding/h
+    assert np.max(np.abs(dZ[14:] - fd)) < 1e-8 * max(1.0, np.max(np.abs(fd)))
+
+
+@pytest.mark.parametrize("disk", [(0.0, 0.0), (0.3, 0.02)])
+def test_acceleration_keeps_the_constraints_and_is_normal(disk):
+    L = LinkageSystem(0.1, disk_mass=disk[0], disk_inertia=disk[1])
+    q, v = L.random_state(seed=2)
+    a = np.empty(7)
+    acceleration(q, v, L.par, a)
+    # d²F/dt² = J a + vᵀ∇²F v = 0, by central differences of F along the curve q + tv + t²a/2
+    h = 1e-4
+    F = lambda t: L.constraints(q + t * v + 0.5 * t * t * a)
+    assert np.max(np.abs((F(h) - 2 * F(0) + F(-h)) / h ** 2)) < 1e-6
+    T = np.linalg.svd(L.jacobian(q))[2][4:]  # basis of T_q M
+    assert np.max(np.abs(T @ (L.mass * a))) < 1e-12 * max(1, np.max(np.abs(a)))
+
+
+def test_invariants_held_to_rounding_and_drift_without_projection(L01):
+    q, v = L01.random_state(seed=3)
+    for every, tol in ((1, 1e-14), (0, 1e-6)):   # projected at every step / never
+        f = LinkageFlow(L01, q, v, 0, dt=0.01, project_every=every)
+        f.advance(10000)                           # t = 100
+        qq, vv = f.Z[0, :7], f.Z[0, 7:]
+        # measured: projected ≤ 2e-16; never projected |F| = 5e-8 (RK4 truncation, which the
+        # index-1 form of the constraints lets grow: hence the projection every t = 1.0)
+        assert np.max(np.abs(L01.constraints(qq))) < tol
+        assert np.max(np.abs(L01.jacobian(qq) @ vv)) < tol
+        assert abs(L01.speed(vv) - 1.0) < tol
+
+
+def test_trajectories_approach_rotor_system_at_rate_eps():
+    R4 = charts.RotorSystem(4)
+    th, u = R4.random_state(seed=3)
+    ref = charts.integrate(R4, th, u, 3.0, method="rk4", dt=0.001, t_eval=np.linspace(0, 3, 31))
+    err = []
+    for eps in (0.02, 0.01, 0.005):
+        L = LinkageSystem(eps)
+        q, v = L.from_rotor_state(th, u)
+        t, S = linkage_trajectory(L, q, v, 3.0, dt=0.001)
+        err.append(np.max(np.abs(np.angle(np.exp(1j * (S[:, :4] - ref.theta))))))
+    # measured 0.0281, 0.0136, 0.0067: first order (ratio → 2), error ≈ 1.35 ε
+    assert 1.8 < err[0] / err[1] < 2.3 and 1.8 < err[1] / err[2] < 2.3
+    assert err[2] < 2 * 0.005
+
+
+def test_manifold_tends_to_sum_cos_zero_at_rate_eps():
+    ratios = []
+    for eps in (0.02, 0.01, 0.005):
+        L = LinkageSystem(eps)
+        m = max(abs(np.cos(L.random_state(seed=s)[0][:4]).sum()) for s in range(10))
+        ratios.append(m / eps)
+    # max |Σ cos θ| over the same 10 seeds is O(ε): measured 6.28 ε at every ε
+    assert np.ptp(ratios) < 0.05 * ratios[0] and ratios[0] < 10
+
+
+def test_gauss_curvature_against_shape_operator_differences(L01):
+    """Route 2: II(X, Y) = ⟨dn(X), Y⟩ from central differences of the unit normal of the
+    θ-projection (massless disk), with the points moved along M by projection."""
+    q, _ = L01.random_state(seed=4)
+    T = np.linalg.svd(L01.jacobian(q))[2][4:]
+    B = []
+    for x in T:
+        x = x - sum(np.dot(x[:4], e[:4]) * e for e in B)
+        B.append(x / np.linalg.norm(x[:4]))
+
+    def normal(z):
+        J = L01.jacobian(z)
+        w = np.linalg.svd(J[:, 4:])[0][:, -1]   # left null vector of C
+        n = w @ J[:, :4]
+        return n / np.linalg.norm(n)
+
+    n0 = normal(q)
+    h = 1e-4
+
+    def dn(X):
+        out = []
+        for s in (h, -h):
+            z, _ = L01.project(q + s * X, np.zeros(7))
+            n = normal(z)
+            out.append(n * np.sign(n @ n0))
+        return (out[0] - out[1]) / (2 * h)
+
+    II = np.array([[dn(X) @ Y[:4] for Y in B] for X in B])
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        K2 = II[i, i] * II[j, j] - II[i, j] * II[j, i]
+        # measured agreement ~1e-7 relative (O(h²) differences)
+        assert gauss_curvature(L01, q, B[i], B[j]) == pytest.approx(K2, rel=1e-5, abs=1e-6)
+
+
+def test_curvature_tends_to_rotor_system_curvature():
+    R4 = charts.RotorSystem(4)
+    th, u = R4.random_state(seed=6)
+    w = R4.project_tangent(th, np.array([1.0, -0.5, 0.2, 0.3]))
+    Kr = R4.sectional_curvature(th, u, w)
+    d = []
+    for eps in (0.01, 0.005):
+        L = LinkageSystem(eps)
+        q, v = L.from_rotor_state(th, u)
+        x = np.concatenate([w, np.zeros(3)])
+        _, x = L.project(q, x)                     # the tangent vector nearest w
+        d.append(abs(gauss_curvature(L, q, v, x) - Kr))
+    # first order in ε: measured |ΔK| = 0.0048, 0.0023 (K = −0.122)
+    assert 1.7 < d[0] / d[1] < 2.4 and d[1] < 0.005
+
+
+def test_cone_points_two_on_the_manifold_four_at_distance_two_eps():
+    for eps in (0.01, 0.005):
+        L = LinkageSystem(eps)
+        d = np.array([cone_distance(L, p)[0] for p in CONE_POINTS])
+        on = np.flatnonzero(d < 1e-6)
+        # (0, π, 0, π) and (π, 0, π, 0): the four-fold symmetric configuration, on M for every ε
+        assert list(on) == [1, 4]
+        off = np.delete(d, on) / eps
+        assert np.allclose(off, 2.0, rtol=0.01)   # measured 1.999 (ε = 0.01), 2.000 (0.005)
+
+
+def test_manifold_smooth_at_the_cone_points_on_it():
+    L = LinkageSystem(0.01)
+    _, q = cone_distance(L, CONE_POINTS[1])
+    s = np.linalg.svd(L.jacobian(q), compute_uv=False)
+    assert s[-1] > 1e-4          # measured 3.5e-4 ≈ 3.5 ε²: rank 4, M is smooth there
+    assert L.disk_margin(q) > 0.5
+
+
+def test_massless_disk_refused_where_the_metric_degenerates_and_inertia_passes():
+    L = LinkageSystem(0.1, rho=0.05)            # ρ < ε: the fold sin α = 0 is reachable
+    q, v = L.random_state(seed=1)
+    f = LinkageFlow(L, q, v, 0, dt=0.001)
+    with pytest.raises(DegenerateMetricError, match="disk_mass"):
+        f.advance(50000)
+    Lm = LinkageSystem(0.1, rho=0.05, disk_mass=1e-2, disk_inertia=1e-3)
+    q, v = Lm.random_state(seed=1)
+    f = LinkageFlow(Lm, q, v, 0, dt=0.001, project_every=1000)
+    f.advance(50000)
+    qq, vv = f.Z[0, :7], f.Z[0, 7:]
+    assert np.max(np.abs(Lm.constraints(qq))) < 1e-12
+    assert abs(Lm.speed(vv) - 1) < 1e-12
+
+
+def test_exponents_tend_to_rotor_system():
+    R4 = charts.RotorSystem(4)
+    th, u = R4.random_state(seed=0)
+    ref = charts.lyapunov_spectrum(R4, th, u, 1000.0, seed=0)
+    L = LinkageSystem(0.01)
+    q, v = L.from_rotor_state(th, u)
+    r = linkage_run(L, q, v, 1000.0, curvature=False, seed=0)
+    se = np.hypot(ref.stderr, r.stderr)
+    # two-sided, 4 combined standard errors (se ≈ 0.01 at t = 1000)
+    assert np.all(np.abs(r.exponents - ref.exponents) < 4 * se)
+
+
+def test_bad_arguments_are_refused(L01):
+    with pytest.raises(ValueError, match="eps"):
+        LinkageSystem(0.0)
+    with pytest.raises(ValueError, match="0.5"):
+        LinkageSystem(0.1, rho=0.6)
+    with pytest.raises(ValueError, match="disk_mass"):
+        LinkageSystem(0.1, disk_mass=-1)
+    with pytest.raises(TypeError, match="eps"):
+        LinkageSystem("0.1")
+    q, v = L01.random_state(seed=0)
+    with pytest.raises(ValueError, match="off the linkage"):
+        L01.check_state(q + 0.01, v)
+    with pytest.raises(ValueError, match="tangent"):
+        L01.check_state(q, v + 1.0)
+    with pytest.raises(ValueError, match="shape"):
+        L01.check_state(q[:4], v)
+    with pytest.raises(ValueError, match="multiple"):
+        linkage_run(L01, q, v, 10.05)
+    with pytest.raises(ValueError, match="n_exponents"):
+        linkage_run(L01, q, v, 10.0, n_exponents=4)
+
+
+def test_angle_of_subspaces_inside_and_orthogonal(L01):
+    from charts.analyses.linkage_angles import sin_angle
+    from charts.flows.linkage import acceleration as acc
+    from charts.geometry.linkage import project_tangent_linkage
+    q, v = L01.random_state(seed=8)
+    y = np.concatenate([q, v])
+    a = np.empty(7)
+    acc(q, v, L01.par, a)
+    w = np.concatenate([L01.mass, L01.mass])
+    E0 = np.array([np.concatenate([v, a]), np.concatenate([np.zeros(7), v])])
+    X = np.random.default_rng(0).normal(size=(6, 14))
+    project_tangent_linkage(y, X, L01.par)
+    # E_0 is in T_r: its projection changes it only by rounding
+    P = E0.copy()
+    project_tangent_linkage(y, P, L01.par)
+    assert np.max(np.abs(P - E0)) < 1e-12
+    assert sin_angle(y, np.vstack([E0[0] + X[0], X[1]]), X[:2], L01, w) < 1e-12
+    # the M-orthogonal complement of E_cs = span(X[:2], E_0) in T_r (dimension 6): sin φ = 1
+    from charts.solvers.tangent import orthonormalize
+    B = np.vstack([X[:2], E0, X[2:4]])
+    orthonormalize(B, w, np.zeros(6))
+    assert sin_angle(y, B[4:6], X[:2], L01, w) == pytest.approx(1.0, abs=1e-10)
+
+
+def test_angle_passes_converge_to_the_same_exponents():
+    from charts.analyses.linkage_angles import linkage_angles
+    L = LinkageSystem(0.05)
+    q, v = L.random_state(seed=0)
+    r = linkage_angles(L, q, v, 200.0, t_transient=50.0, sample_every=0.5)
+    # forward (E_u) and backward (E_s) passes see the same pair λ₁, λ₂ (time reversibility):
+    # measured at ε = 0.01, t = 200: (0.403, 0.232) forward, (0.397, 0.227) backward
+    assert np.allclose(r.forward_exponents, r.backward_exponents, rtol=0.15)
+    assert np.all(r.phi > 0) and np.all(r.phi <= np.pi / 2)

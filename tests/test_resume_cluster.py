@@ -1,0 +1,234 @@
+"""Interrupted work resumes identically, and a real Dask cluster that loses a worker gives
+the local table.
+
+* ``charts run`` killed with SIGKILL at random moments (seeded), then ``--resume``: every
+  number of result.json equals the uninterrupted run's (the killed run's lock is stale and
+  taken over);
+* a resume into a folder written by another sweep refuses;
+* ``charts reproduce``'s pieces: a second run reuses the finished ones and computes only the
+  missing ones; a piece computed with other arguments is not reused;
+* a real ``dask scheduler`` and two ``dask worker`` processes: one worker is killed with
+  SIGKILL mid-sweep; the sweep finishes with the same table, byte for byte, as a local run
+  (skipped when the processes cannot start, e.g. no free port)."""
+from __future__ import annotations
+
+import json
+import os
+import random
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from charts.runs.runner import run_scene
+from charts.runs.scene import load_scene
+from charts.runs.sweep import (SweepError, TABLE, csv_line, load_sweep, point_columns,
+                               read_table, run_sweep, sweep_points)
+
+CHARTS = [sys.executable, "-m", "charts.cli.main"]
+#: a polling guard only (the test fails instead of hanging)
+WAIT_S = 600
+
+SCENE = """name = "killed"
+[system]
+n = 4
+[initial]
+seed = 5
+[run]
+t_final = 3000.0
+t_transient = 10.0
+sample_dt = 1.0
+checkpoint_every = 200.0
+[effects.lyapunov]
+n_batches = 5
+[effects.drift]
+sample_every = 50.0
+"""
+
+
+def _wait_for(predicate, proc):
+    t0 = time.monotonic()
+    while not predicate() and proc.poll() is None:
+        assert time.monotonic() - t0 < WAIT_S
+        time.sleep(0.005)
+
+
+def test_run_killed_at_random_moments_resumes_identically(tmp_path):
+    scene_file = tmp_path / "killed.toml"
+    scene_file.write_text(SCENE)
+    whole = run_scene(load_scene(scene_file), tmp_path / "whole", quiet=True)
+    out = tmp_path / "out"
+    rng = random.Random(20261123)
+    for attempt in range(2):                    # kill, resume and kill again, then finish
+        args = ["run", str(scene_file), "-o", str(out), "--quiet"] + (["--resume"] if attempt
+                                                                       else [])
+        proc = subprocess.Popen(CHARTS + args, stderr=subprocess.PIPE, text=True)
+        ck = out / "checkpoint.npz"
+        mtime = ck.stat().st_mtime_ns if ck.exists() else 0
+        _wait_for(lambda: ck.exists() and ck.stat().st_mtime_ns != mtime, proc)
+        time.sleep(rng.uniform(0.0, 0.3))       # a random moment after a checkpoint
+        proc.send_signal(signal.SIGKILL)
+        proc.communicate()
+        assert (out / ".charts.lock").exists()   # the killed run's lock is left behind
+    p = subprocess.run(CHARTS + ["run", str(scene_file), "-o", str(out), "--resume", "--quiet"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert "removing a stale lock" in p.stderr
+    resumed = json.loads((out / "result.json").read_text())
+    assert resumed["status"] == "complete"
+    assert resumed["results"] == json.loads(json.dumps(whole["results"]))
+    assert resumed["drift"] == json.loads(json.dumps(whole["drift"]))
+    with np.load(out / "arrays.npz") as a, np.load(tmp_path / "whole" / "arrays.npz") as b:
+        assert sorted(a.files) == sorted(b.files)
+        for k in a.files:
+            np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+
+
+SWEEP = """name = "{name}"
+[scene.system]
+n = 4
+[scene.integrator]
+dt = 0.01
+[scene.run]
+t_final = 20.0
+t_transient = 2.0
+[scene.effects.lyapunov]
+n_batches = 2
+[sweep]
+seeds = [1, 2]
+[sweep.parameters]
+m = [{masses}]
+[sweep.masses]
+"1,1,1,m" = [1, 1, 1, "m"]
+"""
+
+
+def test_a_resume_into_another_sweeps_folder_refuses(tmp_path):
+    (tmp_path / "a.toml").write_text(SWEEP.format(name="a", masses="0.5, 2.0"))
+    (tmp_path / "b.toml").write_text(SWEEP.format(name="b", masses="0.5, 3.0"))
+    a, b = load_sweep(tmp_path / "a.toml"), load_sweep(tmp_path / "b.toml")
+    pa = sweep_points(a)
+    cols = point_columns(pa)
+    out = tmp_path / "out"
+    out.mkdir()
+    row = ["" for _ in cols]
+    row[cols.index("index")], row[cols.index("point_id")] = "3", pa[3].point_id
+    (out / TABLE).write_text(csv_line(cols) + csv_line(row))    # a's last point (m = 2)
+    with pytest.raises(SweepError, match="not in .*b.toml"):
+        run_sweep(b, out, resume=True, quiet=True)
+
+
+def test_reproduce_reuses_finished_pieces_and_only_those(tmp_path, capsys):
+    from charts.runs import reproduce as rp
+
+    cfg = dict(lyap_members=1, lyap_t=20.0, lyap_batches=2, angle_members=1, angle_t=150.0,
+               curv_t=5.0, wave_t=800.0, angle_transient=2.0)
+    pieces = tmp_path / "pieces"
+    pieces.mkdir()
+    first = rp._run_all(cfg, 1, True, pieces)
+    files = sorted(pieces.glob("*.pkl"))
+    assert len(files) == len(first) == 15
+    for f in files[::3]:                        # as if interrupted before these finished
+        f.unlink()
+    (pieces / "lyap-n3-0.pkl").unlink(missing_ok=True)
+    stamp = {f.name: f.stat().st_mtime_ns for f in pieces.glob("*.pkl")}
+    capsys.readouterr()
+    second = rp._run_all(cfg, 1, False, pieces)
+    assert f"reusing {len(stamp)} of 15 finished pieces" in capsys.readouterr().err
+    assert {f.name: f.stat().st_mtime_ns for f in pieces.glob("*.pkl")
+            if f.name in stamp} == stamp          # reused pieces were not rewritten
+    for key, res in first.items():              # recomputed or reused: the same numbers
+        if key[0] == "clv":                     # nested per variant; its own tests compare it
+            continue
+        for name, value in res.items():
+            np.testing.assert_array_equal(np.asarray(second[key][name]), np.asarray(value))
+    longer = dict(cfg, lyap_t=40.0)             # another preset: lyap pieces are recomputed
+    assert rp.load_piece(pieces, ("lyap", 3, 0), rp._tasks(longer)[("lyap", 3, 0)][1]) is None
+    assert rp.load_piece(pieces, ("wave", 3, 0), rp._tasks(longer)[("wave", 3, 0)][1]) is not None
+
+
+def _start(cmd, log):
+    return subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+
+
+def test_a_real_cluster_that_loses_a_worker_gives_the_local_table(tmp_path):
+    spec = tmp_path / "s.toml"
+    spec.write_text(SWEEP.format(name="cluster", masses="0.5, 1.0, 2.0, 4.0"))
+    sweep = load_sweep(spec)
+    local = run_sweep(sweep, tmp_path / "local", workers=2, quiet=True, plots=False)
+    assert not local["lost"] and not local["failed"]
+
+    sched_file = tmp_path / "scheduler.json"
+    log = open(tmp_path / "cluster.log", "w")
+    dask = [sys.executable, "-m", "dask"]
+    procs = [_start(dask + ["scheduler", "--host", "127.0.0.1", "--port", "0",
+                            "--dashboard-address", ":0", "--scheduler-file", str(sched_file)],
+                    log)]
+    try:
+        t0 = time.monotonic()
+        while not sched_file.exists():
+            if procs[0].poll() is not None or time.monotonic() - t0 > 60:
+                pytest.skip("dask scheduler did not start: " +
+                            Path(tmp_path / "cluster.log").read_text()[-300:])
+            time.sleep(0.1)
+        time.sleep(0.2)
+        address = json.loads(sched_file.read_text())["address"]
+        for _ in range(2):
+            procs.append(_start(dask + ["worker", address, "--nworkers", "1", "--nthreads", "1",
+                                        "--no-dashboard", "--death-timeout", "60"], log))
+        from dask.distributed import Client
+        with Client(address, timeout="30s") as c:
+            c.wait_for_workers(2, timeout=120)
+        out = tmp_path / "cluster"
+        sweeper = subprocess.Popen(CHARTS + ["sweep", str(spec), "-o", str(out), "--scheduler",
+                                             address, "--quiet", "--no-plots"],
+                                   stderr=subprocess.PIPE, text=True)
+        _wait_for(lambda: (out / TABLE).exists() and len(read_table(out / TABLE)[1]) >= 1,
+                  sweeper)
+        os.killpg(procs[1].pid, signal.SIGKILL)        # one worker (and its nanny) dies
+        _, err = sweeper.communicate(timeout=WAIT_S)
+        assert sweeper.returncode == 0, err
+    finally:
+        for p in procs:
+            try:
+                os.killpg(p.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+            p.wait()
+        log.close()
+    assert (out / TABLE).read_bytes() == (tmp_path / "local" / TABLE).read_bytes()
+
+
+def test_reproduce_interrupted_by_ctrl_c_says_what_it_kept(tmp_path):
+    """Ctrl-C (SIGINT to the process group, as a terminal sends it) once a piece is kept:
+    exit 130, one message naming the kept pieces and the command, no worker traceback."""
+    out = tmp_path / "rp"
+    proc = subprocess.Popen(CHARTS + ["reproduce", "--quick", "--workers", "2", "-o", str(out),
+                                      "--quiet"], stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    _wait_for(lambda: (out / "pieces").is_dir() and any((out / "pieces").glob("*.pkl")), proc)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=WAIT_S)
+    kept = len(list((out / "pieces").glob("*.pkl")))
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err and f"{kept} of 30 pieces kept" in err
+    assert f"charts reproduce --quick -o {out}" in err
+
+
+def test_sweep_interrupted_by_ctrl_c_says_how_to_resume_without_worker_tracebacks(tmp_path):
+    spec = tmp_path / "s.toml"
+    spec.write_text(SWEEP.format(name="ctrlc", masses="0.5, 1.0, 2.0, 4.0"))
+    out = tmp_path / "out"
+    proc = subprocess.Popen(CHARTS + ["sweep", str(spec), "-o", str(out), "--workers", "2",
+                                      "--quiet", "--no-plots"], stderr=subprocess.PIPE,
+                            text=True, start_new_session=True)
+    _wait_for(lambda: (out / TABLE).exists() and len(read_table(out / TABLE)[1]) >= 1, proc)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=WAIT_S)
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err and "--resume" in err
+    assert not (out / ".charts.lock").exists()
