@@ -168,3 +168,4 @@ def test_a_torn_lock_file_is_stale_only_after_a_grace_period(tmp_path):
     os.utime(tmp_path / LOCK, (old, old))
     with OutputLock(tmp_path):
         assert json.loads((tmp_path / LOCK).read_text())["pid"] == os.getpid()
+

@@ -13,7 +13,8 @@ import pytest
 import charts
 from charts.analyses.linkage import (CONE_POINTS, cone_distance, gauss_curvature, linkage_run,
                                      linkage_trajectory)
-from charts.flows.linkage import acceleration, linkage_rhs
+from charts.flows.linkage import acceleration
+from charts.solvers.linkage import linkage_rhs
 from charts.geometry.linkage import LinkageSystem
 from charts.solvers.linkage import DegenerateMetricError, LinkageFlow
 

@@ -180,3 +180,21 @@ def test_reference_page_documents_every_key():
         assert f"[effects.{effect}]" in text, effect
         for key in keys:
             assert re.search(rf"`{key}`", text), f"[effects.{effect}] {key} missing"
+
+
+def test_every_key_level_problem_is_reported_at_once():
+    """Unknown keys, wrong types and bad values in several sections and effects come back
+    together in one SceneError (one line, counted), not one per run of the command."""
+    with pytest.raises(SceneError) as err:
+        parse_scene({"system": {"n": "four", "mases": [1.0]}, "run": {"t_final": -1.0},
+                     "effects": {"lyapunv": True, "curvature": {"n_directions": "x"}}},
+                    source="s.toml")
+    msg = str(err.value)
+    assert msg.startswith("s.toml: 5 problems: ") and "\n" not in msg
+    for part in ("'mases'", "[system] n = 'four'", "[run] t_final = -1.0", "'lyapunv'",
+                 "[effects.curvature] n_directions = 'x'"):
+        assert part in msg, part
+    with pytest.raises(SceneError) as one:             # a single problem keeps its own line
+        parse_scene({"system": {"n": 2}, "run": {"t_final": 1.0}, "effects": {"drift": True}},
+                    source="s.toml")
+    assert str(one.value).startswith("s.toml: [system] n = 2 is not allowed")

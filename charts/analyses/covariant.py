@@ -40,6 +40,7 @@ import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
+from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize
@@ -225,6 +226,7 @@ class CovariantResult(Archivable):
         return plot_angles({self.variant: self.phi}, axes=axes, **kw)
 
 
+@announces_compilation
 def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restricted", dt=0.01,
                                n_unstable=None, t_transient=100.0, sample_every=0.1,
                                project_every=1.0, seed=0, keep_vectors=False,

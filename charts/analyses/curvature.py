@@ -33,6 +33,7 @@ import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
+from ..compilation import announces_compilation
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
 from ..geometry.atlas import chart_coordinates, local_masses
@@ -255,6 +256,7 @@ class CurvatureResult(Archivable):
         return plot_curvature({route: self.diagonal(route)}, axes=ax, **kw)
 
 
+@announces_compilation
 def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.1,
                                t_transient=50.0, exact=True, project_every=1.0, seed=0,
                                progress=False) -> CurvatureResult:

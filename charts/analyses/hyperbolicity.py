@@ -40,6 +40,7 @@ import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
+from ..compilation import announces_compilation
 from ..flows.ambient import adjoint_rate, state_stage
 from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean
@@ -195,6 +196,7 @@ def _sin_to_angle(M):
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
+@announces_compilation
 def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=None,
                          t_transient=100.0, sample_every=0.1, checkpoint_every=1.0,
                          project_every=1.0, seed=0, progress=False) -> AngleResult:

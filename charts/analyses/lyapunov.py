@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..archive import Archivable, attributes, dataset
+from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
@@ -181,6 +182,7 @@ class LyapunovResult(Archivable):
         return f"LyapunovResult([{pm}], T={self.params.get('t_final')})"
 
 
+@announces_compilation
 def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
                       inner="theta", space="restricted", t_transient=50.0, n_batches=20,
                       reorth_every=0.1, project_every=1.0, record_every=1.0, seed=0,

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
 from ..archive import Archivable, attributes, dataset
@@ -92,6 +93,7 @@ class PowerSpectrum(Archivable, tuple):
         return plot_spectrum(self.omega, self.density, ax=ax, **kw)
 
 
+@announces_compilation
 def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_transient=0.0,
              project_every=1.0, progress=False) -> Waveform:
     """θ(t) and u(t) from (theta0, u0) every ``sample_every`` up to ``t_final`` after

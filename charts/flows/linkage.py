@@ -20,23 +20,20 @@ Variational equations (tangent vectors ξ = (δq, δv)): differentiating the KKT
     [ J  0  ] [ δλ ] = [ −H(δq) a − T(v, v, δq) − 2 H(v) δv   ],
 
 with H(w) = Σₖ ∂²F/∂q∂qₖ wₖ and T from the generated third derivatives; the same
-factorisation serves every vector.  ``linkage_rhs()(Z, par, dZ)`` evaluates both for the flat
-stacked state Z = [y; ξ¹; …; ξᵏ] (the signature of ``charts.solvers.rk.RHS_SIG``), with
-``par = (ε, ρ, R, m_d, I_d)``; it returns the health `disk_gram`: det(C̃ᵀC̃), C̃ = ∂F/∂(x, y,
+factorisation serves every vector.  ``linkage_rates(Z, par, dZ)`` evaluates both for the flat
+stacked state Z = [y; ξ¹; …; ξᵏ] (``charts.solvers.linkage.linkage_rhs`` compiles it with the
+steppers' signature), with ``par = (ε, ρ, R, m_d, I_d)``; it returns the health `disk_gram`: det(C̃ᵀC̃), C̃ = ∂F/∂(x, y,
 ρα) (→ 0 where the massless disk's metric degenerates; 0 if the KKT matrix is singular).
 """
 from __future__ import annotations
-
-from functools import cache
 
 import numpy as np
 from numba import njit
 
 from ..geometry.linkage import (NC, NQ, gen_hessian_vector, gen_jacobian, gen_third_form,
                                 kkt_matrix, lu_factor, lu_solve)
-from ..solvers.rk import RHS_SIG
 
-__all__ = ["linkage_rhs", "acceleration", "disk_gram", "NY", "NK"]
+__all__ = ["linkage_rates", "acceleration", "disk_gram", "NY", "NK"]
 
 #: Length of the state (q, v) and of the KKT system.
 NY = 2 * NQ
@@ -89,7 +86,7 @@ def disk_gram(J, rho):
             + G[0, 2] * (G[1, 0] * G[2, 1] - G[1, 1] * G[2, 0]))
 
 
-def _rhs(Z, par, dZ):
+def linkage_rates(Z, par, dZ):
     nvec = Z.size // NY - 1
     q = Z[:NQ]
     v = Z[NQ:NY]
@@ -126,10 +123,3 @@ def _rhs(Z, par, dZ):
             dZ[o + j] = dv[j]
             dZ[o + NQ + j] = b[j]
     return disk_gram(J, par[1])
-
-
-@cache
-def linkage_rhs():
-    """The right-hand side, compiled with the steppers' signature (``charts.solvers.rk``) on
-    first use (cached on disk)."""
-    return njit(RHS_SIG, cache=True)(_rhs)

@@ -64,6 +64,10 @@ class RunState:
         self.chunk_index = 0
         self.n_main = None             # chunks of the main pass (set by the runner)
 
+    def add_compile_time(self, seconds):
+        """Count ``seconds`` of compiling (``charts.compilation.compile_timer``)."""
+        self.compile_s += seconds
+
     @property
     def y(self):
         """The current state (θ, u), shape (2N,)."""

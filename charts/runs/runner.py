@@ -25,11 +25,11 @@ from __future__ import annotations
 import json
 import sys
 import time
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
 
+from ..compilation import NOTE_SECONDS, compile_timer
 from ..geometry.system import RotorSystem
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
@@ -45,7 +45,6 @@ __all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS"]
 
 
 #: Compile time above which a run says it compiled kernels (loading cached ones takes less).
-COMPILE_NOTE_S = 1.0
 
 
 def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False,
@@ -107,7 +106,7 @@ def _run_locked(scene: Scene, outdir: Path, resume: bool, quiet: bool, on_chunk)
                leave=False, initial=round(units_done(st, ends) * unit, 10))
     status = "complete"
     try:
-        with compile_timer(st):
+        with compile_timer(st.add_compile_time):
             _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders,
                         lyap_ends, unit, digest, ck, bar, on_chunk)
     except (KeyboardInterrupt, RunError) as exc:
@@ -122,7 +121,7 @@ def _run_locked(scene: Scene, outdir: Path, resume: bool, quiet: bool, on_chunk)
         st.n_main = n_main
     finally:
         bar.close()
-    if st.compile_s > COMPILE_NOTE_S and not quiet:
+    if st.compile_s > NOTE_SECONDS and not quiet:
         print(f"{scene.name}: compiled the kernels for N = {system.n} in {st.compile_s:.1f} s "
               "(once: they are cached on disk for the next runs)", file=sys.stderr)
     result = finalize(st, status, ends, transient, unit, outdir)
@@ -162,20 +161,6 @@ def _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders,
         bar.update(advanced)
         if on_chunk is not None:
             on_chunk(idx, n_units)
-
-
-@contextmanager
-def compile_timer(st: RunState):
-    """Add to ``st.compile_s`` the time numba spends compiling or loading cached kernels inside
-    the block (numba's ``numba:compile`` events, outermost only), so that result.json keeps it
-    apart from the integration time."""
-    from numba.core.event import install_timer
-
-    def add(seconds):
-        st.compile_s += seconds
-
-    with install_timer("numba:compile", add):
-        yield
 
 
 def _angles_pass(st: RunState):

@@ -20,7 +20,6 @@ Layout (all tables optional except ``[system]`` and ``[run]``)::
 """
 from __future__ import annotations
 
-import difflib
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -31,12 +30,12 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 from ..solvers.status import check_step
-from .scene_schema import (EFFECTS, GRID_RTOL, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, Key,
-                           SceneError)
+from .scene_checks import (Problems, coerce, multiple_of, section_values, unknown_key,
+                           where)
+from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
            "scene_to_dict"]
-
 
 
 # ---------------------------------------------------------------------------------------
@@ -81,120 +80,54 @@ def load_scene(path) -> Scene:
 
 
 # ---------------------------------------------------------------------------------------
-def _where(source, section, key):
-    loc = f"[{section}] {key}" if section else key
-    return f"{source}: {loc}"
-
-
-def _unknown(source, section, key, allowed):
-    hint = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
-    did = f" — did you mean {hint[0]!r}?" if hint else ""
-    sect = f"[{section}]" if section else "the top level"
-    return SceneError(f"{source}: unknown key {key!r} in {sect}{did} "
-                      f"(allowed: {', '.join(sorted(allowed)) or 'none'})")
-
-
-def _is_num(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool)
-
-
-def _coerce(source, section, key, spec: Key, value):
-    """Type-check one value; return it converted (int → float where a float is wanted)."""
-    where = _where(source, section, key)
-    kind = spec.kind
-    bad = None
-    if kind == "int":
-        if not isinstance(value, int) or isinstance(value, bool):
-            bad = "an integer"
-    elif kind == "float":
-        if not _is_num(value):
-            bad = "a number"
-        elif not math.isfinite(value):
-            bad = "a finite number"
-        else:
-            value = float(value)
-    elif kind == "str":
-        if not isinstance(value, str):
-            bad = "a string"
-    elif kind == "bool":
-        if not isinstance(value, bool):
-            bad = "true or false"
-    elif kind == "floats":
-        if not isinstance(value, list) or not all(_is_num(x) for x in value):
-            bad = "a list of numbers"
-        elif not all(math.isfinite(x) for x in value):
-            bad = "a list of finite numbers (no nan or inf)"
-        else:
-            value = [float(x) for x in value]
-    elif kind == "ints":
-        if not isinstance(value, list) or not all(isinstance(x, int) and not isinstance(x, bool)
-                                                  for x in value):
-            bad = "a list of integers"
-    if bad is None and spec.choices and value not in spec.choices:
-        hint = difflib.get_close_matches(str(value), spec.choices, n=1, cutoff=0.6)
-        did = f" — did you mean {hint[0]!r}?" if hint else ""
-        raise SceneError(f"{where} = {value!r} is not allowed{did} "
-                         f"(allowed: {', '.join(repr(c) for c in spec.choices)})")
-    if bad is None and spec.check is not None:
-        bad = spec.check(value)
-    if bad is not None:
-        raise SceneError(f"{where} = {value!r} is not allowed: expected {bad}")
-    return value
-
-
-def _section(source, data, section, schema, label=None):
-    raw = data.get(section, {})
-    section = label or section
-    if not isinstance(raw, dict):
-        raise SceneError(f"{source}: [{section}] must be a table, got {raw!r}")
-    for key in raw:
-        if key not in schema:
-            raise _unknown(source, section, key, schema)
-    out = {}
-    for key, spec in schema.items():
-        if key in raw:
-            out[key] = _coerce(source, section, key, spec, raw[key])
-        elif spec.required:
-            raise SceneError(f"{_where(source, section, key)} is required ({spec.doc})")
-        else:
-            out[key] = spec.default
-    return out, raw
-
-
-def _multiple(source, section, key, value, base, base_name):
-    """Require value to be an integer multiple of base; return the integer ratio."""
-    k = value / base
-    r = round(k)
-    if r < 1 or abs(k - r) > GRID_RTOL * max(1.0, k):
-        near = max(1, r) * base
-        raise SceneError(f"{_where(source, section, key)} = {value!r} is not allowed: expected "
-                         f"a positive multiple of {base_name} = {base!r} (nearest: {near:.10g})")
-    return int(r)
-
-
 def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "scene") -> Scene:
     """Validate a scene given as a dict (as read from TOML).  Raises :class:`SceneError`."""
     if not isinstance(data, dict):
         raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
+    problems = Problems(source)      # key-level problems of every section, reported together
     allowed_top = set(TOP_KEYS) | set(SCHEMA) | {"effects"}
     for key in data:
         if key not in allowed_top:
-            raise _unknown(source, None, key, allowed_top)
+            problems.messages.append(str(unknown_key(source, None, key, allowed_top)))
     top = {}
     for key, spec in TOP_KEYS.items():
-        top[key] = _coerce(source, None, key, spec, data[key]) if key in data else spec.default
+        top[key] = spec.default
+        if key in data:
+            with problems.check():
+                top[key] = coerce(source, None, key, spec, data[key])
     name = top["name"] or default_name
 
-    system, _ = _section(source, data, "system", SCHEMA["system"])
-    initial, raw_init = _section(source, data, "initial", SCHEMA["initial"])
-    integ, raw_int = _section(source, data, "integrator", SCHEMA["integrator"])
-    run, raw_run = _section(source, data, "run", SCHEMA["run"])
+    system, _ = section_values(source, data, "system", SCHEMA["system"], problems)
+    initial, raw_init = section_values(source, data, "initial", SCHEMA["initial"], problems)
+    integ, raw_int = section_values(source, data, "integrator", SCHEMA["integrator"], problems)
+    run, raw_run = section_values(source, data, "run", SCHEMA["run"], problems)
+    raw_eff = data.get("effects", {})
+    effects = {}
+    if not isinstance(raw_eff, dict):
+        problems.messages.append(f"{source}: [effects] must be a table of effect tables, "
+                                 f"got {raw_eff!r}")
+        raw_eff = {}
+    for ename, eraw in raw_eff.items():
+        if ename not in EFFECTS:
+            problems.messages.append(str(unknown_key(source, "effects", ename, EFFECTS)))
+            continue
+        if eraw is False:
+            continue
+        if eraw is True:
+            eraw = {}
+        if not isinstance(eraw, dict):
+            problems.messages.append(f"{source}: [effects] {ename} = {eraw!r} is not allowed: "
+                                     f"expected true, false or a table [effects.{ename}]")
+            continue
+        effects[ename] = section_values(source, {ename: eraw}, ename, EFFECTS[ename], problems,
+                                  label=f"effects.{ename}")[0]
+    problems.raise_all()              # the checks below relate keys that must be valid first
     raw_sys = data.get("system", {})
     n = system["n"]
 
     # -- system --------------------------------------------------------------------------
     if system["masses"] is not None and len(system["masses"]) != n:
-        raise SceneError(f"{_where(source, 'system', 'masses')} = {system['masses']!r} is not "
+        raise SceneError(f"{where(source, 'system', 'masses')} = {system['masses']!r} is not "
                          f"allowed: expected a list of n = {n} positive numbers")
     masses = system["masses"] if system["masses"] is not None else [1.0] * n
     system["masses"] = masses
@@ -212,25 +145,25 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     explicit = ("theta" in raw_init) or ("u" in raw_init)
     if explicit:
         if "seed" in raw_init:
-            raise SceneError(f"{_where(source, 'initial', 'seed')} = {raw_init['seed']!r} is not "
+            raise SceneError(f"{where(source, 'initial', 'seed')} = {raw_init['seed']!r} is not "
                              "allowed together with an explicit theta/u: give one or the other")
         for key in ("theta", "u"):
             if key not in raw_init:
                 other = "u" if key == "theta" else "theta"
-                raise SceneError(f"{_where(source, 'initial', key)} is required when "
+                raise SceneError(f"{where(source, 'initial', key)} is required when "
                                  f"[initial] {other} is given (an explicit state needs both)")
             if len(initial[key]) != n:
-                raise SceneError(f"{_where(source, 'initial', key)} = {initial[key]!r} is not "
+                raise SceneError(f"{where(source, 'initial', key)} = {initial[key]!r} is not "
                                  f"allowed: expected a list of n = {n} numbers")
         if "speed" in raw_sys:
-            raise SceneError(f"{_where(source, 'system', 'speed')} = {raw_sys['speed']!r} is not "
+            raise SceneError(f"{where(source, 'system', 'speed')} = {raw_sys['speed']!r} is not "
                              "allowed with an explicit [initial] u (the speed is that of u)")
         _check_state(source, n, masses, initial["theta"], initial["u"], system.get("weights"),
                      system.get("level", 0.0))
         initial["seed"] = None
         system["speed"] = float(math.sqrt(sum(m * x * x for m, x in zip(masses, initial["u"]))))
         if not system["speed"] > 0:
-            raise SceneError(f"{_where(source, 'initial', 'u')} = {initial['u']!r} is not "
+            raise SceneError(f"{where(source, 'initial', 'u')} = {initial['u']!r} is not "
                              "allowed: the velocity must be nonzero (a geodesic needs a speed)")
 
     # -- integrator --------------------------------------------------------------------------
@@ -243,17 +176,17 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     if method == "rk4":
         for key in ("rtol", "atol"):
             if key in raw_int:
-                raise SceneError(f"{_where(source, 'integrator', key)} = {raw_int[key]!r} is not "
+                raise SceneError(f"{where(source, 'integrator', key)} = {raw_int[key]!r} is not "
                                  "allowed with method = 'rk4' (fixed step: set dt, or use "
                                  "method = 'dop853')")
         integ["dt"] = integ["dt"] if integ["dt"] is not None else 0.01
         try:                                  # the API's step-size policy (status.check_step)
             check_step(integ["dt"], system["speed"], n)
         except ValueError as exc:
-            raise SceneError(f"{_where(source, 'integrator', 'dt')}: {exc}") from None
+            raise SceneError(f"{where(source, 'integrator', 'dt')}: {exc}") from None
     else:
         if "dt" in raw_int:
-            raise SceneError(f"{_where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "
+            raise SceneError(f"{where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "
                              "allowed with method = 'dop853' (adaptive: set rtol/atol, or use "
                              "method = 'rk4')")
         integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
@@ -264,35 +197,19 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     if run["sample_dt"] is None:
         run["sample_dt"] = grid if grid is not None else 0.01
     elif grid is not None:
-        _multiple(source, "run", "sample_dt", run["sample_dt"], grid, "[integrator] dt")
+        multiple_of(source, "run", "sample_dt", run["sample_dt"], grid, "[integrator] dt")
     sdt = run["sample_dt"]
     if run["t_transient"] > 0:
-        _multiple(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
-    n_samples = _multiple(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
+        multiple_of(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
+    n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
     if run["checkpoint_every"] is None:
         per = max(1, n_samples // 20)
         run["checkpoint_every"] = per * sdt
     else:
-        _multiple(source, "run", "checkpoint_every", run["checkpoint_every"], sdt,
+        multiple_of(source, "run", "checkpoint_every", run["checkpoint_every"], sdt,
                   "[run] sample_dt")
 
     # -- effects -----------------------------------------------------------------------------------
-    raw_eff = data.get("effects", {})
-    if not isinstance(raw_eff, dict):
-        raise SceneError(f"{source}: [effects] must be a table of effect tables, got {raw_eff!r}")
-    effects = {}
-    for ename, eraw in raw_eff.items():
-        if ename not in EFFECTS:
-            raise _unknown(source, "effects", ename, EFFECTS)
-        if eraw is False:
-            continue
-        if eraw is True:
-            eraw = {}
-        if not isinstance(eraw, dict):
-            raise SceneError(f"{source}: [effects] {ename} = {eraw!r} is not allowed: expected "
-                             f"true, false or a table [effects.{ename}]")
-        effects[ename] = _section(source, {ename: eraw}, ename, EFFECTS[ename],
-                                  label=f"effects.{ename}")[0]
     _check_effects(source, n, integ, run, effects)
     if not effects:
         raise SceneError(f"{source}: the scene requests no effect: add at least one "
@@ -331,12 +248,12 @@ def _check_state(source, n, masses, theta, u, weights=None, level=0.0):
     try:
         sys_.check_point(np.array(theta))
     except ValueError as exc:
-        raise SceneError(f"{_where(source, 'initial', 'theta')} = {theta!r} is not allowed: "
+        raise SceneError(f"{where(source, 'initial', 'theta')} = {theta!r} is not allowed: "
                          f"{exc}") from None
     try:
         sys_.check_tangent(np.array(theta), np.array(u))
     except ValueError as exc:
-        raise SceneError(f"{_where(source, 'initial', 'u')} = {u!r} is not allowed: "
+        raise SceneError(f"{where(source, 'initial', 'u')} = {u!r} is not allowed: "
                          f"{exc}") from None
 
 
@@ -357,39 +274,39 @@ def _check_effects(source, n, integ, run, effects):
         w = effects["waveforms"]
         rotors = w["rotors"] if w["rotors"] is not None else list(range(n))
         if not rotors or any(not 0 <= r < n for r in rotors) or len(set(rotors)) != len(rotors):
-            raise SceneError(f"{_where(source, sect('waveforms'), 'rotors')} = {rotors!r} is not "
+            raise SceneError(f"{where(source, sect('waveforms'), 'rotors')} = {rotors!r} is not "
                              f"allowed: expected distinct rotor indices in 0..{n - 1}")
         w["rotors"] = list(rotors)
         w["t_window"] = min(w["t_window"], run["t_final"])
-        _multiple(source, sect("waveforms"), "t_window", w["t_window"], run["sample_dt"],
+        multiple_of(source, sect("waveforms"), "t_window", w["t_window"], run["sample_dt"],
                   "[run] sample_dt")
     if "spectrum" in effects:
         s = effects["spectrum"]
         if not 0 <= s["rotor"] < n:
-            raise SceneError(f"{_where(source, sect('spectrum'), 'rotor')} = {s['rotor']!r} is not "
+            raise SceneError(f"{where(source, sect('spectrum'), 'rotor')} = {s['rotor']!r} is not "
                              f"allowed: expected a rotor index in 0..{n - 1}")
         n_samples = round(run["t_final"] / run["sample_dt"])
         if s["nperseg"] > n_samples:
-            raise SceneError(f"{_where(source, sect('spectrum'), 'nperseg')} = {s['nperseg']!r} is "
+            raise SceneError(f"{where(source, sect('spectrum'), 'nperseg')} = {s['nperseg']!r} is "
                              f"not allowed: expected at most the number of samples, {n_samples} "
                              "(lengthen [run] t_final or shorten the segments)")
     if integ["formulation"] == "ambient" and integ["method"] == "rk4" and integ["project_every"]:
-        _multiple(source, "integrator", "project_every", integ["project_every"], integ["dt"],
+        multiple_of(source, "integrator", "project_every", integ["project_every"], integ["dt"],
                   "[integrator] dt")
     if "lyapunov" in effects:
         ly = effects["lyapunov"]
         if ly["n_exponents"] is None:
             ly["n_exponents"] = n - 2
-        _multiple(source, sect("lyapunov"), "reorth_every", ly["reorth_every"], integ["dt"],
+        multiple_of(source, sect("lyapunov"), "reorth_every", ly["reorth_every"], integ["dt"],
                   "[integrator] dt")
-        _multiple(source, "run", "t_final", run["t_final"], ly["reorth_every"],
+        multiple_of(source, "run", "t_final", run["t_final"], ly["reorth_every"],
                   "[effects.lyapunov] reorth_every")
         # the vectors stay in the 2N−2-dim. constraint-preserving subspace; the θ-only
         # product sees only its N−1 θ-directions (more vectors would be degenerate)
         kmax = n - 1 if ly["inner_product"] == "theta" else 2 * n - 2
         if ly["n_exponents"] > kmax:
             more = " (use inner_product = 'full' for up to 2N−2)" if kmax == n - 1 else ""
-            raise SceneError(f"{_where(source, sect('lyapunov'), 'n_exponents')} = "
+            raise SceneError(f"{where(source, sect('lyapunov'), 'n_exponents')} = "
                              f"{ly['n_exponents']!r} is not allowed with inner_product = "
                              f"{ly['inner_product']!r}: expected 1..{kmax}{more}")
     if "curvature" in effects:
@@ -397,10 +314,10 @@ def _check_effects(source, n, integ, run, effects):
         if c["n_directions"] is None:
             c["n_directions"] = n - 2
         if c["n_directions"] > n - 2:
-            raise SceneError(f"{_where(source, sect('curvature'), 'n_directions')} = "
+            raise SceneError(f"{where(source, sect('curvature'), 'n_directions')} = "
                              f"{c['n_directions']!r} is not allowed: expected 1..{n - 2} (N−2 "
                              "directions orthogonal to the velocity in the N−1-dim. manifold)")
-        _multiple(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
+        multiple_of(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
                   "[integrator] dt")
     for name in ("angles", "clv"):        # the two routes to the angles of section 4
         if name not in effects:
@@ -409,21 +326,21 @@ def _check_effects(source, n, integ, run, effects):
         if a["n_vectors"] is None:
             a["n_vectors"] = n - 2
         if a["n_vectors"] > n - 2:
-            raise SceneError(f"{_where(source, sect(name), 'n_vectors')} = {a['n_vectors']!r} "
+            raise SceneError(f"{where(source, sect(name), 'n_vectors')} = {a['n_vectors']!r} "
                              f"is not allowed: expected 1..{n - 2} (at most the number of "
                              "positive exponents)")
-        _multiple(source, sect(name), "sample_every", a["sample_every"], integ["dt"],
+        multiple_of(source, sect(name), "sample_every", a["sample_every"], integ["dt"],
                   "[integrator] dt")
     if "clv" in effects:
         c = effects["clv"]
-        _multiple(source, "run", "t_final", run["t_final"], c["sample_every"],
+        multiple_of(source, "run", "t_final", run["t_final"], c["sample_every"],
                   "[effects.clv] sample_every")
         if c["windows"] is None:
             c["windows"] = [1.0, 10.0]
         for w in c["windows"]:
-            _multiple(source, sect("clv"), "windows", w, c["sample_every"],
+            multiple_of(source, sect("clv"), "windows", w, c["sample_every"],
                       "[effects.clv] sample_every")
     if "drift" in effects:
         d = effects["drift"]
-        _multiple(source, sect("drift"), "sample_every", d["sample_every"], run["sample_dt"],
+        multiple_of(source, sect("drift"), "sample_every", d["sample_every"], run["sample_dt"],
                   "[run] sample_dt")

@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 
+from ..compilation import announces_compilation
 from ..geometry.checks import finite_array, option
 from ..geometry.projection import invariants
 from ..geometry.system import RotorSystem
@@ -92,6 +93,7 @@ def _eval_times(t_eval, t0, t1, sign):
     return te, np.maximum.accumulate(s)
 
 
+@announces_compilation
 def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, formulation="chart",
               method="dop853", dt=None, rtol=None, atol=None, t_eval=None, dense_output=False,
               events=None, project=False, transport=None, tau=DEFAULT_TAU, chart=None,

@@ -17,19 +17,26 @@ from functools import cache
 import numpy as np
 from numba import njit, types
 
-from ..flows.linkage import NY, linkage_rhs
+from ..flows.linkage import NY, linkage_rates
 from ..geometry.linkage import project_state_linkage, project_tangent_linkage
-from .rk import RHS_TYPE, rk4_step
+from .rk import RHS_SIG, RHS_TYPE, rk4_step
 from .status import NONFINITE, RUNNING, IntegrationError
 from .tangent import orthonormalize
 
-__all__ = ["LinkageFlow", "linkage_kernel", "DegenerateMetricError", "DEGENERATE", "GRAM_MIN"]
+__all__ = ["LinkageFlow", "linkage_rhs", "linkage_kernel", "DegenerateMetricError", "DEGENERATE", "GRAM_MIN"]
 
 #: Status: the KKT matrix became singular (massless disk where C = ∂F/∂(x, y, α) loses rank).
 DEGENERATE = -10
 #: Smallest health det(C̃ᵀC̃) of `linkage_rhs` (``charts.flows.linkage.disk_gram``) accepted in a
 #: step with a massless disk (typical values on the default linkage ρ = 2ε: 7·10² for ε ≤ 0.2).
 GRAM_MIN = 1e-12
+
+
+@cache
+def linkage_rhs():
+    """`charts.flows.linkage.linkage_rates` compiled with the steppers' signature
+    (``charts.solvers.rk.RHS_SIG``) on first use, cached on disk."""
+    return njit(RHS_SIG, cache=True)(linkage_rates)
 
 
 class DegenerateMetricError(IntegrationError):

@@ -1,0 +1,58 @@
+"""The kernels' one-time compilation, timed and announced.
+
+numba compiles a kernel on its first use for a signature and caches it on disk, so the first
+call with a new N (or the first call after an install) can take seconds to minutes.  This
+module times that from numba's own ``numba:compile`` events (outermost only) and says so once
+per call on stderr when it is long (`NOTE_SECONDS`); any layer may use it (no package imports).
+"""
+from __future__ import annotations
+
+import functools
+import sys
+import threading
+from contextlib import contextmanager
+
+__all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation"]
+
+#: compilations shorter than this (loading cached kernels: ~0.05 s) pass without a word.
+NOTE_SECONDS = 1.0
+
+_depth = threading.local()
+
+
+@contextmanager
+def compile_timer(add):
+    """Call ``add(seconds)`` for the time numba spends compiling (or loading cached kernels)
+    inside the block; entry points called inside it do not announce their own."""
+    from numba.core.event import install_timer
+
+    outer = getattr(_depth, "n", 0)
+    _depth.n = outer + 1
+    try:
+        with install_timer("numba:compile", add):
+            yield
+    finally:
+        _depth.n = outer
+
+
+def announces_compilation(fn):
+    """Wrap a public entry point: when its call spent more than `NOTE_SECONDS` compiling,
+    print one line on stderr saying so (nested entry points announce only the outermost)."""
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        if getattr(_depth, "n", 0):
+            return fn(*args, **kwargs)
+        spent = [0.0]
+        try:
+            with compile_timer(lambda s: spent.__setitem__(0, spent[0] + s)):
+                return fn(*args, **kwargs)
+        finally:
+            if spent[0] > NOTE_SECONDS:
+                n = getattr(args[0], "n", None) if args else None
+                what = f" for N = {n}" if isinstance(n, int) else ""
+                print(f"charts: {fn.__name__} compiled its kernels{what} in {spent[0]:.1f} s "
+                      "(once: they are cached on disk for the next calls and processes)",
+                      file=sys.stderr)
+
+    return wrapper
