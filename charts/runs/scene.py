@@ -132,7 +132,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     masses = system["masses"] if system["masses"] is not None else [1.0] * n
     system["masses"] = masses
     if system["weights"] is not None and len(system["weights"]) != n:
-        raise SceneError(f"{_where(source, 'system', 'weights')} = {system['weights']!r} is not "
+        raise SceneError(f"{where(source, 'system', 'weights')} = {system['weights']!r} is not "
                          f"allowed: expected a list of n = {n} positive numbers")
     _check_family(source, system)
     # the paper's constraint leaves no trace: scenes (and sweep point ids) stay as they were
@@ -231,7 +231,7 @@ def _check_family(source, system):
             RotorSystem(system["n"], system["masses"], system["weights"], system["level"])
         except ValueError as exc:
             key = "weights" if str(exc).startswith("weights") else "level"
-            raise SceneError(f"{_where(source, 'system', key)} = {system[key]!r} is not "
+            raise SceneError(f"{where(source, 'system', key)} = {system[key]!r} is not "
                              f"allowed: {exc}") from None
 
 
