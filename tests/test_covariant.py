@@ -59,7 +59,7 @@ def test_tangent_map_carries_each_clv_to_the_next(n4_clvs, variant):
 
         def rhs(_, z):
             dz = np.empty_like(z)
-            flow_tangent_rhs(z[:2 * n], z[2 * n:].reshape(D, 2 * n), s.minv, dz[:2 * n],
+            flow_tangent_rhs(z[:2 * n], z[2 * n:].reshape(D, 2 * n), s.minv, s.weights, dz[:2 * n],
                              dz[2 * n:].reshape(D, 2 * n))
             return dz
 

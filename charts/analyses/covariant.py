@@ -344,7 +344,8 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
         store.close()
     rep.close()
     t = (n_tr + np.arange(S) * sample) * dt
-    params = dict(n=n, masses=system.masses.tolist(), variant=variant, dt=dt, m=m, D=D,
+    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, variant=variant, dt=dt, m=m, D=D,
                   t_final=n_win * dt, t_transient=n_tr * dt, sample_every=tau,
                   speed=flow.speed, project_every=project * dt or None, seed=seed,
                   bytes_per_sample=sample_bytes(n, variant), stored_samples=total)

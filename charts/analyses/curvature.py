@@ -66,9 +66,9 @@ def gaussian_curvature_eq22(theta):
 
 
 @njit(cache=True)
-def frame_step(y, X, P, minv, h):
+def frame_step(y, X, P, minv, a, h):
     """One RK4 step of size h, in place, of eq (8) for y (2N,), eq (17) for the rows of X
-    (k, 2N) and eq (19) for the rows of P (kp, N)."""
+    (k, 2N) and eq (19) for the rows of P (kp, N); weights a."""
     n = y.size // 2
     d = 2 * n
     k = X.shape[0]
@@ -85,7 +85,7 @@ def frame_step(y, X, P, minv, h):
     for st in range(4):
         rk4_stage_point(z, K, st, h, L, zt)
         o = st * L
-        lam, iB = state_stage(zt, 0, n, minv, s, c, K, o)
+        lam, iB = state_stage(zt, 0, n, minv, a, s, c, K, o)
         tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)
         for r in range(k):
             tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)
@@ -98,13 +98,13 @@ def frame_step(y, X, P, minv, h):
 
 
 @njit(cache=True)
-def curvature_frame(y, X, minv, m, Xj, P):
+def curvature_frame(y, X, minv, wts, m, Xj, P):
     """Jacobi fields Xj, shape (k, 2N), and the M-orthonormal frame P, shape (k + 1, N), at
     y from the Lyapunov vectors X (route a, see the module doc).  Returns |u|²."""
     n = y.size // 2
     k = X.shape[0]
     f = np.empty(2 * n)
-    flow_rhs(y, minv, f)  # the flow-direction perturbation (u, u̇), a solution of eq (17)
+    flow_rhs(y, minv, wts, f)  # the flow-direction perturbation (u, u̇), a solution of eq (17)
     uu = 0.0
     for i in range(n):
         uu += m[i] * y[n + i] * y[n + i]
@@ -128,7 +128,7 @@ def curvature_frame(y, X, minv, m, Xj, P):
 
 
 @njit(cache=True)
-def numerical_curvature(y, Xj, P, minv, m, dt, uu, K):
+def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K):
     """Route (a), eqs (20)–(21) with the minus sign: K[i, j] from one RK4 step of ±dt of
     the trajectory, the Jacobi fields Xj and the frame P (`curvature_frame`)."""
     n = y.size // 2
@@ -138,7 +138,7 @@ def numerical_curvature(y, Xj, P, minv, m, dt, uu, K):
         y2 = y.copy()
         X2 = Xj.copy()
         P2 = P.copy()
-        frame_step(y2, X2, P2, minv, sign * dt)
+        frame_step(y2, X2, P2, minv, wts, sign * dt)
         for i in range(k):
             for j in range(k):
                 acc = 0.0
@@ -151,7 +151,7 @@ def numerical_curvature(y, Xj, P, minv, m, dt, uu, K):
 
 
 @njit(cache=True)
-def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth, w,
+def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth, w,
                       project_every, Ka, Ys, Ps):
     """Advance the tangent flow Z = [y; X] ``sample_steps`` steps at a time (re-orthonormalised
     every ``reorth`` steps, a divisor of ``sample_steps``) and at each sample store y, the
@@ -165,24 +165,26 @@ def _sample_curvature(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth, 
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     for smp in range(Ka.shape[0]):
-        status, done = tangent_kernel(Z, sc, counter, minv, m, speed, dt, sample_steps, reorth,
+        status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth,
                                       w, True, project_every, logs, 0, 0, none, no_events, none)
         if status != RUNNING:
             return status, smp
         y = Z[0]
-        uu = curvature_frame(y, Z[1:], minv, m, Xj, P)
+        uu = curvature_frame(y, Z[1:], minv, wts, m, Xj, P)
         Ys[smp] = y
         Ps[smp] = P
-        numerical_curvature(y, Xj, P, minv, m, dt, uu, Ka[smp])
+        numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[smp])
     return RUNNING, Ka.shape[0]
 
 
 def exact_curvature_matrix(system, theta, P):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frame P,
     shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart, or
-    by the Gauss equation where N has no generated kernels.  Returns shape (k, k)."""
-    if source(system.n) == "structured":
-        return gauss_frame_curvature(theta, P, system.masses, np.empty((P.shape[0] - 1,) * 2))
+    by the Gauss equation (with the weighted normal) where N has no generated kernels or the
+    constraint is not the paper's Σ cos θ = 0.  Returns shape (k, k)."""
+    if source(system.n) == "structured" or not system.is_paper_family:
+        return gauss_frame_curvature(theta, P, system.masses, system.weights,
+                                     np.empty((P.shape[0] - 1,) * 2))
     k = system.best_chart(theta)
     idx = chart_coordinates(system.n, k)
     q = np.ascontiguousarray(theta[idx])
@@ -309,7 +311,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
         status, done = _sample_curvature(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                                         flow.speed, dt, sample, reorth, flow.w, project,
+                                         system.weights, system.level, flow.speed, dt, sample, reorth, flow.w, project,
                                          Ka[a:b], Ys[a:b], Ps[a:b])
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, where)
@@ -319,7 +321,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     if exact:
         Kb = np.array([exact_curvature_matrix(system, Ys[i, :n], Ps[i]) for i in range(S)])
     t = (np.arange(1, S + 1) * sample) * dt
-    params = dict(n=n, masses=system.masses.tolist(), dt=dt, sample_every=sample * dt,
+    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, dt=dt, sample_every=sample * dt,
                   t_transient=transient * dt, project_every=project * dt or None,
                   speed=flow.speed, t_final=float(t[-1]), seed=seed)
     return CurvatureResult(t, Ys[:, :n], Ys[:, n:], Ps, Ka, Kb, params)

@@ -62,9 +62,9 @@ MAX_STORE = 1 << 30
 
 
 @njit(cache=True)
-def adjoint_step(Z, minv, h, zt, K, s, c):
+def adjoint_step(Z, minv, a, h, zt, K, s, c):
     """One RK4 step of size h (h < 0: backward), in place, of eq (8) for Z[0] and of the
-    adjoint flow ẇ = −Jᵀw for the rows Z[1:]; zt (L,), K (4L,), s, c (N,) are work arrays."""
+    adjoint flow ẇ = −Jᵀw for the rows Z[1:] (weights a); zt (L,), K (4L,), s, c (N,) are work arrays."""
     R, d = Z.shape
     n = d // 2
     L = R * d
@@ -72,14 +72,14 @@ def adjoint_step(Z, minv, h, zt, K, s, c):
     for st in range(4):
         rk4_stage_point(Zf, K, st, h, L, zt)
         o = st * L
-        lam, iB = state_stage(zt, 0, n, minv, s, c, K, o)
+        lam, iB = state_stage(zt, 0, n, minv, a, s, c, K, o)
         for r in range(1, R):
             adjoint_rate(zt, r * d, n, zt, 0, minv, s, c, lam, iB, K, o + r * d)
     rk4_combine(Zf, K, h, L, Zf)
 
 
 @njit(cache=True)
-def _backward_kernel(ck, W, minv, dt, ck_every, first_sample, sample_every, reorth, Vs, Mf, Mr,
+def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, Vs, Mf, Mr,
                      w):
     """Backward pass over all segments (last first), W re-orthonormalised at every step index
     that is a multiple of ``reorth`` (which divides the sample steps); at sample steps store
@@ -107,12 +107,12 @@ def _backward_kernel(ck, W, minv, dt, ck_every, first_sample, sample_every, reor
             ss = 0.0
             uu = 0.0
             for i in range(n):
-                ss += sin(Z[0, i]) ** 2
+                ss += (wts[i] * sin(Z[0, i])) ** 2
                 uu += Z[0, n + i] ** 2
             hc = step_cap(ss, uu, _CAP)
             nsub = 1 if hc >= dt else int(ceil(dt / hc))
             for _ in range(nsub):
-                adjoint_step(Z, minv, -dt / nsub, zt, K, s, c)
+                adjoint_step(Z, minv, wts, -dt / nsub, zt, K, s, c)
             step = (seg + 1) * ck_every - jj - 1
             if step % reorth == 0:
                 orthonormalize(Wv, w, logs)
@@ -120,7 +120,7 @@ def _backward_kernel(ck, W, minv, dt, ck_every, first_sample, sample_every, reor
             if j >= 0 and j % sample_every == 0 and j // sample_every < S:
                 q = j // sample_every
                 Wr[:, :] = Wv
-                project_tangent_euclidean(Z[0], Wr)
+                project_tangent_euclidean(Z[0], Wr, wts)
                 orthonormalize(Wr, w, np.zeros(kk))
                 for r in range(kk):
                     for s_ in range(kk):
@@ -268,12 +268,13 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     orthonormalize(W, flow.w, np.zeros(m))
     Mf = np.empty((S, m, m))
     Mr = np.empty((S, m, m))
-    blog = _backward_kernel(ck, W, system.minv, dt, ce, n_tr, sample, reorth, Vs, Mf, Mr, flow.w)
+    blog = _backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample, reorth, Vs, Mf, Mr, flow.w)
     rep.update(nsteps * dt)
     rep.close()
     T = nsteps * dt
     t = (n_tr + np.arange(S) * sample) * dt
-    params = dict(n=n, masses=system.masses.tolist(), dt=dt, m=m, t_final=n_win * dt,
+    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, dt=dt, m=m, t_final=n_win * dt,
                   t_transient=n_tr * dt, sample_every=sample * dt, speed=flow.speed,
                   checkpoint_every=ce * dt, project_every=project * dt or None, seed=seed)
     return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flow.logsum / T, blog / T,

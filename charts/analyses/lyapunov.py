@@ -121,7 +121,7 @@ def identify_nonphysical(system, theta, u, X):
     directions, ≈ 0 for physical ones."""
     y = np.concatenate([theta, u])
     Xp = np.array(X, dtype=float)
-    project_tangent(y, Xp, system.minv)
+    project_tangent(y, Xp, system.minv, system.weights)
     return 1.0 - np.linalg.norm(Xp, axis=1) / np.linalg.norm(X, axis=1)
 
 
@@ -265,7 +265,8 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
         spectrum = exps.copy()
     else:
         spectrum = reconstruct_spectrum(exps[: n - 2]) if k >= n - 2 else None
-    params = dict(n=n, masses=system.masses.tolist(), t_final=cfg.total * cfg.dt, dt=cfg.dt,
+    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, t_final=cfg.total * cfg.dt, dt=cfg.dt,
                   inner=inner, space=space, t_transient=cfg.transient * cfg.dt,
                   n_batches=cfg.n_batches, reorth_every=cfg.reorth * cfg.dt,
                   project_every=cfg.project * cfg.dt or None, speed=flow.speed, seed=cfg.seed)

@@ -1,8 +1,15 @@
-"""The ambient (Lagrange) equations, generalised to masses: the only place they are written.
+"""The ambient (Lagrange) equations, generalised to masses and to the family of constraints
+F = Σ aᵢ cos θᵢ − c = 0 (weights a, level c): the only place they are written.
 
-State y = (θ₀…θ_{N−1}, u₀…u_{N−1}), shape (2N,).  With sᵢ = sin θᵢ, cᵢ = cos θᵢ:
+State y = (θ₀…θ_{N−1}, u₀…u_{N−1}), shape (2N,).  With the *weighted* sᵢ = aᵢ sin θᵢ,
+cᵢ = aᵢ cos θᵢ (−∇F and −diag Hess F; `sincos`):
 
     θ̇ᵢ = uᵢ,   u̇ᵢ = −Λ sᵢ / mᵢ,   Λ = Σ u_j² c_j / B,   B = Σ s_j² / m_j          (eq 8)
+
+Since ds/dθ = c and dc/dθ = −s hold for the weighted pair as for sin and cos, eqs (17),
+(19) and the adjoint below keep their form; the level c enters only the constraint
+(``charts.geometry.projection``).  With a = 1 the products aᵢ sin θᵢ are exact, so the
+paper's case gives the same bits as the unweighted equations.
 
 Tangent (perturbation) vectors ξ = (θ̃, ũ), shape (2N,), obey the linearisation (eq 17,
 re-derived for masses; tested against finite differences of eq 8), written with the
@@ -37,11 +44,11 @@ __all__ = [
 
 
 @njit(cache=True, inline="always")
-def sincos(y, o, n, s, c):
-    """s, c = sin θ, cos θ of the angles y[o:o+n]."""
+def sincos(y, o, n, a, s, c):
+    """s, c = a sin θ, a cos θ of the angles y[o:o+n] (a = weights)."""
     for j in range(n):
-        s[j] = sin(y[o + j])
-        c[j] = cos(y[o + j])
+        s[j] = a[j] * sin(y[o + j])
+        c[j] = a[j] * cos(y[o + j])
 
 
 @njit(cache=True, inline="always")
@@ -93,7 +100,7 @@ def tangent_rate(x, o, n, f, g, p, q, iB, dx, do):
 @njit(cache=True, inline="always")
 def transport_rate(x, o, n, y, yo, f, c, iB, dx, do):
     """Eq (19): dx[do:do+N] = d/dt of the transported vector x[o:o+N] along the state
-    y[yo:yo+2N]; f = sin θ / m, c = cos θ, iB = 1/B."""
+    y[yo:yo+2N]; f = a sin θ / m, c = a cos θ, iB = 1/B."""
     a = 0.0
     for j in range(n):
         a += x[o + j] * y[yo + n + j] * c[j]
@@ -116,10 +123,10 @@ def adjoint_rate(x, o, n, y, yo, minv, s, c, lam, iB, dx, do):
 
 
 @njit(cache=True, inline="always")
-def state_stage(y, o, n, minv, s, c, dy, do):
-    """Eq (8) at the state y[o:o+2N] into dy[do:do+2N], filling s, c = sin θ, cos θ;
+def state_stage(y, o, n, minv, a, s, c, dy, do):
+    """Eq (8) at the state y[o:o+2N] into dy[do:do+2N], filling s, c = a sin θ, a cos θ;
     returns (Λ, 1/B) for the tangent, transport or adjoint rates at the same point."""
-    sincos(y, o, n, s, c)
+    sincos(y, o, n, a, s, c)
     lam, B = multiplier(y, o, n, minv, s, c)
     state_rate(y, o, n, minv, s, lam, dy, do)
     return lam, (1.0 / B if B > 0.0 else 0.0)
@@ -133,23 +140,23 @@ def stage_work(n):
 
 # ------------------------------------------------------------------ wrappers for Python
 @njit(cache=True)
-def flow_rhs(y, minv, dy):
-    """Eq (8): dy = f(y), y and dy shape (2N,).  Returns B = Σ sin²θ/m."""
+def flow_rhs(y, minv, a, dy):
+    """Eq (8): dy = f(y), y and dy shape (2N,), weights a.  Returns B = Σ a² sin²θ/m."""
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
-    sincos(y, 0, n, s, c)
+    sincos(y, 0, n, a, s, c)
     lam, B = multiplier(y, 0, n, minv, s, c)
     state_rate(y, 0, n, minv, s, lam, dy, 0)
     return B
 
 
 @njit(cache=True)
-def flow_tangent_rhs(y, X, minv, dy, dX):
-    """Eq (8) for y, shape (2N,), and eq (17) for each row of X, shape (k, 2N)."""
+def flow_tangent_rhs(y, X, minv, a, dy, dX):
+    """Eq (8) for y, shape (2N,), and eq (17) for each row of X, shape (k, 2N); weights a."""
     n = y.size // 2
     s, c, f, g, p, q = stage_work(n)
-    lam, iB = state_stage(y, 0, n, minv, s, c, dy, 0)
+    lam, iB = state_stage(y, 0, n, minv, a, s, c, dy, 0)
     tangent_factors(y, 0, n, minv, s, c, lam, f, g, p, q)
     xf = X.reshape(X.size)
     dxf = dX.reshape(dX.size)
@@ -159,12 +166,12 @@ def flow_tangent_rhs(y, X, minv, dy, dX):
 
 
 @njit(cache=True)
-def adjoint_rhs(y, W, minv, dW):
-    """ẇ = −J(y)ᵀ w for each row of W, shape (k, 2N).  Returns B."""
+def adjoint_rhs(y, W, minv, a, dW):
+    """ẇ = −J(y)ᵀ w for each row of W, shape (k, 2N); weights a.  Returns B."""
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
-    sincos(y, 0, n, s, c)
+    sincos(y, 0, n, a, s, c)
     lam, B = multiplier(y, 0, n, minv, s, c)
     wf = W.reshape(W.size)
     dwf = dW.reshape(dW.size)
@@ -174,13 +181,13 @@ def adjoint_rhs(y, W, minv, dW):
 
 
 @njit(cache=True)
-def transport_rhs(y, P, minv, dP):
-    """Eq (19) for each row of P, shape (k, N), along y, shape (2N,).  Returns B."""
+def transport_rhs(y, P, minv, a, dP):
+    """Eq (19) for each row of P, shape (k, N), along y, shape (2N,); weights a.  Returns B."""
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
     f = np.empty(n)
-    sincos(y, 0, n, s, c)
+    sincos(y, 0, n, a, s, c)
     lam, B = multiplier(y, 0, n, minv, s, c)
     for j in range(n):
         f[j] = s[j] * minv[j]

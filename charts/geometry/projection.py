@@ -1,12 +1,17 @@
 """Projections onto the manifold and its tangent spaces, the energy rescale and the
 invariants: the only place they are written.
 
-Invariants of eq (8): the constraint F = Σ cos θ = 0 (eq 9), the tangency G = Σ u sin θ = 0
-(eq 10) and the energy E = ½ Σ m u².  Ḟ = −G, so the subspace of perturbations
+Invariants of eq (8), for the family of constraints Σ aᵢ cos θᵢ = c (weights a, level c;
+the paper's case a = 1, c = 0): the constraint F = Σ a cos θ − c = 0 (eq 9), the tangency
+G = Σ a u sin θ = 0 (eq 10) and the energy E = ½ Σ m u².  Ḟ = −G, so the subspace of
+perturbations
 
-    T_r = {ξ = (θ̃, ũ) : δF = −Σ sin θ θ̃ = 0,  δG = Σ (sin θ ũ + u cos θ θ̃) = 0}
+    T_r = {ξ = (θ̃, ũ) : δF = −Σ a sin θ θ̃ = 0,  δG = Σ (a sin θ ũ + u a cos θ θ̃) = 0}
 
 (dimension 2N − 2) is invariant under eq (17); the tangent-vector projections map onto it.
+Arguments named ``s``, ``c`` are the weighted sin/cos a sin θ, a cos θ
+(``charts.flows.ambient.sincos``); with a = 1 every product by aᵢ is exact, so the paper's
+case gives the same bits as before the weights existed.
 """
 from __future__ import annotations
 
@@ -32,8 +37,8 @@ def rescale_speed(y, o, n, m, speed):
 
 @njit(cache=True, inline="always")
 def project_velocity(x, o, n, s, minv):
-    """Make the ambient vector x[o:o+N] tangent: remove its Σ xᵢ sin θᵢ component
-    M-orthogonally (along M⁻¹ sin θ); s = sin θ."""
+    """Make the ambient vector x[o:o+N] tangent: remove its Σ xᵢ aᵢ sin θᵢ component
+    M-orthogonally (along M⁻¹ a sin θ); s = a sin θ."""
     G = 0.0
     B = 0.0
     for j in range(n):
@@ -45,38 +50,38 @@ def project_velocity(x, o, n, s, minv):
 
 
 @njit(cache=True)
-def project_constraint(theta, m, iterations):
-    """Put the angles theta[0:N] on F = Σ cos θ = 0 in place by Newton steps along M⁻¹∇F (at
-    most ``iterations``, stopping once |F| < 1e-15).  Returns False at a critical point of F
-    (all sin θ = 0), where there is no direction to move along."""
+def project_constraint(theta, m, a, level, iterations):
+    """Put the angles theta[0:N] on F = Σ a cos θ − level = 0 in place by Newton steps along
+    M⁻¹∇F (at most ``iterations``, stopping once |F| < 1e-15).  Returns False at a critical
+    point of F (all sin θ = 0), where there is no direction to move along."""
     n = m.size
     for _ in range(iterations):
-        F = 0.0
+        F = -level
         B = 0.0
         for j in range(n):
-            s = sin(theta[j])
-            F += cos(theta[j])
+            s = a[j] * sin(theta[j])
+            F += a[j] * cos(theta[j])
             B += s * s / m[j]
         if B < 1e-300:
             return False
         d = F / B
         for j in range(n):
-            theta[j] += d * sin(theta[j]) / m[j]
+            theta[j] += d * (a[j] * sin(theta[j])) / m[j]
         if abs(F) < 1e-15:
             break
     return True
 
 
 @njit(cache=True)
-def project_state(y, m, speed):
+def project_state(y, m, a, level, speed):
     """Project y = (θ, u) in place onto F = 0 (`project_constraint`, 3 Newton steps), G = 0
     (M-orthogonally) and, if ``speed`` > 0, Σ mᵢuᵢ² = speed² (`rescale_speed`)."""
     n = y.size // 2
-    project_constraint(y, m, 3)
+    project_constraint(y, m, a, level, 3)
     s = np.empty(n)
     minv = np.empty(n)
     for j in range(n):
-        s[j] = sin(y[j])
+        s[j] = a[j] * sin(y[j])
         minv[j] = 1.0 / m[j]
     project_velocity(y, n, n, s, minv)
     if speed > 0.0:
@@ -86,7 +91,7 @@ def project_state(y, m, speed):
 @njit(cache=True)
 def project_tangent_sc(y, X, minv, s, c):
     """Project each row of X, shape (k, 2N), onto T_r at y: remove its δF and δG
-    components M-orthogonally; s, c = sin θ, cos θ of y."""
+    components M-orthogonally; s, c = a sin θ, a cos θ of y."""
     n = y.size // 2
     B = 0.0
     for j in range(n):
@@ -105,41 +110,41 @@ def project_tangent_sc(y, X, minv, s, c):
 
 
 @njit(cache=True)
-def tangent_part(theta, u, minv):
+def tangent_part(theta, u, minv, a):
     """The M-orthogonal projection of the ambient vector u, shape (N,), onto the tangent
-    space at theta (a new array)."""
+    space at theta (a new array); a = weights."""
     n = theta.size
     s = np.empty(n)
     for j in range(n):
-        s[j] = sin(theta[j])
+        s[j] = a[j] * sin(theta[j])
     x = u.copy()
     project_velocity(x, 0, n, s, minv)
     return x
 
 
 @njit(cache=True)
-def project_tangent(y, X, minv):
-    """`project_tangent_sc` computing sin θ and cos θ itself."""
+def project_tangent(y, X, minv, a):
+    """`project_tangent_sc` computing a sin θ and a cos θ itself (a = weights)."""
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
     for j in range(n):
-        s[j] = sin(y[j])
-        c[j] = cos(y[j])
+        s[j] = a[j] * sin(y[j])
+        c[j] = a[j] * cos(y[j])
     project_tangent_sc(y, X, minv, s, c)
 
 
 @njit(cache=True)
-def project_tangent_euclidean(y, W):
+def project_tangent_euclidean(y, W, wts):
     """Euclidean-orthogonal projection of the rows of W, shape (k, 2N), onto T_r at y
-    (the complement of span(∇F, ∇G), ∇F ∝ (sin θ, 0), ∇G = (u cos θ, sin θ))."""
+    (the complement of span(∇F, ∇G), ∇F ∝ (a sin θ, 0), ∇G = (u a cos θ, a sin θ)); wts = a."""
     n = y.size // 2
     a = np.zeros(2 * n)
     b = np.zeros(2 * n)
     for i in range(n):
-        a[i] = sin(y[i])
-        b[i] = y[n + i] * cos(y[i])
-        b[n + i] = sin(y[i])
+        a[i] = wts[i] * sin(y[i])
+        b[i] = y[n + i] * (wts[i] * cos(y[i]))
+        b[n + i] = wts[i] * sin(y[i])
     aa = 0.0
     ab = 0.0
     bb = 0.0
@@ -161,21 +166,23 @@ def project_tangent_euclidean(y, W):
 
 
 @njit(cache=True, inline="always")
-def invariants_of(row, n, masses):
-    """(F, G, E) = (Σ cos θ, Σ u sin θ, ½ Σ m u²) of the state row[0:2N]."""
-    F = 0.0
+def invariants_of(row, n, masses, a, level):
+    """(F, G, E) = (Σ a cos θ − level, Σ u a sin θ, ½ Σ m u²) of the state row[0:2N]."""
+    F = -level
     G = 0.0
     E = 0.0
     for i in range(n):
-        F += cos(row[i])
-        G += row[n + i] * sin(row[i])
+        F += a[i] * cos(row[i])
+        G += row[n + i] * (a[i] * sin(row[i]))
         E += 0.5 * masses[i] * row[n + i] * row[n + i]
     return F, G, E
 
 
-def invariants(theta, u, masses):
-    """(constraint Σcos θ, tangency Σ u sin θ, energy ½Σ m u²) along the last axis."""
+def invariants(theta, u, masses, weights=None, level=0.0):
+    """(constraint Σ a cos θ − level, tangency Σ u a sin θ, energy ½Σ m u²) along the last
+    axis (weights a default all 1)."""
     theta = np.asarray(theta)
     u = np.asarray(u)
-    return (np.cos(theta).sum(-1), (u * np.sin(theta)).sum(-1),
+    a = np.ones(theta.shape[-1]) if weights is None else np.asarray(weights, dtype=float)
+    return ((a * np.cos(theta)).sum(-1) - level, (u * (a * np.sin(theta))).sum(-1),
             0.5 * (np.asarray(masses) * u * u).sum(-1))

@@ -187,9 +187,10 @@ def eliminated_component(q, x, sin_k):
 
 
 @njit(cache=True)
-def gauss_sectional(theta, v, w, m):
+def gauss_sectional(theta, v, w, m, wts):
     """Sectional curvature of the plane of the ambient tangent vectors v, w at theta by the
-    Gauss equation: [h(v,v)h(w,w) − h(v,w)²] / (G (|v|²|w|² − ⟨v,w⟩²)), all in (Rᴺ, diag m).
+    Gauss equation: [h(v,v)h(w,w) − h(v,w)²] / (G (|v|²|w|² − ⟨v,w⟩²)), all in (Rᴺ, diag m),
+    for F = Σ aᵢ cos θᵢ (a = ``wts``): h = −diag(a cos θ), G = Σ a² sin²θ / m.
     O(N).  Returns (K, |v|²|w|² − ⟨v,w⟩²)."""
     hvv = 0.0
     hww = 0.0
@@ -199,8 +200,8 @@ def gauss_sectional(theta, v, w, m):
     vw = 0.0
     G = 0.0
     for i in range(theta.size):
-        c = math.cos(theta[i])
-        s = math.sin(theta[i])
+        c = wts[i] * math.cos(theta[i])
+        s = wts[i] * math.sin(theta[i])
         hvv -= c * v[i] * v[i]
         hww -= c * w[i] * w[i]
         hvw -= c * v[i] * w[i]
@@ -213,17 +214,17 @@ def gauss_sectional(theta, v, w, m):
 
 
 @njit(cache=True)
-def gauss_frame_curvature(theta, P, m, K):
+def gauss_frame_curvature(theta, P, m, wts, K):
     """K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ = [h(p_i,p_j)h(p_0,p_0) − h(p_i,p_0)h(p_j,p_0)] / G for the
     M-orthonormal ambient frame P, shape (k + 1, N) (row 0 = p_0), into K, shape (k, k);
-    O(N k²)."""
+    weights a = ``wts`` (h = −diag(a cos θ), G = Σ a² sin²θ / m); O(N k²)."""
     n = theta.size
     r = P.shape[0]
     c = np.empty(n)
     G = 0.0
     for i in range(n):
-        c[i] = math.cos(theta[i])
-        G += math.sin(theta[i]) ** 2 / m[i]
+        c[i] = wts[i] * math.cos(theta[i])
+        G += (wts[i] * math.sin(theta[i])) ** 2 / m[i]
     H = np.zeros((r, r))
     for a in range(r):
         for b in range(a + 1):

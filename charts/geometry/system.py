@@ -1,4 +1,12 @@
-"""``RotorSystem``: the constraint manifold Σ cos θᵢ = 0 with metric Σ mᵢ dθᵢ² (eqs 1-13).
+"""``RotorSystem``: the constraint manifold Σ aᵢ cos θᵢ = c with metric Σ mᵢ dθᵢ² (eqs 1-13;
+the paper's case is weights aᵢ = 1 and level c = 0).
+
+The level set of F = Σ aᵢ cos θᵢ is empty for |c| > Σ|aᵢ| and singular exactly at the critical
+values Σ ±aᵢ (a point with every sin θᵢ = 0 lies on it: a cone point when it is not an
+extremum).  Policy (docs/families.md): an empty level set is a ValueError; a critical level
+passed *explicitly* (``weights`` or ``level`` given) raises a ``CriticalLevelWarning`` naming
+the sign pattern; the default (equal weights, c = 0) is the paper's manifold and stays silent
+even where it is critical (N = 4, the cone points every N = 4 run meets).
 
 Points are ambient angle vectors ``theta``, shape (n,); tangent vectors are
 ambient velocity vectors ``u``, shape (n,), with Σ uᵢ sin θᵢ = 0 (eq 10).
@@ -6,6 +14,9 @@ Chart ``k`` uses the local coordinates θ without θₖ (see ``charts.geometry.a
 its domain is sin θₖ ≠ 0 and the sign of sin θₖ is the chart's branch.
 """
 from __future__ import annotations
+
+import itertools
+import warnings
 
 import numpy as np
 
@@ -15,7 +26,7 @@ from .kernels import geometry
 from .projection import project_constraint, tangent_part
 from .structured import gauss_sectional
 
-__all__ = ["RotorSystem", "TOL"]
+__all__ = ["RotorSystem", "TOL", "CriticalLevelWarning", "critical_levels"]
 
 #: Tolerances used to decide whether input lies on the manifold.  Points produced by
 #: the integrators satisfy the constraint to ~1e-13; 1e-8 accepts user input rounded
@@ -24,6 +35,52 @@ TOL = {"constraint": 1e-8, "tangency": 1e-8, "chart_domain": 1e-10}
 #: Largest number of entries of an array returned by ``christoffel`` / ``riemann`` (1 GiB of
 #: floats): the Riemann array of N = 64 has 63⁴ ≈ 1.6e7 entries, that of N = 256 4.2e9.
 MAX_ENTRIES = 2 ** 27
+
+
+class CriticalLevelWarning(UserWarning):
+    """The level is a critical value of F = Σ aᵢ cos θᵢ: the manifold has singular points."""
+
+
+#: |c − Σ ±aᵢ| below this (relative to Σ|aᵢ|) counts as the critical value itself.
+CRITICAL_RTOL = 1e-12
+#: Largest N whose 2ᴺ sign patterns are checked for criticality (2²⁰ ≈ 10⁶ sums).
+CRITICAL_MAX_N = 20
+
+
+def critical_levels(weights) -> np.ndarray:
+    """The critical values Σ ±aᵢ of F = Σ aᵢ cos θᵢ (at θᵢ ∈ {0, π}), sorted, unique."""
+    a = np.asarray(weights, dtype=float)
+    signs = np.array(list(itertools.product((1.0, -1.0), repeat=a.size)))
+    return np.unique(signs @ a)
+
+
+def _check_family(n, weights, level):
+    """Validated (weights, level); ValueError for bad or empty, warning for explicit critical."""
+    explicit = weights is not None or level != 0.0
+    a = np.ones(n) if weights is None else np.asarray(weights, dtype=float)
+    if a.shape != (n,):
+        raise ValueError(f"weights must have length n={n}, got shape {a.shape}")
+    if not np.all(np.isfinite(a)) or np.any(a <= 0):
+        raise ValueError(f"weights must be finite and positive (a negative weight is the rotor "
+                         f"turned by pi: theta -> theta + pi), got {a.tolist()}")
+    if isinstance(level, bool) or not isinstance(level, (int, float, np.integer, np.floating)) \
+            or not np.isfinite(level):
+        raise ValueError(f"level must be a finite number, got {level!r}")
+    level = float(level)
+    total = float(a.sum())
+    if abs(level) >= total * (1.0 - CRITICAL_RTOL):
+        kind = "empty" if abs(level) > total * (1.0 + CRITICAL_RTOL) else "a single point"
+        raise ValueError(f"level={level!r} leaves no manifold: the level set of sum(a cos theta) "
+                         f"is {kind} for |level| >= sum(weights) = {total!r}")
+    if explicit and n <= CRITICAL_MAX_N:
+        crit = critical_levels(a)
+        hit = crit[np.abs(crit - level) <= CRITICAL_RTOL * total]
+        if hit.size:
+            warnings.warn(f"level={level!r} is the critical value {float(hit[0])!r} = sum(+-weights) "
+                          f"of sum(a cos theta): the manifold has singular (cone) points where every "
+                          f"sin theta = 0; runs may stop there (SingularPointError)",
+                          CriticalLevelWarning, stacklevel=3)
+    return a, level
 
 
 def plane_area2(vv, ww, vw) -> float:
@@ -38,9 +95,10 @@ def plane_area2(vv, ww, vw) -> float:
 
 
 class RotorSystem:
-    """N rotors with moments of inertia ``masses`` (default all 1, the paper's case)."""
+    """N rotors with moments of inertia ``masses`` (default all 1, the paper's case) on the
+    constraint Σ ``weights``ᵢ cos θᵢ = ``level`` (default weights all 1, level 0: eq 9)."""
 
-    def __init__(self, n: int, masses=None):
+    def __init__(self, n: int, masses=None, weights=None, level=0.0):
         n = integer("n (the number of rotors)", n)      # 4.0 and np.int64(4) count; 3.5 no
         if n < 3:
             raise ValueError(f"n must be >= 3 (n=2 has no 1-dimensional smooth manifold), got n={n}")
@@ -57,27 +115,38 @@ class RotorSystem:
             raise ValueError(f"masses must be finite and positive, got {masses.tolist()}")
         self.masses = masses
         self.minv = 1.0 / masses
+        self.weights, self.level = _check_family(self.n, weights, level)
         self.dim = self.n - 1
         self._gen = geometry(self.n)  # generated for the shipped N, structured otherwise
 
+    @property
+    def is_paper_family(self) -> bool:
+        """True for the paper's constraint Σ cos θ = 0 (all weights 1, level 0)."""
+        return bool(np.all(self.weights == 1.0) and self.level == 0.0)
+
     def __repr__(self):
-        return f"RotorSystem(n={self.n}, masses={self.masses.tolist()})"
+        if self.is_paper_family:
+            return f"RotorSystem(n={self.n}, masses={self.masses.tolist()})"
+        return (f"RotorSystem(n={self.n}, masses={self.masses.tolist()}, "
+                f"weights={self.weights.tolist()}, level={self.level!r})")
 
     # -- validation --------------------------------------------------------------------
     def check_point(self, theta) -> np.ndarray:
         theta = finite_array("theta", theta, shape=(self.n,))
-        F = np.cos(theta).sum()
+        F = float(self.weights @ np.cos(theta)) - self.level
         if abs(F) > TOL["constraint"]:
-            raise ValueError(f"theta is off the manifold: sum(cos theta) = {F:.3e} "
+            what = "sum(cos theta)" if self.is_paper_family else "sum(a cos theta) - level"
+            raise ValueError(f"theta is off the manifold: {what} = {F:.3e} "
                              f"(tolerance {TOL['constraint']:g}); use RotorSystem.project_point")
         return theta
 
     def check_tangent(self, theta, u, name="u") -> np.ndarray:
         u = finite_array(name, u, shape=(self.n,))
-        G = float(u @ np.sin(theta))
+        G = float(u @ (self.weights * np.sin(theta)))
         scale = max(1.0, float(np.linalg.norm(u)))
         if abs(G) > TOL["tangency"] * scale:
-            raise ValueError(f"{name} is not tangent to the manifold: sum({name} sin theta) = {G:.3e} "
+            what = f"sum({name} sin theta)" if self.is_paper_family else f"sum({name} a sin theta)"
+            raise ValueError(f"{name} is not tangent to the manifold: {what} = {G:.3e} "
                              f"(tolerance {TOL['tangency']:g}); use RotorSystem.project_tangent")
         return u
 
@@ -107,28 +176,35 @@ class RotorSystem:
         theta = np.array(theta, dtype=float)
         if theta.shape != (self.n,) or not np.all(np.isfinite(theta)):
             raise ValueError(f"theta must be {self.n} finite angles, got {theta.tolist()}")
-        if not project_constraint(theta, self.masses, integer("iterations", iterations, 1)):
-            raise ValueError("cannot project: the point is a critical point of sum(cos theta)")
+        if not project_constraint(theta, self.masses, self.weights, self.level,
+                                  integer("iterations", iterations, 1)):
+            raise ValueError("cannot project: the point is a critical point of sum(a cos theta)")
         return theta
 
     def project_tangent(self, theta, u):
         """M-orthogonal projection of an ambient vector onto the tangent space."""
         return tangent_part(finite_array("theta", theta, shape=(self.n,)),
-                            finite_array("u", u, shape=(self.n,)), self.minv)
+                            finite_array("u", u, shape=(self.n,)), self.minv, self.weights)
 
     def random_state(self, seed=0, speed=1.0):
         """Random (theta, u) on the manifold with Σ mᵢuᵢ² = speed²."""
         if not number("speed", speed) > 0:
             raise ValueError(f"speed must be positive and finite, got {speed}")
         rng = np.random.default_rng(integer("seed", seed, 0))
-        while True:
+        a, c = self.weights, self.level
+        for _ in range(100000):
             theta = rng.uniform(-np.pi, np.pi, self.n)
             k = rng.integers(self.n)
-            C = np.cos(theta).sum() - np.cos(theta[k])
+            if self.is_paper_family:  # the historical draw, kept for seeded states
+                C = np.cos(theta).sum() - np.cos(theta[k])
+            else:  # cos θₖ = (c − Σ_{i≠k} aᵢ cos θᵢ) / aₖ, written as −C
+                C = (a @ np.cos(theta) - a[k] * np.cos(theta[k]) - c) / a[k]
             if abs(C) < 0.999:
                 theta[k] = np.sign(theta[k]) * np.arccos(-C)
                 if abs(np.sin(theta).max()) > 0.05 or self.n > 3:
                     break
+        else:
+            raise ValueError(f"no random point found on {self!r} (the level set is too small)")
         u = self.project_tangent(theta, rng.normal(size=self.n))
         u *= speed / self.speed(u)  # not rescale_speed: its rounding would move every seeded state
         return theta, u
@@ -139,6 +215,11 @@ class RotorSystem:
         return int(np.argmax(np.abs(np.sin(theta))))
 
     def _chart(self, theta, chart):
+        if not self.is_paper_family:
+            raise NotImplementedError(
+                f"chart geometry (metric, Christoffel, Riemann, the chart formulation) is not yet "
+                f"written for weights/level other than 1/0 ({self!r}); use the ambient routes "
+                f"(formulation='ambient', sectional_curvature_gauss, curvature route 'exact')")
         theta = self.check_point(theta)
         k = self.best_chart(theta) if chart is None else chart
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= k < self.n:
@@ -244,5 +325,5 @@ class RotorSystem:
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")
         plane_area2(self.inner(theta, v, v), self.inner(theta, w, w), self.inner(theta, v, w))
-        K, _ = gauss_sectional(theta, v, w, self.masses)
+        K, _ = gauss_sectional(theta, v, w, self.masses, self.weights)
         return float(K)

@@ -124,10 +124,11 @@ def trajectory_study(n=4, seed=0, T=20.0, dts=(0.02, 0.01), rtols=(1e-8, 1e-11),
         if progress:
             progress()
     minv = system.minv
+    wts = system.weights
 
     def f(t, y):
         dy = np.empty_like(y)
-        flow_rhs(y, minv, dy)
+        flow_rhs(y, minv, wts, dy)
         return dy
 
     y0 = np.concatenate([theta0, u0])

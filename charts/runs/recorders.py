@@ -70,9 +70,10 @@ def make_recorders(st: RunState, transient_units: int):
 
 
 def invariants(st: RunState):
-    """[Σ cos θ, Σ u sin θ, E/E₀ − 1] of the current state (``geometry.projection``)."""
+    """[Σ a cos θ − c, Σ u a sin θ, E/E₀ − 1] of the current state (``geometry.projection``)."""
     n = st.system.n
-    F, G, E = invariants_of(st.y[:n], st.y[n:], st.system.masses)
+    F, G, E = invariants_of(st.y[:n], st.y[n:], st.system.masses, st.system.weights,
+                            st.system.level)
     return [float(F), float(G), float(E / (0.5 * st.speed ** 2) - 1.0)]
 
 
@@ -85,11 +86,12 @@ def curvature_sample(st: RunState, kdir: int, routes: str):
     n = sys_.n
     Xj = np.empty((kdir, 2 * n))
     P = np.empty((kdir + 1, n))
-    uu = curvature_frame(y, np.ascontiguousarray(st.X[:kdir]), sys_.minv, sys_.masses, Xj, P)
+    uu = curvature_frame(y, np.ascontiguousarray(st.X[:kdir]), sys_.minv, sys_.weights,
+                         sys_.masses, Xj, P)
     Kn = Ke = None
     if routes in ("numerical", "both"):
         Kn = np.empty((kdir, kdir))
-        numerical_curvature(y, Xj, P, sys_.minv, sys_.masses, st.scene.integrator["dt"], uu, Kn)
+        numerical_curvature(y, Xj, P, sys_.minv, sys_.weights, sys_.masses, st.scene.integrator["dt"], uu, Kn)
         st.rhs_frame += 8
     if routes in ("exact", "both"):
         Ke = exact_curvature_matrix(sys_, y[:n], P)

@@ -63,7 +63,8 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
 
 
 def _run_locked(scene: Scene, outdir: Path, resume: bool, quiet: bool, on_chunk) -> dict:
-    system = RotorSystem(scene.system["n"], scene.system["masses"])
+    system = RotorSystem(scene.system["n"], scene.system["masses"], scene.system.get("weights"),
+                         scene.system.get("level", 0.0))
     plan = plan_scene(scene)
     st = RunState(scene, plan, system)
     ck = outdir / CHECKPOINT

@@ -190,7 +190,7 @@ def lyapunov_result(st, out, *, t_done, **_):
     if len(marks) >= 2:
         res["stderr"] = stderr.tolist()
         res["batches"] = len(batches)
-    equal = np.allclose(st.system.masses, 1.0)
+    equal = np.allclose(st.system.masses, 1.0) and st.system.is_paper_family
     if n in PAPER_EXPONENTS and equal:
         paper = np.array(PAPER_EXPONENTS[n]) * st.speed
         res["paper"] = [round(float(p), 12) for p in paper[: ly["n_exponents"]]]
@@ -281,7 +281,7 @@ def curvature_result(st, out, **_):
     if c["route"] == "both" and len(t):
         res["max_abs_route_difference"] = float(np.abs(arr["curvature_numerical"]
                                                        - arr["curvature_exact"]).max())
-    if n == 3 and np.allclose(st.system.masses, 1.0) and len(t):
+    if n == 3 and np.allclose(st.system.masses, 1.0) and st.system.is_paper_family and len(t):
         Y = np.array(st.rec["curvature_y"])
         K22 = gaussian_curvature_eq22(Y[:, :3])
         arr["curvature_eq22"] = K22

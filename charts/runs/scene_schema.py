@@ -52,6 +52,13 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
                       "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
                       else "a list of numbers, each > 0"),
+        "weights": Key("floats", None, "Weights a₁..a_N of the constraint Σ aᵢ cos θᵢ = level, "
+                       "all > 0 (default: all 1, the paper's case; docs/families.md).",
+                       check=lambda v: None if all(x > 0 for x in v)
+                       else "a list of numbers, each > 0"),
+        "level": Key("float", 0.0, "Level c of the constraint Σ aᵢ cos θᵢ = c (default 0, the "
+                     "paper's case); |c| < Σ aᵢ, and a critical value Σ ±aᵢ warns "
+                     "(docs/families.md)."),
         "speed": Key("float", 1.0, "Speed along the geodesic ‖u‖_g = √(Σ mᵢuᵢ²) of a seeded "
                      "initial state (the paper uses 1). Not allowed with an explicit u.",
                      check=_gt(0)),

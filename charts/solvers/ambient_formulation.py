@@ -7,9 +7,9 @@ are first integrals; with ``project=True`` the state is put back on all three af
 step (``charts.geometry.projection.project_state``) and each pʲ is made tangent again.  The
 loop monitors all three at every step.
 
-Parameters: ``par = (N, 1/m (N), m (N), speed, project, cap fraction, work (3N))`` — the
-work area holds sin θ, cos θ and sin θ/m of the point being evaluated, so that no hook
-allocates; ``ipar = (N, k)``.
+Parameters: ``par = (N, 1/m (N), m (N), speed, project, cap fraction, work (3N), weights a
+(N), level c)`` — the work area holds a sin θ, a cos θ and a sin θ/m of the point being
+evaluated, so that no hook allocates; ``ipar = (N, k)``.  The constraint is Σ a cos θ = c.
 """
 from __future__ import annotations
 
@@ -29,20 +29,20 @@ __all__ = ["AmbientFlow"]
 
 @njit(cache=True, inline="always")
 def _point(y, par, n):
-    """Views of the work area: (1/m, sin θ, cos θ, sin θ/m) with sin/cos of y filled in."""
+    """Views of the work area: (1/m, a sin θ, a cos θ, a sin θ/m) with sin/cos of y filled in."""
     w = 2 * n + 4
     minv = par[1:1 + n]
     s = par[w:w + n]
     c = par[w + n:w + 2 * n]
     f = par[w + 2 * n:w + 3 * n]
-    sincos(y, 0, n, s, c)
+    sincos(y, 0, n, par[w + 3 * n:w + 4 * n], s, c)
     for j in range(n):
         f[j] = s[j] * minv[j]
     return minv, s, c, f
 
 
 def _rhs(y, par, dy):
-    """Eq (8) and eq (19); returns S = Σ sin²θ (0 at a singular point: dy is then 0)."""
+    """Eq (8) and eq (19); returns S = Σ a² sin²θ (0 at a singular point: dy is then 0)."""
     n = int(par[0])
     nv = (y.size - 2 * n) // n
     minv, s, c, f = _point(y, par, n)
@@ -66,7 +66,7 @@ def _cap(y, par, ipar):
     S = 0.0
     U = 0.0
     for j in range(n):
-        S += np.sin(y[j]) ** 2
+        S += (par[5 * n + 4 + j] * np.sin(y[j])) ** 2
         U += y[n + j] ** 2
     return step_cap(S, U, par[2 * n + 3])
 
@@ -75,7 +75,8 @@ def _cap(y, par, ipar):
 def _project(y, par, ipar):
     """Project (θ, u) onto the invariants and each p onto the tangent space, in place."""
     n = ipar[0]
-    project_state(y[:2 * n], par[1 + n:1 + 2 * n], par[2 * n + 1])
+    project_state(y[:2 * n], par[1 + n:1 + 2 * n], par[5 * n + 4:6 * n + 4], par[6 * n + 4],
+                  par[2 * n + 1])
     minv, s, c, f = _point(y, par, n)
     for r in range(ipar[1]):
         project_velocity(y, (2 + r) * n, n, s, minv)
@@ -116,6 +117,7 @@ class AmbientFlow(Formulation):
         y = np.concatenate([theta, u, P.ravel()])
         speed = float(sys.speed(u))
         par = np.concatenate([[n], sys.minv, sys.masses,
-                              [speed, float(self.project), self.cap_fraction], np.zeros(3 * n)])
+                              [speed, float(self.project), self.cap_fraction], np.zeros(3 * n),
+                              sys.weights, [sys.level]])
         ipar = np.array([n, P.shape[0]], dtype=np.int64)
         return y, par, ipar

@@ -228,6 +228,10 @@ class ChartFlow(Formulation):
     def initial(self, theta, u, P):
         n = self.n
         sys = self.system
+        if not sys.is_paper_family:
+            raise NotImplementedError(
+                f"the chart formulation is not yet written for weights/level other than 1/0 "
+                f"({sys!r}); use formulation='ambient'")
         k = sys.best_chart(theta) if self.chart is None else int(self.chart)
         nv = P.shape[0]
         row = np.concatenate([theta, u, P.ravel()])

@@ -242,7 +242,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
     arow = np.zeros(na)
     log = np.zeros((_LOG_CAPACITY, 3))
     mon = np.zeros(3)
-    masses = system.masses.copy()
+    mpar = np.concatenate([system.masses, system.weights, [system.level]])
     seg_cap = min(int(chunk_steps), 4096) if dense else 1
     Seg = np.zeros((seg_cap, D.segment_layout(ny, par.size)[3]))
     ISeg = np.zeros((seg_cap, ipar.size), dtype=np.int64)
@@ -308,7 +308,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
     status_name = "finished"
     while True:
         status = D.drive(rhs, cap, post, to_amb, y, par, ipar, st, ist, te, T_out, Y_out, log,
-                         mon, masses, K, F, ytmp, ynew, arow, Seg, ISeg)
+                         mon, mpar, K, F, ytmp, ynew, arow, Seg, ISeg)
         drain()
         if status < 0:
             t_fail = t0 + sign * st[D.S_T]
@@ -335,7 +335,7 @@ def _make_result(system, t, Y, k, mon, switches, ist, status, formulation, metho
     theta = Y[:, :n]
     u = Y[:, n:2 * n]
     transported = Y[:, 2 * n:].reshape(-1, k, n) if k else None
-    F, G, E = invariants(theta, u, system.masses)
+    F, G, E = invariants(theta, u, system.masses, system.weights, system.level)
     drift = {
         "constraint": float(max(mon[0], np.max(np.abs(F), initial=0.0))),
         "tangency": float(max(mon[1], np.max(np.abs(G), initial=0.0))),

@@ -88,10 +88,10 @@ def segment_layout(ny: int, npar: int):
 
 
 @njit(cache=True)
-def monitor(row, n, masses, e0, mon):
+def monitor(row, n, mpar, e0, mon):
     """Update ``mon`` = running max of |F|, |G|, |ΔE|/E₀ with the state ``row``; False if the
-    state is not finite."""
-    F, G, E = invariants_of(row, n, masses)
+    state is not finite.  ``mpar`` = (masses (N), weights (N), level)."""
+    F, G, E = invariants_of(row, n, mpar[:n], mpar[n:2 * n], mpar[2 * n])
     dE = abs(E - e0) / e0
     if not (math.isfinite(F) and math.isfinite(G) and math.isfinite(E)):
         return False
@@ -121,7 +121,7 @@ def _record_segment(row, irow, t, h, y, F, par, ipar):
 
 
 def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_out, log, mon,
-           masses, K, F, ytmp, ynew, arow, Seg, ISeg):
+           mpar, K, F, ytmp, ynew, arow, Seg, ISeg):
     """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
     accepted steps.  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
     times ``t_eval`` (if ``ist[I_USE_EVAL]``; ``Y_out`` then has a row for every one of
@@ -133,7 +133,7 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
 
     Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); arow (na,);
     mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
-    n = masses.size
+    n = (mpar.size - 1) // 2
     ny = y.size
     method = ist[I_METHOD]
     use_eval = ist[I_USE_EVAL] != 0
@@ -273,7 +273,7 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
             T_out[ist[I_NOUT]] = t
             ist[I_NOUT] += 1
         to_ambient(y, par, ipar, arow)
-        if not monitor(arow, n, masses, st[S_E0], mon):
+        if not monitor(arow, n, mpar, st[S_E0], mon):
             status = NONFINITE
             break
         if code == POST_LOG_FULL:

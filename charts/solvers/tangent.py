@@ -73,10 +73,10 @@ def orthonormalize(X, w, logs):
 
 
 @njit(cache=True, inline="always")
-def shift_sincos(s0, c0, dl, theta, n, s, c):
-    """s, c = sin, cos of θ = θ₀ + δ from s0, c0 = sin θ₀, cos θ₀ and δ = dl, shape (N,), by
-    the angle-addition formula (polynomials for |δ| ≤ `SHIFT_MAX`, else libm of theta).
-    s, c may be s0, c0 (in place)."""
+def shift_sincos(s0, c0, dl, theta, n, a, s, c):
+    """s, c = a sin, a cos of θ = θ₀ + δ from s0, c0 = a sin θ₀, a cos θ₀ and δ = dl, shape
+    (N,), by the angle-addition formula (linear in s0, c0, so the weights a ride along;
+    polynomials for |δ| ≤ `SHIFT_MAX`, else libm of theta).  s, c may be s0, c0 (in place)."""
     for j in range(n):
         d = dl[j]
         d2 = d * d
@@ -88,14 +88,15 @@ def shift_sincos(s0, c0, dl, theta, n, s, c):
         c[j] = cj + (cj * cm - sj * sd)
     for j in range(n):
         if abs(dl[j]) > SHIFT_MAX:
-            s[j] = sin(theta[j])
-            c[j] = cos(theta[j])
+            s[j] = a[j] * sin(theta[j])
+            c[j] = a[j] * cos(theta[j])
 
 
 @njit(cache=True, inline="always")
-def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
+def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L):
     """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X] (flat,
-    length L = R·d), with sin/cos s0, c0 of y's angles updated; the rest is work space.
+    length L = R·d), with the weighted sin/cos s0, c0 of y's angles updated (weights wts);
+    the rest is work space.
 
     n, R, d, L are unsigned (``np.uint64``, from `tangent_kernel`), so every flat index here
     and in the inlined equations is unsigned: Numba compiles a negative-index wraparound
@@ -122,7 +123,7 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
             rk4_point(Zf, K, op, a, L, Zt)
             for j in range(n):
                 dl[j] = a * K[op + j]
-            shift_sincos(s0, c0, dl, Zt, n, s, c)
+            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
         lam, B = multiplier(Zt, zero, n, minv, s, c)
         iB = 1.0 / B if B > 0.0 else 0.0
         state_rate(Zt, zero, n, minv, s, lam, K, o)
@@ -132,11 +133,11 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, h, n, R, d, L):
     rk4_combine(Zf, K, h, L, Zf)
     for j in range(n):
         dl[j] = Zf[j] - th[j]
-    shift_sincos(s0, c0, dl, Zf, n, s0, c0)
+    shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
 
 
 @njit(cache=True)
-def _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc, n, R, d, L):
+def _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
     """The step dt as ⌈dt/hc⌉ equal `_rk4_step` sub-steps (kept out of the kernel's loop, which
     it would slow down by a third); False if a sub-step starts at a singular point."""
     nsub = int(ceil(dt / hc))
@@ -146,16 +147,18 @@ def _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc, n, R, d
             S += s0[j] * s0[j]
         if S < SINGULAR_S:
             return False
-        _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt / nsub, n, R, d, L)
+        _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt / nsub, n, R, d, L)
     return True
 
 
 @njit(cache=True)
-def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, restricted,
-                   project_every, logsum, rec_start, rec_every, states, events, event_logs):
-    """Advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eqs (8) + (17).
+def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                   restricted, project_every, logsum, rec_start, rec_every, states, events,
+                   event_logs):
+    """Advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eqs (8) + (17) on the
+    constraint Σ wtsᵢ cos θᵢ = level.
 
-    ``sc`` (2, N): sin/cos of y's angles, kept current; ``counter`` (1,): global step count.
+    ``sc`` (2, N): a sin θ, a cos θ of y's angles (a = wts), kept current; ``counter`` (1,): global step count.
     After global step i: project y onto the invariants (`project_state`) when
     i % project_every == 0 (``project_every`` = 0: never); project X onto T_r (if
     ``restricted``) and re-orthonormalise (eq 18, logs added to ``logsum``) when
@@ -211,17 +214,17 @@ def tangent_kernel(Z, sc, counter, minv, m, speed, dt, nsteps, reorth_every, w, 
         if hc >= dt:
             if S < SINGULAR_S:
                 return SINGULAR, it
-            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, nu, Ru, du, Lu)
+            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, nu, Ru, du, Lu)
         else:  # near a singular point: equal sub-steps within the cap (module doc)
-            if not _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, dt, hc,
+            if not _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc,
                              nu, Ru, du, Lu):
                 return SINGULAR, it
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
             to_proj = project_every
-            project_state(y_, m, speed)
-            sincos(Zf, 0, n, s0, c0)
+            project_state(y_, m, wts, level, speed)
+            sincos(Zf, 0, n, wts, s0, c0)
         to_reorth -= 1
         if to_reorth == 0:
             to_reorth = reorth_every
@@ -310,10 +313,11 @@ class TangentFlow:
         if k:
             X = np.random.default_rng(seed).normal(size=(k, 2 * n))
             if self.restricted:
-                project_tangent(self.Z[0], X, system.minv)
+                project_tangent(self.Z[0], X, system.minv, system.weights)
             orthonormalize(X, self.w, np.zeros(k))
             self.Z[1:] = X
-        self.sc = np.vstack([np.sin(self.Z[0, :n]), np.cos(self.Z[0, :n])])
+        a = system.weights
+        self.sc = np.vstack([a * np.sin(self.Z[0, :n]), a * np.cos(self.Z[0, :n])])
         self.counter = np.zeros(1, dtype=np.int64)
         self.logsum = np.zeros(k)
 
@@ -338,7 +342,7 @@ class TangentFlow:
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_ROWS
         status, done = tangent_kernel(self.Z, self.sc, self.counter, sys_.minv, sys_.masses,
-                                      self.speed, self.dt, int(nsteps), self.reorth_every,
+                                      sys_.weights, sys_.level, self.speed, self.dt, int(nsteps), self.reorth_every,
                                       self.w, self.restricted, self.project_every, self.logsum,
                                       int(rec_start), int(rec_every), states, events,
                                       event_logs)

@@ -43,10 +43,11 @@ def routes(system, theta, u, T, tc, rtol):
     each callable returns (steps, rhs evaluations, θ at tc)."""
     n = system.n
     minv = system.minv
+    wts = system.weights
     dy = np.empty(2 * n)
 
     def f(t, y):
-        flow_rhs(y, minv, dy)
+        flow_rhs(y, minv, wts, dy)
         return dy.copy()
 
     y0 = np.concatenate([theta, u])

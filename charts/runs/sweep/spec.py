@@ -25,7 +25,7 @@ __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
 
 MODES = ("grid", "random")
 #: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns.
-SYSTEM_AXES = {"n": "n", "speed": "speed"}
+SYSTEM_AXES = {"n": "n", "speed": "speed", "level": "level"}
 
 
 class SweepError(ValueError):
