@@ -40,10 +40,10 @@ n = 4
 [initial]
 seed = 5
 [run]
-t_final = 3000.0
+t_final = 60000.0
 t_transient = 10.0
 sample_dt = 1.0
-checkpoint_every = 200.0
+checkpoint_every = 4000.0
 [effects.lyapunov]
 n_batches = 5
 [effects.drift]
