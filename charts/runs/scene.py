@@ -30,7 +30,7 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 from ..solvers.status import check_step
-from .scene_checks import (Problems, coerce, multiple_of, section_values, unknown_key,
+from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
                            where)
 from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError
 
@@ -85,16 +85,8 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     if not isinstance(data, dict):
         raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
     problems = Problems(source)      # key-level problems of every section, reported together
-    allowed_top = set(TOP_KEYS) | set(SCHEMA) | {"effects"}
-    for key in data:
-        if key not in allowed_top:
-            problems.messages.append(str(unknown_key(source, None, key, allowed_top)))
-    top = {}
-    for key, spec in TOP_KEYS.items():
-        top[key] = spec.default
-        if key in data:
-            with problems.check():
-                top[key] = coerce(source, None, key, spec, data[key])
+    top = table_values(source, data, None, TOP_KEYS, problems,
+                       allowed=set(TOP_KEYS) | set(SCHEMA) | {"effects"})
     name = top["name"] or default_name
 
     system, _ = section_values(source, data, "system", SCHEMA["system"], problems)

@@ -11,7 +11,7 @@ from contextlib import contextmanager
 from .scene_schema import GRID_RTOL, Key, SceneError
 
 __all__ = ["Problems", "where", "unknown_key", "is_number", "coerce", "section_values",
-           "multiple_of"]
+           "table_values", "multiple_of"]
 
 
 def where(source, section, key):
@@ -107,9 +107,17 @@ def section_values(source, data, section, schema, problems, label=None):
     if not isinstance(raw, dict):
         problems.messages.append(f"{source}: [{section}] must be a table, got {raw!r}")
         raw = {}
+    return table_values(source, raw, section, schema, problems), raw
+
+
+def table_values(source, raw, section, schema, problems, allowed=None):
+    """The keys of ``schema`` in the table ``raw`` (``section`` None: the top level),
+    validated, defaults filled in; keys outside ``allowed`` (default: the schema's) and
+    every other problem go to ``problems``."""
+    allowed = schema if allowed is None else allowed
     for key in raw:
-        if key not in schema:
-            problems.messages.append(str(unknown_key(source, section, key, schema)))
+        if key not in allowed:
+            problems.messages.append(str(unknown_key(source, section, key, allowed)))
     out = {}
     for key, spec in schema.items():
         out[key] = spec.default
@@ -118,7 +126,7 @@ def section_values(source, data, section, schema, problems, label=None):
                 out[key] = coerce(source, section, key, spec, raw[key])
         elif spec.required:
             problems.messages.append(f"{where(source, section, key)} is required ({spec.doc})")
-    return out, raw
+    return out
 
 
 def multiple_of(source, section, key, value, base, base_name):
