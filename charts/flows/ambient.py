@@ -29,6 +29,14 @@ same code serves every layout: the stacked state [y; X] of the tangent kernel, t
 state (θ, u, p¹…pᵏ) of the integration loop and plain (2N,) vectors.  No call allocates.
 The wrappers at the end (`flow_rhs`, `flow_tangent_rhs`, `adjoint_rhs`, `transport_rhs`)
 evaluate them on ordinary arrays for Python callers and tests.
+
+Lanes.  Eqs (8) and (17) are written once per rotor, as the scalar *terms* below
+(`a_term`, `b_term`, `multiplier_of`, `acceleration`, `factor_f` … `factor_q`,
+`tangent_term`, `tangent_acceleration`); the flat-array loops call them, one trajectory at a time
+(`multiplier` … `tangent_rate`) or for L independent trajectories at once (``*_lanes``:
+structure of arrays, element i of lane l at ``i·L + l``, the lane innermost so that the
+arithmetic vectorises across lanes).  Both loops do the same operations in the same order
+for each lane, so a lane gives the bits of the one-trajectory route.
 """
 from __future__ import annotations
 
@@ -38,7 +46,10 @@ import numpy as np
 from numba import njit
 
 __all__ = [
-    "sincos", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
+    "a_term", "b_term", "multiplier_of", "acceleration", "factor_f", "factor_g", "factor_p",
+    "factor_q", "tangent_term",
+    "tangent_acceleration", "multiplier_lanes", "state_rate_lanes", "tangent_factors_lanes",
+    "tangent_rate_lanes", "sincos", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
     "adjoint_rate", "state_stage", "stage_work", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
 ]
 
@@ -51,6 +62,70 @@ def sincos(y, o, n, a, s, c):
         c[j] = a[j] * cos(y[o + j])
 
 
+# ------------------------------------------------------------------ the terms, per rotor
+@njit(cache=True, inline="always")
+def a_term(u, c):
+    """The j-th term u² c of A = Σ u² c (Λ = A/B, eq 8)."""
+    return u * u * c
+
+
+@njit(cache=True, inline="always")
+def b_term(s, minv):
+    """The j-th term s²/m of B = Σ s²/m (eq 8)."""
+    return s * s * minv
+
+
+@njit(cache=True, inline="always")
+def multiplier_of(A, B):
+    """(Λ, 1/B) of eq (8) from the sums A, B; both 0 where B = 0 (a singular point)."""
+    if B > 0.0:
+        return A / B, 1.0 / B
+    return 0.0, 0.0
+
+
+@njit(cache=True, inline="always")
+def acceleration(lam, s, minv):
+    """u̇ᵢ = −Λ sᵢ / mᵢ of eq (8)."""
+    return -lam * s * minv
+
+
+@njit(cache=True, inline="always")
+def factor_f(s, minv):
+    """fᵢ = sᵢ/mᵢ of eq (17)."""
+    return s * minv
+
+
+@njit(cache=True, inline="always")
+def factor_g(lam, c, minv):
+    """gᵢ = Λcᵢ/mᵢ of eq (17)."""
+    return lam * c * minv
+
+
+@njit(cache=True, inline="always")
+def factor_p(u, c):
+    """pᵢ = 2uᵢcᵢ of eq (17)."""
+    return 2.0 * u * c
+
+
+@njit(cache=True, inline="always")
+def factor_q(s, u, g):
+    """qᵢ = sᵢ(uᵢ² + 2gᵢ) of eq (17)."""
+    return s * (u * u + 2.0 * g)
+
+
+@njit(cache=True, inline="always")
+def tangent_term(p, q, xu, xt):
+    """The j-th term pⱼ ũⱼ − qⱼ θ̃ⱼ of B·δΛ in eq (17)."""
+    return p * xu - q * xt
+
+
+@njit(cache=True, inline="always")
+def tangent_acceleration(dlam, f, g, xt):
+    """ũ̇ᵢ = −(δΛ fᵢ + gᵢ θ̃ᵢ) of eq (17)."""
+    return -(dlam * f + g * xt)
+
+
+# ------------------------------------------------------------------ one trajectory
 @njit(cache=True, inline="always")
 def multiplier(y, o, n, minv, s, c):
     """(Λ, B) of eq (8) at the state y[o:o+2N] with sin/cos s, c of its angles.
@@ -58,9 +133,8 @@ def multiplier(y, o, n, minv, s, c):
     A = 0.0
     B = 0.0
     for j in range(n):
-        u = y[o + n + j]
-        A += u * u * c[j]
-        B += s[j] * s[j] * minv[j]
+        A += a_term(y[o + n + j], c[j])
+        B += b_term(s[j], minv[j])
     if B > 0.0:
         return A / B, B
     return 0.0, B
@@ -71,7 +145,7 @@ def state_rate(y, o, n, minv, s, lam, dy, do):
     """Eq (8): dy[do:do+2N] = (u, −Λ sin θ / m) for the state y[o:o+2N]."""
     for i in range(n):
         dy[do + i] = y[o + n + i]
-        dy[do + n + i] = -lam * s[i] * minv[i]
+        dy[do + n + i] = acceleration(lam, s[i], minv[i])
 
 
 @njit(cache=True, inline="always")
@@ -79,10 +153,10 @@ def tangent_factors(y, o, n, minv, s, c, lam, f, g, p, q):
     """The factors f, g, p, q of eq (17) at the state y[o:o+2N] (see the module doc)."""
     for j in range(n):
         u = y[o + n + j]
-        f[j] = s[j] * minv[j]
-        g[j] = lam * c[j] * minv[j]
-        p[j] = 2.0 * u * c[j]
-        q[j] = s[j] * (u * u + 2.0 * g[j])
+        f[j] = factor_f(s[j], minv[j])
+        g[j] = factor_g(lam, c[j], minv[j])
+        p[j] = factor_p(u, c[j])
+        q[j] = factor_q(s[j], u, g[j])
 
 
 @njit(cache=True, inline="always")
@@ -90,11 +164,11 @@ def tangent_rate(x, o, n, f, g, p, q, iB, dx, do):
     """Eq (17): dx[do:do+2N] = d/dt of the tangent vector x[o:o+2N]; iB = 1/B."""
     acc = 0.0
     for j in range(n):
-        acc += p[j] * x[o + n + j] - q[j] * x[o + j]
+        acc += tangent_term(p[j], q[j], x[o + n + j], x[o + j])
     dlam = acc * iB
     for i in range(n):
         dx[do + i] = x[o + n + i]
-        dx[do + n + i] = -(dlam * f[i] + g[i] * x[o + i])
+        dx[do + n + i] = tangent_acceleration(dlam, f[i], g[i], x[o + i])
 
 
 @njit(cache=True, inline="always")
@@ -122,6 +196,68 @@ def adjoint_rate(x, o, n, y, yo, minv, s, c, lam, iB, dx, do):
         dx[do + n + j] = -(x[o + j] - 2.0 * u * c[j] * iB * sb)
 
 
+# ------------------------------------------------------------------ L trajectories (lanes)
+@njit(cache=True, inline="always")
+def multiplier_lanes(y, o, n, L, minv, s, c, lam, iB):
+    """Eq (8)'s (Λ, 1/B) of the L states y[o + i·L + l] (i < 2N) into lam, iB, shape (L,);
+    s, c shape (N·L,) (element j·L + l)."""
+    for l in range(L):
+        lam[l] = 0.0
+        iB[l] = 0.0
+    for j in range(n):
+        for l in range(L):
+            lam[l] += a_term(y[o + (n + j) * L + l], c[j * L + l])
+            iB[l] += b_term(s[j * L + l], minv[j])
+    for l in range(L):
+        lam[l], iB[l] = multiplier_of(lam[l], iB[l])
+
+
+@njit(cache=True, inline="always")
+def state_rate_lanes(y, o, n, L, minv, s, lam, dy, do):
+    """Eq (8) of the L states y[o + i·L + l] into dy[do + i·L + l]."""
+    for i in range(n):
+        for l in range(L):
+            dy[do + i * L + l] = y[o + (n + i) * L + l]
+    for i in range(n):
+        for l in range(L):
+            dy[do + (n + i) * L + l] = acceleration(lam[l], s[i * L + l], minv[i])
+
+
+@njit(cache=True, inline="always")
+def tangent_factors_lanes(y, o, n, L, minv, s, c, lam, f, g, p, q):
+    """The factors of eq (17) of the L states y[o + i·L + l] into f, g, p, q, shape (N·L,)."""
+    for j in range(n):
+        for l in range(L):
+            e = j * L + l
+            u = y[o + (n + j) * L + l]
+            f[e] = factor_f(s[e], minv[j])
+            g[e] = factor_g(lam[l], c[e], minv[j])
+            p[e] = factor_p(u, c[e])
+            q[e] = factor_q(s[e], u, g[e])
+
+
+@njit(cache=True, inline="always")
+def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
+    """Eq (17) of the L tangent vectors x[o + i·L + l] into dx[do + i·L + l]; dlam, shape
+    (L,), is work space."""
+    for l in range(L):
+        dlam[l] = 0.0
+    for j in range(n):
+        for l in range(L):
+            e = j * L + l
+            dlam[l] += tangent_term(p[e], q[e], x[o + (n + j) * L + l], x[o + j * L + l])
+    for l in range(L):
+        dlam[l] *= iB[l]
+    for i in range(n):
+        for l in range(L):
+            dx[do + i * L + l] = x[o + (n + i) * L + l]
+    for i in range(n):
+        for l in range(L):
+            e = i * L + l
+            dx[do + (n + i) * L + l] = tangent_acceleration(dlam[l], f[e], g[e], x[o + e])
+
+
+# ------------------------------------------------------------------ stages
 @njit(cache=True, inline="always")
 def state_stage(y, o, n, minv, a, s, c, dy, do):
     """Eq (8) at the state y[o:o+2N] into dy[do:do+2N], filling s, c = a sin θ, a cos θ;

@@ -16,11 +16,11 @@ kernel) keeps its grid: a capped step is cut into equal sub-steps.
 from __future__ import annotations
 
 import warnings
-from math import sqrt
+from math import isfinite, sqrt
 
 from numba import njit
 
-__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "RUNNING",
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "fixed_step_status", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
            "status_error", "StepSizeWarning", "check_step", "check_duration", "MAX_STEP_LENGTH",
@@ -48,6 +48,20 @@ def step_cap(S, U, fraction):
     if U == 0.0:
         return 1e300
     return fraction * sqrt(S / U)
+
+
+@njit(cache=True, inline="always")
+def fixed_step_status(S, U, dt, fraction):
+    """The policy for a fixed step ``dt`` from a point with Σ sin²θ = S and speed² U:
+    (NONFINITE, 0) if S + U is not finite; (SINGULAR, cap) if the step is not capped and
+    S < `SINGULAR_S`; else (RUNNING, cap), where cap < dt means: cut the step into equal
+    sub-steps within the cap, each starting with the singular-point test."""
+    if not isfinite(S + U):
+        return NONFINITE, 0.0
+    hc = step_cap(S, U, fraction)
+    if hc >= dt and S < SINGULAR_S:
+        return SINGULAR, hc
+    return RUNNING, hc
 
 
 #: Most steps one duration may hold (2⁴⁰ ≈ 1.1·10¹²: days of CPU time at the kernel's rate);

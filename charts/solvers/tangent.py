@@ -29,10 +29,11 @@ from ..flows.ambient import (multiplier, sincos, stage_work, state_rate, tangent
                              tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
 from .rk import rk4_combine, rk4_node, rk4_point
-from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
+from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, fixed_step_status,
+                     status_error, step_cap)
 
 __all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos",
-           "reorth_steps", "REORTH_TIME"]
+           "reorth_steps", "substeps", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -137,7 +138,7 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d
 
 
 @njit(cache=True)
-def _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
+def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
     """The step dt as ⌈dt/hc⌉ equal `_rk4_step` sub-steps (kept out of the kernel's loop, which
     it would slow down by a third); False if a sub-step starts at a singular point."""
     nsub = int(ceil(dt / hc))
@@ -216,7 +217,7 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
                 return SINGULAR, it
             _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, nu, Ru, du, Lu)
         else:  # near a singular point: equal sub-steps within the cap (module doc)
-            if not _substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc,
+            if not substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc,
                              nu, Ru, du, Lu):
                 return SINGULAR, it
         counter[0] += 1
