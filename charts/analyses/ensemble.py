@@ -11,7 +11,7 @@ from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
 from .statistics import standard_error
 
-__all__ = ["EnsembleResult", "run_ensemble"]
+__all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result"]
 
 
 @dataclass
@@ -89,11 +89,9 @@ class EnsembleResult(Archivable):
 
 
 def _member(job):
-    fn, n, masses, seed, speed, t_final, kwargs = job
-    from ..geometry.system import RotorSystem
-    system = RotorSystem(n, masses)
+    fn, system, seed, speed, t_final, kwargs = job
     theta0, u0 = system.random_state(seed=seed, speed=speed)
-    return fn(system, theta0, u0, t_final, seed=seed, **kwargs)
+    return [fn(system, theta0, u0, t_final, seed=seed, **kwargs)]
 
 
 def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
@@ -102,6 +100,16 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     states of speed ``speed`` (seeds seed, seed+1, …), in ``workers`` processes (default:
     all cores; 1: in this process).  Members whose results have ``exponents`` give the
     ensemble's mean and standard error."""
+    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                       workers, progress)
+    jobs = [(fn, system, seed + i, speed, t_final, kwargs)
+            for i in range(n_trajectories)]
+    members = map_jobs(_member, jobs, [1] * len(jobs), workers, t_final, progress, desc)
+    return ensemble_result(members, system, seed, speed, t_final, kwargs)
+
+
+def ensemble_arguments(n_trajectories, t_final, speed, seed, workers, progress):
+    """Checked (n_trajectories, seed, workers) of an ensemble (ValueError naming the bad one)."""
     n_trajectories = positive_int("n_trajectories", n_trajectories, 2)
     seed = positive_int("seed", seed, 0)
     if workers is not None:
@@ -109,16 +117,23 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     positive_time("t_final", t_final)
     positive_time("speed", speed)
     check_progress(progress)
-    jobs = [(fn, system.n, system.masses, seed + i, speed, t_final, kwargs)
-            for i in range(n_trajectories)]
+    return n_trajectories, seed, workers
+
+
+def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc):
+    """The members of ``fn(job)`` for the jobs, in order (each returns a list of ``sizes[i]``
+    members), in ``workers`` processes (default all cores; 1: in this process); progress in
+    simulated time (members done × t_final)."""
     if workers == 1:
-        it = map(_member, jobs)
-        members = _collect(it, len(jobs), t_final, progress, desc)
-    else:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            members = _collect(pool.map(_member, jobs), len(jobs), t_final, progress, desc)
+        return _collect(map(fn, jobs), sizes, t_final, progress, desc)
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        return _collect(pool.map(fn, jobs), sizes, t_final, progress, desc)
+
+
+def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleResult:
+    """The `EnsembleResult` of ``members`` (seeds seed, seed+1, …)."""
     res = EnsembleResult(members, params=dict(n=system.n, masses=system.masses.tolist(),
-                                              n_trajectories=n_trajectories, seed=seed,
+                                              n_trajectories=len(members), seed=seed,
                                               speed=speed, t_final=t_final, **kwargs))
     if all(hasattr(m, "exponents") for m in members):
         E = np.array([m.exponents for m in members])
@@ -126,12 +141,12 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     return res
 
 
-def _collect(it, total, t_final, progress, desc):
+def _collect(it, sizes, t_final, progress, desc):
     """The members in order; progress in simulated time (members done × t_final)."""
-    rep = progress_reporter(progress, total * t_final, desc)
+    rep = progress_reporter(progress, sum(sizes) * t_final, desc)
     out = []
-    for r in it:
-        out.append(r)
-        rep.update(t_final)
+    for r, size in zip(it, sizes):
+        out.extend(r)
+        rep.update(size * t_final)
     rep.close()
     return out

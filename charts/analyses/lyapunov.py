@@ -16,7 +16,8 @@ independent trajectories in parallel processes and uses their spread.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import os
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -24,14 +25,16 @@ from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.projection import project_tangent
+from ..solvers.lanes import LaneFlows
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         start_state, steps_of)
-from .ensemble import EnsembleResult, run_ensemble
+from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
 from .statistics import batch_ends, batch_estimates
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
-           "lyapunov_spectrum", "lyapunov_ensemble", "reconstruct_spectrum",
+           "lyapunov_spectrum", "lyapunov_ensemble", "lyapunov_lanes", "lyapunov_schedule",
+           "lyapunov_result", "chunk_sizes", "LANE_BLOCK", "reconstruct_spectrum",
            "identify_nonphysical", "exponents_from_marks"]
 
 
@@ -238,47 +241,110 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
                             reorth_every=reorth_every, project_every=project_every,
                             record_every=record_every, seed=seed)
     flow = lyapunov_flow(system, theta0, u0, cfg)
-    n, k = system.n, cfg.k
-    rep = progress_reporter(progress, (cfg.transient + cfg.total) * cfg.dt, f"Lyapunov N={n}")
+    rep = progress_reporter(progress, (cfg.transient + cfg.total) * cfg.dt,
+                            f"Lyapunov N={system.n}")
     where = "lyapunov_spectrum (ambient RK4)"
     flow.advance(cfg.transient, where=where)
     rep.update(cfg.transient * cfg.dt)
     flow.logsum[:] = 0.0
-    records = sorted(set(range(cfg.record, cfg.total + 1, cfg.record)) | {cfg.total})
-    ends = cfg.batch_ends
-    events = sorted(set(records) | set(ends))          # steps after the transient
-    logs = np.zeros((len(events), k))
+    records, ends, events = lyapunov_schedule(cfg)
+    logs = np.zeros((len(events), cfg.k))
     at = np.array(events, dtype=np.int64) + flow.steps  # the kernel counts from the start
-    c = min(cfg.total, 100)                  # ~100 calls: progress without per-record cost
-    for size in np.diff([cfg.total * i // c for i in range(c + 1)]):
+    for size in chunk_sizes(cfg):
         flow.advance(size, events=at, event_logs=logs, where=where)
         rep.update(size * cfg.dt)
     rep.close()
+    return lyapunov_result(system, cfg, logs, flow.speed)
+
+
+def lyapunov_schedule(cfg: LyapunovSettings):
+    """(records, batch ends, events): steps after the transient of the convergence history,
+    of the batch ends, and of both (sorted), at which a run stores its log-norm sums."""
+    records = sorted(set(range(cfg.record, cfg.total + 1, cfg.record)) | {cfg.total})
+    ends = cfg.batch_ends
+    return records, ends, sorted(set(records) | set(ends))
+
+
+def chunk_sizes(cfg: LyapunovSettings):
+    """The averaging steps cut into ~100 calls of the kernel (progress without per-record
+    cost; the kernels are chunk-independent, so the cut changes no bit)."""
+    c = min(cfg.total, 100)
+    return np.diff([cfg.total * i // c for i in range(c + 1)])
+
+
+def lyapunov_result(system, cfg: LyapunovSettings, logs, speed) -> LyapunovResult:
+    """The `LyapunovResult` of a run from its log-norm sums ``logs`` (events, k) at the
+    events of `lyapunov_schedule`; ``speed`` = |u0|."""
+    n, k = system.n, cfg.k
+    records, ends, events = lyapunov_schedule(cfg)
     row = {e: i for i, e in enumerate(events)}
     hist = logs[[row[r] for r in records]]
     marks = logs[[row[e] for e in ends]]
     exps, batches, stderr = exponents_from_marks(marks, ends, cfg.dt)
     t_rec = np.array(records, dtype=float) * cfg.dt
     running = hist / t_rec[:, None]
-    restricted = space == "restricted"
-    if restricted and k == 2 * n - 2:
+    if cfg.space == "restricted" and k == 2 * n - 2:
         spectrum = exps.copy()
     else:
         spectrum = reconstruct_spectrum(exps[: n - 2]) if k >= n - 2 else None
     params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
                   level=system.level, t_final=cfg.total * cfg.dt, dt=cfg.dt,
-                  inner=inner, space=space, t_transient=cfg.transient * cfg.dt,
+                  inner=cfg.inner, space=cfg.space, t_transient=cfg.transient * cfg.dt,
                   n_batches=cfg.n_batches, reorth_every=cfg.reorth * cfg.dt,
-                  project_every=cfg.project * cfg.dt or None, speed=flow.speed, seed=cfg.seed)
+                  project_every=cfg.project * cfg.dt or None, speed=speed, seed=cfg.seed)
     return LyapunovResult(exps, stderr, spectrum, t_rec, running, batches, params)
 
 
 def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
                       progress=False, **kwargs) -> EnsembleResult:
-    """`lyapunov_spectrum` from ``n_trajectories`` independent random initial states (seeds
-    seed, seed+1, …; also the seeds of their tangent vectors) in parallel processes
-    (``workers``; default all cores).  Returns an `EnsembleResult`: ``members``, and
-    ``exponents`` / ``stderr``, the mean over the trajectories and its standard error."""
-    return run_ensemble(lyapunov_spectrum, system, n_trajectories, t_final, speed=speed,
-                        seed=seed, workers=workers, progress=progress,
-                        desc=f"Lyapunov N={system.n} ensemble", **kwargs)
+    """`lyapunov_spectrum` from ``n_trajectories`` independent random initial states of speed
+    ``speed`` (seeds seed, seed+1, …; also the seeds of their tangent vectors; ``kwargs``:
+    the settings of `lyapunov_spectrum`).
+
+    The trajectories advance together in the vector lanes of one kernel
+    (``charts.solvers.lanes``), in blocks of up to `LANE_BLOCK`, the blocks in ``workers``
+    parallel processes (default: all cores; 1: in this process).  Each member is the
+    `LyapunovResult` of `lyapunov_spectrum` on its state, bit for bit
+    (tests/test_lanes.py).  A member that stops (e.g. at a singular point) raises the error
+    `lyapunov_spectrum` raises for it, naming its seed.  Returns an `EnsembleResult`:
+    ``members``, and ``exponents`` / ``stderr``, the mean over the trajectories and its
+    standard error."""
+    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                       workers, progress)
+    cfg = lyapunov_settings(system, t_final, seed=seed, **kwargs)
+    cores = workers or os.cpu_count() or 1
+    n_blocks = min(n_trajectories, max(cores, -(-n_trajectories // LANE_BLOCK)))
+    cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
+    jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
+    members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), 1 if n_blocks == 1 else workers,
+                       t_final, progress, f"Lyapunov N={system.n} ensemble")
+    return ensemble_result(members, system, seed, speed, t_final, kwargs)
+
+
+#: Most trajectories one lane kernel advances together (larger ensembles: several blocks).
+LANE_BLOCK = 64
+
+
+def lyapunov_lanes(job):
+    """[`LyapunovResult`] of the seeds of ``job`` = (system, settings, seeds, speed), from
+    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows`."""
+    system, cfg, seeds, speed = job
+    cfgs = [replace(cfg, seed=s) for s in seeds]
+    flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
+             for s, c in zip(seeds, cfgs)]
+    lanes = LaneFlows(flows)
+
+    def advance(steps, **kw):
+        lanes.advance(steps, **kw)
+        for l in lanes.stopped_lanes()[:1]:
+            raise lanes.error(l, f"lyapunov_ensemble (ambient RK4, member seed={seeds[l]})")
+
+    advance(cfg.transient)
+    lanes.logsum[...] = 0.0
+    _, _, events = lyapunov_schedule(cfg)
+    logs = np.zeros((len(events), len(seeds), cfg.k))
+    at = np.array(events, dtype=np.int64) + lanes.steps
+    for size in chunk_sizes(cfg):
+        advance(size, events=at, event_logs=logs)
+    return [lyapunov_result(system, c, logs[:, i], f.speed)
+            for i, (c, f) in enumerate(zip(cfgs, flows))]

@@ -130,6 +130,8 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     dl = np.empty(nl)
     s, c, f, g, p, q = np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl)
     lam, iB, dlam, S, U = np.empty(L), np.empty(L), np.empty(L), np.empty(L), np.empty(L)
+    code = np.empty(L, dtype=np.int64)
+    cap = np.empty(L)
     wl = np.empty(nl)
     for j in range(n):
         for l in range(L):
@@ -163,11 +165,13 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             for l in range(L):
                 S[l] += s0[j * L + l] * s0[j * L + l]
                 U[l] += Zf[(n + j) * L + l] * Zf[(n + j) * L + l]
+        for l in range(L):  # the policy, across the lanes
+            code[l], cap[l] = fixed_step_status(S[l], U[l], dt, _CAP)
         nsub = 0
         for l in range(L):
-            if status[l] != RUNNING:
+            if status[l] != RUNNING or (code[l] == RUNNING and cap[l] >= dt):
                 continue
-            st, hc = fixed_step_status(S[l], U[l], dt, _CAP)
+            st, hc = code[l], cap[l]
             if st != RUNNING:
                 _stop(l, st, counter[0], Z, sc, status, stopped, frozen)
             elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
@@ -294,9 +298,14 @@ class LaneFlows:
         """Lane l's stacked state Z, shape (1 + k, 2N) (a copy)."""
         return self.Z[:, l].reshape(-1, 2 * self.system.n).copy()
 
+    def stopped_lanes(self):
+        """The lanes that stopped (see `error`), in order."""
+        return [int(l) for l in np.flatnonzero(self.status != RUNNING)]
+
     def advance(self, nsteps, *, events=None, event_logs=None) -> int:
-        """Advance ``nsteps`` steps (events as `lanes_kernel` says); returns the number of
-        running lanes (see `errors` for the others)."""
+        """Advance ``nsteps`` steps; at the global steps ``events`` (sorted), store every
+        running lane's log-norm sums in ``event_logs`` (E, L, k).  Returns the number of
+        running lanes (see `error` for the others)."""
         sys_ = self.system
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_LOGS
@@ -306,7 +315,7 @@ class LaneFlows:
                             self.restricted, self.project_every, self.logsum, events,
                             event_logs)
 
-    def errors(self, where):
-        """{lane: the exception `TangentFlow.advance` raises for it} for the stopped lanes."""
-        return {int(l): status_error(int(self.status[l]), int(self.stopped[l]) * self.dt, where)
-                for l in np.flatnonzero(self.status != RUNNING)}
+    def error(self, l, where):
+        """The exception `TangentFlow.advance` raises for the stopped lane l (``where`` names
+        the route)."""
+        return status_error(int(self.status[l]), int(self.stopped[l]) * self.dt, where)

@@ -87,10 +87,14 @@ def shift_sincos(s0, c0, dl, theta, n, a, s, c):
         cj = c0[j]
         s[j] = sj + (sj * cm + cj * sd)
         c[j] = cj + (cj * cm - sj * sd)
+    big = 0  # (a vectorisable count first: the test is rare and the loop below is not)
     for j in range(n):
-        if abs(dl[j]) > SHIFT_MAX:
-            s[j] = a[j] * sin(theta[j])
-            c[j] = a[j] * cos(theta[j])
+        big += abs(dl[j]) > SHIFT_MAX
+    if big:
+        for j in range(n):
+            if abs(dl[j]) > SHIFT_MAX:
+                s[j] = a[j] * sin(theta[j])
+                c[j] = a[j] * cos(theta[j])
 
 
 @njit(cache=True, inline="always")
