@@ -1,0 +1,131 @@
+"""The lane kernel (``charts.solvers.lanes``) against the one-trajectory tangent kernel: every
+lane does the same operations in the same order, so the comparison is exact (bit for bit,
+tolerance 0), with masses, with the constraint family (weights, level), through chunking,
+and with a lane that stops at a singular point or on a non-finite state beside lanes that
+go on."""
+import numpy as np
+import pytest
+
+import charts
+from charts.analyses.lyapunov import lyapunov_ensemble, lyapunov_spectrum
+from charts.geometry.system import RotorSystem
+from charts.solvers.lanes import LaneFlows
+from charts.solvers.status import NONFINITE, RUNNING, SINGULAR
+from charts.solvers.tangent import TangentFlow
+
+SYSTEMS = {
+    "N=3": RotorSystem(3),
+    "N=4 masses": RotorSystem(4, [1.0, 2.0, 0.5, 1.5]),
+    "N=5": RotorSystem(5),
+    "N=4 weights, level": RotorSystem(4, [1.0, 1.5, 1.0, 0.7], weights=[1.0, 2.0, 1.5, 1.0],
+                                      level=0.4),
+}
+
+
+def _flows(system, states, k, seeds=None):
+    seeds = range(len(states)) if seeds is None else seeds
+    return [TangentFlow(system, th, u, k, dt=0.01, reorth_every=10, project_every=100, seed=s)
+            for (th, u), s in zip(states, seeds)]
+
+
+@pytest.mark.parametrize("name", sorted(SYSTEMS))
+def test_every_lane_equals_the_tangent_kernel_bit_for_bit(name):
+    """Lanes (an odd count: no lane-count assumption) against one `TangentFlow` each, after
+    steps that include projections (every 100) and re-orthonormalisations (every 10), in
+    uneven chunks for the lanes: identical states, sin/cos and log-norm sums."""
+    system = SYSTEMS[name]
+    k = system.n - 1
+    states = [system.random_state(seed=s) for s in range(5)]
+    singles = _flows(system, states, k)
+    lanes = LaneFlows(_flows(system, states, k))
+    for f in singles:
+        f.advance(450)
+    for chunk in (1, 99, 350):
+        assert lanes.advance(chunk) == 5
+    for i, f in enumerate(singles):
+        assert np.array_equal(lanes.lane(i), f.Z)
+        assert np.array_equal(lanes.sc[:, :, i], f.sc)
+        assert np.array_equal(lanes.logsum[i], f.logsum)
+    assert lanes.steps == 450
+
+
+@pytest.mark.parametrize("name", ["N=3", "N=4 weights, level"])
+def test_ensemble_members_equal_lyapunov_spectrum(name):
+    """Each member of `lyapunov_ensemble` is `lyapunov_spectrum` on its own random state and
+    seed: exponents, batches, history and settings identical."""
+    system = SYSTEMS[name]
+    kw = dict(t_transient=2.0, n_batches=4, record_every=2.0)
+    ens = lyapunov_ensemble(system, 3, 8.0, seed=7, workers=1, speed=1.3, **kw)
+    for i, m in enumerate(ens.members):
+        th, u = system.random_state(seed=7 + i, speed=1.3)
+        r = lyapunov_spectrum(system, th, u, 8.0, seed=7 + i, **kw)
+        for a in ("exponents", "stderr", "batches", "history", "history_t"):
+            assert np.array_equal(getattr(m, a), getattr(r, a)), a
+        assert m.params == r.params
+    E = np.array([m.exponents for m in ens.members])
+    assert np.array_equal(ens.exponents, E.mean(axis=0))
+
+
+# the N = 4 geodesic aimed exactly through the singular point (0, 0, π, π)
+# (tests/test_singular_policy.py)
+_A, _B = 0.42426406871192845, 0.565685424949238
+THROUGH = (np.array([0.0, 0.0, np.pi, np.pi]) - np.array([_A, _B, _A, _B]),
+           np.array([_A, _B, _A, _B]))
+
+
+def test_a_stopping_lane_is_frozen_and_leaves_the_others_alone():
+    """Lane 1 runs into the singular point, lane 3 starts with a NaN velocity: they stop with
+    the status, time and state the one-trajectory kernel stops with, and lanes 0 and 2 equal
+    their own `TangentFlow` s to the bit."""
+    system = RotorSystem(4)
+    states = [system.random_state(seed=1), THROUGH, system.random_state(seed=2),
+              system.random_state(seed=3)]
+    singles = _flows(system, states, 2)
+    lanes = LaneFlows(_flows(system, states, 2))
+    n = system.n
+    lanes.Z[n, 3] = np.nan                    # lane 3: u₀ = NaN
+    singles[3].Z[0, 0 + n] = np.nan
+    assert lanes.advance(300) == 2
+    assert lanes.stopped_lanes() == [1, 3]
+    assert list(lanes.status) == [RUNNING, SINGULAR, RUNNING, NONFINITE]
+    for i in (0, 2):
+        singles[i].advance(300)
+        assert np.array_equal(lanes.lane(i), singles[i].Z)
+        assert np.array_equal(lanes.logsum[i], singles[i].logsum)
+    for i, exc in ((1, charts.SingularPointError), (3, charts.IntegrationError)):
+        with pytest.raises(exc) as single:
+            singles[i].advance(300)
+        err = lanes.error(i, "RK4")
+        assert type(err) is type(single.value) and str(err) == str(single.value)
+        assert np.array_equal(lanes.lane(i), singles[i].Z, equal_nan=True)
+        assert np.array_equal(lanes.sc[:, :, i], singles[i].sc)
+    # the stopped lanes stay frozen through further calls
+    frozen = lanes.Z[:, [1, 3]].copy()
+    lanes.advance(20)
+    assert np.array_equal(lanes.Z[:, [1, 3]], frozen, equal_nan=True)
+
+
+def test_ensemble_reports_the_member_that_stops():
+    """`lyapunov_ensemble` raises the error `lyapunov_spectrum` raises for the member, naming
+    its seed (here a system whose random states are replaced by the singular geodesic)."""
+
+    class Aimed(RotorSystem):
+        def random_state(self, seed=0, speed=1.0):
+            return THROUGH if seed == 11 else super().random_state(seed=seed, speed=speed)
+
+    system = Aimed(4)
+    with pytest.raises(charts.SingularPointError, match=r"seed=11\).*t = 1\b"):
+        lyapunov_ensemble(system, 3, 4.0, seed=10, workers=1, t_transient=0.0, n_batches=2)
+    with pytest.raises(charts.SingularPointError, match=r"t = 1\b"):
+        lyapunov_spectrum(system, *THROUGH, 4.0, t_transient=0.0, n_batches=2)
+
+
+def test_lanes_refuse_mixed_settings():
+    system = RotorSystem(3)
+    th, u = system.random_state(seed=0)
+    a = TangentFlow(system, th, u, 1, dt=0.01, reorth_every=10)
+    b = TangentFlow(system, th, u, 1, dt=0.02, reorth_every=10)
+    with pytest.raises(ValueError, match="share their system and settings"):
+        LaneFlows([a, b])
+    with pytest.raises(ValueError, match="at least one"):
+        LaneFlows([])
