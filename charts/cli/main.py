@@ -4,7 +4,7 @@
     charts scenes [NAME]                          list the bundled scenes, or print one
     charts reproduce ...                          the paper's figures and table
     charts generate [--check]                     regenerate generated/ (code generator)
-    charts bench accuracy | integrators | performance   accuracy vs time; integrators; peers
+    charts bench accuracy | integrators | performance | ensemble   accuracy vs time; integrators; peers; lanes
     charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask
 
 Every subcommand has ``--help``.  No command prints a traceback for anything a user can
@@ -277,16 +277,19 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision), `integrators` "
                        "(against solve_ivp), `performance` (against JiTCODE and SciPy), "
-                       "`compare` (installations against each other)",
+                       "`compare` (installations against each other), `ensemble` (lanes against the "
+                       "one-trajectory kernel)",
                        description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
                        "diagrams and table (docs/accuracy.md). `charts bench integrators`: cost "
                        "per unit time against solve_ivp (docs/integrators.md). `charts bench "
                        "performance [--quick]`: the Lyapunov task against JiTCODE and SciPy, cold "
                        "start, all cores (docs/performance.md). `charts bench compare --engine "
                        "LABEL=PYTHON ...`: Lyapunov throughput of several installations, e.g. two "
-                       "checkouts, interleaved in one run. Each is a module of "
+                       "checkouts, interleaved in one run. `charts bench ensemble [--quick]`: ensembles "
+                       "in vector lanes against the one-trajectory kernel and JiTCODE. Each is a module of "
                        "charts.runs.benchmarks: no source checkout needed.")
-    p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare"))
+    p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare",
+                                    "ensemble"))
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bars (accuracy)")
     p.add_argument("rest", nargs=argparse.REMAINDER,
                    help="options of the benchmark (e.g. `charts bench performance --help`)")

@@ -6,6 +6,8 @@
   both cores, code generation (peers in `peers`);
 * ``compare`` (`compare`): the Lyapunov throughput of several installations of charts (e.g.
   two checkouts, each with its own interpreter), interleaved in one run;
+* ``ensemble`` (`ensemble`): ensembles in vector lanes (``lyapunov_ensemble``) against the
+  one-trajectory kernel and JiTCODE;
 * ``accuracy``: work–precision diagrams (``charts.runs.accuracy``).
 
 `environment` describes the machine and its load for every report.
