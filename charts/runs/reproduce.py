@@ -59,14 +59,18 @@ PRESETS = {
 
 
 # ------------------------------------------------------------------------ worker tasks
-def _task_lyapunov(n, seed, t, batches):
-    from ..analyses.lyapunov import lyapunov_spectrum
+def _task_lyapunov(n, seeds, t, batches):
+    """The members ``seeds`` of N in the lanes of one kernel (each equal to
+    ``lyapunov_spectrum`` from ``random_state(seed)``), stacked along a first member axis."""
+    from ..analyses.lyapunov import lyapunov_lanes, lyapunov_settings
     from ..geometry.system import RotorSystem
     s = RotorSystem(n)
-    th, u = s.random_state(seed=seed)
-    r = lyapunov_spectrum(s, th, u, t, n_batches=batches, seed=seed)
-    return dict(exponents=r.exponents, stderr=r.stderr, batches=r.batches,
-                history_t=r.history_t, history=r.history)
+    cfg = lyapunov_settings(s, t, n_batches=batches, seed=seeds[0])
+    rs = lyapunov_lanes((s, cfg, list(seeds), 1.0))
+    return dict(exponents=np.array([r.exponents for r in rs]),
+                stderr=np.array([r.stderr for r in rs]),
+                batches=np.array([r.batches for r in rs]), history_t=rs[0].history_t,
+                history=np.array([r.history for r in rs]))
 
 
 def _task_angles(n, seed, t, t_transient):
@@ -112,8 +116,8 @@ def _task_waveform(n, seed, t):
 def _tasks(cfg):
     tasks = {}
     for n in NS:
-        for i in range(cfg["lyap_members"]):
-            tasks[("lyap", n, i)] = (_task_lyapunov, (n, 100 + i, cfg["lyap_t"], cfg["lyap_batches"]))
+        seeds = list(range(100, 100 + cfg["lyap_members"]))     # one task: lanes of one kernel
+        tasks[("lyap", n, 0)] = (_task_lyapunov, (n, seeds, cfg["lyap_t"], cfg["lyap_batches"]))
         for i in range(cfg["angle_members"]):
             a = (n, 200 + i, cfg["angle_t"], cfg["angle_transient"])
             tasks[("angle", n, i)] = (_task_angles, a)
@@ -193,9 +197,8 @@ def load_piece(folder, key, args):
 def _lyapunov_table(results, cfg):
     rows = {}
     for n in NS:
-        mem = [results[("lyap", n, i)] for i in range(cfg["lyap_members"])]
-        E = np.array([m["exponents"] for m in mem])
-        B = np.concatenate([m["batches"] for m in mem])
+        E = np.asarray(results[("lyap", n, 0)]["exponents"])
+        B = np.concatenate(results[("lyap", n, 0)]["batches"])
         mean = E.mean(0)
         se_batch = standard_error(B)   # pooled batch means
         se_ens = standard_error(E)     # spread of the trajectories
