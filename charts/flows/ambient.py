@@ -215,9 +215,9 @@ def multiplier_lanes(y, o, n, L, minv, s, c, lam, iB):
 @njit(cache=True, inline="always")
 def state_rate_lanes(y, o, n, L, minv, s, lam, dy, do):
     """Eq (8) of the L states y[o + i·L + l] into dy[do + i·L + l]."""
-    for i in range(n):
-        for l in range(L):
-            dy[do + i * L + l] = y[o + (n + i) * L + l]
+    nL = n * L
+    for e in range(nL):                 # θ̇ = u, lanes and rotors in one flat loop
+        dy[do + e] = y[o + nL + e]
     for i in range(n):
         for l in range(L):
             dy[do + (n + i) * L + l] = acceleration(lam[l], s[i * L + l], minv[i])
@@ -248,9 +248,9 @@ def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
             dlam[l] += tangent_term(p[e], q[e], x[o + (n + j) * L + l], x[o + j * L + l])
     for l in range(L):
         dlam[l] *= iB[l]
-    for i in range(n):
-        for l in range(L):
-            dx[do + i * L + l] = x[o + (n + i) * L + l]
+    nL = n * L
+    for e in range(nL):
+        dx[do + e] = x[o + nL + e]
     for i in range(n):
         for l in range(L):
             e = i * L + l
