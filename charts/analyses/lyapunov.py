@@ -12,7 +12,9 @@ non-physical zeros of the directions that break the constraint (`identify_nonphy
 Error bars are batch means: the averaging time is cut into ``n_batches`` nearly equal
 blocks (at re-orthonormalisation steps), each block gives an estimate of every exponent,
 and the standard error is their std/√n_batches (two-sided).  `lyapunov_ensemble` instead runs
-independent trajectories in parallel processes and uses their spread.
+independent trajectories, together in the vector lanes of one kernel (``charts.solvers.lanes``,
+each member bit-identical to `lyapunov_spectrum`) and in parallel processes, and uses their
+spread.
 """
 from __future__ import annotations
 
