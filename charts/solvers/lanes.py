@@ -31,9 +31,9 @@ from numba import njit
 from ..flows.ambient import (multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
 from ..geometry.projection import project_state, project_tangent_sc
-from .rk import rk4_combine, rk4_node, rk4_point
+from .rk import rk4_combine, rk4_node
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
-from .tangent import orthonormalize, shift_sincos, substeps
+from .tangent import countdowns, first_point, orthonormalize, shift_sincos, stage_point, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows"]
 
@@ -56,18 +56,9 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
     for st in range(4):
         o = np.uint64(st) * M
         if st == 0:
-            for i in range(M):
-                Zt[i] = Zf[i]
-            for i in range(nl):
-                s[i] = s0[i]
-                c[i] = c0[i]
+            first_point(Zf, s0, c0, M, nl, Zt, s, c)
         else:
-            a = rk4_node(st) * h
-            op = o - M
-            rk4_point(Zf, K, op, a, M, Zt)
-            for i in range(nl):
-                dl[i] = a * K[op + i]
-            shift_sincos(s0, c0, dl, Zt, nl, wl, s, c)
+            stage_point(Zf, K, o - M, rk4_node(st) * h, M, s0, c0, dl, nl, wl, Zt, s, c)
         multiplier_lanes(Zt, zero, n, L, minv, s, c, lam, iB)
         state_rate_lanes(Zt, zero, n, L, minv, s, lam, K, o)
         tangent_factors_lanes(Zt, zero, n, L, minv, s, c, lam, f, g, p, q)
@@ -151,12 +142,7 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     subcap = np.empty(L)
     subZ = np.empty((L, D))
     subS = np.empty((L, 2, n))
-    i0 = counter[0]
-    to_proj = project_every - i0 % project_every if project_every > 0 else -1
-    to_reorth = reorth_every - i0 % reorth_every
-    ev = 0
-    while ev < events.size and events[ev] <= i0:
-        ev += 1
+    to_proj, to_reorth, ev = countdowns(counter[0], project_every, reorth_every, events)
     for it in range(nsteps):
         for l in range(L):
             S[l] = 0.0

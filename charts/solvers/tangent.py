@@ -33,7 +33,8 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, fix
                      status_error, step_cap)
 
 __all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos",
-           "reorth_steps", "substeps", "REORTH_TIME"]
+           "reorth_steps", "substeps", "first_point", "stage_point", "countdowns",
+           "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -98,6 +99,29 @@ def shift_sincos(s0, c0, dl, theta, n, a, s, c):
 
 
 @njit(cache=True, inline="always")
+def first_point(Zf, s0, c0, L, n, Zt, s, c):
+    """RK4 stage 0 of the stacked state Zf (flat, length L): Zt = Zf and s, c = s0, c0
+    (the first n entries).  Branch-free, as `stage_point` (see `_rk4_step`)."""
+    for i in range(L):
+        Zt[i] = Zf[i]
+    for j in range(n):
+        s[j] = s0[j]
+        c[j] = c0[j]
+
+
+@njit(cache=True, inline="always")
+def stage_point(Zf, K, op, a, L, s0, c0, dl, n, wts, Zt, s, c):
+    """The point Zt = Zf + a·K[op:op+L] of an RK4 stage (a = c_st·h, op the offset of the
+    previous stage) and the weighted sin/cos s, c of its first n entries (the angles),
+    shifted from s0, c0 by `shift_sincos` (dl: work space, length n; wts: weights per
+    entry)."""
+    rk4_point(Zf, K, op, a, L, Zt)
+    for j in range(n):
+        dl[j] = a * K[op + j]
+    shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
+
+
+@njit(cache=True, inline="always")
 def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L):
     """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X] (flat,
     length L = R·d), with the weighted sin/cos s0, c0 of y's angles updated (weights wts);
@@ -117,18 +141,9 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d
     for st in range(4):
         o = np.uint64(st) * L           # offset of stage st in K
         if st == 0:
-            for i in range(L):
-                Zt[i] = Zf[i]
-            for j in range(n):
-                s[j] = s0[j]
-                c[j] = c0[j]
+            first_point(Zf, s0, c0, L, n, Zt, s, c)
         else:
-            a = rk4_node(st) * h
-            op = o - L                  # the previous stage
-            rk4_point(Zf, K, op, a, L, Zt)
-            for j in range(n):
-                dl[j] = a * K[op + j]
-            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
+            stage_point(Zf, K, o - L, rk4_node(st) * h, L, s0, c0, dl, n, wts, Zt, s, c)
         lam, B = multiplier(Zt, zero, n, minv, s, c)
         iB = 1.0 / B if B > 0.0 else 0.0
         state_rate(Zt, zero, n, minv, s, lam, K, o)
@@ -154,6 +169,19 @@ def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, 
             return False
         _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt / nsub, n, R, d, L)
     return True
+
+
+@njit(cache=True, inline="always")
+def countdowns(i0, project_every, reorth_every, events):
+    """(steps to the next projection (−1: never), to the next re-orthonormalisation, index
+    of the next event) after global step i0: the phases follow the global step counter, so
+    they do not depend on how the steps are chunked."""
+    to_proj = project_every - i0 % project_every if project_every > 0 else -1
+    to_reorth = reorth_every - i0 % reorth_every
+    ev = 0
+    while ev < events.size and events[ev] <= i0:
+        ev += 1
+    return to_proj, to_reorth, ev
 
 
 @njit(cache=True)
@@ -199,11 +227,7 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
     # countdowns to the next projection / re-orthonormalisation / record, from the global
     # step counter (so that the phases do not depend on how the steps are chunked)
     i0 = counter[0]
-    to_proj = project_every - i0 % project_every if project_every > 0 else -1
-    to_reorth = reorth_every - i0 % reorth_every
-    ev = 0
-    while ev < events.size and events[ev] <= i0:
-        ev += 1
+    to_proj, to_reorth, ev = countdowns(i0, project_every, reorth_every, events)
     to_rec = -1
     if rec_every > 0:
         to_rec = rec_start - i0 if i0 < rec_start else rec_every - (i0 - rec_start) % rec_every
