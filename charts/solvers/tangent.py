@@ -33,7 +33,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, fix
                      status_error, step_cap)
 
 __all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos",
-           "reorth_steps", "substeps", "first_point", "stage_point", "countdowns",
+           "reorth_steps", "substeps", "countdowns",
            "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
@@ -99,29 +99,6 @@ def shift_sincos(s0, c0, dl, theta, n, a, s, c):
 
 
 @njit(cache=True, inline="always")
-def first_point(Zf, s0, c0, L, n, Zt, s, c):
-    """RK4 stage 0 of the stacked state Zf (flat, length L): Zt = Zf and s, c = s0, c0
-    (the first n entries).  Branch-free, as `stage_point` (see `_rk4_step`)."""
-    for i in range(L):
-        Zt[i] = Zf[i]
-    for j in range(n):
-        s[j] = s0[j]
-        c[j] = c0[j]
-
-
-@njit(cache=True, inline="always")
-def stage_point(Zf, K, op, a, L, s0, c0, dl, n, wts, Zt, s, c):
-    """The point Zt = Zf + a·K[op:op+L] of an RK4 stage (a = c_st·h, op the offset of the
-    previous stage) and the weighted sin/cos s, c of its first n entries (the angles),
-    shifted from s0, c0 by `shift_sincos` (dl: work space, length n; wts: weights per
-    entry)."""
-    rk4_point(Zf, K, op, a, L, Zt)
-    for j in range(n):
-        dl[j] = a * K[op + j]
-    shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
-
-
-@njit(cache=True, inline="always")
 def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L):
     """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X] (flat,
     length L = R·d), with the weighted sin/cos s0, c0 of y's angles updated (weights wts);
@@ -134,16 +111,28 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d
     Stage 0 is handled here, outside the branch-free `rk4_point`: an inlined function that
     branches on the stage releases its arrays at different places in its two branches, and
     Numba's reference-count pruning then leaves an atomic incref/decref pair per array and
-    stage in the loop (docs/performance.md)."""
+    stage in the loop (docs/performance.md).  For the same reason the two stage points are
+    written out here and in the lane kernel's step (``charts.solvers.lanes``), not shared as
+    inline functions: called from both branches they cost this kernel 40 % of its speed
+    (13 000 against 22 000 time units per CPU second, measured)."""
     for j in range(n):
         th[j] = Zf[j]
     zero = np.uint64(0)
     for st in range(4):
         o = np.uint64(st) * L           # offset of stage st in K
         if st == 0:
-            first_point(Zf, s0, c0, L, n, Zt, s, c)
+            for i in range(L):
+                Zt[i] = Zf[i]
+            for j in range(n):
+                s[j] = s0[j]
+                c[j] = c0[j]
         else:
-            stage_point(Zf, K, o - L, rk4_node(st) * h, L, s0, c0, dl, n, wts, Zt, s, c)
+            a = rk4_node(st) * h
+            op = o - L                  # the previous stage
+            rk4_point(Zf, K, op, a, L, Zt)
+            for j in range(n):
+                dl[j] = a * K[op + j]
+            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
         lam, B = multiplier(Zt, zero, n, minv, s, c)
         iB = 1.0 / B if B > 0.0 else 0.0
         state_rate(Zt, zero, n, minv, s, lam, K, o)
