@@ -318,8 +318,13 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     n_blocks = min(n_trajectories, max(cores, -(-n_trajectories // LANE_BLOCK)))
     cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
     jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
-    members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), 1 if n_blocks == 1 else workers,
-                       t_final, progress, f"Lyapunov N={system.n} ensemble")
+    desc = f"Lyapunov N={system.n} ensemble"
+    if n_blocks == 1 or workers == 1:        # in this process: progress chunk by chunk
+        rep = progress_reporter(progress, n_trajectories * t_final, desc)
+        members = [m for job in jobs for m in lyapunov_lanes(job, rep.update)]
+        rep.close()
+    else:
+        members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), workers, t_final, progress, desc)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
 
@@ -327,9 +332,10 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
 LANE_BLOCK = 64
 
 
-def lyapunov_lanes(job):
+def lyapunov_lanes(job, update=None):
     """[`LyapunovResult`] of the seeds of ``job`` = (system, settings, seeds, speed), from
-    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows`."""
+    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows`;
+    ``update(t)`` (optional) gets the averaging time done by all members after each chunk."""
     system, cfg, seeds, speed = job
     cfgs = [replace(cfg, seed=s) for s in seeds]
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
@@ -348,5 +354,7 @@ def lyapunov_lanes(job):
     at = np.array(events, dtype=np.int64) + lanes.steps
     for size in chunk_sizes(cfg):
         advance(size, events=at, event_logs=logs)
+        if update is not None:
+            update(len(seeds) * size * cfg.dt)
     return [lyapunov_result(system, c, logs[:, i], f.speed)
             for i, (c, f) in enumerate(zip(cfgs, flows))]
