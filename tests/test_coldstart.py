@@ -56,8 +56,9 @@ def test_coldstart_rows_are_medians_per_case(monkeypatch):
         "import numpy", "import numba", "import charts", "first call"]
     first = next(r for r in empty if r["name"] == "first call")
     assert first["cpu"] == pytest.approx(2.0)                          # median of 1, 3, 2
-    since = next(r for r in empty if r["name"] == "import charts to first exponents")
-    assert since["cpu"] == pytest.approx(0.3 + 2.0) and since["range"] == pytest.approx((1.3, 3.3))
+    total = next(r for r in empty if r["kind"] == "total")
+    assert total["cpu"] == pytest.approx(0.3 + 1.3 * 2.0)                # the median run
+    assert total["range"] == pytest.approx((0.3 + 1.3, 0.3 + 1.3 * 3.0))
     assert next(r for r in empty if r["kind"] == "loaded")["count"] == 2
     comp = [r for r in empty if r["kind"] == "compile"]
     assert [(r["name"], r["depth"]) for r in comp] == [("charts.inner", 1), ("charts.outer", 0)]

@@ -109,15 +109,10 @@ def _median_rows(case, runs):
                          wall=statistics.median(r["phases"][i][1] for r in runs),
                          cpu=statistics.median(r["phases"][i][2] for r in runs)))
     totals = [(sum(p[1] for p in r["phases"]), sum(p[2] for p in r["phases"])) for r in runs]
-    since = [(sum(p[1] for p in r["phases"][2:]), sum(p[2] for p in r["phases"][2:]))
-             for r in runs]                         # from `import charts` on
-    rows.append(dict(case=case, kind="total", name="process start to first exponents", depth=0,
-                     wall=statistics.median(t[0] for t in totals),
-                     cpu=statistics.median(t[1] for t in totals)))
-    rows.append(dict(case=case, kind="total", name="import charts to first exponents", depth=0,
-                     wall=statistics.median(t[0] for t in since),
-                     cpu=statistics.median(t[1] for t in since),
-                     range=(min(t[1] for t in since), max(t[1] for t in since))))
+    rows.append(dict(case=case, kind="total", name="import charts (numpy, numba) to exponents",
+                     depth=0, wall=statistics.median(t[0] for t in totals),
+                     cpu=statistics.median(t[1] for t in totals),
+                     range=(min(t[1] for t in totals), max(t[1] for t in totals))))
     rows.append(dict(case=case, kind="loaded", name="functions loaded from the cache", depth=0,
                      count=statistics.median(len(r["loaded"]) for r in runs)))
     seen = {}
