@@ -220,7 +220,7 @@ def _generate_installed(check: bool) -> int:
 
 
 def _cmd_warmup(args) -> int:
-    """`charts warmup`: compile (or load) every analysis's kernels for the given N."""
+    """`charts warmup`: compile every analysis's kernels for the given N (or load them)."""
     from ..runs.warmup import TASKS, warmup
 
     bad = [n for n in args.n if n < 3]
@@ -233,7 +233,7 @@ def _cmd_warmup(args) -> int:
     def report(row):
         if not args.quiet:
             print(f"{row['analysis']:>10}  N = {row['n']}: {row['compile']:6.1f} s compiling "
-                  "or loading", flush=True)
+                  f"({row['cpu']:.1f} s CPU in all)", flush=True)
 
     rows = warmup(args.n, args.analysis, report=report)
     if not args.quiet:

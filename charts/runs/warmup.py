@@ -36,8 +36,9 @@ TASKS = {
 
 def warmup(ns=DEFAULT_N, analyses=None, report=None) -> list[dict]:
     """Call each analysis in ``analyses`` (names of `TASKS`; default all) once for every N in
-    ``ns``, compiling (or loading) its kernels.  Returns one row per call: {analysis, n,
-    compile (s spent compiling or loading), cpu (s)}; ``report(row)`` is called after each."""
+    ``ns``, compiling its kernels (or loading them from the cache).  Returns one row per call:
+    {analysis, n, compile (s spent compiling: 0 when everything came from the cache, which
+    numba's compile events do not time), cpu (s)}; ``report(row)`` is called after each."""
     names = list(TASKS) if analyses is None else list(analyses)
     unknown = [a for a in names if a not in TASKS]
     if unknown:
