@@ -8,6 +8,8 @@
   two checkouts, each with its own interpreter), interleaved in one run;
 * ``ensemble`` (`ensemble`): ensembles in vector lanes (``lyapunov_ensemble``) against the
   one-trajectory kernel and JiTCODE;
+* ``coldstart`` (`coldstart`): where a new process's seconds go before its first exponents,
+  on an empty and on a filled numba cache (every compilation timed);
 * ``accuracy``: work–precision diagrams (``charts.runs.accuracy``).
 
 `environment` describes the machine and its load for every report.
