@@ -29,8 +29,7 @@ from ..flows.ambient import (multiplier, sincos, stage_work, state_rate, tangent
                              tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
 from .rk import rk4_combine, rk4_node, rk4_point
-from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, fixed_step_status,
-                     status_error, step_cap)
+from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
 __all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos",
            "reorth_steps", "substeps", "countdowns",
