@@ -1,9 +1,11 @@
-"""Error bars: batch means along one trajectory, and the spread of independent ones."""
+"""Error bars: batch means along one trajectory, and the spread of independent ones; the law
+of the smallest values of a sample (hyperbolicity angles near zero) and block minima."""
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["standard_error", "batch_ends", "batch_estimates", "small_value_law", "block_minima"]
+__all__ = ["standard_error", "batch_ends", "batch_estimates", "small_value_law",
+           "pool_small_value_laws", "block_minima"]
 
 
 def standard_error(samples, axis=0):
@@ -86,19 +88,52 @@ def small_value_law(samples, x0, n_batches=10):
 
 def block_minima(samples, sizes):
     """Mean minimum of ``size`` consecutive samples, for each of ``sizes``: the minima of
-    the ⌊n/size⌋ disjoint consecutive blocks of ``samples`` (1-D), their mean and its
-    standard error (blocks taken as independent).  Returns a list of dict(size, blocks,
-    mean, se).  A set bounded away from zero gives means that level off as the size
-    grows; the law P(X < x) = A x² gives means that fall like √(π / (4 A size))."""
+    the disjoint consecutive blocks of ``size`` samples, their mean and its standard error
+    (blocks taken as independent).  ``samples``: shape (S,), or (R, S) for R independent
+    series (blocks never straddle two rows; each row's incomplete last block is dropped).
+    Returns a list of dict(size, blocks, mean, se).  Values bounded away from zero give
+    means that level off as the size grows; independent samples with P(X < x) = A x² near
+    zero give means that fall like √(π / (4 A size))."""
     x = np.asarray(samples, dtype=float)
-    if x.ndim != 1 or x.size == 0 or not np.all(np.isfinite(x)):
-        raise ValueError("samples must be a non-empty 1-D array of finite numbers")
+    if x.ndim == 1:
+        x = x[None, :]
+    if x.ndim != 2 or x.size == 0 or not np.all(np.isfinite(x)):
+        raise ValueError("samples must be a non-empty array (S,) or (R, S) of finite numbers, "
+                         f"got shape {np.shape(samples)}")
     out = []
     for s in sizes:
-        if isinstance(s, bool) or not isinstance(s, (int, np.integer)) or not 1 <= s <= x.size:
-            raise ValueError(f"sizes must be integers from 1 to the sample count {x.size}, "
-                             f"got {s!r}")
-        m = x[: x.size // s * s].reshape(-1, s).min(axis=1)
+        if isinstance(s, bool) or not isinstance(s, (int, np.integer)) or not 1 <= s <= x.shape[1]:
+            raise ValueError(f"sizes must be integers from 1 to the length of a series "
+                             f"{x.shape[1]}, got {s!r}")
+        m = x[:, : x.shape[1] // s * s].reshape(x.shape[0], -1, s).min(axis=2).ravel()
         out.append(dict(size=int(s), blocks=int(m.size), mean=float(m.mean()),
                         se=float(standard_error(m))))
     return out
+
+
+def pool_small_value_laws(laws):
+    """One :func:`small_value_law` from those of independent samples with the same ``x0``
+    (e.g. the seeds of a sweep point): counts and log sums add, so the pooled exponent and
+    coefficient equal those of the concatenated samples exactly; the errors add the
+    per-sample batch-means variances of the same sums.  Each law is a dict with count, n,
+    x0, exponent, exponent_se, coef2, coef2_se (exponent and its error may be NaN/None
+    where count is 0)."""
+    laws = list(laws)
+    if not laws:
+        raise ValueError("laws must hold at least one small_value_law result")
+    x0 = {float(d["x0"]) for d in laws}
+    if len(x0) != 1:
+        raise ValueError(f"the laws must share one x0, got {sorted(x0)}")
+    x0 = x0.pop()
+    k = np.array([d["count"] for d in laws], dtype=float)
+    n = np.array([d["n"] for d in laws], dtype=float)
+    beta = np.array([np.nan if d["exponent"] is None else d["exponent"] for d in laws], float)
+    bse = np.array([np.nan if d["exponent_se"] is None else d["exponent_se"] for d in laws], float)
+    L = np.where(k > 0, k / np.where(k > 0, beta, 1.0), 0.0)       # Σ ln(x0/x) per sample
+    K, Lt, N = k.sum(), L.sum(), n.sum()
+    beta_p = K / Lt if Lt > 0 else np.nan
+    beta_se = float(np.sqrt(np.sum(np.where(k > 0, bse * L, 0.0) ** 2)) / Lt) if Lt > 0 \
+        else np.nan
+    cse = np.array([d["coef2_se"] for d in laws], dtype=float)
+    return dict(count=int(K), n=int(N), x0=x0, exponent=float(beta_p), exponent_se=beta_se,
+                coef2=float(K / N / x0 ** 2), coef2_se=float(np.sqrt(np.sum((n * cse) ** 2)) / N))
