@@ -89,9 +89,13 @@ class EnsembleResult(Archivable):
 
 
 def _member(job):
-    fn, n, masses, seed, speed, t_final, kwargs = job
+    fn, (n, masses, weights, level), seed, speed, t_final, kwargs = job
+    import warnings
+
     from ..geometry.system import RotorSystem
-    system = RotorSystem(n, masses)
+    with warnings.catch_warnings():     # a critical level has warned once, in the caller
+        warnings.simplefilter("ignore")
+        system = RotorSystem(n, masses, weights, level)
     theta0, u0 = system.random_state(seed=seed, speed=speed)
     return fn(system, theta0, u0, t_final, seed=seed, **kwargs)
 
@@ -109,8 +113,8 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     positive_time("t_final", t_final)
     positive_time("speed", speed)
     check_progress(progress)
-    jobs = [(fn, system.n, system.masses, seed + i, speed, t_final, kwargs)
-            for i in range(n_trajectories)]
+    jobs = [(fn, (system.n, system.masses, system.weights, system.level), seed + i, speed,
+             t_final, kwargs) for i in range(n_trajectories)]
     if workers == 1:
         it = map(_member, jobs)
         members = _collect(it, len(jobs), t_final, progress, desc)
@@ -118,6 +122,8 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
         with ProcessPoolExecutor(max_workers=workers) as pool:
             members = _collect(pool.map(_member, jobs), len(jobs), t_final, progress, desc)
     res = EnsembleResult(members, params=dict(n=system.n, masses=system.masses.tolist(),
+                                              weights=system.weights.tolist(),
+                                              level=system.level,
                                               n_trajectories=n_trajectories, seed=seed,
                                               speed=speed, t_final=t_final, **kwargs))
     if all(hasattr(m, "exponents") for m in members):
