@@ -4,6 +4,7 @@
     charts sweep families-n4 -o runs/families-n4
     charts sweep families-n5 -o runs/families-n5
     python scripts/family_study.py growth -o runs/families-growth
+    python scripts/family_study.py clv            # the angles by a second route (CLVs)
     python scripts/family_study.py report --n4 runs/families-n4 --n5 runs/families-n5 \\
         --growth runs/families-growth --figures docs/figures/families > tables.md
 
@@ -19,6 +20,7 @@ from __future__ import annotations
 import argparse
 import csv
 import json
+import math
 import time
 import warnings
 from pathlib import Path
@@ -42,6 +44,9 @@ SAMPLE_EVERY, TRANSIENT = 0.1, 50.0
 SIZES = (10, 30, 100, 300, 1000, 3000, 10000, 30000)
 #: Thresholds of the law of the small angles in the growth table (rad).
 THRESHOLDS = (0.05, 0.02, 0.01)
+#: Fewest samples below the threshold for a fitted exponent in the tables and figures (the
+#: batch-means error of fewer is itself unreliable).
+MIN_COUNT = 30
 MARK = {"(1,1,1,1)": "o", "(1,1,1,2)": "s", "(1,2,1,2)": "^", "(1,1,2,3)": "D",
         "(1,1,1,1,1)": "o"}
 
@@ -68,6 +73,25 @@ def growth(out: Path, t_final: float, trajectories: int, seed: int, points) -> N
                     range(trajectories)], sample_every=SAMPLE_EVERY, t_transient=TRANSIENT,
                     cpu_s=cpu)
         np.savez(out / f"{name}.npz", phi=np.array(phis), meta=json.dumps(meta))
+
+
+def second_route(levels=(0.0, 0.1, 1.0), t_final=2000.0):
+    """Restricted angles of N = 4, equal weights, by the adjoint route and by covariant
+    Lyapunov vectors on the same trajectory (seed 1), at a few levels."""
+    from charts import covariant_lyapunov_vectors
+    print("| c | samples | φ < 0.05 (adjoint) | φ < 0.05 (CLV) | min φ (adjoint) | min φ (CLV) | "
+          "median rel. diff |\n|---|---|---|---|---|---|---|")
+    for c in levels:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            s = RotorSystem(4, weights=[1, 1, 1, 1], level=c)
+        th, u = s.random_state(seed=1)
+        a = hyperbolicity_angles(s, th, u, t_final, t_transient=100.0, seed=1).phi_restricted
+        v = covariant_lyapunov_vectors(s, th, u, t_final, t_transient=100.0, seed=1).phi
+        k = min(a.size, v.size)
+        print(f"| {c:g} | {k} | {np.mean(a < 0.05):.4f} | {np.mean(v < 0.05):.4f} | "
+              f"{a.min():.2e} | {v.min():.2e} | "
+              f"{np.median(np.abs(a[:k] - v[:k]) / a[:k]):.1e} |", flush=True)
 
 
 # ------------------------------------------------------------------------------- report
@@ -124,10 +148,12 @@ def sweep_tables(data, title):
     for (w, c), d in sorted(data.items()):
         r, law = d["row"], d["law"]
         gap = "**0 (critical)**" if d["gap"] < 1e-12 else f"{d['gap']:g}"
-        beta = pm(law["exponent"], law["exponent_se"], 2) if law["count"] else "—"
+        beta = pm(law["exponent"], law["exponent_se"], 2) if law["count"] >= MIN_COUNT else \
+            f"— ({law['count']} < {MIN_COUNT})"
         print(f"| {w} | {c:g} | {gap} | {_f(r['phi_restricted_min']):.1e} | "
               f"{pm(_f(r['phi_restricted_p001']), _f(r['phi_restricted_p001_se']), 3)} | "
-              f"{_f(r['phi_restricted_frac_small']):.4f} | {law['count']} | {beta} | "
+              f"{pm(_f(r['phi_restricted_frac_small']), _f(r['phi_restricted_frac_small_se']))} | "
+              f"{law['count']} | {beta} | "
               f"{pm(law['coef2'], law['coef2_se'], 2)} | {law['n']} |")
 
 
@@ -146,7 +172,7 @@ def sweep_figure(data, title, path):
         ("Kpos_numerical_any", "fraction with some K_ii > 0"),
         ("phi_restricted_min", "min φ over seeds (rad)"),
         ("phi_restricted_p001", "0.1 % quantile of φ (rad)"),
-        ("law", "β: P(φ < x) ∝ x^β, x < 0.05")]
+        ("law", f"β: P(φ < x) ∝ x^β, x < 0.05 (≥ {MIN_COUNT} samples)")]
     ncol = 3
     nrow = -(-len(panels) // ncol)
     fig, axs = new_figure(nrow, ncol, figsize=(4.2 * ncol, 3.0 * nrow), squeeze=False)
@@ -156,8 +182,9 @@ def sweep_figure(data, title, path):
             keys = sorted(c for ww, c in data if ww == w)
             ds = [data[(w, c)] for c in keys]
             if stat == "law":
-                y = [d["law"]["exponent"] for d in ds]
-                e = [d["law"]["exponent_se"] for d in ds]
+                ok = [d["law"]["count"] >= MIN_COUNT for d in ds]
+                y = [d["law"]["exponent"] if k else np.nan for d, k in zip(ds, ok)]
+                e = [d["law"]["exponent_se"] if k else np.nan for d, k in zip(ds, ok)]
             else:
                 y = [_f(d["row"][stat]) for d in ds]
                 e = [_f(d["row"].get(stat + "_se", "")) if not stat.endswith("_min") else 0.0
@@ -197,10 +224,12 @@ def growth_table_and_figure(folder: Path, path):
         big = [b for b in bm if b["size"] >= 1000]
         sl, sse = _slope([b["size"] for b in big], [b["mean"] for b in big],
                          [b["se"] for b in big])
-        label = f"N = {meta['n']}, c = {meta['level']:g}" + \
+        wname = "(" + ",".join(f"{w:g}" for w in meta["weights"]) + ")"
+        label = f"N = {meta['n']}, a = {wname}, c = {meta['level']:g}" + \
             (" (critical)" if np.min(np.abs(critical_levels(meta["weights"]) - meta["level"]))
              < 1e-12 else "")
-        betas = [pm(laws[x]["exponent"], laws[x]["exponent_se"], 2) if laws[x]["count"] else "—"
+        betas = [pm(laws[x]["exponent"], laws[x]["exponent_se"], 2) + f" ({laws[x]['count']})"
+                 if laws[x]["count"] >= MIN_COUNT else f"— ({laws[x]['count']})"
                  for x in THRESHOLDS]
         print(f"| {label} | {phi.shape[0]} × {meta['t_final']:g} | {phi.size} | "
               f"{phi.min():.1e} | " + " | ".join(betas) +
@@ -208,8 +237,11 @@ def growth_table_and_figure(folder: Path, path):
         s = np.array([b["size"] for b in bm]) * meta["sample_every"]
         line = axs[0].errorbar(s, [b["mean"] for b in bm], yerr=[b["se"] for b in bm],
                                marker="o", ms=4, capsize=2, label=label)
-        A = laws[0.05]["coef2"]
-        axs[0].plot(s, np.sqrt(np.pi / (4 * A * s / meta["sample_every"])), ls=":",
+        # independent samples with the fitted law F = A_β x^β below 0.05:
+        # E[min of k samples] ≈ Γ(1 + 1/β) (A_β k)^(−1/β)
+        b, p0 = laws[0.05]["exponent"], laws[0.05]["count"] / phi.size
+        k = s / meta["sample_every"]
+        axs[0].plot(s, math.gamma(1 + 1 / b) * (p0 / 0.05 ** b * k) ** (-1 / b), ls=":",
                     color=line[0].get_color(), lw=1)
         x = np.sort(phi.ravel())
         F = np.arange(1, x.size + 1) / x.size
@@ -217,16 +249,18 @@ def growth_table_and_figure(folder: Path, path):
         axs[1].loglog(x[keep], F[keep], color=line[0].get_color(), label=label)
     xs = np.array([1e-3, 0.2])
     axs[1].loglog(xs, 0.3 * xs ** 2, "k--", lw=0.8, label="∝ φ²")
+    axs[1].loglog(xs, 0.5 * xs, "k:", lw=0.8, label="∝ φ")
     axs[0].set_xscale("log")
     axs[0].set_yscale("log")
     axs[0].set_xlabel("block length (time units; 10 samples per time unit)")
     axs[0].set_ylabel("mean minimum of φ over a block (rad)")
-    axs[0].set_title("block minima (dotted: independent samples with P = Aφ²)", fontsize=9)
-    axs[0].legend(fontsize=7)
+    axs[0].set_title("mean block minimum (dotted: independent samples of the fitted law)",
+                     fontsize=9)
+    axs[0].legend(fontsize=7, loc="lower left")
     axs[1].set_xlabel("φ (rad)")
     axs[1].set_ylabel("P(φ < x)")
     axs[1].set_title("cumulative distribution of the restricted angle", fontsize=9)
-    axs[1].legend(fontsize=7)
+    axs[1].legend(fontsize=7, loc="upper left")
     fig.suptitle("Growing samples: is the restricted angle bounded away from zero?", fontsize=10)
     save_png(fig, path)
 
@@ -254,6 +288,7 @@ def main(argv=None):
     g.add_argument("--trajectories", type=int, default=4)
     g.add_argument("--seed", type=int, default=100)
     g.add_argument("--points", nargs="+", default=list(GROWTH), choices=list(GROWTH))
+    sub.add_parser("clv", help="the restricted angles by the CLV route too (N = 4, t = 2000)")
     r = sub.add_parser("report", help="tables (stdout) and figures")
     r.add_argument("--n4", type=Path)
     r.add_argument("--n5", type=Path)
@@ -262,6 +297,9 @@ def main(argv=None):
     a = ap.parse_args(argv)
     if a.cmd == "growth":
         growth(a.out, a.t, a.trajectories, a.seed, a.points)
+        return
+    if a.cmd == "clv":
+        second_route()
         return
     a.figures.mkdir(parents=True, exist_ok=True)
     for folder, title, fname in ((a.n4, "N = 4, Σ aᵢ cos θᵢ = c", "families-n4.png"),
