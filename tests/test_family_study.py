@@ -250,7 +250,9 @@ def test_angle_statistics_report_the_law_and_the_sweep_reads_it():
     law = small_value_law(phi, st["small"], n_batches=10)
     assert {f"law_{k}": law[k] for k in LAW_KEYS} == {k: st[k] for k in st if k.startswith("law_")}
     zero = angle_statistics(np.array([0.0, 0.3, 0.2]))
-    assert all(math.isnan(zero[f"law_{k}"]) for k in LAW_KEYS)
+    assert all(zero[f"law_{k}"] is None for k in LAW_KEYS)
+    one = angle_statistics(np.array([1.0]))
+    assert one["law_count"] == 0 and one["law_exponent"] is None and one["law_coef2"] == 0.0
     # an undefined statistic is an empty cell in the sweep table, not a failed point
     res = {"results": {"angles": {"restricted": zero}}}
     got = result_statistics(res, None)

@@ -187,8 +187,8 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     the finite angles ``phi`` (a non-empty 1-D array, in time order), and the law of the
     small angles P(φ < x) = A x^β below ``small`` (``charts.analyses.statistics.
     small_value_law``, 10 batches): ``law_exponent`` β̂ ± ``law_exponent_se``, ``law_coef2``
-    A for β = 2 ± ``law_coef2_se``, ``law_count`` samples below ``small`` (NaN when an
-    angle is exactly 0)."""
+    A for β = 2 ± ``law_coef2_se``, ``law_count`` samples below ``small`` (None where
+    undefined: no angle below ``small``, a single sample, or an angle of exactly 0)."""
     phi = finite_array("phi", phi, ndim=1)
     if phi.size == 0:
         raise ValueError("phi must hold at least one angle, got an empty array")
@@ -196,11 +196,10 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     out = dict(min=float(phi.min()), frac_small=float((phi < small).mean()),
                p001=float(np.percentile(phi, 0.1)), p01=float(np.percentile(phi, 1)),
                median=float(np.median(phi)), n=int(phi.size), small=small)
-    if out["min"] > 0:
-        law = small_value_law(phi, small, n_batches=min(10, phi.size))
-        out.update({f"law_{k}": law[k] for k in LAW_KEYS})
-    else:
-        out.update({f"law_{k}": float("nan") for k in LAW_KEYS})
+    law = small_value_law(phi, small, n_batches=min(10, phi.size)) if out["min"] > 0 else {}
+    for k in LAW_KEYS:        # undefined (no angle below, one batch, an angle of 0): None
+        v = law.get(k)
+        out[f"law_{k}"] = v if v is not None and np.isfinite(v) else None
     return out
 
 

@@ -81,9 +81,11 @@ def small_value_law(samples, x0, n_batches=10):
         beta_se = float(np.sqrt(B / (B - 1) * np.sum((kb - beta * Lb) ** 2)) / L)
     else:
         beta_se = np.nan
+    with np.errstate(over="ignore", under="ignore"):   # 0 for a tiny x0: A undefined (NaN)
+        x02 = float(np.float64(x0) ** 2)
     return dict(count=k, n=int(x.size), x0=float(x0), exponent=float(beta),
-                exponent_se=beta_se, coef2=k / x.size / x0 ** 2,
-                coef2_se=float(standard_error(fb)) / x0 ** 2)
+                exponent_se=beta_se, coef2=k / x.size / x02 if x02 > 0 else np.nan,
+                coef2_se=float(standard_error(fb)) / x02 if x02 > 0 else np.nan)
 
 
 def block_minima(samples, sizes):
