@@ -133,6 +133,8 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc):
 def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleResult:
     """The `EnsembleResult` of ``members`` (seeds seed, seed+1, …)."""
     res = EnsembleResult(members, params=dict(n=system.n, masses=system.masses.tolist(),
+                                              weights=system.weights.tolist(),
+                                              level=system.level,
                                               n_trajectories=len(members), seed=seed,
                                               speed=speed, t_final=t_final, **kwargs))
     if all(hasattr(m, "exponents") for m in members):

@@ -50,12 +50,15 @@ from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
+from .statistics import small_value_law
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
-           "SMALL_ANGLE", "adjoint_step"]
+           "SMALL_ANGLE", "LAW_KEYS", "adjoint_step"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
 SMALL_ANGLE = 0.05
+#: the fields of `small_value_law` that `angle_statistics` reports as ``law_<field>``.
+LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
 _CAP = CAP_FRACTION["rk4"]
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
@@ -181,14 +184,23 @@ class AngleResult(Archivable):
 
 def angle_statistics(phi, small=SMALL_ANGLE):
     """dict(min, fraction below ``small`` rad, percentiles 0.1 % and 1 %, sample size) of
-    the finite angles ``phi`` (a non-empty 1-D array)."""
+    the finite angles ``phi`` (a non-empty 1-D array, in time order), and the law of the
+    small angles P(φ < x) = A x^β below ``small`` (``charts.analyses.statistics.
+    small_value_law``, 10 batches): ``law_exponent`` β̂ ± ``law_exponent_se``, ``law_coef2``
+    A for β = 2 ± ``law_coef2_se``, ``law_count`` samples below ``small`` (None where
+    undefined: no angle below ``small``, a single sample, or an angle of exactly 0)."""
     phi = finite_array("phi", phi, ndim=1)
     if phi.size == 0:
         raise ValueError("phi must hold at least one angle, got an empty array")
     small = positive_time("small", small)
-    return dict(min=float(phi.min()), frac_small=float((phi < small).mean()),
-                p001=float(np.percentile(phi, 0.1)), p01=float(np.percentile(phi, 1)),
-                median=float(np.median(phi)), n=int(phi.size), small=small)
+    out = dict(min=float(phi.min()), frac_small=float((phi < small).mean()),
+               p001=float(np.percentile(phi, 0.1)), p01=float(np.percentile(phi, 1)),
+               median=float(np.median(phi)), n=int(phi.size), small=small)
+    law = small_value_law(phi, small, n_batches=min(10, phi.size)) if out["min"] > 0 else {}
+    for k in LAW_KEYS:        # undefined (no angle below, one batch, an angle of 0): None
+        v = law.get(k)
+        out[f"law_{k}"] = v if v is not None and np.isfinite(v) else None
+    return out
 
 
 def _sin_to_angle(M):

@@ -1,9 +1,11 @@
-"""Error bars: batch means along one trajectory, and the spread of independent ones."""
+"""Error bars: batch means along one trajectory, and the spread of independent ones; the law
+of the smallest values of a sample (hyperbolicity angles near zero) and block minima."""
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["standard_error", "batch_ends", "batch_estimates"]
+__all__ = ["standard_error", "batch_ends", "batch_estimates", "small_value_law",
+           "pool_small_value_laws", "block_minima"]
 
 
 def standard_error(samples, axis=0):
@@ -35,3 +37,105 @@ def batch_estimates(cumulative, times):
     Tp = np.concatenate([[0.0], T[:-1]])
     est = (L - prev) / (T - Tp)[:, None]
     return est, standard_error(est)
+
+
+def _blocks(n, n_blocks):
+    """Slices of ``n_blocks`` contiguous, nearly equal blocks of ``range(n)``."""
+    edges = np.linspace(0, n, n_blocks + 1).round().astype(int)
+    return [slice(a, b) for a, b in zip(edges[:-1], edges[1:])]
+
+
+def small_value_law(samples, x0, n_batches=10):
+    """The law of the smallest values, P(X < x) = A x^β for 0 < x ≤ ``x0``, fitted to the
+    time-ordered ``samples`` (1-D, > 0; e.g. the hyperbolicity angles of one trajectory).
+
+    Returns dict(count k below x0, n, x0, exponent β̂ and its standard error, coef2 =
+    A for β = 2, i.e. P(X < x0)/x0², and its standard error).  β̂ = k / Σ ln(x0/xᵢ) over the
+    k samples below x0 is the maximum-likelihood (Hill) estimate; both errors are batch
+    means over ``n_batches`` contiguous blocks (β̂ as a ratio estimator, sums per block), so
+    that correlated neighbours (one tangency passage gives several small samples) are not
+    counted as independent.  For independent samples they tend to β/√k and
+    √(p(1−p)/n)/x0².  NaN where undefined (no sample below x0, fewer than two batches).
+    """
+    x = np.asarray(samples, dtype=float)
+    if x.ndim != 1 or x.size == 0:
+        raise ValueError(f"samples must be a non-empty 1-D array, got shape {x.shape}")
+    if not np.all(np.isfinite(x)) or np.any(x <= 0):
+        raise ValueError("samples must be finite and > 0 (a power law of small values)")
+    if not (np.isscalar(x0) and np.isfinite(x0) and x0 > 0):
+        raise ValueError(f"x0 must be a finite number > 0, got {x0!r}")
+    if isinstance(n_batches, bool) or not isinstance(n_batches, (int, np.integer)) \
+            or n_batches < 1 or n_batches > x.size:
+        raise ValueError(f"n_batches must be an integer from 1 to the sample count {x.size}, "
+                         f"got {n_batches!r}")
+    below = x < x0
+    logs = np.where(below, np.log(x0 / np.where(below, x, x0)), 0.0)
+    k, L = int(below.sum()), float(logs.sum())
+    blocks = _blocks(x.size, int(n_batches))
+    kb = np.array([below[b].sum() for b in blocks], dtype=float)
+    Lb = np.array([logs[b].sum() for b in blocks])
+    fb = np.array([below[b].mean() for b in blocks])
+    beta = k / L if L > 0 else np.nan
+    B = len(blocks)
+    if B >= 2 and L > 0:
+        beta_se = float(np.sqrt(B / (B - 1) * np.sum((kb - beta * Lb) ** 2)) / L)
+    else:
+        beta_se = np.nan
+    with np.errstate(over="ignore", under="ignore"):   # 0 for a tiny x0: A undefined (NaN)
+        x02 = float(np.float64(x0) ** 2)
+    return dict(count=k, n=int(x.size), x0=float(x0), exponent=float(beta),
+                exponent_se=beta_se, coef2=k / x.size / x02 if x02 > 0 else np.nan,
+                coef2_se=float(standard_error(fb)) / x02 if x02 > 0 else np.nan)
+
+
+def block_minima(samples, sizes):
+    """Mean minimum of ``size`` consecutive samples, for each of ``sizes``: the minima of
+    the disjoint consecutive blocks of ``size`` samples, their mean and its standard error
+    (blocks taken as independent).  ``samples``: shape (S,), or (R, S) for R independent
+    series (blocks never straddle two rows; each row's incomplete last block is dropped).
+    Returns a list of dict(size, blocks, mean, se).  Values bounded away from zero give
+    means that level off as the size grows; independent samples with P(X < x) = A x² near
+    zero give means that fall like √(π / (4 A size))."""
+    x = np.asarray(samples, dtype=float)
+    if x.ndim == 1:
+        x = x[None, :]
+    if x.ndim != 2 or x.size == 0 or not np.all(np.isfinite(x)):
+        raise ValueError("samples must be a non-empty array (S,) or (R, S) of finite numbers, "
+                         f"got shape {np.shape(samples)}")
+    out = []
+    for s in sizes:
+        if isinstance(s, bool) or not isinstance(s, (int, np.integer)) or not 1 <= s <= x.shape[1]:
+            raise ValueError(f"sizes must be integers from 1 to the length of a series "
+                             f"{x.shape[1]}, got {s!r}")
+        m = x[:, : x.shape[1] // s * s].reshape(x.shape[0], -1, s).min(axis=2).ravel()
+        out.append(dict(size=int(s), blocks=int(m.size), mean=float(m.mean()),
+                        se=float(standard_error(m))))
+    return out
+
+
+def pool_small_value_laws(laws):
+    """One :func:`small_value_law` from those of independent samples with the same ``x0``
+    (e.g. the seeds of a sweep point): counts and log sums add, so the pooled exponent and
+    coefficient equal those of the concatenated samples exactly; the errors add the
+    per-sample batch-means variances of the same sums.  Each law is a dict with count, n,
+    x0, exponent, exponent_se, coef2, coef2_se (exponent and its error may be NaN/None
+    where count is 0)."""
+    laws = list(laws)
+    if not laws:
+        raise ValueError("laws must hold at least one small_value_law result")
+    x0 = {float(d["x0"]) for d in laws}
+    if len(x0) != 1:
+        raise ValueError(f"the laws must share one x0, got {sorted(x0)}")
+    x0 = x0.pop()
+    k = np.array([d["count"] for d in laws], dtype=float)
+    n = np.array([d["n"] for d in laws], dtype=float)
+    beta = np.array([np.nan if d["exponent"] is None else d["exponent"] for d in laws], float)
+    bse = np.array([np.nan if d["exponent_se"] is None else d["exponent_se"] for d in laws], float)
+    L = np.where(k > 0, k / np.where(k > 0, beta, 1.0), 0.0)       # Σ ln(x0/x) per sample
+    K, Lt, N = k.sum(), L.sum(), n.sum()
+    beta_p = K / Lt if Lt > 0 else np.nan
+    beta_se = float(np.sqrt(np.sum(np.where(k > 0, bse * L, 0.0) ** 2)) / Lt) if Lt > 0 \
+        else np.nan
+    cse = np.array([d["coef2_se"] for d in laws], dtype=float)
+    return dict(count=int(K), n=int(N), x0=x0, exponent=float(beta_p), exponent_se=beta_se,
+                coef2=float(K / N / x0 ** 2), coef2_se=float(np.sqrt(np.sum((n * cse) ** 2)) / N))

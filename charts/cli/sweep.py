@@ -19,7 +19,7 @@ def add_parser(sub) -> None:
     p = sub.add_parser(
         "sweep", help="evaluate a grid or random sample of scenes on Dask into one table",
         description="Run a sweep file (TOML; a base scene plus the parameters to vary: masses, "
-        "N, speed, seeds, any scene key) on a Dask cluster: a local one using every core by "
+        "weights, N, speed, level, seeds, any scene key) on a Dask cluster: a local one using every core by "
         "default, or an existing one with --scheduler. Each point's statistics are appended to "
         "DIR/sweep.csv as it finishes; Ctrl-C keeps them and --resume computes only the rest. "
         "At the end: DIR/summary.csv (mean over seeds) and DIR/figures/*.png. See docs/sweeps.md.")

@@ -12,7 +12,7 @@ import numpy as np
 
 from ..scene import Scene, SceneError, parse_scene, scene_to_dict
 from .expressions import ExpressionError, evaluate_expression
-from .spec import SYSTEM_AXES, Sweep, SweepError
+from .spec import PATTERNS, SYSTEM_AXES, Sweep, SweepError
 
 __all__ = ["SweepPoint", "sweep_points", "point_scene", "digest"]
 
@@ -40,8 +40,8 @@ def sweep_points(sweep: Sweep) -> list[SweepPoint]:
             try:
                 raw = point_scene(sweep, params)
             except ExpressionError as exc:
-                raise SweepError(f"{sweep.source} point {index} ({desc}): mass pattern "
-                                 f"{params.get('masses')!r}: {exc}") from None
+                raise SweepError(f"{sweep.source} point {index} ({desc}): pattern "
+                                 f"{exc.args[0]}") from None
             raw["name"] = f"{sweep.name}-{index:04d}"
             if sweep.description:
                 raw.setdefault("description", sweep.description)
@@ -61,9 +61,9 @@ def sweep_points(sweep: Sweep) -> list[SweepPoint]:
 
 
 def point_scene(sweep: Sweep, params: dict) -> dict:
-    """The base scene (a deep copy) with the parameters of one point applied: ``n`` and
-    ``speed`` to [system] (a string speed is an expression in n), dotted keys to their table, the mass pattern evaluated, the seed
-    to [initial]."""
+    """The base scene (a deep copy) with the parameters of one point applied: ``n``,
+    ``speed`` and ``level`` to [system] (a string speed is an expression in n), dotted keys
+    to their table, the mass and weight patterns evaluated, the seed to [initial]."""
     raw = json.loads(json.dumps(sweep.base))          # deep copy, TOML types only
     system = raw.setdefault("system", {})
     for key, val in params.items():
@@ -77,10 +77,15 @@ def point_scene(sweep: Sweep, params: dict) -> dict:
             for p in path:
                 node = node.setdefault(p, {})
             node[leaf] = val
-    if "masses" in params:
-        env = {k: v for k, v in params.items() if k not in ("masses", "seed") and "." not in k}
-        system["masses"] = [float(evaluate_expression(x, env)) if isinstance(x, str) else float(x)
-                            for x in sweep.masses[params["masses"]]]
+    env = {k: v for k, v in params.items() if k not in (*PATTERNS, "seed") and "." not in k}
+    for kind in PATTERNS:
+        if kind in params:
+            name = params[kind]
+            try:
+                system[kind] = [float(evaluate_expression(x, env)) if isinstance(x, str)
+                                else float(x) for x in getattr(sweep, kind)[name]]
+            except ExpressionError as exc:
+                raise ExpressionError(f"[sweep.{kind}] {name!r}: {exc}") from None
     raw.setdefault("initial", {})["seed"] = params["seed"]
     return raw
 
@@ -100,8 +105,9 @@ def _draw(rng, spec):
 
 
 def _combinations(sweep: Sweep) -> list[dict]:
-    names = (["masses"] if sweep.masses else []) + list(sweep.axes)
-    values = ([list(sweep.masses)] if sweep.masses else []) + list(sweep.axes.values())
+    kinds = [k for k in PATTERNS if getattr(sweep, k)]
+    names = kinds + list(sweep.axes)
+    values = [list(getattr(sweep, k)) for k in kinds] + list(sweep.axes.values())
     if sweep.mode == "grid":
         return [dict(zip(names, combo)) for combo in itertools.product(*values)]
     rng = np.random.default_rng(sweep.sample_seed)

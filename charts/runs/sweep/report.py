@@ -15,7 +15,7 @@ from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ..plotting import new_figure, save_png
 from .points import SweepPoint
-from .table import HEAD, TAIL, csv_text, format_cell
+from .table import HEAD, TAIL, WEIGHT_VECTOR, csv_text, format_cell
 
 __all__ = ["summarize", "write_summary", "summary_markdown", "plot_sweep", "PLOTTED", "SUMMARY"]
 
@@ -43,7 +43,7 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
     standard error from the spread over seeds and the one propagated from the points' own
     errors (``lambda_i_se``, batch means), as either alone can be too small."""
     params = [c for c in header[len(HEAD):] if c in points[0].params and c != "seed"]
-    stats = [c for c in header if c not in HEAD + TAIL + params + ["seed"]
+    stats = [c for c in header if c not in HEAD + TAIL + params + ["seed", WEIGHT_VECTOR]
              and not c.endswith("_se")]
     groups: dict = {}
     for r in rows:

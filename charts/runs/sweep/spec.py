@@ -21,11 +21,14 @@ from ..scene_checks import is_finite_number, unknown_key
 from .expressions import ExpressionError, expression_symbols
 
 __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
-           "resolve_sweep", "MODES", "SYSTEM_AXES"]
+           "resolve_sweep", "MODES", "SYSTEM_AXES", "PATTERNS"]
 
 MODES = ("grid", "random")
 #: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns.
 SYSTEM_AXES = {"n": "n", "speed": "speed", "level": "level"}
+#: Tables of named patterns, ``[sweep.<name>]``: each is one more axis (the pattern name) and
+#: fills the [system] key of the same name with the evaluated vector.
+PATTERNS = ("masses", "weights")
 
 
 class SweepError(ValueError):
@@ -42,6 +45,7 @@ class Sweep:
     seeds: tuple
     axes: dict                      # name -> list (grid) or list / {min, max, log} (random)
     masses: dict = field(default_factory=dict)   # pattern name -> list of numbers/exprs
+    weights: dict = field(default_factory=dict)  # pattern name -> list of numbers/exprs
     n_points: int = 0
     sample_seed: int = 0
     source: str = "<sweep>"
@@ -94,18 +98,22 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     sw = data.get("sweep")
     if not isinstance(sw, dict):
         raise SweepError(f"{source}: [sweep] is required: the parameters to vary")
-    allowed = {"mode", "seeds", "n_points", "sample_seed", "parameters", "masses"}
+    allowed = {"mode", "seeds", "n_points", "sample_seed", "parameters", *PATTERNS}
     for key in sw:
         if key not in allowed:
             raise unknown_key(source, "sweep", key, allowed, SweepError)
     mode, seeds, n_points, sample_seed = _sampling(source, sw)
     axes = sw.get("parameters", {})
-    masses = sw.get("masses", {})
-    if not isinstance(axes, dict) or not isinstance(masses, dict):
-        raise SweepError(f"{source}: [sweep.parameters] and [sweep.masses] must be tables")
-    if "seed" in axes or "masses" in axes:
-        raise SweepError(f"{source}: [sweep.parameters] seed/masses are reserved: use "
-                         "[sweep] seeds and the [sweep.masses] patterns")
+    patterns = {k: sw.get(k, {}) for k in PATTERNS}
+    if not isinstance(axes, dict) or not all(isinstance(v, dict) for v in patterns.values()):
+        raise SweepError(f"{source}: [sweep.parameters], [sweep.masses] and [sweep.weights] "
+                         "must be tables")
+    if "seed" in axes or any(k in axes for k in PATTERNS):
+        raise SweepError(f"{source}: [sweep.parameters] seed/masses/weights are reserved: use "
+                         "[sweep] seeds and the [sweep.masses] / [sweep.weights] patterns")
+    if patterns["weights"] and "system.weights" in axes:
+        raise SweepError(f"{source}: [sweep.weights] and the axis \"system.weights\" both set the "
+                         "weights; keep one")
     for name, vals in axes.items():
         _check_axis(f"{source}: [sweep.parameters] {name}", name, vals, mode)
     for v in axes.get("speed", []) if isinstance(axes.get("speed"), list) else []:
@@ -114,13 +122,17 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
                              "string must be an arithmetic expression in n (e.g. \"n ** 0.5\": "
                              "kinetic energy ½ per rotor of unit mass)")
     symbols = {k for k in axes if "." not in k and k not in SYSTEM_AXES}
-    unused = symbols - _pattern_symbols(source, masses, symbols)
+    used = set()
+    for kind, table in patterns.items():
+        used |= _pattern_symbols(source, kind, table, symbols)
+    unused = symbols - used
     if unused:
         raise SweepError(f"{source}: [sweep.parameters] {', '.join(sorted(unused))} is not used: "
-                         "reference it in a [sweep.masses] pattern, or use n, speed or a dotted "
-                         "scene key such as \"run.t_final\"")
+                         "reference it in a [sweep.masses] or [sweep.weights] pattern, or use n, "
+                         "speed, level or a dotted scene key such as \"run.t_final\"")
     return Sweep(name=data.get("name", default_name), description=data.get("description", ""),
-                 base=base, mode=mode, seeds=tuple(seeds), axes=dict(axes), masses=dict(masses),
+                 base=base, mode=mode, seeds=tuple(seeds), axes=dict(axes),
+                 masses=dict(patterns["masses"]), weights=dict(patterns["weights"]),
                  n_points=n_points or 0, sample_seed=sample_seed, source=source, data=data)
 
 
@@ -190,11 +202,12 @@ def _check_axis(where: str, name: str, vals, mode: str) -> None:
                              f"{name.split('.')[-1]!r} (or seeds / [sweep.masses])")
 
 
-def _pattern_symbols(source, masses: dict, symbols: set) -> set:
-    """Validate the [sweep.masses] patterns; return the parameter symbols they use."""
+def _pattern_symbols(source, kind: str, patterns: dict, symbols: set) -> set:
+    """Validate the [sweep.<kind>] patterns (kind: masses or weights); return the parameter
+    symbols they use."""
     used = set()
-    for pname, pat in masses.items():
-        where = f"{source}: [sweep.masses] {pname!r}"
+    for pname, pat in patterns.items():
+        where = f"{source}: [sweep.{kind}] {pname!r}"
         if not (isinstance(pat, list) and pat):
             raise SweepError(f"{where} = {pat!r}: expected a list of numbers or expressions")
         for x in pat:

@@ -7,8 +7,11 @@ from ..scene import Scene
 __all__ = ["stat_columns", "result_statistics"]
 
 #: The angle statistics, per variant (``phi_<variant>_<stat>``; CLV route:
-#: ``clv_phi_<variant>_<stat>``).
-ANGLE_STATS = ("min", "p001", "median", "frac_small")
+#: ``clv_phi_<variant>_<stat>``): minimum, 0.1 % quantile, median, fraction below 0.05 rad,
+#: sample count, and the law of the small angles P(φ < x) = A x^β below 0.05 rad (exponent
+#: β and A for β = 2, each with its batch-means standard error, and the count below).
+ANGLE_STATS = ("min", "p001", "median", "frac_small", "n", "law_count", "law_exponent",
+               "law_exponent_se", "law_coef2", "law_coef2_se")
 
 
 def stat_columns(scene: Scene) -> list[str]:
@@ -57,12 +60,21 @@ def result_statistics(result: dict, arrays) -> dict:
     for var in ("full", "restricted"):
         if var in an:
             for s in ANGLE_STATS:
-                out[f"phi_{var}_{s}"] = an[var][s]
+                out[f"phi_{var}_{s}"] = _finite_or_none(an[var].get(s))
     cl = res.get("clv", {})
     for var in ("full", "restricted"):
         if var in cl:
             for s in ANGLE_STATS:
-                out[f"clv_phi_{var}_{s}"] = cl[var]["phi"][s]
+                out[f"clv_phi_{var}_{s}"] = _finite_or_none(cl[var]["phi"].get(s))
             for w, d in cl[var]["domination"].items():
                 out[f"clv_split_{var}_{w}"] = d["split"]
     return out
+
+
+def _finite_or_none(v):
+    """A statistic as a cell value: None (an empty cell) for a missing or undefined (NaN)
+    statistic, e.g. the law's exponent of a trajectory without angles below the threshold;
+    an integer stays an integer."""
+    if v is None or (isinstance(v, float) and v != v):
+        return None
+    return v

@@ -15,7 +15,7 @@ from .points import SweepPoint
 from .spec import SweepError
 from .statistics import stat_columns
 
-__all__ = ["TABLE", "LOG", "HEAD", "TAIL", "point_columns", "point_row", "format_cell",
+__all__ = ["TABLE", "LOG", "HEAD", "TAIL", "WEIGHT_VECTOR", "point_columns", "point_row", "format_cell",
            "csv_line", "csv_text", "read_table", "prepare_table", "finish_table",
            "TableAppender"]
 
@@ -24,16 +24,21 @@ TABLE, LOG = "sweep.csv", "log.jsonl"
 HEAD = ["index", "point_id", "status"]
 #: Columns after the statistics.
 TAIL = ["mass_vector", "t_final", "error", "scene"]
+#: A column after ``mass_vector`` in sweeps with [sweep.weights] patterns only (the resolved
+#: weights of the point), so that the tables of other sweeps keep their columns.
+WEIGHT_VECTOR = "weight_vector"
 
 
 def point_columns(points: list[SweepPoint]) -> list[str]:
     """Columns of the table: index, point_id, status, the parameters, the statistics
-    (union over points, in first-seen order), then mass_vector, t_final, error, scene."""
+    (union over points, in first-seen order), then mass_vector, (weight_vector when the
+    sweep has weight patterns), t_final, error, scene."""
     params, stats = [], []
     for p in points:
         params += [k for k in p.params if k not in params]
         stats += [c for c in stat_columns(p.scene) if c not in stats]
-    return HEAD + params + stats + TAIL
+    tail = TAIL[:1] + [WEIGHT_VECTOR] + TAIL[1:] if "weights" in params else TAIL
+    return HEAD + params + stats + tail
 
 
 def format_cell(v) -> str:
@@ -50,6 +55,7 @@ def point_row(point: SweepPoint, out: dict, columns: list[str]) -> list[str]:
     vals = {"index": point.index, "point_id": point.point_id, "status": out["status"],
             **point.params, **out["stats"],
             "mass_vector": json.dumps(point.scene.system["masses"]),
+            WEIGHT_VECTOR: json.dumps(point.scene.system.get("weights")),
             "t_final": out.get("t_final"), "error": out.get("error", ""),
             "scene": json.dumps(scene_to_dict(point.scene), sort_keys=True)}
     return [format_cell(vals.get(c)) for c in columns]
