@@ -34,48 +34,117 @@ forward vectors are stored only at the S sample points: S·m·2N floats.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import ceil, sin
+from math import ceil, copysign, sqrt
 
 import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import adjoint_rate, state_stage
+from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import CAP_FRACTION, step_cap
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, shift_sincos
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
-           "SMALL_ANGLE", "adjoint_step"]
+           "SMALL_ANGLE", "adjoint_step", "smallest_singular_values"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
 SMALL_ANGLE = 0.05
 _CAP = CAP_FRACTION["rk4"]
+_EPS = 2.0 ** -52
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
 
 
+@njit(cache=True, inline="always")
+def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, minv, wts, h, n, R, d, L):
+    """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
+    and of the adjoint flow ẇ = −Jᵀw for the R − 1 vectors after it (flat, length L = R·d),
+    with the weighted sin/cos s0, c0 of the state's angles kept current by the tangent
+    kernel's angle shift (``charts.solvers.tangent.shift_sincos``; stage 0 is a shift by 0).
+    n, R, d, L unsigned (see the tangent kernel)."""
+    zero = np.uint64(0)
+    for j in range(n):
+        th[j] = Zf[j]
+    for st in range(4):
+        rk4_stage_point(Zf, K, st, h, L, Zt)
+        o = np.uint64(st) * L
+        for j in range(n):
+            dl[j] = Zt[j] - th[j]
+        shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
+        lam, B = multiplier(Zt, zero, n, minv, s, c)
+        iB = 1.0 / B if B > 0.0 else 0.0
+        state_rate(Zt, zero, n, minv, s, lam, K, o)
+        for r in range(np.uint64(1), R):
+            adjoint_rate(Zt, r * d, n, Zt, zero, minv, s, c, lam, iB, K, o + r * d)
+    rk4_combine(Zf, K, h, L, Zf)
+    for j in range(n):
+        dl[j] = Zf[j] - th[j]
+    shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
+
+
 @njit(cache=True)
-def adjoint_step(Z, minv, a, h, zt, K, s, c):
+def adjoint_step(Z, minv, a, h):
     """One RK4 step of size h (h < 0: backward), in place, of eq (8) for Z[0] and of the
-    adjoint flow ẇ = −Jᵀw for the rows Z[1:] (weights a); zt (L,), K (4L,), s, c (N,) are work arrays."""
+    adjoint flow ẇ = −Jᵀw for the rows Z[1:] (weights a), as in the backward pass."""
     R, d = Z.shape
     n = d // 2
     L = R * d
-    Zf = Z.reshape(L)
-    for st in range(4):
-        rk4_stage_point(Zf, K, st, h, L, zt)
-        o = st * L
-        lam, iB = state_stage(zt, 0, n, minv, a, s, c, K, o)
-        for r in range(1, R):
-            adjoint_rate(zt, r * d, n, zt, 0, minv, s, c, lam, iB, K, o + r * d)
-    rk4_combine(Zf, K, h, L, Zf)
+    s0 = np.empty(n)
+    c0 = np.empty(n)
+    sincos(Z[0], 0, n, a, s0, c0)
+    _adjoint_rk4(Z.reshape(L), np.empty(L), np.empty(4 * L), s0, c0, np.empty(n), np.empty(n),
+                 np.empty(n), np.empty(n), minv, a, h, np.uint64(n), np.uint64(R),
+                 np.uint64(d), np.uint64(L))
+
+
+@njit(cache=True)
+def smallest_singular_values(M, out):
+    """out[q] = the smallest singular value of the square matrix M[q], by one-sided Jacobi
+    (Hestenes) rotations of the columns of a copy, which give every singular value to high
+    relative accuracy (rounding level for these small m × m matrices)."""
+    S, m, _ = M.shape
+    A = np.empty((m, m))
+    for q in range(S):
+        A[:, :] = M[q]
+        for sweep in range(60):
+            rotated = False
+            for i in range(m - 1):
+                for j in range(i + 1, m):
+                    a = 0.0
+                    b = 0.0
+                    g = 0.0
+                    for r in range(m):
+                        a += A[r, i] * A[r, i]
+                        b += A[r, j] * A[r, j]
+                        g += A[r, i] * A[r, j]
+                    if abs(g) <= m * _EPS * sqrt(a * b):
+                        continue
+                    rotated = True
+                    zeta = (b - a) / (2.0 * g)
+                    t = copysign(1.0, zeta) / (abs(zeta) + sqrt(1.0 + zeta * zeta))
+                    cs = 1.0 / sqrt(1.0 + t * t)
+                    sn = cs * t
+                    for r in range(m):
+                        x = A[r, i]
+                        y = A[r, j]
+                        A[r, i] = cs * x - sn * y
+                        A[r, j] = sn * x + cs * y
+            if not rotated:
+                break
+        smin = np.inf
+        for j in range(m):
+            nrm = 0.0
+            for r in range(m):
+                nrm += A[r, j] * A[r, j]
+            smin = min(smin, sqrt(nrm))
+        out[q] = smin
 
 
 @njit(cache=True)
@@ -91,8 +160,14 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     Z[1:] = W
     Wv = Z[1:]
     L = (1 + kk) * d
+    Zf = Z.reshape(L)
+    nu, Ru, du, Lu = np.uint64(n), np.uint64(1 + kk), np.uint64(d), np.uint64(L)
     zt = np.empty(L)
     K = np.empty(4 * L)
+    s0 = np.empty(n)
+    c0 = np.empty(n)
+    th = np.empty(n)
+    dl = np.empty(n)
     s = np.empty(n)
     c = np.empty(n)
     Wr = np.empty((kk, d))
@@ -101,18 +176,20 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     S = Vs.shape[0]
     for seg in range(nseg - 1, -1, -1):
         Z[0] = ck[seg + 1]
+        sincos(Zf, 0, n, wts, s0, c0)
         for jj in range(ck_every):
             # the forward kernel's step policy (charts.solvers.status): near an N = 4
             # singular point the step is cut into equal sub-steps within the cap
             ss = 0.0
             uu = 0.0
             for i in range(n):
-                ss += (wts[i] * sin(Z[0, i])) ** 2
-                uu += Z[0, n + i] ** 2
+                ss += s0[i] * s0[i]
+                uu += Zf[n + i] * Zf[n + i]
             hc = step_cap(ss, uu, _CAP)
             nsub = 1 if hc >= dt else int(ceil(dt / hc))
             for _ in range(nsub):
-                adjoint_step(Z, minv, wts, -dt / nsub, zt, K, s, c)
+                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, minv, wts, -dt / nsub, nu, Ru, du,
+                             Lu)
             step = (seg + 1) * ck_every - jj - 1
             if step % reorth == 0:
                 orthonormalize(Wv, w, logs)
@@ -192,7 +269,8 @@ def angle_statistics(phi, small=SMALL_ANGLE):
 
 
 def _sin_to_angle(M):
-    sv = np.linalg.svd(M, compute_uv=False)[:, -1]
+    sv = np.empty(M.shape[0])
+    smallest_singular_values(M, sv)
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
