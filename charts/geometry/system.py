@@ -210,9 +210,11 @@ class RotorSystem:
         return theta, u
 
     # -- charts --------------------------------------------------------------------------
-    def best_chart(self, theta) -> int:
-        """The chart with the largest |sin θₖ| (the best conditioned metric)."""
-        return int(np.argmax(np.abs(np.sin(theta))))
+    def best_chart(self, theta):
+        """The chart with the largest |sin θₖ| (the best conditioned metric; ties: the lowest
+        index) at theta (N,), an int; or at each of the points theta (..., N), an int array."""
+        k = np.argmax(np.abs(np.sin(theta)), axis=-1)
+        return int(k) if np.ndim(k) == 0 else k
 
     def _chart(self, theta, chart):
         if not self.is_paper_family:
