@@ -45,8 +45,9 @@ from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_stage_point
-from ..solvers.status import CAP_FRACTION, step_cap
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, shift_sincos
+from ..solvers.status import CAP_FRACTION, RUNNING, status_error, step_cap
+from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
+                               tangent_kernel)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
@@ -60,6 +61,8 @@ _CAP = CAP_FRACTION["rk4"]
 _EPS = 2.0 ** -52
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
+#: forward segments per compiled call (the progress is reported between calls).
+_SEGMENTS = 1000
 
 
 @njit(cache=True, inline="always")
@@ -148,6 +151,24 @@ def smallest_singular_values(M, out):
                 nrm += A[i, x] * A[i, x]
             smin = min(smin, sqrt(nrm))
         out[q] = smin
+
+
+@njit(cache=True)
+def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
+                    logsum, rec_start, rec_every, states, ck, a, b):
+    """Forward segments a … b−1 of ``ce`` steps of the tangent kernel (restricted vectors,
+    samples recorded into ``states``), the state at each segment's end into ck[i + 1].
+    Returns the kernel's status."""
+    no_events = np.empty(0, dtype=np.int64)
+    none = np.empty((0, 0))
+    for i in range(a, b):
+        status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
+                                   True, project, logsum, rec_start, rec_every, states,
+                                   no_events, none)
+        if status != RUNNING:
+            return status
+        ck[i + 1] = Z[0]
+    return RUNNING
 
 
 @njit(cache=True)
@@ -339,11 +360,14 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     states = np.empty((S, (1 + m) * 2 * n))
     if n_tr == 0:  # the first sample is the initial point (the kernel records after steps)
         states[0] = flow.Z.ravel()
-    for i in range(nseg):
-        flow.advance(ce, rec_start=n_tr, rec_every=sample, states=states,
-                     where="hyperbolicity_angles (forward RK4)")
-        ck[i + 1] = flow.y
-        rep.update(ce * dt)
+    for a in range(0, nseg, _SEGMENTS):
+        b = min(nseg, a + _SEGMENTS)
+        status = _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
+                                 system.weights, system.level, flow.speed, dt, ce, reorth,
+                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b)
+        if status != RUNNING:
+            raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
+        rep.update((b - a) * ce * dt)
     Vs = np.ascontiguousarray(states[:, 2 * n:].reshape(S, m, 2 * n))
     W = np.random.default_rng([seed, 1]).normal(size=(m, 2 * n))
     orthonormalize(W, flow.w, np.zeros(m))
