@@ -17,7 +17,7 @@ which is negative.  Dividing by |u|² makes K independent of the speed.
 
 Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ at the same points and frames: for the N
 with generated kernels R_abcd p_i^a p_0^b p_j^c p_0^d from the generated Riemann tensor in
-the best-conditioned chart; for the others (``charts.geometry.kernels.source``) the Gauss
+the best-conditioned chart (weights and level of Σ aᵢ cos θᵢ = c as its arguments); for the others (``charts.geometry.kernels.source``) the Gauss
 equation of the hypersurface in ambient form, [h(p_i,p_j)h(p_0,p_0) − h(p_i,p_0)h(p_j,p_0)] / |∇F|²
 (``charts.geometry.structured.gauss_frame_curvature``, O(N k²) instead of O(N⁴)).
 
@@ -32,12 +32,13 @@ from math import sqrt
 
 import numpy as np
 from numba import njit, types
+from numba.core.dispatcher import Dispatcher
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
-from ..geometry.atlas import chart_coordinates, local_masses
+from ..geometry.atlas import chart_coordinates, local_masses, local_weights
 from ..geometry.checks import finite_array
 from ..geometry.kernels import geometry, source
 from ..geometry.structured import gauss_frame_curvature
@@ -207,21 +208,26 @@ def exact_curvature_matrix(system, theta, P):
 def exact_curvatures(system, theta, P):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frames P,
     shape (S, k + 1, N) (row 0 = p_0), at the points theta, shape (S, N), from the generated
-    Riemann tensor in the best chart (``RotorSystem.best_chart``), or by the Gauss equation
-    (with the weighted normal) where N has no generated kernels or the constraint is not the
-    paper's Σ cos θ = 0.  Compiled over all samples; returns shape (S, k, k)."""
+    Riemann tensor in the best chart (``RotorSystem.best_chart``; with the weights and level
+    of the constraint), or by the Gauss equation (with the weighted normal) where N has no
+    generated kernels.  Compiled over all samples; returns shape (S, k, k)."""
     theta = np.ascontiguousarray(theta, dtype=float)
     P = np.ascontiguousarray(P, dtype=float)
     S, r = P.shape[0], P.shape[1]
     K = np.empty((S, r - 1, r - 1))
     n = system.n
-    if source(n) == "structured" or not system.is_paper_family:
+    if source(n) == "structured":
         _gauss_frames(theta, P, system.masses, system.weights, K)
         return K
     charts_ = np.asarray(system.best_chart(theta), dtype=np.int64).reshape(S)
     idx = np.array([chart_coordinates(n, k) for k in range(n)], dtype=np.int64)
     lm = np.array([local_masses(system.masses, k) for k in range(n)])
-    _riemann_frames_compiled()(geometry(n).riemann, theta, P, charts_, idx, lm, K)
+    lw = np.array([local_weights(system.weights, k) for k in range(n)])
+    riemann = geometry(n, system.weights, system.level).riemann
+    # a generated function left to CPython (``charts.geometry.kernels.JIT_MAX_LINES``) runs
+    # the same loop in Python
+    run = _riemann_frames_compiled() if isinstance(riemann, Dispatcher) else _riemann_frames
+    run(riemann, theta, P, charts_, idx, lm, lw, float(system.level), K)
     return K
 
 
@@ -231,9 +237,10 @@ def _gauss_frames(theta, P, m, wts, K):
         gauss_frame_curvature(theta[i], P[i], m, wts, K[i])
 
 
-def _riemann_frames(riemann, theta, P, charts_, idx, lm, K):
+def _riemann_frames(riemann, theta, P, charts_, idx, lm, lw, level, K):
     """K[i] = Q₁ (R_abcd Q₀ᵇ Q₀ᵈ) Q₁ᵀ with Q = P[i] in the local coordinates of chart
-    charts_[i] (ambient indices idx[k], local masses lm[k]) and R = riemann there."""
+    charts_[i] (ambient indices idx[k], local masses lm[k], local weights lw[k]) and R =
+    riemann there (constraint level ``level``)."""
     S, r, n = P.shape
     d = n - 1
     q = np.empty(d)
@@ -246,7 +253,7 @@ def _riemann_frames(riemann, theta, P, charts_, idx, lm, K):
             q[a] = theta[i, idx[k, a]]
             for b in range(r):
                 Q[b, a] = P[i, b, idx[k, a]]
-        riemann(q, lm[k], R)
+        riemann(q, lm[k], lw[k], level, R)
         for a in range(d):           # R_abcd p0^b p0^d
             for c in range(d):
                 acc = 0.0
@@ -264,6 +271,7 @@ def _riemann_frames(riemann, theta, P, charts_, idx, lm, K):
 
 
 _RIEMANN_SIG = types.float64[:, :, :, ::1](types.float64[::1], types.float64[::1],
+                                           types.float64[::1], types.float64,
                                            types.float64[:, :, :, ::1])
 
 
@@ -273,7 +281,7 @@ def _riemann_frames_compiled():
     function argument (one compilation for every N, cached on disk)."""
     _f8, _i8 = types.float64, types.int64
     sig = types.void(types.FunctionType(_RIEMANN_SIG), _f8[:, ::1], _f8[:, :, ::1], _i8[::1],
-                     _i8[:, ::1], _f8[:, ::1], _f8[:, :, ::1])
+                     _i8[:, ::1], _f8[:, ::1], _f8[:, ::1], _f8, _f8[:, :, ::1])
     return njit(sig, cache=True)(_riemann_frames)
 
 
