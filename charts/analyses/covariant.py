@@ -35,6 +35,7 @@ from __future__ import annotations
 import shutil
 import tempfile
 from dataclasses import dataclass
+from math import isfinite
 
 import numpy as np
 from numba import njit
@@ -42,12 +43,12 @@ from numba import njit
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
-from ..solvers.status import NONFINITE, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize
+from ..solvers.status import NONFINITE, RUNNING, status_error
+from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .finite_time import domination, finite_time_statistics
-from .hyperbolicity import angle_statistics
+from .hyperbolicity import angle_statistics, smallest_singular_values
 
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
            "MAX_MEMORY"]
@@ -95,6 +96,53 @@ def _factor(y, X, minv, s, c, w, restricted, logs, Xraw, Rout):
             Rout[q, r] = a
 
 
+def _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by, gs, logs):
+    """The forward pass (`_forward_kernel` with the flow's settings): the transient of n_tr
+    steps if a = 0, then samples a … b−1.  Returns the kernel's status."""
+    return _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
+                           system.weights, system.level, flow.speed, flow.dt, sample,
+                           flow.reorth_every, flow.w, flow.restricted, flow.project_every,
+                           flow.logsum, n_tr, a, b, tau, Xraw, bq, br, by, gs, logs)
+
+
+@njit(cache=True)
+def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reorth_every, w,
+                    restricted, project_every, logsum, n_tr, a, b, tau, Xraw, bq, br, by, gs,
+                    logs):
+    """If a = 0, the transient first: n_tr steps of the tangent kernel, `_factor`-ed every
+    ``sample`` steps.  Then samples j = a … b−1: advance ``sample`` steps (not before j = 0),
+    `_factor` the vectors and store Q, R, y in row j − a of bq, br, by and the Gram–Schmidt
+    rates in gs[j].  Returns the kernel's status (NONFINITE for a norm that is not finite)."""
+    none = np.empty((0, 0))
+    no_events = np.empty(0, dtype=np.int64)
+    D = Z.shape[0] - 1
+    done = 0
+    j = a
+    while j < b:
+        transient = a == 0 and done < n_tr
+        k = min(sample, n_tr - done) if transient else (sample if j > 0 else 0)
+        if k > 0:
+            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k,
+                                       reorth_every, w, restricted, project_every, logsum, 0, 0,
+                                       none, no_events, none)
+            if status != RUNNING:
+                return status
+        if transient:
+            _factor(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[0])
+            done += k
+            continue
+        logs[:] = 0.0
+        _factor(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[j - a])
+        for r in range(D):
+            if not isfinite(logs[r]):
+                return NONFINITE
+            gs[j, r] = logs[r] / tau
+        bq[j - a] = Z[1:]
+        by[j - a] = Z[0]
+        j += 1
+    return RUNNING
+
+
 @njit(cache=True)
 def _backward(R, C, Cs, lost):
     """Ginelli's backward step over one chunk, last sample first: Cs[b] = C (unit columns,
@@ -123,8 +171,9 @@ def _angle(A, B):
     """Smallest angle (rad) between span(rows of A) and span(rows of B), stacked over the
     first axis; A has orthonormal rows.  From the sine (the part of A orthogonal to B)."""
     Bq, _ = np.linalg.qr(np.swapaxes(B, 1, 2))                       # (S, d, kB)
-    P = A - (A @ Bq) @ np.swapaxes(Bq, 1, 2)
-    sv = np.linalg.svd(P, compute_uv=False)[:, -1]
+    P = np.ascontiguousarray(A - (A @ Bq) @ np.swapaxes(Bq, 1, 2))
+    sv = np.empty(P.shape[0])
+    smallest_singular_values(P, sv)
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
@@ -286,19 +335,10 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     # the samples, with the kernel's Gram–Schmidt, keeping R
     flow = TangentFlow(system, theta0, u0, D, dt=dt, inner="euclidean", restricted=restricted,
                        reorth_every=n_steps + 1, project_every=project, seed=seed)
-    minv = system.minv
     rep = progress_reporter(progress, n_steps * dt, f"CLV N={n} {variant}")
     where = f"covariant_lyapunov_vectors (RK4, {variant})"
     Xraw = np.empty((D, d))
-    Rk = np.empty((D, D))
     logs = np.zeros(D)
-    done = 0
-    while done < n_tr:                                   # forward transient
-        k = min(sample, n_tr - done)
-        flow.advance(k, where=where)
-        _factor(flow.y, flow.X, minv, flow.sc[0], flow.sc[1], flow.w, restricted, logs, Xraw, Rk)
-        done += k
-        rep.update(k * dt)
     store = _Store((total, D, d), (total, D, D), (total, d),
                    total * sample_bytes(n, variant) > max_memory, scratch)
     try:
@@ -306,18 +346,11 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
         bq, br, by = np.empty((CHUNK, D, d)), np.empty((CHUNK, D, D)), np.empty((CHUNK, d))
         for a in range(0, total, CHUNK):                  # forward: store Q_j, R_j, y_j
             b = min(total, a + CHUNK)
-            for j in range(a, b):
-                if j > 0:
-                    flow.advance(sample, where=where)
-                    rep.update(tau)
-                logs[:] = 0.0
-                _factor(flow.y, flow.X, minv, flow.sc[0], flow.sc[1], flow.w, restricted, logs,
-                        Xraw, br[j - a])
-                if not np.isfinite(logs).all():
-                    raise status_error(NONFINITE, flow.steps * dt, where)
-                gs[j] = logs / tau
-                bq[j - a] = flow.X
-                by[j - a] = flow.y
+            status = _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by,
+                                      gs, logs)
+            if status != RUNNING:
+                raise status_error(status, flow.steps * dt, where)
+            rep.update(((n_tr if a == 0 else 0) + (b - a - (a == 0)) * sample) * dt)
             store.Q[a:b], store.R[a:b], store.y[a:b] = bq[:b - a], br[:b - a], by[:b - a]
         rng = np.random.default_rng([seed, 2])
         C = np.triu(rng.uniform(0.5, 1.5, size=(D, D)))

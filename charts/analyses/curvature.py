@@ -27,10 +27,12 @@ For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 from math import sqrt
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.core.dispatcher import Dispatcher
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
@@ -48,7 +50,7 @@ from .arguments import (positive_int, positive_time, progress_reporter, project_
                         samples_of, start_state, steps_of)
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
-           "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
+           "exact_curvatures", "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
 
 
 def gaussian_curvature_eq22(theta):
@@ -66,22 +68,25 @@ def gaussian_curvature_eq22(theta):
 
 
 @njit(cache=True)
-def frame_step(y, X, P, minv, a, h):
+def frame_step(y, X, P, minv, a, h, work):
     """One RK4 step of size h, in place, of eq (8) for y (2N,), eq (17) for the rows of X
-    (k, 2N) and eq (19) for the rows of P (kp, N); weights a."""
+    (k, 2N) and eq (19) for the rows of P (kp, N); weights a; ``work`` of at least 6L + 6N
+    floats, L = 2N + 2Nk + N·kp (the packed state, its stage point, the stages, the factors)."""
     n = y.size // 2
     d = 2 * n
     k = X.shape[0]
     kp = P.shape[0]
     oP = d + k * d
     L = oP + kp * n
-    z = np.empty(L)
+    z = work[:L]
+    zt = work[L:2 * L]
+    K = work[2 * L:6 * L]
+    w6 = work[6 * L:6 * L + 6 * n]
+    s, c, f, g, p, q = w6[:n], w6[n:2 * n], w6[2 * n:3 * n], w6[3 * n:4 * n], w6[4 * n:5 * n], \
+        w6[5 * n:]
     z[:d] = y
     z[d:oP] = X.ravel()
     z[oP:] = P.ravel()
-    zt = np.empty(L)
-    K = np.empty(4 * L)
-    s, c, f, g, p, q = stage_work(n)
     for st in range(4):
         rk4_stage_point(z, K, st, h, L, zt)
         o = st * L
@@ -128,17 +133,26 @@ def curvature_frame(y, X, minv, wts, m, Xj, P):
 
 
 @njit(cache=True)
-def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K):
+def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K, work=None):
     """Route (a), eqs (20)–(21) with the minus sign: K[i, j] from one RK4 step of ±dt of
-    the trajectory, the Jacobi fields Xj and the frame P (`curvature_frame`)."""
+    the trajectory, the Jacobi fields Xj and the frame P (`curvature_frame`); ``work`` from
+    `curvature_work` (allocated when not given)."""
     n = y.size // 2
     k = Xj.shape[0]
-    cs = np.zeros((k, k))
+    if work is None:
+        work = curvature_work(n, k)
+    nf = work.size - (2 * n + k * 2 * n + (k + 1) * n + k * k)
+    y2 = work[nf:nf + 2 * n]
+    X2 = work[nf + 2 * n:nf + 2 * n + k * 2 * n].reshape((k, 2 * n))
+    o = nf + 2 * n + k * 2 * n
+    P2 = work[o:o + (k + 1) * n].reshape((k + 1, n))
+    cs = work[o + (k + 1) * n:].reshape((k, k))
+    cs[:, :] = 0.0
     for sign in (1.0, -1.0):
-        y2 = y.copy()
-        X2 = Xj.copy()
-        P2 = P.copy()
-        frame_step(y2, X2, P2, minv, wts, sign * dt)
+        y2[:] = y
+        X2[:, :] = Xj
+        P2[:, :] = P
+        frame_step(y2, X2, P2, minv, wts, sign * dt, work[:nf])
         for i in range(k):
             for j in range(k):
                 acc = 0.0
@@ -148,6 +162,13 @@ def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K):
     for i in range(k):
         for j in range(k):
             K[i, j] = -(cs[i, j] - (2.0 if i == j else 0.0)) / (dt * dt * uu)
+
+
+@njit(cache=True)
+def curvature_work(n, k):
+    """Work array of `numerical_curvature` for N = n and k Jacobi fields."""
+    return np.empty(6 * (2 * n + k * 2 * n + (k + 1) * n) + 6 * n
+                    + 2 * n + k * 2 * n + (k + 1) * n + k * k)
 
 
 @njit(cache=True)
@@ -164,6 +185,7 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
     no_events = np.empty(0, dtype=np.int64)
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
+    work = curvature_work(n, k)
     for smp in range(Ka.shape[0]):
         status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth,
                                       w, True, project_every, logs, 0, 0, none, no_events, none)
@@ -173,27 +195,94 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
         uu = curvature_frame(y, Z[1:], minv, wts, m, Xj, P)
         Ys[smp] = y
         Ps[smp] = P
-        numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[smp])
+        numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[smp], work)
     return RUNNING, Ka.shape[0]
 
 
 def exact_curvature_matrix(system, theta, P):
-    """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frame P,
-    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart (with
-    the weights and level of the constraint), or by the Gauss equation (with the weighted
-    normal) where N has no generated kernels.  Returns shape (k, k)."""
-    if source(system.n) == "structured":
-        return gauss_frame_curvature(theta, P, system.masses, system.weights,
-                                     np.empty((P.shape[0] - 1,) * 2))
-    k = system.best_chart(theta)
-    idx = chart_coordinates(system.n, k)
-    q = np.ascontiguousarray(theta[idx])
-    R = geometry(system.n, system.weights, system.level).riemann(
-        q, local_masses(system.masses, k), local_weights(system.weights, k), system.level,
-        np.empty((system.dim,) * 4))
-    Q = P[:, idx]
-    Rp = np.einsum("abcd,b,d->ac", R, Q[0], Q[0])  # R_abcd p_i^a p0^b p_j^c p0^d
-    return Q[1:] @ Rp @ Q[1:].T
+    """Route (b) at one point: `exact_curvatures` of theta (N,) and the frame P (k + 1, N);
+    returns shape (k, k)."""
+    return exact_curvatures(system, np.asarray(theta, float)[None], np.asarray(P, float)[None])[0]
+
+
+def exact_curvatures(system, theta, P):
+    """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frames P,
+    shape (S, k + 1, N) (row 0 = p_0), at the points theta, shape (S, N), from the generated
+    Riemann tensor in the best chart (``RotorSystem.best_chart``; with the weights and level
+    of the constraint), or by the Gauss equation (with the weighted normal) where N has no
+    generated kernels.  Compiled over all samples; returns shape (S, k, k)."""
+    theta = np.ascontiguousarray(theta, dtype=float)
+    P = np.ascontiguousarray(P, dtype=float)
+    S, r = P.shape[0], P.shape[1]
+    K = np.empty((S, r - 1, r - 1))
+    n = system.n
+    if source(n) == "structured":
+        _gauss_frames(theta, P, system.masses, system.weights, K)
+        return K
+    charts_ = np.asarray(system.best_chart(theta), dtype=np.int64).reshape(S)
+    idx = np.array([chart_coordinates(n, k) for k in range(n)], dtype=np.int64)
+    lm = np.array([local_masses(system.masses, k) for k in range(n)])
+    lw = np.array([local_weights(system.weights, k) for k in range(n)])
+    riemann = geometry(n, system.weights, system.level).riemann
+    # a generated function left to CPython (``charts.geometry.kernels.JIT_MAX_LINES``) runs
+    # the same loop in Python
+    run = _riemann_frames_compiled() if isinstance(riemann, Dispatcher) else _riemann_frames
+    run(riemann, theta, P, charts_, idx, lm, lw, float(system.level), K)
+    return K
+
+
+@njit(cache=True)
+def _gauss_frames(theta, P, m, wts, K):
+    for i in range(theta.shape[0]):
+        gauss_frame_curvature(theta[i], P[i], m, wts, K[i])
+
+
+def _riemann_frames(riemann, theta, P, charts_, idx, lm, lw, level, K):
+    """K[i] = Q₁ (R_abcd Q₀ᵇ Q₀ᵈ) Q₁ᵀ with Q = P[i] in the local coordinates of chart
+    charts_[i] (ambient indices idx[k], local masses lm[k], local weights lw[k]) and R =
+    riemann there (constraint level ``level``)."""
+    S, r, n = P.shape
+    d = n - 1
+    q = np.empty(d)
+    R = np.empty((d, d, d, d))
+    Q = np.empty((r, d))
+    Rp = np.empty((d, d))
+    for i in range(S):
+        k = charts_[i]
+        for a in range(d):
+            q[a] = theta[i, idx[k, a]]
+            for b in range(r):
+                Q[b, a] = P[i, b, idx[k, a]]
+        riemann(q, lm[k], lw[k], level, R)
+        for a in range(d):           # R_abcd p0^b p0^d
+            for c in range(d):
+                acc = 0.0
+                for b in range(d):
+                    for e in range(d):
+                        acc += R[a, b, c, e] * Q[0, b] * Q[0, e]
+                Rp[a, c] = acc
+        for x in range(r - 1):       # p_i^a (…)_ac p_j^c
+            for y in range(r - 1):
+                acc = 0.0
+                for a in range(d):
+                    for c in range(d):
+                        acc += Q[1 + x, a] * Rp[a, c] * Q[1 + y, c]
+                K[i, x, y] = acc
+
+
+_RIEMANN_SIG = types.float64[:, :, :, ::1](types.float64[::1], types.float64[::1],
+                                           types.float64[::1], types.float64,
+                                           types.float64[:, :, :, ::1])
+
+
+@cache
+def _riemann_frames_compiled():
+    """`_riemann_frames` compiled on first use with the Riemann function as a first-class
+    function argument (one compilation for every N, cached on disk)."""
+    _f8, _i8 = types.float64, types.int64
+    sig = types.void(types.FunctionType(_RIEMANN_SIG), _f8[:, ::1], _f8[:, :, ::1], _i8[::1],
+                     _i8[:, ::1], _f8[:, ::1], _f8[:, ::1], _f8, _f8[:, :, ::1])
+    return njit(sig, cache=True)(_riemann_frames)
 
 
 @dataclass
@@ -321,7 +410,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     rep.close()
     Kb = None
     if exact:
-        Kb = np.array([exact_curvature_matrix(system, Ys[i, :n], Ps[i]) for i in range(S)])
+        Kb = exact_curvatures(system, Ys[:, :n], Ps)
     t = (np.arange(1, S + 1) * sample) * dt
     params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
                   level=system.level, dt=dt, sample_every=sample * dt,

@@ -34,51 +34,144 @@ forward vectors are stored only at the S sample points: S·m·2N floats.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import ceil, sin
+from math import ceil, copysign, sqrt
 
 import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import adjoint_rate, state_stage
+from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean
 from ..solvers.rk import rk4_combine, rk4_stage_point
-from ..solvers.status import CAP_FRACTION, step_cap
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps
+from ..solvers.status import CAP_FRACTION, RUNNING, status_error, step_cap
+from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
+                               tangent_kernel)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
 from .statistics import small_value_law
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
-           "SMALL_ANGLE", "LAW_KEYS", "adjoint_step"]
+           "SMALL_ANGLE", "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
 SMALL_ANGLE = 0.05
 #: the fields of `small_value_law` that `angle_statistics` reports as ``law_<field>``.
 LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
 _CAP = CAP_FRACTION["rk4"]
+_EPS = 2.0 ** -52
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
+#: forward segments per compiled call (the progress is reported between calls).
+_SEGMENTS = 1000
+
+
+@njit(cache=True, inline="always")
+def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, minv, wts, h, n, R, d, L):
+    """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
+    and of the adjoint flow ẇ = −Jᵀw for the R − 1 vectors after it (flat, length L = R·d),
+    with the weighted sin/cos s0, c0 of the state's angles kept current by the tangent
+    kernel's angle shift (``charts.solvers.tangent.shift_sincos``; stage 0 is a shift by 0).
+    n, R, d, L unsigned (see the tangent kernel)."""
+    zero = np.uint64(0)
+    for j in range(n):
+        th[j] = Zf[j]
+    for st in range(4):
+        rk4_stage_point(Zf, K, st, h, L, Zt)
+        o = np.uint64(st) * L
+        for j in range(n):
+            dl[j] = Zt[j] - th[j]
+        shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
+        lam, B = multiplier(Zt, zero, n, minv, s, c)
+        iB = 1.0 / B if B > 0.0 else 0.0
+        state_rate(Zt, zero, n, minv, s, lam, K, o)
+        for r in range(np.uint64(1), R):
+            adjoint_rate(Zt, r * d, n, Zt, zero, minv, s, c, lam, iB, K, o + r * d)
+    rk4_combine(Zf, K, h, L, Zf)
+    for j in range(n):
+        dl[j] = Zf[j] - th[j]
+    shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
 
 
 @njit(cache=True)
-def adjoint_step(Z, minv, a, h, zt, K, s, c):
+def adjoint_step(Z, minv, a, h):
     """One RK4 step of size h (h < 0: backward), in place, of eq (8) for Z[0] and of the
-    adjoint flow ẇ = −Jᵀw for the rows Z[1:] (weights a); zt (L,), K (4L,), s, c (N,) are work arrays."""
+    adjoint flow ẇ = −Jᵀw for the rows Z[1:] (weights a), as in the backward pass."""
     R, d = Z.shape
     n = d // 2
     L = R * d
-    Zf = Z.reshape(L)
-    for st in range(4):
-        rk4_stage_point(Zf, K, st, h, L, zt)
-        o = st * L
-        lam, iB = state_stage(zt, 0, n, minv, a, s, c, K, o)
-        for r in range(1, R):
-            adjoint_rate(zt, r * d, n, zt, 0, minv, s, c, lam, iB, K, o + r * d)
-    rk4_combine(Zf, K, h, L, Zf)
+    s0 = np.empty(n)
+    c0 = np.empty(n)
+    sincos(Z[0], 0, n, a, s0, c0)
+    _adjoint_rk4(Z.reshape(L), np.empty(L), np.empty(4 * L), s0, c0, np.empty(n), np.empty(n),
+                 np.empty(n), np.empty(n), minv, a, h, np.uint64(n), np.uint64(R),
+                 np.uint64(d), np.uint64(L))
+
+
+@njit(cache=True)
+def smallest_singular_values(M, out):
+    """out[q] = the smallest singular value of M[q], shape (r, c) with r <= c, by one-sided
+    Jacobi (Hestenes) rotations of the rows of a copy until they are orthogonal: their norms
+    are then the singular values, each to high relative accuracy (rounding level for the
+    small matrices of the angle tests)."""
+    S, r, c = M.shape
+    if r > c:
+        raise ValueError("smallest_singular_values: M must have no more rows than columns")
+    A = np.empty((r, c))
+    for q in range(S):
+        A[:, :] = M[q]
+        for sweep in range(60):
+            rotated = False
+            for i in range(r - 1):
+                for j in range(i + 1, r):
+                    a = 0.0
+                    b = 0.0
+                    g = 0.0
+                    for x in range(c):
+                        a += A[i, x] * A[i, x]
+                        b += A[j, x] * A[j, x]
+                        g += A[i, x] * A[j, x]
+                    if abs(g) <= c * _EPS * sqrt(a * b):
+                        continue
+                    rotated = True
+                    zeta = (b - a) / (2.0 * g)
+                    t = copysign(1.0, zeta) / (abs(zeta) + sqrt(1.0 + zeta * zeta))
+                    cs = 1.0 / sqrt(1.0 + t * t)
+                    sn = cs * t
+                    for x in range(c):
+                        u = A[i, x]
+                        v = A[j, x]
+                        A[i, x] = cs * u - sn * v
+                        A[j, x] = sn * u + cs * v
+            if not rotated:
+                break
+        smin = np.inf
+        for i in range(r):
+            nrm = 0.0
+            for x in range(c):
+                nrm += A[i, x] * A[i, x]
+            smin = min(smin, sqrt(nrm))
+        out[q] = smin
+
+
+@njit(cache=True)
+def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
+                    logsum, rec_start, rec_every, states, ck, a, b):
+    """Forward segments a … b−1 of ``ce`` steps of the tangent kernel (restricted vectors,
+    samples recorded into ``states``), the state at each segment's end into ck[i + 1].
+    Returns the kernel's status."""
+    no_events = np.empty(0, dtype=np.int64)
+    none = np.empty((0, 0))
+    for i in range(a, b):
+        status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
+                                   True, project, logsum, rec_start, rec_every, states,
+                                   no_events, none)
+        if status != RUNNING:
+            return status
+        ck[i + 1] = Z[0]
+    return RUNNING
 
 
 @njit(cache=True)
@@ -94,8 +187,14 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     Z[1:] = W
     Wv = Z[1:]
     L = (1 + kk) * d
+    Zf = Z.reshape(L)
+    nu, Ru, du, Lu = np.uint64(n), np.uint64(1 + kk), np.uint64(d), np.uint64(L)
     zt = np.empty(L)
     K = np.empty(4 * L)
+    s0 = np.empty(n)
+    c0 = np.empty(n)
+    th = np.empty(n)
+    dl = np.empty(n)
     s = np.empty(n)
     c = np.empty(n)
     Wr = np.empty((kk, d))
@@ -104,18 +203,20 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     S = Vs.shape[0]
     for seg in range(nseg - 1, -1, -1):
         Z[0] = ck[seg + 1]
+        sincos(Zf, 0, n, wts, s0, c0)
         for jj in range(ck_every):
             # the forward kernel's step policy (charts.solvers.status): near an N = 4
             # singular point the step is cut into equal sub-steps within the cap
             ss = 0.0
             uu = 0.0
             for i in range(n):
-                ss += (wts[i] * sin(Z[0, i])) ** 2
-                uu += Z[0, n + i] ** 2
+                ss += s0[i] * s0[i]
+                uu += Zf[n + i] * Zf[n + i]
             hc = step_cap(ss, uu, _CAP)
             nsub = 1 if hc >= dt else int(ceil(dt / hc))
             for _ in range(nsub):
-                adjoint_step(Z, minv, wts, -dt / nsub, zt, K, s, c)
+                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, minv, wts, -dt / nsub, nu, Ru, du,
+                             Lu)
             step = (seg + 1) * ck_every - jj - 1
             if step % reorth == 0:
                 orthonormalize(Wv, w, logs)
@@ -204,7 +305,8 @@ def angle_statistics(phi, small=SMALL_ANGLE):
 
 
 def _sin_to_angle(M):
-    sv = np.linalg.svd(M, compute_uv=False)[:, -1]
+    sv = np.empty(M.shape[0])
+    smallest_singular_values(M, sv)
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
@@ -270,11 +372,14 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     states = np.empty((S, (1 + m) * 2 * n))
     if n_tr == 0:  # the first sample is the initial point (the kernel records after steps)
         states[0] = flow.Z.ravel()
-    for i in range(nseg):
-        flow.advance(ce, rec_start=n_tr, rec_every=sample, states=states,
-                     where="hyperbolicity_angles (forward RK4)")
-        ck[i + 1] = flow.y
-        rep.update(ce * dt)
+    for a in range(0, nseg, _SEGMENTS):
+        b = min(nseg, a + _SEGMENTS)
+        status = _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
+                                 system.weights, system.level, flow.speed, dt, ce, reorth,
+                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b)
+        if status != RUNNING:
+            raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
+        rep.update((b - a) * ce * dt)
     Vs = np.ascontiguousarray(states[:, 2 * n:].reshape(S, m, 2 * n))
     W = np.random.default_rng([seed, 1]).normal(size=(m, 2 * n))
     orthonormalize(W, flow.w, np.zeros(m))

@@ -212,10 +212,12 @@ class RotorSystem:
         return theta, u
 
     # -- charts --------------------------------------------------------------------------
-    def best_chart(self, theta) -> int:
+    def best_chart(self, theta):
         """The chart with the largest |aₖ sin θₖ| (the best conditioned metric; |sin θₖ| for
-        the paper's weights)."""
-        return int(np.argmax(np.abs(self.weights * np.sin(theta))))
+        the paper's weights; ties: the lowest index) at theta (N,), an int; or at each of the
+        points theta (..., N), an int array."""
+        k = np.argmax(np.abs(self.weights * np.sin(theta)), axis=-1)
+        return int(k) if np.ndim(k) == 0 else k
 
     def _chart(self, theta, chart):
         """(k, local indices, q, local masses, local weights) of ``chart`` at theta."""

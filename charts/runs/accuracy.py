@@ -200,8 +200,8 @@ def _untimed_warm(fn):
 def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
     """N = 3 numerical curvature (route a) against eq (22) at the same points; exact route
     (b) timed at the same points."""
-    from ..analyses.curvature import (curvature_along_trajectory, exact_curvature_matrix,
-                            gaussian_curvature_eq22)
+    from ..analyses.curvature import (curvature_along_trajectory, exact_curvatures,
+                                      gaussian_curvature_eq22)
 
     system = RotorSystem(3)
     theta0, u0 = system.random_state(seed=seed, speed=1.0)
@@ -225,8 +225,7 @@ def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
     th, fr = last.theta, last.frames
 
     def exact():
-        return np.array([exact_curvature_matrix(system, th[i], fr[i])[0, 0]
-                         for i in range(len(th))])
+        return exact_curvatures(system, th, fr)[:, 0, 0]
 
     wall, Ke = _timed(exact, repeat)
     err = float(np.median(np.abs(Ke - gaussian_curvature_eq22(th)) /

@@ -261,19 +261,24 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
             break
         if code != POST_OK:
             ist[I_FRESH] = 1
-        # samples at the end of the step (after projection / chart switch)
+        # samples at the end of the step (after projection / chart switch); the invariants
+        # are monitored on the ambient state of the step's end, the last such sample if any
+        last = -1
         if use_eval:
             while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] <= t:
                 to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
                 T_out[ist[I_NOUT]] = t_eval[ist[I_IEVAL]]
+                last = ist[I_NOUT]
                 ist[I_NOUT] += 1
                 ist[I_IEVAL] += 1
         else:
             to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
             T_out[ist[I_NOUT]] = t
+            last = ist[I_NOUT]
             ist[I_NOUT] += 1
-        to_ambient(y, par, ipar, arow)
-        if not monitor(arow, n, mpar, st[S_E0], mon):
+        if last < 0:
+            to_ambient(y, par, ipar, arow)
+        if not monitor(arow if last < 0 else Y_out[last], n, mpar, st[S_E0], mon):
             status = NONFINITE
             break
         if code == POST_LOG_FULL:
