@@ -1,7 +1,9 @@
-"""The Lyapunov task of charts side by side with its peers, measured in one run.
+"""Every performance target of charts, measured in one run: the Lyapunov task side by side
+with its peers, ensembles in vector lanes, every analysis against the Lyapunov kernel, cost
+against N, the cold start and `charts reproduce`, then the table of targets met or not.
 
-    charts bench performance            # t = 2000, ~5 minutes on 2 cores
-    charts bench performance --quick    # t = 500, 3 repetitions, ~2 minutes
+    charts bench performance            # t = 2000, reproduce --full: ~15 minutes on 2 cores
+    charts bench performance --quick    # t = 500, reproduce --quick: ~6 minutes
 
 Task: N = 5, equal masses, unit speed, leading 3 Lyapunov exponents from one fixed state
 (``RotorSystem(5).random_state(seed=1)``), averaged over t after a transient of 50.
@@ -9,8 +11,7 @@ Task: N = 5, equal masses, unit speed, leading 3 Lyapunov exponents from one fix
     every 0.1 time units by default, and every step for comparison);
   * JiTCODE (if installed) and SciPy ``solve_ivp`` + NumPy QR: see
     ``charts.runs.benchmarks.peers`` (SciPy runs over a shorter time and is scaled: it is slow).
-Reports cold start (a new process with an empty numba cache, i.e. the first-ever compile,
-and with the cache filled), warm medians, throughput, the accuracy of each route (trajectory
+Reports warm medians, throughput, the accuracy of each route (trajectory
 error at t = 20 against DOP853 at rtol 1e-13, and the exponents beside a long reference), the
 speed-up of independent trajectories on all cores and the code-generation time.  Installs
 nothing; peers that are missing are skipped.  The implementations take turns, every number
@@ -24,9 +25,7 @@ import argparse
 import datetime
 import os
 import statistics
-import subprocess
 import sys
-import tempfile
 import time
 from concurrent.futures import ProcessPoolExecutor
 
@@ -36,17 +35,20 @@ from ...analyses.lyapunov import lyapunov_spectrum
 from ...geometry.system import RotorSystem
 from ..cli_parser import OneLineParser
 from .environment import load, machine, spread
+from .targets import (coldstart_section, ensemble_section, format_targets, pace_section,
+                      reproduce_section, scaling_section, target_rows)
 from .peers import (K, N, SEED, TRANSIENT, fixed_state, jitcode_run, jitcode_setup, scipy_run,
                     trajectory_errors)
 
-__all__ = ["REFERENCE", "REFERENCE_SE", "ours", "cold_start", "ensemble_speedup",
-           "codegen_time", "main"]
+__all__ = ["REFERENCE", "REFERENCE_SE", "ours", "ensemble_speedup", "codegen_time", "main"]
 
 #: 8 independent trajectories × t = 2.5·10⁴ (``charts reproduce --full``, docs/reproduce.md),
 #: the long reference the t = 2000 estimates are compared with.
 REFERENCE = np.array([0.2977, 0.2255, 0.1227])
 REFERENCE_SE = np.array([0.0007, 0.0006, 0.0007])
 DT = 0.01
+#: the sections after the Lyapunov task (``--skip`` leaves them out).
+SECTIONS = ("ensemble", "pace", "scaling", "coldstart", "reproduce", "cores")
 
 
 def ours(t_final, reorth_every=0.1):
@@ -58,28 +60,6 @@ def ours(t_final, reorth_every=0.1):
                                  reorth_every=reorth_every)
     return (time.perf_counter() - t0, np.asarray(r.exponents), time.process_time() - c0,
             np.asarray(r.stderr))
-
-
-_COLD = """
-import sys, time; t0, c0 = time.perf_counter(), time.process_time()
-import charts
-S = charts.RotorSystem(5); th, u = S.random_state(seed=1)
-t1, c1 = time.perf_counter(), time.process_time()
-charts.lyapunov_spectrum(S, th, u, 2.0, dt=0.01, n_exponents=3, t_transient=0.0, n_batches=2)
-t2, c2 = time.perf_counter(), time.process_time()
-charts.lyapunov_spectrum(S, th, u, float(sys.argv[1]), dt=0.01, n_exponents=3, t_transient=50.0)
-t3, c3 = time.perf_counter(), time.process_time()
-print(t1 - t0, t2 - t1, t3 - t2, c1 - c0, c2 - c1, c3 - c2)
-"""
-
-
-def cold_start(cache_dir, t_final):
-    """New process: wall seconds (import, first tiny integration = load or compile, then the
-    task), then the same three as CPU seconds."""
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache_dir))
-    out = subprocess.run([sys.executable, "-c", _COLD, str(t_final)], env=env, capture_output=True,
-                         text=True, check=True, cwd=cache_dir)
-    return tuple(map(float, out.stdout.split()))
 
 
 # ----------------------------------------------------------------------------- both cores
@@ -145,7 +125,10 @@ def main(argv=None) -> int:
                     "SciPy run, scaled to --t (default 150; 30 with --quick)")
     ap.add_argument("--quick", action="store_true", help="shorter runs, fewer repeats")
     ap.add_argument("--skip-codegen", action="store_true", help="do not time the code generator")
+    ap.add_argument("--skip", nargs="+", default=[], choices=SECTIONS, metavar="SECTION",
+                    help="sections to leave out: " + ", ".join(SECTIONS))
     args = ap.parse_args(argv)
+    skip = set(args.skip)
     T = args.t or (500.0 if args.quick else 2000.0)
     rep = args.repeat or (3 if args.quick else 5)
     t_sp = args.scipy_t or (30.0 if args.quick else 150.0)
@@ -155,20 +138,6 @@ def main(argv=None) -> int:
     print("command: charts bench performance " + " ".join(sys.argv[1:] if argv is None else argv))
     print(f"task: N={N}, {K} exponents, unit speed, seed {SEED}, t={T:g} after a transient of "
           f"{TRANSIENT:g}; medians (min–max) of {rep}\n{load()}\n", flush=True)
-
-    # -- cold start: new processes, empty then filled numba cache
-    with tempfile.TemporaryDirectory() as cache:
-        first = cold_start(cache, T)
-        filled = [cold_start(cache, T) for _ in range(rep)]
-    med = [statistics.median(f[i] for f in filled) for i in range(6)]
-    print(f"cold start, empty numba cache (first-ever compile): import {first[0]:.2f} s, first "
-          f"integration (compile) {first[1]:.2f} s (CPU {first[4]:.2f} s), then the task "
-          f"{first[2]:.2f} s")
-    print(f"cold start, cache filled (median of {rep}): import {med[0]:.2f} s, first integration "
-          f"(load) {med[1]:.2f} s -> integrating after {med[0] + med[1]:.2f} s (CPU "
-          f"{med[3] + med[4]:.2f} s); the task {med[2]:.2f} s")
-    cold_empty, cold_filled = first[1] + first[2], med[1] + med[2]
-    print(load(), flush=True)
 
     # -- warm, this process; the implementations take turns
     jit = jitcode_setup()
@@ -196,9 +165,7 @@ def main(argv=None) -> int:
               f"per RK4 step", flush=True)
     rows = [("charts RK4 dt=0.01, eq 18 every 0.1 (default), warm", cpu["default"], lam_ours),
             ("charts RK4 dt=0.01, eq 18 every step, warm", cpu["every"], runs["every"][0][1]),
-            ("charts, new process, cache filled (load + task)", [f[4] + f[5] for f in filled],
-             None),
-            ("charts, new process, empty cache (compile + task)", [first[4] + first[5]], None)]
+]
     if ode is not None:
         t_gen = jit[0]
         rows.append(("JiTCODE jitcode_lyap dopri5 1e-8/1e-10, warm", cpu["jitcode"],
@@ -222,8 +189,7 @@ def main(argv=None) -> int:
         print(f"| {name} | {med_c:.3f}{rng} | {med_c / c_ours:.2f} | "
               f"{fmt_lam(lam) if lam is not None else ''} |")
     jit_total = "-" if ode is None else f"{jit[0] + statistics.median(wall['jitcode']):.3f} s"
-    print(f"\ncold starts, wall: {cold_filled:.3f} s (cache filled), {cold_empty:.3f} s (empty "
-          f"cache); JiTCODE generation + compilation + task: {jit_total}")
+    print(f"\nJiTCODE generation + compilation + task: {jit_total}")
     print(f"charts batch-means standard errors at t={T:g}: {fmt_lam(err_ours)}; long reference "
           f"(8 × 2.5e4): {fmt_lam(REFERENCE)} ± {fmt_lam(REFERENCE_SE)}")
     for name, _, lam in rows:
@@ -239,7 +205,37 @@ def main(argv=None) -> int:
         print("SciPy not installed: no trajectory errors")
     print(load(), flush=True)
 
-    # -- all cores
+    # -- the other targets, then the table they are judged by
+    ens = pace = totals = rep_time = None
+    preset = "quick" if args.quick else "full"
+    if "ensemble" not in skip:
+        print("\n## ensembles in vector lanes (lyapunov_ensemble, 1 core)")
+        ens = ensemble_section(T / 4, rep)
+    if "pace" not in skip:
+        print("\n## every analysis against the Lyapunov kernel")
+        pace = pace_section(T / 4, rep)
+    if "scaling" not in skip:
+        print("\n## cost per time unit against N")
+        scaling_section((3, 5, 8, 16) if args.quick else (3, 5, 8, 16, 32, 64), 3)
+    if "coldstart" not in skip:
+        print("\n## cold start (new processes, import charts to the first exponents)")
+        totals = coldstart_section(1 if args.quick else 2)
+    if "reproduce" not in skip:
+        print(f"\n## charts reproduce --{preset}")
+        rep_time = reproduce_section(preset)
+    if "cores" not in skip:
+        print("\n## independent trajectories on all cores (process pool)")
+        all_cores(T, rep)
+    if not args.skip_codegen:
+        secs, which = codegen_time()
+        print(f"code generation {which} (charts.codegen.emit.module_source): {secs:.1f} s; "
+              + load())
+    print("\n## targets\n" + format_targets(target_rows(ens, pace, rep_time, preset, totals)))
+    return 0
+
+
+def all_cores(T, rep):
+    """Print the speed-up of independent trajectories in a warm process pool."""
     n_members = 4 * (os.cpu_count() or 1)
     sp, eff = [], []
     for _ in range(rep):
@@ -254,13 +250,7 @@ def main(argv=None) -> int:
     m, lo, hi = spread(sp)
     print(f"speed-up on all cores: median {m:.2f}x (range {lo:.2f}-{hi:.2f}); parallel "
           f"efficiency (CPU time of the trajectories / (workers x wall)): median "
-          f"{statistics.median(eff):.2f}\n", flush=True)
-
-    if not args.skip_codegen:
-        secs, which = codegen_time()
-        print(f"code generation {which} (charts.codegen.emit.module_source): {secs:.1f} s; "
-              + load())
-    return 0
+          f"{statistics.median(eff):.2f}", flush=True)
 
 
 if __name__ == "__main__":
