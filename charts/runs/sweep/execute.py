@@ -152,6 +152,16 @@ def dask_client(scheduler, workers):
     return Client(cluster), cluster
 
 
+def _silence_dask_logs():
+    """Only critical reports from Dask's loggers in this process from now on: its own
+    configuration gives some of them (e.g. ``distributed.client``) levels of their own, so
+    the parent ``distributed`` alone does not reach them."""
+    names = [n for n in list(logging.root.manager.loggerDict) if n.split(".")[0] in
+             ("distributed", "tornado", "asyncio")]
+    for name in ["distributed", *names]:
+        logging.getLogger(name).setLevel(logging.CRITICAL)
+
+
 def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, workers, quiet,
              on_point):
     """Submit ``todo`` and write each row as its point finishes (with a progress bar)."""
@@ -198,7 +208,7 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
         if isinstance(exc, KeyboardInterrupt):
             # the teardown of an interrupted client logs its cancelled tasks' errors with
             # tracebacks; the user is told what was kept and how to resume instead
-            logging.getLogger("distributed").setLevel(logging.CRITICAL)
+            _silence_dask_logs()
         client.cancel(list(futures))
         raise
     finally:
