@@ -132,8 +132,28 @@ class LinkageFlow:
         self.health = np.array([np.inf])
 
     @property
+    def y(self):
+        """The state (q, v), shape (14,) (a view)."""
+        return self.Z[0]
+
+    @property
+    def X(self):
+        """The tangent vectors, shape (k, 14) (a view)."""
+        return self.Z[1:]
+
+    @property
     def steps(self) -> int:
         return int(self.counter[0])
+
+    def state(self) -> dict:
+        """Copies of every array that decides the next step (for checkpoints), as
+        `TangentFlow.state`; ``health`` keeps the smallest KKT health seen."""
+        return {"Z": self.Z.copy(), "counter": self.counter.copy(),
+                "logsum": self.logsum.copy(), "health": self.health.copy()}
+
+    def load_state(self, a) -> None:
+        for key, arr in self.state().items():
+            getattr(self, key)[...] = a[key]
 
     def advance(self, nsteps, *, events=None, event_logs=None, where="linkage RK4"):
         """Advance ``nsteps`` steps; DegenerateMetricError / IntegrationError on failure."""
