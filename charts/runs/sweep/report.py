@@ -14,6 +14,7 @@ import numpy as np
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ..plotting import new_figure, save_png
+from .linkage import paper_limit_row, plot_linkage_sweep
 from .points import SweepPoint
 from .table import HEAD, TAIL, csv_text, format_cell
 
@@ -105,6 +106,7 @@ def summary_markdown(summary: dict) -> str:
             else:
                 cells.append(f"{v:.3f}")
         lines.append("| " + " | ".join(cells) + " |")
+    lines += paper_limit_row(summary, stats)     # a linkage sweep over ε: the limit ε → 0
     return "\n".join(lines) + "\n"
 
 
@@ -195,6 +197,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
         files.append(str(path))
     if len(numeric) == 1:
         files.append(_overview(summary, folder, title, numeric[0], groups, gkey, glabel))
+    files += plot_linkage_sweep(summary, folder, title)
     return files
 
 

@@ -26,6 +26,7 @@ __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
 MODES = ("grid", "random")
 #: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns.
 SYSTEM_AXES = {"n": "n", "speed": "speed", "level": "level"}
+SYSTEM_AXES["eps"] = "eps"          # the linkage's crank length ([system] kind = "linkage")
 
 
 class SweepError(ValueError):
