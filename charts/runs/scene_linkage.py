@@ -42,8 +42,8 @@ def is_linkage(scene) -> bool:
 def system_kind_problems(source, raw_sys, kind, problems) -> None:
     """Keys of [system] that belong to the other kind, and a missing ``n``/``eps``: added to
     ``problems`` (reported with every other per-key problem)."""
-    if not isinstance(raw_sys, dict):
-        return
+    if not isinstance(raw_sys, dict) or raw_sys.get("kind", kind) != kind:
+        return                         # a bad kind is a problem of its own
     own, other, need = ((LINKAGE_KEYS, ROTOR_KEYS, "eps") if kind == "linkage"
                         else (ROTOR_KEYS, LINKAGE_KEYS, "n"))
     for key in other:

@@ -35,6 +35,10 @@ def _ge(lo):
     return lambda v: None if v >= lo else f"a number >= {lo:g}"
 
 
+def _open(lo, hi):
+    return lambda v: None if lo < v < hi else f"a number in ({lo:g}, {hi:g})"
+
+
 def _between(lo, hi):
     return lambda v: None if lo <= v <= hi else f"a number in [{lo:g}, {hi:g}]"
 
@@ -66,10 +70,10 @@ SCHEMA: dict[str, dict[str, Key]] = {
                      "(docs/families.md)."),
         "eps": Key("float", None, "Linkage only (required there): crank length ε of the "
                    "rotors' hinges, 0 < ε < 0.5 (rods R = 1); ε → 0 gives Σ cos θᵢ = 0.",
-                   check=_gt(0)),
+                   check=_open(0, 0.5)),
         "rho": Key("float", None, "Linkage only: radius ρ of the disk's hinges, < 0.5 "
                    "(default 2ε, as LinkageSystem: unset in a sweep over eps, ρ/ε stays 2).",
-                   check=_gt(0)),
+                   check=_open(0, 0.5)),
         "disk_mass": Key("float", 0.0, "Linkage only: the disk's mass m_d (default 0, the "
                          "Appendix's massless disk).", check=_ge(0)),
         "disk_inertia": Key("float", 0.0, "Linkage only: the disk's moment of inertia I_d "

@@ -48,6 +48,7 @@ def plot_linkage_sweep(summary: dict, folder, title: str = "") -> list:
     fig, _ = plot_linkage_epsilon(summary["rows"], x, paper=PAPER_EXPONENTS[4],
                                   title=f"{title}: the linkage against ε" if title else
                                   "the linkage against ε")
+    Path(folder).mkdir(parents=True, exist_ok=True)
     path = Path(folder) / LINKAGE_FIGURE
     save_png(fig, path)
     return [str(path)]
