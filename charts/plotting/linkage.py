@@ -53,8 +53,11 @@ def plot_linkage_epsilon(rows, x="eps", *, paper=(), title="the linkage against 
     ax[0].set(ylabel="Lyapunov exponent (1/time)", title="Lyapunov exponents")
     ax[1].set(ylabel="fraction of samples", title="Positive sectional curvature")
     ax[2].set(yscale="log", ylabel="rad, or dimensionless", title="Cone points and tangencies")
+    ticks = sorted({r[x] for r in rows})
     for a in ax:
         a.set_xscale("log")
+        a.set_xticks(ticks, [f"{t:g}" for t in ticks])
+        a.minorticks_off()
         a.set_xlabel("ε (crank length; rods R = 1)")
         a.legend(fontsize=7)
         a.grid(alpha=0.3)
