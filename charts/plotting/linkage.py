@@ -33,7 +33,7 @@ def plot_linkage_epsilon(rows, x="eps", *, paper=(), title="the linkage against 
                            label=f"linkage λ{i}")
         if i <= len(paper):
             ax[0].axhline(paper[i - 1], color=c, ls="--", lw=1,
-                          label=f"paper λ{i} = {paper[i - 1]:g} (ε → 0)")
+                          label=f"paper λ{i} = {paper[i - 1]:.3f} (ε → 0)")
         if f"Kpos_exact_{i}" in stats:
             ax[1].errorbar(*_series(rows, x, f"Kpos_exact_{i}"), fmt="o-", color=c, capsize=3,
                            label=f"K(v̂, e{i}) > 0")

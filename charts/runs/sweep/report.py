@@ -83,8 +83,8 @@ def write_summary(path: Path, summary: dict) -> None:
 
 
 def summary_markdown(summary: dict) -> str:
-    """The headline statistics as a markdown table (exponents ± s.e., fractions of positive
-    curvature, angle minima and 0.1 % quantiles); every column is in summary.csv."""
+    """The headline statistics as a markdown table (exponents and fractions of positive
+    curvature ± s.e., angle minima and 0.1 % quantiles); every column is in summary.csv."""
     stats = [c for c in summary["stats"] if c.startswith("lambda_")
              or (c.startswith("Kpos_exact") or (c.startswith("Kpos_numerical")
                                                 and not any(x.startswith("Kpos_exact")
@@ -103,6 +103,8 @@ def summary_markdown(summary: dict) -> str:
                 cells.append(f"{v:.4f} ± {se:.4f}" if se is not None else f"{v:.4f}")
             elif c.startswith("phi_"):
                 cells.append(f"{v:.1e}")
+            elif c.startswith("Kpos_") and se is not None:
+                cells.append(f"{v:.3f} ± {se:.3f}")
             else:
                 cells.append(f"{v:.3f}")
         lines.append("| " + " | ".join(cells) + " |")
