@@ -10,7 +10,7 @@ from contextlib import contextmanager
 
 from .scene_schema import GRID_RTOL, Key, SceneError
 
-__all__ = ["Problems", "where", "unknown_key", "is_number", "coerce", "section_values",
+__all__ = ["Problems", "where", "unknown_key", "is_number", "is_finite_number", "coerce", "section_values",
            "table_values", "multiple_of"]
 
 
@@ -19,16 +19,22 @@ def where(source, section, key):
     return f"{source}: {loc}"
 
 
-def unknown_key(source, section, key, allowed):
+def unknown_key(source, section, key, allowed, error=SceneError):
+    """The error (`SceneError` unless ``error`` says otherwise) for an unknown key, with the
+    closest allowed key as a hint."""
     hint = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
     did = f" — did you mean {hint[0]!r}?" if hint else ""
     sect = f"[{section}]" if section else "the top level"
-    return SceneError(f"{source}: unknown key {key!r} in {sect}{did} "
+    return error(f"{source}: unknown key {key!r} in {sect}{did} "
                       f"(allowed: {', '.join(sorted(allowed)) or 'none'})")
 
 
 def is_number(v):
     return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def is_finite_number(v):
+    return is_number(v) and math.isfinite(v)
 
 
 def coerce(source, section, key, spec: Key, value):

@@ -6,7 +6,6 @@ docs/sweeps.md.
 """
 from __future__ import annotations
 
-import difflib
 import json
 import math
 from dataclasses import dataclass, field
@@ -18,6 +17,7 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 from ..bundled import bundled_files, path_or_bundled
+from ..scene_checks import is_finite_number, unknown_key
 from .expressions import ExpressionError, expression_symbols
 
 __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
@@ -82,7 +82,7 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     top = {"name", "description", "scene", "sweep"}
     for key in data:
         if key not in top:
-            raise _unknown(source, "the top level", key, top)
+            raise unknown_key(source, "", key, top, SweepError)
     base = data.get("scene", {})
     if not isinstance(base, dict):
         raise SweepError(f"{source}: [scene] must be a table (the base scene)")
@@ -98,7 +98,7 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     allowed = {"mode", "seeds", "n_points", "sample_seed", "parameters", "masses"}
     for key in sw:
         if key not in allowed:
-            raise _unknown(source, "[sweep]", key, allowed)
+            raise unknown_key(source, "sweep", key, allowed, SweepError)
     mode, seeds, n_points, sample_seed = _sampling(source, sw)
     axes = sw.get("parameters", {})
     masses = sw.get("masses", {})
@@ -130,17 +130,6 @@ def _speed_expression(v: str) -> bool:
         return expression_symbols(v) <= {"n"}
     except ExpressionError:
         return False
-
-
-def _unknown(source, section, key, allowed):
-    hint = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
-    did = f" — did you mean {hint[0]!r}?" if hint else ""
-    return SweepError(f"{source}: unknown key {key!r} in {section}{did} "
-                      f"(allowed: {', '.join(sorted(allowed))})")
-
-
-def _is_num(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
 
 
 def _is_int(v):
@@ -181,7 +170,7 @@ def _check_axis(where: str, name: str, vals, mode: str) -> None:
             raise SweepError(f"{where} = {vals!r}: a range {{min, max, log}} needs mode = "
                              "\"random\"; a grid takes a list of values")
         extra = set(vals) - {"min", "max", "log"}
-        if extra or not (_is_num(vals.get("min")) and _is_num(vals.get("max"))
+        if extra or not (is_finite_number(vals.get("min")) and is_finite_number(vals.get("max"))
                          and vals["min"] < vals["max"]):
             raise SweepError(f"{where} = {vals!r} is not allowed: expected {{min = a, "
                              "max = b, log = true|false}} with a < b")
@@ -220,7 +209,7 @@ def _pattern_symbols(source, masses: dict, symbols: set) -> set:
                     raise SweepError(f"{where}: {x!r} uses {', '.join(sorted(missing))}, which is "
                                      "not a parameter; add it to [sweep.parameters]")
                 used |= names
-            elif not (_is_num(x) and x > 0):
+            elif not (is_finite_number(x) and x > 0):
                 raise SweepError(f"{where}: {x!r} is not allowed: entries are numbers > 0 or "
                                  "expressions in the parameters")
     return used
