@@ -59,6 +59,10 @@ def test_linkage_scene_equals_the_api_bit_for_bit(tmp_path):
     assert lk["cone_points_on_manifold"] == 2
     assert lk["cone_distance_min"] == pytest.approx(2 * EPS, rel=0.02)
     assert res["computation"]["state_dimension"] == 14
+    if "results.nc" in res["files"]:            # the archive holds the linkage's results too
+        back = charts.load(tmp_path / "out" / "results.nc")
+        assert back.result["results"]["linkage"] == json.loads(json.dumps(lk))
+        assert np.array_equal(back.arrays["curvature_exact"], api.K)
 
 
 def test_linkage_scene_interrupted_and_resumed_equals_uninterrupted(tmp_path):
