@@ -17,34 +17,78 @@ mechanically coupled rotators".  The public surface, by concept:
   as its own type (``charts.archive``; the extra ``charts[io]``); results plot themselves
   (``result.plot()``, ``charts.plotting``).
 """
-from .geometry.system import RotorSystem
-from .solvers.integrate import IntegrationResult, integrate
-from .solvers.status import ChartDomainError, IntegrationError, SingularPointError
-from .analyses.ensemble import EnsembleResult
-from .analyses.lyapunov import LyapunovResult, lyapunov_ensemble, lyapunov_spectrum
-from .analyses.curvature import CurvatureResult, curvature_along_trajectory, gaussian_curvature_eq22
-from .analyses.hyperbolicity import AngleResult, angle_statistics, hyperbolicity_angles, hyperbolicity_ensemble
-from .analyses.covariant import CovariantResult, covariant_lyapunov_vectors
-from .analyses.spectra import PowerSpectrum, Waveform, power_spectrum, waveform
-from .archive import load
-from .geometry.linkage import LinkageSystem
-from .solvers.linkage import DegenerateMetricError
-from .analyses.linkage import LinkageResult, linkage_run, linkage_trajectory
-from .runs.scene import Scene, SceneError, load_scene, parse_scene
-from .runs.runner import RunError, plan_scene, run_scene
-from .runs.sweep import Sweep, SweepError, load_sweep, parse_sweep, run_sweep
+import importlib
 
-__all__ = [
-    "RotorSystem",
-    "integrate", "IntegrationResult", "IntegrationError", "SingularPointError", "ChartDomainError",
-    "EnsembleResult",
-    "lyapunov_spectrum", "lyapunov_ensemble", "LyapunovResult",
-    "curvature_along_trajectory", "CurvatureResult", "gaussian_curvature_eq22",
-    "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics", "AngleResult",
-    "covariant_lyapunov_vectors", "CovariantResult",
-    "waveform", "power_spectrum", "Waveform", "PowerSpectrum", "load",
-    "LinkageSystem", "linkage_run", "linkage_trajectory", "LinkageResult", "DegenerateMetricError",
-    "Scene", "SceneError", "load_scene", "parse_scene", "run_scene", "plan_scene", "RunError",
-    "Sweep", "SweepError", "load_sweep", "parse_sweep", "run_sweep",
-]
+#: Where each public name lives.  ``import charts`` imports none of them: a name is imported
+#: from its home on first use (PEP 562), so that ``import charts`` costs little more than the
+#: package itself, and a Lyapunov run does not pay for scenes, sweeps or the linkage
+#: (docs/performance.md, "Cold start").
+_HOMES = {
+    "RotorSystem": ".geometry.system",
+    "IntegrationResult": ".solvers.integrate",
+    "integrate": ".solvers.integrate",
+    "ChartDomainError": ".solvers.status",
+    "IntegrationError": ".solvers.status",
+    "SingularPointError": ".solvers.status",
+    "EnsembleResult": ".analyses.ensemble",
+    "LyapunovResult": ".analyses.lyapunov",
+    "lyapunov_ensemble": ".analyses.lyapunov",
+    "lyapunov_spectrum": ".analyses.lyapunov",
+    "CurvatureResult": ".analyses.curvature",
+    "curvature_along_trajectory": ".analyses.curvature",
+    "gaussian_curvature_eq22": ".analyses.curvature",
+    "AngleResult": ".analyses.hyperbolicity",
+    "angle_statistics": ".analyses.hyperbolicity",
+    "hyperbolicity_angles": ".analyses.hyperbolicity",
+    "hyperbolicity_ensemble": ".analyses.hyperbolicity",
+    "CovariantResult": ".analyses.covariant",
+    "covariant_lyapunov_vectors": ".analyses.covariant",
+    "PowerSpectrum": ".analyses.spectra",
+    "Waveform": ".analyses.spectra",
+    "power_spectrum": ".analyses.spectra",
+    "waveform": ".analyses.spectra",
+    "load": ".archive",
+    "LinkageSystem": ".geometry.linkage",
+    "DegenerateMetricError": ".solvers.linkage",
+    "LinkageResult": ".analyses.linkage",
+    "linkage_run": ".analyses.linkage",
+    "linkage_trajectory": ".analyses.linkage",
+    "Scene": ".runs.scene",
+    "SceneError": ".runs.scene",
+    "load_scene": ".runs.scene",
+    "parse_scene": ".runs.scene",
+    "RunError": ".runs.runner",
+    "plan_scene": ".runs.runner",
+    "run_scene": ".runs.runner",
+    "Sweep": ".runs.sweep",
+    "SweepError": ".runs.sweep",
+    "load_sweep": ".runs.sweep",
+    "parse_sweep": ".runs.sweep",
+    "run_sweep": ".runs.sweep",
+}
+
+__all__ = list(_HOMES)
+
 from .version import __version__  # noqa: E402
+
+
+def __getattr__(name):
+    """Import a public name from its home on first use, or a subpackage (``charts.runs``)."""
+    home = _HOMES.get(name)
+    if home is None:
+        if name.startswith("_"):
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+        try:
+            module = importlib.import_module(f".{name}", __name__)
+        except ModuleNotFoundError as e:
+            if e.name != f"{__name__}.{name}":
+                raise
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
+        return module
+    value = getattr(importlib.import_module(home, __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

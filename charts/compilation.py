@@ -2,7 +2,8 @@
 
 numba compiles a kernel on its first use for a signature and caches it on disk, so the first
 call with a new N (or the first call after an install) can take seconds to minutes.  This
-module times that from numba's own ``numba:compile`` events (outermost only) and says so once
+module times that from numba's own ``numba:compile`` events (outermost only; loading a
+cached kernel, ~0.05 s, is no such event) and says so once
 per call on stderr when it is long (`NOTE_SECONDS`); any layer may use it (no package imports).
 """
 from __future__ import annotations
@@ -14,7 +15,7 @@ from contextlib import contextmanager
 
 __all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation"]
 
-#: compilations shorter than this (loading cached kernels: ~0.05 s) pass without a word.
+#: compilations shorter than this pass without a word.
 NOTE_SECONDS = 1.0
 
 _depth = threading.local()
@@ -22,8 +23,8 @@ _depth = threading.local()
 
 @contextmanager
 def compile_timer(add):
-    """Call ``add(seconds)`` for the time numba spends compiling (or loading cached kernels)
-    inside the block; entry points called inside it do not announce their own."""
+    """Call ``add(seconds)`` for the time numba spends compiling inside the block (loading
+    cached kernels is not counted); entry points called inside it do not announce their own."""
     from numba.core.event import install_timer
 
     outer = getattr(_depth, "n", 0)
@@ -52,7 +53,8 @@ def announces_compilation(fn):
                 n = getattr(args[0], "n", None) if args else None
                 what = f" for N = {n}" if isinstance(n, int) else ""
                 print(f"charts: {fn.__name__} compiled its kernels{what} in {spent[0]:.1f} s "
-                      "(once: they are cached on disk for the next calls and processes)",
+                      "(once: they are cached on disk for the next calls and processes; "
+                      "`charts warmup` compiles them all after an install)",
                       file=sys.stderr)
 
     return wrapper

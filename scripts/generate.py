@@ -1,7 +1,8 @@
 #!/usr/bin/env python
 """Write the generated chart kernels into ``generated/`` (the only writer of it).
 
-    python scripts/generate.py            # regenerate N = 3..6 and the linkage of the Appendix
+    python scripts/generate.py            # regenerate N = 3..6 (the family Σ aᵢ cos θᵢ = c and its
+                                          # paper member a = 1, c = 0) and the linkage of the Appendix
     python scripts/generate.py --check    # regenerate into a temp folder, diff, exit 1 if stale
 """
 from __future__ import annotations
@@ -19,13 +20,17 @@ ROOT = Path(__file__).resolve().parent.parent
 def write_all(outdir: Path, ns, verbose=True) -> dict[str, float]:
     from charts.atomic import atomic_write
     from charts.codegen.emit import init_source, linkage_source, module_name, module_source
+    from charts.codegen.symbolic import ChartGeometry
 
     outdir.mkdir(parents=True, exist_ok=True)
     timings = {}
     atomic_write(outdir / "__init__.py", init_source().encode("utf-8"))
     for n in ns:
         t0 = time.perf_counter()
-        atomic_write(outdir / f"{module_name(n)}.py", module_source(n).encode("utf-8"))
+        G = ChartGeometry(n, n - 1)  # one derivation, two modules (the family, its paper member)
+        for paper in (False, True):
+            atomic_write(outdir / f"{module_name(n, paper)}.py",
+                         module_source(n, paper, G).encode("utf-8"))
         timings[f"N={n}"] = time.perf_counter() - t0
         if verbose:
             print(f"  N={n}: {timings[f'N={n}']:.1f} s", flush=True)

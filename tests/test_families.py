@@ -81,10 +81,7 @@ def test_points_and_tangents_of_a_weighted_system():
         RotorSystem(4, level=0.5).check_point(th)
     with pytest.raises(ValueError, match="not tangent"):
         s.check_tangent(th, np.ones(4))
-    with pytest.raises(NotImplementedError, match="ambient"):
-        s.metric(th)
-    with pytest.raises(NotImplementedError, match="ambient"):
-        integrate(s, th, u, 1.0, formulation="chart")
+    assert s.metric(th).shape == (3, 3)     # the chart side: tests/test_family_charts.py
 
 
 # ------------------------------------------------------------- the paper's case, bit for bit
@@ -295,10 +292,12 @@ def test_every_analysis_runs_with_weights_and_level_from_the_command_line(tmp_pa
     capsys.readouterr()
     assert main(["run", str(bad), "-o", str(tmp_path / "bad"), "--quiet"]) != 0
     assert "[system] level = 5.0 is not allowed" in capsys.readouterr().err
-    bad.write_text('[system]\nn = 4\nlevel = 0.5\n[integrator]\nformulation = "chart"\n'
-                   'method = "dop853"\n[run]\nt_final = 1.0\n[effects.drift]\n')
-    assert main(["run", str(bad), "-o", str(tmp_path / "bad"), "--quiet"]) != 0
-    assert "formulation = 'chart'" in capsys.readouterr().err
+    chart = tmp_path / "chart.toml"      # the chart formulation on the family (was refused)
+    chart.write_text('[system]\nn = 4\nlevel = 0.5\n[integrator]\nformulation = "chart"\n'
+                     'method = "dop853"\n[run]\nt_final = 1.0\n[effects.drift]\n')
+    assert main(["run", str(chart), "-o", str(tmp_path / "chart"), "--quiet"]) == 0
+    rc = json.loads((tmp_path / "chart" / "result.json").read_text())
+    assert rc["status"] == "complete" and abs(rc["drift"]["energy_relative"]) < 1e-8
 
 
 def test_sweep_axes_for_level_and_weights():

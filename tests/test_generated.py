@@ -75,7 +75,7 @@ def test_n3_curvature_vanishes_at_the_eight_points():
 # -- live SymPy derivation of every chart -------------------------------------------------
 def _lambdified(n, k, what):
     G = ChartGeometry(n, k)
-    return sp.lambdify([G.q, G.m], getattr(G, what), modules="math", cse=True)
+    return sp.lambdify([G.q, G.m, G.a, G.c], G.explicit(getattr(G, what)), modules="math", cse=True)
 
 
 @pytest.mark.parametrize("n", NS)
@@ -89,7 +89,7 @@ def test_every_chart_matches_live_sympy_unequal_masses(n):
                 continue
             q = [theta[i] for i in range(n) if i != k]
             for w, f in fns.items():
-                assert rel_err(getattr(S, w)(theta, chart=k), np.array(f(q, list(S.masses)))) < REL, (w, k)
+                assert rel_err(getattr(S, w)(theta, chart=k), np.array(f(q, list(S.masses), [1.0] * n, 0.0))) < REL, (w, k)
 
 
 @pytest.mark.parametrize("n", [3, 4])
@@ -106,12 +106,13 @@ def test_riemann_matches_textbook_derivation_in_high_precision(n):
     S = charts.RotorSystem(n, masses_for(n, "unequal"))
     for k in range(n) if n == 3 else (0, n - 1):
         G = ChartGeometry(n, k)
-        f = sp.lambdify([G.q, G.m], G.riemann_from_metric, modules="mpmath", cse=True)
+        f = sp.lambdify([G.q, G.m, G.a, G.c], G.explicit(G.riemann_from_metric), modules="mpmath", cse=True)
         for theta, _ in points(S, 2, seed=40 + n + k):
             if abs(np.sin(theta[k])) < WELL_CONDITIONED:
                 continue
             q = [mpmath.mpf(float(theta[i])) for i in range(n) if i != k]
-            ref = np.array(f(q, [mpmath.mpf(float(x)) for x in S.masses]), dtype=float)
+            ref = np.array(f(q, [mpmath.mpf(float(x)) for x in S.masses], [mpmath.mpf(1)] * n, mpmath.mpf(0)),
+                           dtype=float)
             assert rel_err(S.riemann(theta, chart=k), ref) < REL, (n, k)
 
 
@@ -130,8 +131,8 @@ def test_riemann_matches_textbook_definition_with_numerical_derivatives(n):
     route)."""
     S = charts.RotorSystem(n, masses_for(n, "unequal"))
     mod, d = chart_module(n), n - 1
-    m = S.masses
-    gam = lambda q: mod.christoffel(q, m, np.empty((d,) * 3))
+    m, a1 = S.masses, np.ones(n)  # the family module at the paper's a = 1, c = 0
+    gam = lambda q: mod.christoffel(q, m, a1, 0.0, np.empty((d,) * 3))
     for theta, _ in points(S, 4, seed=90 + n):
         if abs(np.sin(theta[-1])) < 0.3:
             continue
@@ -144,25 +145,29 @@ def test_riemann_matches_textbook_definition_with_numerical_derivatives(n):
             dG[e] = (8 * (gam(q + h) - gam(q - h)) - (gam(q + 2 * h) - gam(q - 2 * h))) / (12 * FD_STEP)
         up = (np.einsum("cadb->abcd", dG) - np.einsum("dacb->abcd", dG)
               + np.einsum("ace,edb->abcd", G, G) - np.einsum("ade,ecb->abcd", G, G))
-        textbook = np.einsum("fa,abcd->fbcd", mod.metric(q, m, np.empty((d, d))), up)
-        assert rel_err(mod.riemann(q, m, np.empty((d,) * 4)), textbook) < FD_REL
+        textbook = np.einsum("fa,abcd->fbcd", mod.metric(q, m, a1, 0.0, np.empty((d, d))), up)
+        assert rel_err(mod.riemann(q, m, a1, 0.0, np.empty((d,) * 4)), textbook) < FD_REL
 
 
 def test_riemann_formula_matches_textbook_definition():
     """Both Riemann routes of the derivation (Gauss equation, second metric derivatives)
     against R^a_bcd = ∂_cΓ^a_db − ∂_dΓ^a_cb
-    + Γ^a_ceΓ^e_db − Γ^a_deΓ^e_cb, lowered with g (N=3, unequal masses)."""
+    + Γ^a_ceΓ^e_db − Γ^a_deΓ^e_cb, lowered with g (N=3, unequal masses), for the paper's
+    a = 1, c = 0 and for weights a = (1.2, 0.8, 1.5) at the level c = 0.3."""
     G = ChartGeometry(3, 0)
-    d, q, Gm = G.dim, G.q, G.christoffel
-    vals = {G.theta[1]: 0.7, G.theta[2]: 2.1, G.m[0]: 1.3, G.m[1]: 0.7, G.m[2]: 2.0}
-    g = np.array([[float(G.metric[a][b].subs(vals)) for b in range(d)] for a in range(d)])
-    for a, b, c, e in [(0, 1, 0, 1), (1, 0, 0, 1), (0, 0, 0, 1), (1, 1, 0, 1)]:
-        up = [sp.diff(Gm[f][e][b], q[c]) - sp.diff(Gm[f][c][b], q[e])
-              + sum(Gm[f][c][h] * Gm[h][e][b] - Gm[f][e][h] * Gm[h][c][b] for h in range(d))
-              for f in range(d)]
-        textbook = sum(g[a, f] * float(up[f].subs(vals)) for f in range(d))
-        assert abs(textbook - float(G.riemann_from_metric[a][b][c][e].subs(vals))) < 1e-12
-        assert abs(textbook - float(G.riemann[a][b][c][e].subs(vals))) < 1e-12
+    d, q, Gm = G.dim, G.q, G.explicit(G.christoffel)
+    for a_, c_ in [((1, 1, 1), 0), ((1.2, 0.8, 1.5), 0.3)]:
+        vals = {G.theta[1]: 0.7, G.theta[2]: 2.1, G.m[0]: 1.3, G.m[1]: 0.7, G.m[2]: 2.0, G.c: c_}
+        vals.update(zip(G.a, a_))
+        num = lambda e: float(G.explicit(e).subs(vals))
+        g = np.array([[num(G.metric[a][b]) for b in range(d)] for a in range(d)])
+        for a, b, c, e in [(0, 1, 0, 1), (1, 0, 0, 1), (0, 0, 0, 1), (1, 1, 0, 1)]:
+            up = [sp.diff(Gm[f][e][b], q[c]) - sp.diff(Gm[f][c][b], q[e])
+                  + sum(Gm[f][c][h] * Gm[h][e][b] - Gm[f][e][h] * Gm[h][c][b] for h in range(d))
+                  for f in range(d)]
+            textbook = sum(g[a, f] * float(up[f].subs(vals)) for f in range(d))
+            assert abs(textbook - num(G.riemann_from_metric[a][b][c][e])) < 1e-12
+            assert abs(textbook - num(G.riemann[a][b][c][e])) < 1e-12
 
 
 # -- Riemann identities, every chart ---------------------------------------------------
@@ -220,17 +225,17 @@ def test_contracted_kernels_match_full_tensors(n):
         k = n - 1
         if abs(np.sin(theta[k])) < WELL_CONDITIONED:
             continue
-        q, m = theta[:-1], S.masses
+        q, m, a1 = theta[:-1], S.masses, np.ones(n)  # the family module at a = 1, c = 0
         v, p, x = rng.normal(size=(3, d))
-        G = mod.christoffel(q, m, np.empty((d,) * 3))
-        g = mod.metric(q, m, np.empty((d, d)))
-        gi = mod.metric_inverse(q, m, np.empty((d, d)))
-        R = mod.riemann(q, m, np.empty((d,) * 4))
+        G = mod.christoffel(q, m, a1, 0.0, np.empty((d,) * 3))
+        g = mod.metric(q, m, a1, 0.0, np.empty((d, d)))
+        gi = mod.metric_inverse(q, m, a1, 0.0, np.empty((d, d)))
+        R = mod.riemann(q, m, a1, 0.0, np.empty((d,) * 4))
         assert rel_err(g @ gi, np.eye(d)) < REL
-        assert rel_err(mod.geodesic_acceleration(q, v, m, np.empty(d)), -np.einsum("abc,b,c->a", G, v, v)) < REL
-        assert rel_err(mod.transport_rate(q, v, p, m, np.empty(d)), -np.einsum("abc,b,c->a", G, v, p)) < REL
+        assert rel_err(mod.geodesic_acceleration(q, v, m, a1, 0.0, np.empty(d)), -np.einsum("abc,b,c->a", G, v, v)) < REL
+        assert rel_err(mod.transport_rate(q, v, p, m, a1, 0.0, np.empty(d)), -np.einsum("abc,b,c->a", G, v, p)) < REL
         Rop = gi @ np.einsum("ebcd,b,c,d->e", R, v, x, v)
-        assert rel_err(mod.curvature_operator(q, x, v, m, np.empty(d)), Rop) < REL
+        assert rel_err(mod.curvature_operator(q, x, v, m, a1, 0.0, np.empty(d)), Rop) < REL
 
 
 @pytest.mark.parametrize("n", NS)

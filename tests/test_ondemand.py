@@ -63,16 +63,16 @@ def test_closed_forms_13_15_every_chart(derived_n7, kind):
                 continue
             q = theta[idx]
             mm = np.concatenate([m[idx], m[k:k + 1]])
-            g = mod.metric(q, mm, np.empty((d, d)))
+            g = mod.metric(q, mm, np.ones(N), 0.0, np.empty((d, d)))
             assert rel_err(g, metric_eq13(theta, k, m)) < TOL["closed_form_n7"]
-            G = mod.christoffel(q, mm, np.empty((d, d, d)))
+            G = mod.christoffel(q, mm, np.ones(N), 0.0, np.empty((d, d, d)))
             assert rel_err(G, christoffel_eq15(theta, k, m)) < TOL["closed_form_n7"]
-            gi = mod.metric_inverse(q, mm, np.empty((d, d)))
+            gi = mod.metric_inverse(q, mm, np.ones(N), 0.0, np.empty((d, d)))
             # g⁻¹ g = 1: the inverse's error is the metric's condition number (≲ 1e2 here)
             # times the closed-form rounding
             np.testing.assert_allclose(gi @ g, np.eye(d), rtol=0, atol=1e2 * TOL["closed_form_n7"])
             v = np.random.default_rng(k).normal(size=d)
-            acc = mod.geodesic_acceleration(q, v, mm, np.empty(d))
+            acc = mod.geodesic_acceleration(q, v, mm, np.ones(N), 0.0, np.empty(d))
             np.testing.assert_allclose(acc, -np.einsum("abc,b,c->a", G, v, v),
                                        rtol=0, atol=1e-10 * np.abs(acc).max())
 
@@ -85,7 +85,7 @@ def test_riemann_matches_the_gauss_equation(derived_n7):
     ip = lambda a, b: np.sum(MASSES * a * b)
     for theta in _points(3, seed=2):
         q = theta[:-1]
-        R = mod.riemann(q, MASSES, np.empty((d,) * 4))
+        R = mod.riemann(q, MASSES, np.ones(N), 0.0, np.empty((d,) * 4))
         s = np.sin(theta)
         for _ in range(3):
             x, y = rng.normal(size=d), rng.normal(size=d)

@@ -24,15 +24,17 @@ def ramp(n):
     return np.linspace(0.4, 2.5, n)[::-1].copy()
 
 
-def chart_points(n, k, count, seed):
-    """Points of the manifold inside chart k (|Σ_{i≠k} cos θᵢ| ≤ 0.9, both branches)."""
+def chart_points(n, k, count, seed, weights=None, level=0.0):
+    """Points of Σ a cos θ = c inside chart k (|C| ≤ 0.9 aₖ, C = Σ_{i≠k} aᵢ cos θᵢ − c, both
+    branches; the paper's a = 1, c = 0 by default)."""
+    a = np.ones(n) if weights is None else np.asarray(weights, float)
     rng = np.random.default_rng(seed)
     out = []
     while len(out) < count:
         theta = rng.uniform(-np.pi, np.pi, n)
-        C = np.cos(np.delete(theta, k)).sum()
-        if abs(C) <= 0.9:
-            theta[k] = (1 if len(out) % 2 else -1) * np.arccos(-C)
+        C = np.delete(a * np.cos(theta), k).sum() - level
+        if abs(C) <= 0.9 * a[k]:
+            theta[k] = (1 if len(out) % 2 else -1) * np.arccos(-C / a[k])
             out.append(theta)
     return out
 
@@ -41,37 +43,45 @@ def local(theta, k, m):
     return np.ascontiguousarray(np.delete(theta, k)), np.concatenate([np.delete(m, k), m[k:k + 1]])
 
 
-def compare_all(mod, n, charts, points, seed=0):
-    """Every generated function of ``mod`` against the structured one; returns the worst error."""
+def compare_all(mod, n, charts, points, seed=0, weights=None, level=0.0):
+    """Every generated function of ``mod`` against the structured one on Σ a cos θ = c
+    (default the paper's a = 1, c = 0); returns the worst error."""
     d = n - 1
     m = ramp(n)
+    wts = np.ones(n) if weights is None else np.asarray(weights, float)
     rng = np.random.default_rng(seed)
     worst = 0.0
     for k in charts:
-        for theta in chart_points(n, k, points, seed + k):
+        for theta in chart_points(n, k, points, seed + k, wts, level):
             q, ml = local(theta, k, m)
+            _, al = local(theta, k, wts)
+            fam = (ml, al, level)
             v, p, x, y = rng.normal(size=(4, d))
-            for name, args, shape in [("metric", (q, ml), (d, d)),
-                                      ("metric_inverse", (q, ml), (d, d)),
-                                      ("christoffel", (q, ml), (d,) * 3),
-                                      ("riemann", (q, ml), (d,) * 4),
-                                      ("geodesic_acceleration", (q, v, ml), (d,)),
-                                      ("transport_rate", (q, v, p, ml), (d,)),
-                                      ("curvature_operator", (q, x, y, ml), (d,))]:
+            for name, args, shape in [("metric", (q, *fam), (d, d)),
+                                      ("metric_inverse", (q, *fam), (d, d)),
+                                      ("christoffel", (q, *fam), (d,) * 3),
+                                      ("riemann", (q, *fam), (d,) * 4),
+                                      ("geodesic_acceleration", (q, v, *fam), (d,)),
+                                      ("transport_rate", (q, v, p, *fam), (d,)),
+                                      ("curvature_operator", (q, x, y, *fam), (d,))]:
                 a = getattr(S, name)(*args, np.empty(shape))
                 b = getattr(mod, name)(*args, np.empty(shape))
                 err = rel_err(a, b)
                 assert err < GEN_TOL, (n, k, name, err)
                 worst = max(worst, err)
             sk = np.sin(theta[k])
-            assert S.eliminated_component(q, v, sk) == pytest.approx(
-                mod.eliminated_component(q, v, sk), rel=GEN_TOL, abs=GEN_TOL)
+            assert S.eliminated_component(q, v, al, sk) == pytest.approx(
+                mod.eliminated_component(q, v, al, sk), rel=GEN_TOL, abs=GEN_TOL)
     return worst
 
 
 @pytest.mark.parametrize("n", [3, 4, 5, 6])
 def test_equal_to_the_shipped_generated_code_every_chart(n):
     compare_all(chart_module(n), n, range(n), points=2)
+    compare_all(chart_module(n, paper=True), n, range(n), points=1)
+    # a member of the family: weights 0.6..1.6 and a level inside (0, Σa)
+    compare_all(chart_module(n), n, range(n), points=1, weights=np.linspace(0.6, 1.6, n),
+                level=0.3 * n)
 
 
 def test_equal_to_the_derived_generated_code_n7(derived_n7):
@@ -100,8 +110,8 @@ def test_closed_forms_13_15(n):
         theta = chart_points(n, k, 1, 5)[0]
         q, ml = local(theta, k, m)
         d = n - 1
-        assert rel_err(S.metric(q, ml, np.empty((d, d))), metric_eq13(theta, k, m)) < TOL["closed_form"]
-        assert rel_err(S.christoffel(q, ml, np.empty((d,) * 3)),
+        assert rel_err(S.metric(q, ml, np.ones(n), 0.0, np.empty((d, d))), metric_eq13(theta, k, m)) < TOL["closed_form"]
+        assert rel_err(S.christoffel(q, ml, np.ones(n), 0.0, np.empty((d,) * 3)),
                        christoffel_eq15(theta, k, m)) < TOL["closed_form"]
 
 
@@ -117,10 +127,10 @@ def test_christoffel_from_finite_differences_of_the_metric():
         qp, qm = q.copy(), q.copy()
         qp[e] += h
         qm[e] -= h
-        dg[e] = (S.metric(qp, ml, np.empty((d, d))) - S.metric(qm, ml, np.empty((d, d)))) / (2 * h)
+        dg[e] = (S.metric(qp, ml, np.ones(n), 0.0, np.empty((d, d))) - S.metric(qm, ml, np.ones(n), 0.0, np.empty((d, d)))) / (2 * h)
     first = 0.5 * (np.einsum("bdc->dbc", dg) + np.einsum("cdb->dbc", dg) - dg)  # Γ_{d,bc}
-    gamma = np.einsum("ad,dbc->abc", np.linalg.inv(S.metric(q, ml, np.empty((d, d)))), first)
-    assert rel_err(S.christoffel(q, ml, np.empty((d,) * 3)), gamma) < 1e-8
+    gamma = np.einsum("ad,dbc->abc", np.linalg.inv(S.metric(q, ml, np.ones(n), 0.0, np.empty((d, d)))), first)
+    assert rel_err(S.christoffel(q, ml, np.ones(n), 0.0, np.empty((d,) * 3)), gamma) < 1e-8
 
 
 @pytest.mark.parametrize("n", [5, 40, 256])
@@ -131,7 +141,7 @@ def test_geodesic_acceleration_is_eq8_in_the_chart(n):
     theta, u = system.random_state(seed=4)
     k = system.best_chart(theta)
     q, ml = local(theta, k, system.masses)
-    acc = S.geodesic_acceleration(q, np.delete(u, k), ml, np.empty(n - 1))
+    acc = S.geodesic_acceleration(q, np.delete(u, k), ml, np.ones(n), 0.0, np.empty(n - 1))
     amb = eq8_rhs(np.concatenate([theta, u]), system.masses)[n:]
     assert rel_err(acc, np.delete(amb, k)) < TOL["closed_form"]
 
@@ -141,8 +151,8 @@ def test_gaussian_curvature_eq22():
     for k in range(3):
         for theta in chart_points(3, k, 3, 11):
             q, ml = local(theta, k, np.ones(3))
-            g = S.metric(q, ml, np.empty((2, 2)))
-            K = S.riemann(q, ml, np.empty((2, 2, 2, 2)))[0, 1, 0, 1] / np.linalg.det(g)
+            g = S.metric(q, ml, np.ones(3), 0.0, np.empty((2, 2)))
+            K = S.riemann(q, ml, np.ones(3), 0.0, np.empty((2, 2, 2, 2)))[0, 1, 0, 1] / np.linalg.det(g)
             assert K == pytest.approx(gaussian_curvature_eq22(theta), rel=TOL["closed_form"])
 
 

@@ -17,7 +17,7 @@ which is negative.  Dividing by |u|² makes K independent of the speed.
 
 Route (b), exact: K_ij = ⟨R(p⁽ʲ⁾, p⁽⁰⁾)p⁽⁰⁾, p⁽ⁱ⁾⟩ at the same points and frames: for the N
 with generated kernels R_abcd p_i^a p_0^b p_j^c p_0^d from the generated Riemann tensor in
-the best-conditioned chart; for the others (``charts.geometry.kernels.source``) the Gauss
+the best-conditioned chart (weights and level of Σ aᵢ cos θᵢ = c as its arguments); for the others (``charts.geometry.kernels.source``) the Gauss
 equation of the hypersurface in ambient form, [h(p_i,p_j)h(p_0,p_0) − h(p_i,p_0)h(p_j,p_0)] / |∇F|²
 (``charts.geometry.structured.gauss_frame_curvature``, O(N k²) instead of O(N⁴)).
 
@@ -36,7 +36,7 @@ from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
-from ..geometry.atlas import chart_coordinates, local_masses
+from ..geometry.atlas import chart_coordinates, local_masses, local_weights
 from ..geometry.checks import finite_array
 from ..geometry.kernels import geometry, source
 from ..geometry.structured import gauss_frame_curvature
@@ -179,16 +179,18 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
 
 def exact_curvature_matrix(system, theta, P):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frame P,
-    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart, or
-    by the Gauss equation (with the weighted normal) where N has no generated kernels or the
-    constraint is not the paper's Σ cos θ = 0.  Returns shape (k, k)."""
-    if source(system.n) == "structured" or not system.is_paper_family:
+    shape (k + 1, N) (row 0 = p_0), from the generated Riemann tensor in the best chart (with
+    the weights and level of the constraint), or by the Gauss equation (with the weighted
+    normal) where N has no generated kernels.  Returns shape (k, k)."""
+    if source(system.n) == "structured":
         return gauss_frame_curvature(theta, P, system.masses, system.weights,
                                      np.empty((P.shape[0] - 1,) * 2))
     k = system.best_chart(theta)
     idx = chart_coordinates(system.n, k)
     q = np.ascontiguousarray(theta[idx])
-    R = geometry(system.n).riemann(q, local_masses(system.masses, k), np.empty((system.dim,) * 4))
+    R = geometry(system.n, system.weights, system.level).riemann(
+        q, local_masses(system.masses, k), local_weights(system.weights, k), system.level,
+        np.empty((system.dim,) * 4))
     Q = P[:, idx]
     Rp = np.einsum("abcd,b,d->ac", R, Q[0], Q[0])  # R_abcd p_i^a p0^b p_j^c p0^d
     return Q[1:] @ Rp @ Q[1:].T

@@ -4,8 +4,9 @@
     charts scenes [NAME]                          list the bundled scenes, or print one
     charts reproduce ...                          the paper's figures and table
     charts generate [--check]                     regenerate generated/ (code generator)
-    charts bench accuracy | integrators | performance   accuracy vs time; integrators; peers
+    charts bench accuracy | integrators | performance | compare | coldstart   (benchmarks)
     charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask
+    charts warmup [--n N ...]                     compile the kernels once after an install
 
 Every subcommand has ``--help``.  No command prints a traceback for anything a user can
 do: errors in the input (arguments, scene or sweep files, output folders, a folder another
@@ -218,6 +219,29 @@ def _generate_installed(check: bool) -> int:
     return 0
 
 
+def _cmd_warmup(args) -> int:
+    """`charts warmup`: compile every analysis's kernels for the given N (or load them)."""
+    from ..runs.warmup import TASKS, warmup
+
+    bad = [n for n in args.n if n < 3]
+    if bad:
+        return _fail(f"--n: N must be at least 3, got {bad[0]}")
+    unknown = [a for a in args.analysis or () if a not in TASKS]
+    if unknown:
+        return _fail(f"--analysis: unknown {unknown[0]!r}; choose from {', '.join(TASKS)}")
+
+    def report(row):
+        if not args.quiet:
+            print(f"{row['analysis']:>10}  N = {row['n']}: {row['compile']:6.1f} s compiling "
+                  f"({row['cpu']:.1f} s CPU in all)", flush=True)
+
+    rows = warmup(args.n, args.analysis, report=report)
+    if not args.quiet:
+        print(f"charts: kernels ready ({sum(r['compile'] for r in rows):.1f} s); later processes "
+              "load them from numba's cache")
+    return 0
+
+
 def _cmd_bench(args) -> int:
     """`charts bench NAME`: module NAME of ``charts.runs.benchmarks`` (accuracy: runs.accuracy)."""
     if args.what == "accuracy":
@@ -275,18 +299,32 @@ def build_parser() -> argparse.ArgumentParser:
                    help="regenerate into a temporary place and exit 1 if generated/ is stale")
     p.set_defaults(func=_cmd_generate)
 
+    p = sub.add_parser("warmup", help="compile the kernels once after an install",
+                       description="Call each analysis once for each N so that numba compiles "
+                       "and caches its kernels; the first real call then loads them in ~0.05 s "
+                       "instead of compiling for 10-15 s (docs/performance.md, Cold start). Run "
+                       "it after every install or upgrade.")
+    p.add_argument("--n", type=int, nargs="+", default=[3, 4, 5, 6], metavar="N",
+                   help="rotor counts (default 3 4 5 6)")
+    p.add_argument("--analysis", nargs="+", metavar="NAME",
+                   help="lyapunov, integrate, curvature, angles (default all)")
+    p.add_argument("--quiet", "-q", action="store_true", help="print nothing")
+    p.set_defaults(func=_cmd_warmup)
+
     p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision), `integrators` "
                        "(against solve_ivp), `performance` (against JiTCODE and SciPy), "
-                       "`compare` (installations against each other)",
+                       "`compare` (installations against each other), `coldstart` (the first-ever call)",
                        description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
                        "diagrams and table (docs/accuracy.md). `charts bench integrators`: cost "
                        "per unit time against solve_ivp (docs/integrators.md). `charts bench "
                        "performance [--quick]`: the Lyapunov task against JiTCODE and SciPy, cold "
                        "start, all cores (docs/performance.md). `charts bench compare --engine "
                        "LABEL=PYTHON ...`: Lyapunov throughput of several installations, e.g. two "
-                       "checkouts, interleaved in one run. Each is a module of "
+                       "checkouts, interleaved in one run. `charts bench coldstart`: where the "
+                       "seconds of a fresh install's first call go (docs/performance.md). Each is a module of "
                        "charts.runs.benchmarks: no source checkout needed.")
-    p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare"))
+    p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare",
+                                        "coldstart"))
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bars (accuracy)")
     p.add_argument("rest", nargs=argparse.REMAINDER,
                    help="options of the benchmark (e.g. `charts bench performance --help`)")

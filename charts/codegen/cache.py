@@ -88,19 +88,19 @@ def _problem(path: Path) -> str | None:
     return None
 
 
-def _derive(n: int, path: Path, reason: str) -> None:
+def _derive(n: int, path: Path, reason: str, paper: bool) -> None:
     if reason != "missing":
         _say(f"the cached geometry for N={n} at {path} is unusable: {reason}; deriving it again")
     t0 = time.perf_counter()
     _say(f"deriving geometry for N={n} (not shipped); cached at {path}")
-    data = module_source(n).encode("utf-8")
+    data = module_source(n, paper).encode("utf-8")
     atomic_write(path, data)            # concurrent readers never see half a file
     atomic_write(path.with_name(path.name + ".sha256"), (_digest(data) + "\n").encode())
     _say(f"N={n} derived in {time.perf_counter() - t0:.1f} s")
 
 
-def _import(n: int, path: Path):
-    name = f"charts_ondemand_{module_name(n)}"
+def _import(n: int, path: Path, paper: bool):
+    name = f"charts_ondemand_{module_name(n, paper)}"
     spec = importlib.util.spec_from_file_location(name, path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
@@ -108,20 +108,21 @@ def _import(n: int, path: Path):
     return mod
 
 
-def load_or_generate(n: int):
-    """The generated module for N rotors from the cache, derived (once, under a file lock)
-    when missing, corrupt or stale."""
+def load_or_generate(n: int, paper: bool = False):
+    """The generated module for N rotors (``paper``: its specialisation to a = 1, c = 0) from
+    the cache, derived (once, under a file lock) when missing, corrupt or stale."""
     folder = cache_dir()
     folder.mkdir(parents=True, exist_ok=True)
-    path = folder / f"{module_name(n)}.py"
-    with _derivation_lock(folder / f"{module_name(n)}.lock", n):
+    name = module_name(n, paper)
+    path = folder / f"{name}.py"
+    with _derivation_lock(folder / f"{name}.lock", n):
         reason = _problem(path)
         if reason is not None:
-            _derive(n, path, reason)
+            _derive(n, path, reason, paper)
         try:
-            return _import(n, path)
+            return _import(n, path, paper)
         except Exception as exc:        # noqa: BLE001 - a hash-valid file that fails to import
             if reason is not None:      # freshly derived: a real error, not a corrupt cache
                 raise
-            _derive(n, path, f"it does not import ({type(exc).__name__}: {exc})")
-            return _import(n, path)
+            _derive(n, path, f"it does not import ({type(exc).__name__}: {exc})", paper)
+            return _import(n, path, paper)

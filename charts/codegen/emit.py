@@ -5,8 +5,9 @@ Design note.  For each N one module ``rotor_n{N}.py`` is written for the
 is the same formulas with the local angles (θ without θₖ, in order) and the
 masses reordered as (m without mₖ, then mₖ): the metric (eq 13) is symmetric
 under that relabelling, and ``tests/test_generated.py`` proves it by comparing
-against a live SymPy derivation of every chart.  Masses are run-time
-arguments.  Each function works on scalars with ``math`` (so numba compiles it
+against a live SymPy derivation of every chart.  Masses, the weights aᵢ and the level c of
+the constraint Σ aᵢ cos θᵢ = c are run-time arguments (weights in the masses' local order),
+so ``generated/`` holds one module per N for the whole family.  Each function works on scalars with ``math`` (so numba compiles it
 and plain CPython runs it), reads 1-D arrays, and writes into a caller-given
 ``out`` array (no allocation in hot loops).
 
@@ -51,12 +52,15 @@ def _flatten(nested, prefix=()):
         yield prefix, nested
 
 
-def _function(name, args, doc, outputs, printer, scalar=False):
+def _function(name, args, doc, outputs, printer, scalar=False, atoms=()):
     """Source of one function; ``outputs`` is a nested list (written to ``out``)
-    or a single expression (returned) when ``scalar``."""
+    or a single expression (returned) when ``scalar``.  ``atoms``: (symbol, source) pairs
+    computed first, where the expressions use them."""
     flat = [(None, outputs)] if scalar else list(_flatten(outputs))
     exprs = [e for _, e in flat]
     lines = [f"def {name}({', '.join(args)}):", f'    """{doc}"""']
+    used = set().union(*(sp.sympify(e).free_symbols for e in exprs))
+    lines += [f"    {printer.doprint(sym)} = {code}" for sym, code in atoms if sym in used]
     reps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("x"), order="canonical")
     for sym, e in reps:
         lines.append(f"    {sym} = {printer.doprint(e)}")
@@ -69,12 +73,17 @@ def _function(name, args, doc, outputs, printer, scalar=False):
     return "\n".join(lines) + "\n"
 
 
-def module_source(n: int) -> str:
-    """Full text of ``generated/rotor_n{n}.py`` (canonical chart k = n−1)."""
-    G = ChartGeometry(n, n - 1)
+def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = None) -> str:
+    """Full text of ``generated/rotor_n{n}.py`` (the family, canonical chart k = n−1), or with
+    ``paper`` of ``rotor_n{n}_paper.py`` (the same derivation at a = 1, c = 0, specialised
+    before CSE: the paper's kernels keep their operations, and so their bits).  Both take
+    the same arguments.  ``geometry``: the derivation to reuse (``ChartGeometry(n, n − 1)``)."""
+    G = ChartGeometry(n, n - 1) if geometry is None else geometry
     d = G.dim
     names = {G.theta[a]: f"q[{a}]" for a in range(d)}
     names.update({G.m[i]: f"m[{i}]" for i in range(n)})
+    names.update({G.a[i]: f"a[{i}]" for i in range(n)})
+    names[G.c] = "c"
     x = list(sp.symbols(f"x_0:{d}", real=True))
     y = list(sp.symbols(f"y_0:{d}", real=True))
     names.update({G.v[a]: f"v[{a}]" for a in range(d)})
@@ -82,36 +91,60 @@ def module_source(n: int) -> str:
     names.update({x[a]: f"x[{a}]" for a in range(d)})
     names.update({y[a]: f"y[{a}]" for a in range(d)})
     sin_k = sp.Symbol("sin_k", real=True)
+    # σ_α = a_α sin q_α and κ_α = a_α cos q_α become symbols computed once at the top (``atoms``)
+    atoms, calls = [], {}
+    for kind, fns in (("cos", G.wcos), ("sin", G.wsin)):
+        for a, f in enumerate(fns):
+            sym = sp.Symbol(f"z{kind}{a}", real=True)
+            calls[f] = sym
+            names[sym] = f"w{kind[0]}{a}"
+            atoms.append((sym, f"a[{a}]*math.{kind}(q[{a}])"))
     P = _Printer(names)
+
+    def coded(nested):
+        if isinstance(nested, list):
+            return [coded(x) for x in nested]
+        return sp.sympify(nested).xreplace(calls)
+
+    def function(fname, args, doc, outputs, scalar=False):
+        if paper:
+            return _function(fname, args, doc, G.paper(outputs), P, scalar=scalar)
+        return _function(fname, args, doc, coded(outputs), P, scalar=scalar, atoms=atoms)
+
+    what = (f"the paper's constraint sum(cos(theta_i)) = 0 (a = 1, c = 0 substituted before code\n"
+            f"generation; a and c are accepted and ignored).  Arguments: q = local angles, shape ({d},);\n"
+            if paper else
+            f"the constraint sum(a_i cos(theta_i)) = c.  Arguments: q = local angles, shape ({d},);\n")
 
     shape = lambda t: "x".join(map(str, _shape(t)))
     parts = [
-        f'"""Rotor manifold, N = {n}: geometry of the canonical chart (eliminates θ_{n - 1}).\n\n'
-        f"Arguments: q = local angles, shape ({d},); m = masses, shape ({n},), local order with the\n"
-        f"eliminated rotor's mass last; v, p, x, y = local vector components, shape ({d},).\n"
+        f'"""Rotor manifold, N = {n}: geometry of the canonical chart (eliminates θ_{n - 1}) on\n'
+        + what +
+        f"m = masses and a = weights, shape ({n},) each, local order with the eliminated rotor's\n"
+        f"last; c = level (float); v, p, x, y = local vector components, shape ({d},).\n"
         f'Index conventions: see charts/codegen/symbolic.py.\n"""\n'
         "import math\n\nN = {n}\nDIM = {d}\n".format(n=n, d=d),
-        _function("metric", ["q", "m", "out"],
-                  f"g_ab, eq (13); out shape ({shape(G.metric)}).", G.metric, P),
-        _function("metric_inverse", ["q", "m", "out"],
-                  f"g^ab (Sherman-Morrison); out shape ({shape(G.metric)}).", G.metric_inverse, P),
-        _function("christoffel", ["q", "m", "out"],
+        function("metric", ["q", "m", "a", "c", "out"],
+                  f"g_ab, eq (13); out shape ({shape(G.metric)}).", G.metric),
+        function("metric_inverse", ["q", "m", "a", "c", "out"],
+                  f"g^ab (Sherman-Morrison); out shape ({shape(G.metric)}).", G.metric_inverse),
+        function("christoffel", ["q", "m", "a", "c", "out"],
                   f"Gamma^a_bc, upper index first, eq (15); out shape ({shape(G.christoffel)}).",
-                  G.christoffel, P),
-        _function("riemann", ["q", "m", "out"],
-                  f"R_abcd = <R(d_c, d_d) d_b, d_a>; out shape ({shape(G.riemann)}).", G.riemann, P),
-        _function("geodesic_acceleration", ["q", "v", "m", "out"],
+                  G.christoffel),
+        function("riemann", ["q", "m", "a", "c", "out"],
+                  f"R_abcd = <R(d_c, d_d) d_b, d_a>; out shape ({shape(G.riemann)}).", G.riemann),
+        function("geodesic_acceleration", ["q", "v", "m", "a", "c", "out"],
                   "dv^a/dt = -Gamma^a_bc v^b v^c, eq (14).",
-                  [-e for e in G.connection_contract(G.v, G.v)], P),
-        _function("transport_rate", ["q", "v", "p", "m", "out"],
+                  [-e for e in G.connection_contract(G.v, G.v)]),
+        function("transport_rate", ["q", "v", "p", "m", "a", "c", "out"],
                   "dp^a/dt = -Gamma^a_bc v^b p^c, eq (16).",
-                  [-e for e in G.connection_contract(G.v, G.w)], P),
-        _function("curvature_operator", ["q", "x", "y", "m", "out"],
+                  [-e for e in G.connection_contract(G.v, G.w)]),
+        function("curvature_operator", ["q", "x", "y", "m", "a", "c", "out"],
                   "(R(x, y) y)^a; the Jacobi equation is J'' + R(J, v) v = 0.",
-                  G.curvature_operator(x, y), P),
-        _function("eliminated_component", ["q", "x", "sin_k"],
+                  G.curvature_operator(x, y)),
+        function("eliminated_component", ["q", "x", "a", "sin_k"],
                   "Ambient component of the eliminated angle of tangent vector x (tangency).",
-                  G.eliminated_velocity(x, sin_k), P, scalar=True),
+                  G.eliminated_velocity(x, sin_k), scalar=True),
     ]
     header = (f"# Generated by `{GENERATOR_COMMAND}` (SymPy {sp.__version__}) from charts/codegen/symbolic.py.\n"
               "# Do not edit by hand: regenerate, and `python scripts/generate.py --check` must pass.\n")

@@ -2,7 +2,7 @@
 
 __all__ = ["SHIPPED_N", "GENERATED_FUNCTIONS", "module_name"]
 
-#: N for which ``generated/rotor_n{N}.py`` is committed.
+#: N for which ``generated/rotor_n{N}.py`` and ``rotor_n{N}_paper.py`` are committed.
 SHIPPED_N = (3, 4, 5, 6)
 
 #: Functions every generated module defines (see charts/codegen/emit.py).
@@ -13,5 +13,7 @@ GENERATED_FUNCTIONS = (
 )
 
 
-def module_name(n: int) -> str:
-    return f"rotor_n{n}"
+def module_name(n: int, paper: bool = False) -> str:
+    """``rotor_n{n}`` (the family Σ aᵢ cos θᵢ = c) or ``rotor_n{n}_paper`` (its member a = 1,
+    c = 0 specialised before code generation, the paper's kernels bit for bit)."""
+    return f"rotor_n{n}_paper" if paper else f"rotor_n{n}"

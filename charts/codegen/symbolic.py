@@ -1,12 +1,20 @@
 """Symbolic geometry of the rotor constraint manifold in one coordinate chart.
 
-The configuration manifold is Σ cos θᵢ = 0 (eq 1) with the kinetic metric
-T = ½ Σ mᵢ uᵢ² (eq 2, unit masses in the paper).  Chart ``k`` eliminates θₖ:
-its local coordinates are the remaining angles in increasing order,
-cos θₖ = −C with C = Σ_{α≠k} cos θ_α, and sin θₖ = ±√(1 − C²) on one of two
-sign branches.  The induced metric does not depend on the branch:
+The configuration manifold is the level set Σ aᵢ cos θᵢ = c (weights aᵢ > 0, level c; the
+paper's eq (1) is a = 1, c = 0) with the kinetic metric T = ½ Σ mᵢ uᵢ² (eq 2, unit masses
+in the paper).  Weights and level are *symbols*: one derivation (and one generated module
+per N) serves every member of the family.  Chart ``k`` eliminates θₖ: its local coordinates
+are the remaining angles in increasing order, aₖ cos θₖ = −C with
+C = Σ_{α≠k} a_α cos θ_α − c, and aₖ sin θₖ = ±√D, D = aₖ² − C², on one of two sign branches
+(the chart's domain is |C| < aₖ).  With σ_α = a_α sin θ_α the induced metric does not depend
+on the branch:
 
-    g_αβ = m_α δ_αβ + m_k sin θ_α sin θ_β / (1 − C²)            (eq 13)
+    g_αβ = m_α δ_αβ + m_k σ_α σ_β / D                             (eq 13, weighted)
+
+For a = 1, c = 0: C = Σ cos θ_α, D = 1 − C², and this is the paper's eq (13).  σ and κ are
+opaque functions (``weighted_sincos``) with σ' = κ, κ' = −σ, so the derivation has the shape
+of the unweighted one; ``paper`` substitutes a = 1, c = 0, σ → sin, κ → cos and gives the
+very expressions the derivation gave before weights and level existed.
 
 Everything here is exact SymPy, built without ``simplify`` and without generic
 matrix inversion (the metric is diagonal plus rank one, so Sherman–Morrison
@@ -27,11 +35,23 @@ Index conventions (also used by the generated code and by ``RotorSystem``):
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cache, cached_property
 
 import sympy as sp
 
-__all__ = ["ChartGeometry", "local_indices"]
+__all__ = ["ChartGeometry", "local_indices", "weighted_sincos"]
+
+
+@cache
+def weighted_sincos(i: int):
+    """The SymPy functions σᵢ(θᵢ) = aᵢ sin θᵢ and κᵢ(θᵢ) = aᵢ cos θᵢ of rotor ``i``, opaque
+    (σ' = κ, κ' = −σ) so that the derivation has the shape of the unweighted one with
+    sin → σ, cos → κ; ``ChartGeometry.explicit`` writes them out."""
+    wsin = type(f"wsin{i}", (sp.Function,), {"nargs": 1})
+    wcos = type(f"wcos{i}", (sp.Function,), {"nargs": 1})
+    wsin.fdiff = lambda self, argindex=1: wcos(self.args[0])
+    wcos.fdiff = lambda self, argindex=1: -wsin(self.args[0])
+    return wsin, wcos
 
 
 def local_indices(n: int, k: int) -> list[int]:
@@ -44,7 +64,8 @@ class ChartGeometry:
     """Exact geometry of chart ``k`` of the N-rotor manifold.
 
     Symbols: ``theta[i]`` (all N ambient angles; θₖ itself never appears),
-    ``m[i]`` (positive masses), ``v``, ``w`` (local vector components).
+    ``m[i]`` (positive masses), ``a[i]`` (positive weights), ``c`` (the level),
+    ``v``, ``w`` (local vector components).
     All tensors are nested lists of SymPy expressions in local indices.
     """
 
@@ -60,6 +81,8 @@ class ChartGeometry:
             raise ValueError(f"chart k={self.k} outside 0..{self.n - 1}")
         self.theta = list(sp.symbols(f"theta0:{self.n}", real=True))
         self.m = list(sp.symbols(f"m0:{self.n}", positive=True))
+        self.a = list(sp.symbols(f"a0:{self.n}", positive=True))
+        self.c = sp.Symbol("c", real=True)
         self.v = list(sp.symbols(f"v0:{self.dim}", real=True))
         self.w = list(sp.symbols(f"w0:{self.dim}", real=True))
 
@@ -82,27 +105,75 @@ class ChartGeometry:
         return [self.m[i] for i in self.idx]
 
     @cached_property
+    def aloc(self) -> list:
+        return [self.a[i] for i in self.idx]
+
+    @cached_property
+    def wsin(self) -> list:
+        """σ_α = a_α sin θ_α (minus the gradient of F = Σ a cos θ, local part)."""
+        return [weighted_sincos(i)[0](self.theta[i]) for i in self.idx]
+
+    @cached_property
+    def wcos(self) -> list:
+        """κ_α = a_α cos θ_α (minus the Hessian of F, local part)."""
+        return [weighted_sincos(i)[1](self.theta[i]) for i in self.idx]
+
+    @cached_property
     def cos_sum(self):
-        """C = Σ_{α≠k} cos θ_α = −cos θₖ."""
-        return sp.Add(*[sp.cos(x) for x in self.q])
+        """C = Σ_{α≠k} a_α cos θ_α − c = −aₖ cos θₖ (the paper's Σ cos θ_α for a = 1, c = 0)."""
+        return sp.Add(*self.wcos) - self.c
+
+    @cached_property
+    def substitutions(self) -> dict:
+        """Values of the opaque functions σ_α = a_α sin θ_α, κ_α = a_α cos θ_α."""
+        out = {}
+        for i, s, c in zip(self.idx, self.wsin, self.wcos):
+            out[s] = self.a[i] * sp.sin(self.theta[i])
+            out[c] = self.a[i] * sp.cos(self.theta[i])
+        return out
+
+    @cached_property
+    def paper_values(self) -> dict:
+        """The paper's member of the family: a = 1, c = 0 (σ → sin, κ → cos)."""
+        out = {self.c: 0}
+        for i, s, c in zip(self.idx, self.wsin, self.wcos):
+            out[s] = sp.sin(self.theta[i])
+            out[c] = sp.cos(self.theta[i])
+        out.update({a: 1 for a in self.a})
+        return out
+
+    def paper(self, nested):
+        """``nested`` specialised to the paper's Σ cos θ = 0 (a = 1, c = 0): the same
+        expressions the derivation gave before weights and level existed (``emit`` writes
+        them as the paper's kernels, which keep their floating-point operations)."""
+        if isinstance(nested, list):
+            return [self.paper(x) for x in nested]
+        return sp.sympify(nested).xreplace(self.paper_values)
+
+    def explicit(self, nested):
+        """``nested`` (a nested list or an expression) with σ, κ written out: a function of
+        q, m, a, c only (for lambdify)."""
+        if isinstance(nested, list):
+            return [self.explicit(x) for x in nested]
+        return sp.sympify(nested).xreplace(self.substitutions)
 
     @cached_property
     def sin2_k(self):
-        """sin²θₖ = 1 − C², the chart's conditioning factor."""
-        return 1 - self.cos_sum**2
+        """D = aₖ² − C² = (aₖ sin θₖ)², the chart's conditioning factor (1 − C² for a = 1)."""
+        return self.a[self.k] ** 2 - self.cos_sum**2
 
     # -- metric (eq 13) -----------------------------------------------------
     @cached_property
     def metric(self) -> list:
-        d, s = self.dim, [sp.sin(x) for x in self.q]
+        d, s = self.dim, self.wsin
         mk = self.m[self.k]
         return [[(self.mloc[a] if a == b else 0) + mk * s[a] * s[b] / self.sin2_k
                  for b in range(d)] for a in range(d)]
 
     @cached_property
     def metric_inverse(self) -> list:
-        """Sherman–Morrison inverse of diag(m) + (m_k/D) s sᵀ."""
-        d, s = self.dim, [sp.sin(x) for x in self.q]
+        """Sherman–Morrison inverse of diag(m) + (m_k/D) σ σᵀ."""
+        d, s = self.dim, self.wsin
         mk, ml = self.m[self.k], self.mloc
         denom = self.sin2_k + mk * sp.Add(*[s[a] ** 2 / ml[a] for a in range(d)])
         return [[(1 / ml[a] if a == b else 0) - mk * s[a] * s[b] / (ml[a] * ml[b] * denom)
@@ -141,23 +212,24 @@ class ChartGeometry:
     # -- curvature -----------------------------------------------------------------
     @cached_property
     def second_fundamental(self) -> list:
-        """H_ab = Hess F(∂_a, ∂_b) of F = Σ cos θ pulled back to the chart, with
-        ∂_a θₖ = −sin θ_a / sin θₖ:  H_ab = −(δ_ab cos θ_a − C sin θ_a sin θ_b / (1 − C²))."""
-        d, s, c = self.dim, [sp.sin(x) for x in self.q], [sp.cos(x) for x in self.q]
+        """H_ab = Hess F(∂_a, ∂_b) of F = Σ a cos θ pulled back to the chart, with
+        ∂_a θₖ = −σ_a / (aₖ sin θₖ):  H_ab = −(δ_ab κ_a − C σ_a σ_b / D)
+        (the paper's −(δ_ab cos θ_a − C sin θ_a sin θ_b / (1 − C²)) for a = 1, c = 0)."""
+        d, s, c = self.dim, self.wsin, self.wcos
         C, D = self.cos_sum, self.sin2_k
         return [[-((c[a] if a == b else 0) - C * s[a] * s[b] / D) for b in range(d)] for a in range(d)]
 
     @cached_property
     def normal_norm2(self):
-        """|∇F|² in the metric diag(m): Σ_α sin²θ_α/m_α + sin²θₖ/mₖ."""
-        return sp.Add(*[sp.sin(x) ** 2 / mm for x, mm in zip(self.q, self.mloc)]) + self.sin2_k / self.m[self.k]
+        """|∇F|² in the metric diag(m): Σ_α σ_α²/m_α + D/mₖ."""
+        return sp.Add(*[x ** 2 / mm for x, mm in zip(self.wsin, self.mloc)]) + self.sin2_k / self.m[self.k]
 
     @cached_property
     def riemann(self) -> list:
         """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩ by the Gauss equation of the hypersurface F = 0 in
         the flat space (Rᴺ, diag m):  R_abcd = (H_ac H_bd − H_ad H_bc) / |∇F|².
 
-        Only 1/(1 − C²) appears, so it evaluates to ~1e-15 even where the chart is poorly
+        Only 1/D appears, so it evaluates to ~1e-15 even where the chart is poorly
         conditioned; ``riemann_from_metric`` (the textbook route) loses ~1e-16/sin⁸θₖ there.
         Tests check the two agree symbolically-numerically."""
         d, H, nn = self.dim, self.second_fundamental, self.normal_norm2
@@ -208,5 +280,5 @@ class ChartGeometry:
     # -- maps between chart and ambient ---------------------------------------------
     def eliminated_velocity(self, x: list, sin_k):
         """Ambient component k of a tangent vector with local components ``x``:
-        from d(Σ cos θ) = 0, x_k = −Σ_α sin θ_α x_α / sin θₖ."""
-        return -sp.Add(*[sp.sin(self.q[a]) * x[a] for a in range(self.dim)]) / sin_k
+        from d(Σ a cos θ) = 0, x_k = −Σ_α σ_α x_α / (aₖ sin θₖ)."""
+        return -sp.Add(*[self.wsin[a] * x[a] for a in range(self.dim)]) / (self.a[self.k] * sin_k)

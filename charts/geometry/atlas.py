@@ -2,17 +2,19 @@
 canonical chart.
 
 Chart k eliminates θₖ: its local coordinates are the other angles in increasing order, and
-the sign of sin θₖ is its branch.  The generated code (``charts.generated.rotor_nN``) is
-written for the canonical chart k = N − 1; chart k is the same code with θₖ moved last,
-which is why it takes the local masses (m without mₖ, then mₖ).
+the sign of sin θₖ is its branch.  On the manifold Σ aᵢ cos θᵢ = c the eliminated angle is
+θₖ = ±arccos(−C / aₖ), C = Σ_{α≠k} a_α cos θ_α − c, so chart k's domain is |C| < aₖ
+(`eliminated_angle`).  The generated code (``charts.generated.rotor_nN``) is written for the
+canonical chart k = N − 1; chart k is the same code with θₖ moved last, which is why it takes
+the local masses and weights (m without mₖ, then mₖ; the same for a).
 """
 from __future__ import annotations
 
 import numpy as np
 from numba import njit
 
-__all__ = ["chart_coordinates", "local_masses", "ambient_index", "local_index",
-           "eliminated_component"]
+__all__ = ["chart_coordinates", "local_masses", "local_weights", "ambient_index", "local_index",
+           "eliminated_component", "eliminated_angle"]
 
 
 def chart_coordinates(n: int, k: int) -> list[int]:
@@ -24,6 +26,10 @@ def local_masses(masses, k: int) -> np.ndarray:
     """Masses in the local order of chart k: (m without mₖ, mₖ)."""
     masses = np.asarray(masses, dtype=float)
     return np.concatenate([np.delete(masses, k), masses[k:k + 1]])
+
+
+#: The weights in the local order of chart k: the same relabelling as the masses.
+local_weights = local_masses
 
 
 @njit(cache=True, inline="always")
@@ -39,11 +45,25 @@ def local_index(i, k):
 
 
 @njit(cache=True, inline="always")
-def eliminated_component(q, x, o, d, sk):
+def eliminated_component(q, x, o, d, w, sk):
     """The eliminated rotor's component of the tangent vector with local components
-    x[o:o+d] at local angles q (the first d entries) of chart k, where sin θₖ = sk:
-    xₖ = −Σ_α x_α sin q_α / sin θₖ (tangency, eq 10)."""
+    x[o:o+d] at local angles q (the first d entries) of chart k, local weights w (wₖ last),
+    where sin θₖ = sk: xₖ = −Σ_α x_α w_α sin q_α / (wₖ sin θₖ) (tangency, eq 10)."""
     acc = 0.0
     for a in range(d):
-        acc += x[o + a] * np.sin(q[a])
-    return -acc / sk
+        acc += x[o + a] * (w[a] * np.sin(q[a]))
+    return -acc / (w[d] * sk)
+
+
+@njit(cache=True, inline="always")
+def eliminated_angle(q, d, w, c, branch):
+    """cos θₖ, sin θₖ and D = aₖ² − C² = (aₖ sin θₖ)² of chart k at local angles q (the first
+    d entries), local weights w (wₖ last), level c, on the branch sign(sin θₖ) = ``branch``:
+    aₖ cos θₖ = −C, C = Σ w_α cos q_α − c.  D <= 0: q is outside the chart (|C| >= aₖ), and
+    sin θₖ is returned as 0."""
+    C = 0.0
+    for a in range(d):
+        C += w[a] * np.cos(q[a])
+    C -= c
+    D = w[d] * w[d] - C * C
+    return -C / w[d], np.copysign(np.sqrt(max(D, 0.0)) / w[d], branch), D

@@ -1,12 +1,15 @@
 """Access to the chart kernels of one N: generated (SymPy) or structured, plain and compiled.
 
-``chart_module(n)`` imports ``charts.generated.rotor_n{n}`` (shipped for N = 3..6)
-or, for 7 <= N <= ``MAX_N``, derives it on demand through ``charts.codegen.cache``.
-``compiled(n)`` returns the same functions compiled with ``numba.njit(cache=True)``.
-``geometry(n)`` is what the library uses: the compiled generated functions for the shipped
-N (``GENERATED_N``), the structured ones (``charts.geometry.structured``, one compilation
-for every N, any N >= 3) otherwise; both take the same arguments and agree to rounding
-(tests/test_structured.py).
+``chart_module(n, paper)`` imports ``charts.generated.rotor_n{n}`` (the family
+Σ aᵢ cos θᵢ = c; with ``paper``, ``rotor_n{n}_paper``, its member a = 1, c = 0 specialised
+before code generation), shipped for N = 3..6, or for 7 <= N <= ``MAX_N`` derives it on demand
+through ``charts.codegen.cache``.  ``compiled(n, paper)`` returns the same functions compiled
+with ``numba.njit(cache=True)``.  ``geometry(n, weights, level)`` is what the library uses: the
+compiled generated functions for the shipped N (``GENERATED_N``; the paper's module for
+weights all 1 and level 0, so the paper's numbers keep their bits), the structured ones
+(``charts.geometry.structured``, one compilation for every N and every member) otherwise.
+All take the same arguments, ``(q, ..., m, a, c, out)`` with local masses m and weights a
+and the level c, and agree to rounding (tests/test_structured.py).
 """
 from __future__ import annotations
 
@@ -16,10 +19,11 @@ from functools import cache
 from types import SimpleNamespace
 
 import numba
+import numpy as np
 
 from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 
-__all__ = ["chart_module", "compiled", "geometry", "source", "GENERATED_N", "MAX_N"]
+__all__ = ["chart_module", "compiled", "geometry", "source", "is_paper", "GENERATED_N", "MAX_N"]
 
 #: Largest N whose generated module can be derived on demand (tests compare it with the
 #: structured kernels; ``RotorSystem`` no longer needs it).
@@ -35,16 +39,22 @@ def source(n: int) -> str:
     return "generated" if n in GENERATED_N else "structured"
 
 
+def is_paper(weights=None, level=0.0) -> bool:
+    """True for the paper's constraint Σ cos θᵢ = 0: weights None or all 1, level 0."""
+    return (weights is None or bool(np.all(np.asarray(weights) == 1.0))) and level == 0.0
+
+
 @cache
-def chart_module(n: int):
-    """The generated module for N rotors (canonical chart eliminating θ_{N−1})."""
+def chart_module(n: int, paper: bool = False):
+    """The generated module for N rotors (canonical chart eliminating θ_{N−1}): the family,
+    or with ``paper`` its member a = 1, c = 0."""
     if n in SHIPPED_N:
-        return importlib.import_module(f"charts.generated.{module_name(n)}")
+        return importlib.import_module(f"charts.generated.{module_name(n, bool(paper))}")
     if not 3 <= n <= MAX_N:
         raise ValueError(f"N={n} is not supported: generated geometry exists for 3 <= N <= {MAX_N}")
     from ..codegen.cache import load_or_generate
 
-    return load_or_generate(n)
+    return load_or_generate(n, bool(paper))
 
 
 #: Generated functions called inside numba kernels (``charts.flows.chart``): always compiled.
@@ -62,10 +72,11 @@ def _lines(fn) -> int:
 
 
 @cache
-def compiled(n: int) -> SimpleNamespace:
-    """numba-compiled versions of the generated functions for N rotors (plain Python for
-    the long ones that no kernel calls, see ``JIT_MAX_LINES``)."""
-    mod = chart_module(n)
+def compiled(n: int, paper: bool = False) -> SimpleNamespace:
+    """numba-compiled versions of the generated functions for N rotors (``paper``: of the
+    paper's module; plain Python for the long ones that no kernel calls, see
+    ``JIT_MAX_LINES``)."""
+    mod = chart_module(n, paper)
     out = {}
     for name in GENERATED_FUNCTIONS:
         fn = getattr(mod, name)
@@ -74,14 +85,20 @@ def compiled(n: int) -> SimpleNamespace:
     return SimpleNamespace(**out)
 
 
-@cache
-def geometry(n: int) -> SimpleNamespace:
-    """The compiled chart functions used for N rotors (see ``source``), with the names of
-    ``charts.codegen.names.GENERATED_FUNCTIONS`` and the arguments of the generated ones."""
+def geometry(n: int, weights=None, level=0.0) -> SimpleNamespace:
+    """The compiled chart functions used for N rotors on Σ ``weights``ᵢ cos θᵢ = ``level``
+    (see ``source``; the paper's module for weights None or all 1 and level 0), with the
+    names of ``charts.codegen.names.GENERATED_FUNCTIONS`` and the arguments of the generated
+    ones."""
     if isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 3:
         raise ValueError(f"n must be an integer >= 3, got {n!r}")
-    if source(int(n)) == "generated":
-        return compiled(n)
+    return _geometry(int(n), is_paper(weights, level))
+
+
+@cache
+def _geometry(n: int, paper: bool) -> SimpleNamespace:
+    if source(n) == "generated":
+        return compiled(n, paper)
     from . import structured
 
     return SimpleNamespace(**{name: getattr(structured, name) for name in structured.FUNCTIONS})

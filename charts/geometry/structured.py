@@ -1,24 +1,28 @@
 """Structured chart geometry for any N: the generated functions' formulas from the shape of
 the geometry, compiled once for every N (numba, ``cache=True``; nothing depends on N).
 
-Chart k embeds the local angles q (d = N − 1 of them, masses m in local order with the
-eliminated rotor's mass mₖ last) as θ(q) with cos θₖ = −C, C = Σ cos q_α, sin²θₖ = 1 − C².
-Its coordinate vectors are E_α = e_α + tₐ eₖ with t_α = ∂θₖ/∂q_α = −s_α / sin θₖ (s = sin q,
-c = cos q).  With the ambient metric M = diag m, F = Σ cos θ, the flat Hessian
-h = Hess F = −diag(cos θ) and G = |∇F|² = Σᵢ sin²θᵢ / mᵢ:
+The manifold is Σ aᵢ cos θᵢ = c (weights a > 0, level c; the paper's a = 1, c = 0).  Chart k
+embeds the local angles q (d = N − 1 of them; masses m and weights a in local order with the
+eliminated rotor's last) as θ(q) with aₖ cos θₖ = −C, C = Σ a_α cos q_α − c, and
+(aₖ sin θₖ)² = D = aₖ² − C² (the chart's domain is |C| < aₖ).  With σ = a sin q, κ = a cos q,
+its coordinate vectors are E_α = e_α + t_α eₖ, t_α = ∂θₖ/∂q_α = −σ_α / (aₖ sin θₖ).  With the
+ambient metric M = diag m, F = Σ a cos θ, the flat Hessian h = Hess F = −diag(a cos θ) and
+G = |∇F|² = Σᵢ aᵢ² sin²θᵢ / mᵢ = Σ_α σ_α²/m_α + D/mₖ:
 
-* metric (eq 13), diagonal plus rank one:  g_αβ = m_α δ_αβ + mₖ s_α s_β / sin²θₖ;
-* its inverse (Sherman–Morrison):          g^αβ = δ_αβ / m_α − s_α s_β / (m_α m_β G);
-* Christoffel symbols (eq 15): Γ_{α,βγ} = ⟨E_α, ∂_β∂_γ θ⟩_M = mₖ t_α ∂_β∂_γθₖ, and raising
-  the index with g⁻¹ gives a vector times a symmetric matrix,
-  Γ^α_βγ = −(s_α / (m_α G)) h_βγ,   h_βγ = h(E_β, E_γ) = −(c_β δ_βγ − C s_β s_γ / sin²θₖ),
-  so that Γ^α_βγ vᵝ pᵞ = −(s_α / (m_α G)) h(V, P) costs O(N) (V, P the ambient vectors);
-* Riemann tensor from the Gauss equation of the hypersurface F = 0 in (Rᴺ, M):
+* metric (eq 13), diagonal plus rank one:  g_αβ = m_α δ_αβ + mₖ σ_α σ_β / D;
+* its inverse (Sherman–Morrison):          g^αβ = δ_αβ / m_α − σ_α σ_β / (m_α m_β G);
+* Christoffel symbols (eq 15): the tangential part of ∂_β∂_γθ = (∂_β∂_γθₖ) eₖ, with
+  ∇F·∂_β∂_γθ = −h(E_β, E_γ) from differentiating F(θ(q)) = c twice, is a vector times a
+  symmetric matrix, Γ^α_βγ = −(σ_α / (m_α G)) h_βγ,  h_βγ = h(E_β, E_γ) = −(κ_β δ_βγ − C σ_β σ_γ / D),
+  so that Γ^α_βγ vᵝ pᵞ = −(σ_α / (m_α G)) h(V, P) costs O(N) (V, P the ambient vectors);
+* Riemann tensor from the Gauss equation of the hypersurface F = c in (Rᴺ, M):
   R_αβγδ = ⟨R(∂_γ, ∂_δ)∂_β, ∂_α⟩ = (h_αγ h_βδ − h_αδ h_βγ) / G, and the sectional curvature
   of the plane of ambient tangent vectors v, w is [h(v,v)h(w,w) − h(v,w)²] / (G |v∧w|²).
 
-The functions take and fill the same arguments as the generated ones
-(``charts.generated.rotor_nN``), so either serves ``charts.geometry.kernels.geometry``.
+For a = 1, c = 0 every product with a weight is a product with 1 and the level is added as 0,
+so these are the operations of the unweighted kernels (the same bits).  The functions take and
+fill the same arguments as the generated ones (``charts.generated.rotor_nN``), so either
+serves ``charts.geometry.kernels.geometry``.
 """
 from __future__ import annotations
 
@@ -39,27 +43,29 @@ FUNCTIONS = ("metric", "metric_inverse", "christoffel", "riemann", "geodesic_acc
 
 
 @njit(cache=True, inline="always")
-def _chart_scalars(q, m, s):
-    """Fills s = sin q; returns (C, sin²θₖ, G) of chart coordinates q with local masses m."""
+def _chart_scalars(q, m, w, c, s):
+    """Fills s = σ = w sin q; returns (C, D, G) of chart coordinates q with local masses m,
+    local weights w and level c (see the module doc)."""
     d = q.size
     C = 0.0
     G = 0.0
     for a in range(d):
-        s[a] = math.sin(q[a])
-        C += math.cos(q[a])
+        s[a] = w[a] * math.sin(q[a])
+        C += w[a] * math.cos(q[a])
         G += s[a] * s[a] / m[a]
-    sk2 = 1.0 - C * C
+    C -= c
+    sk2 = w[d] * w[d] - C * C
     return C, sk2, G + sk2 / m[d]
 
 
 @njit(cache=True, inline="always")
-def _hess(q, s, C, sk2, x, y):
-    """h(X, Y) = −Σᵢ cos θᵢ Xᵢ Yᵢ of the ambient vectors of local components x, y."""
+def _hess(q, w, s, C, sk2, x, y):
+    """h(X, Y) = −Σᵢ aᵢ cos θᵢ Xᵢ Yᵢ of the ambient vectors of local components x, y."""
     acc = 0.0
     sx = 0.0
     sy = 0.0
     for a in range(q.size):
-        acc += math.cos(q[a]) * x[a] * y[a]
+        acc += w[a] * math.cos(q[a]) * x[a] * y[a]
         sx += s[a] * x[a]
         sy += s[a] * y[a]
     return -(acc - C * sx * sy / sk2)
@@ -77,45 +83,45 @@ def _diag_plus_rank_one(x, f, diag, out):
 
 
 @njit(cache=True)
-def metric(q, m, out):
-    """g_αβ, eq (13): diag(m_α) + mₖ s sᵀ / sin²θₖ; out shape (d, d)."""
+def metric(q, m, a, c, out):
+    """g_αβ, eq (13): diag(m_α) + mₖ σ σᵀ / D; out shape (d, d)."""
     d = q.size
     s = np.empty(d)
-    C, sk2, G = _chart_scalars(q, m, s)
+    C, sk2, G = _chart_scalars(q, m, a, c, s)
     return _diag_plus_rank_one(s, m[d] / sk2, m[:d], out)
 
 
 @njit(cache=True)
-def metric_inverse(q, m, out):
-    """g^αβ = δ_αβ / m_α − s_α s_β / (m_α m_β G) (Sherman–Morrison); out shape (d, d)."""
+def metric_inverse(q, m, a, c, out):
+    """g^αβ = δ_αβ / m_α − σ_α σ_β / (m_α m_β G) (Sherman–Morrison); out shape (d, d)."""
     d = q.size
     s = np.empty(d)
-    C, sk2, G = _chart_scalars(q, m, s)
+    C, sk2, G = _chart_scalars(q, m, a, c, s)
     minv = 1.0 / m[:d]
     return _diag_plus_rank_one(s * minv, -1.0 / G, minv, out)
 
 
 @njit(cache=True)
-def chart_hessian(q, m, out):
-    """h_αβ = h(E_α, E_β) = −(c_α δ_αβ − C s_α s_β / sin²θₖ); out shape (d, d).  Returns G."""
+def chart_hessian(q, m, w, c, out):
+    """h_αβ = h(E_α, E_β) = −(κ_α δ_αβ − C σ_α σ_β / D); out shape (d, d).  Returns G."""
     d = q.size
     s = np.empty(d)
-    C, sk2, G = _chart_scalars(q, m, s)
+    C, sk2, G = _chart_scalars(q, m, w, c, s)
     for a in range(d):
         for b in range(d):
             out[a, b] = C * s[a] * s[b] / sk2
-        out[a, a] -= math.cos(q[a])
+        out[a, a] -= w[a] * math.cos(q[a])
     return G
 
 
 @njit(cache=True)
-def christoffel(q, m, out):
-    """Γ^α_βγ = −(s_α / (m_α G)) h_βγ, upper index first, eq (15); out shape (d, d, d)."""
+def christoffel(q, m, w, c, out):
+    """Γ^α_βγ = −(σ_α / (m_α G)) h_βγ, upper index first, eq (15); out shape (d, d, d)."""
     d = q.size
     h = np.empty((d, d))
-    G = chart_hessian(q, m, h)
+    G = chart_hessian(q, m, w, c, h)
     for a in range(d):
-        f = -math.sin(q[a]) / (m[a] * G)
+        f = -(w[a] * math.sin(q[a])) / (m[a] * G)
         for b in range(d):
             for c in range(d):
                 out[a, b, c] = f * h[b, c]
@@ -123,46 +129,46 @@ def christoffel(q, m, out):
 
 
 @njit(cache=True)
-def riemann(q, m, out):
+def riemann(q, m, w, c, out):
     """R_αβγδ = ⟨R(∂_γ, ∂_δ)∂_β, ∂_α⟩ = (h_αγ h_βδ − h_αδ h_βγ) / G (Gauss equation);
     out shape (d, d, d, d)."""
     d = q.size
     h = np.empty((d, d))
-    G = chart_hessian(q, m, h)
+    G = chart_hessian(q, m, w, c, h)
     for a in range(d):
         for b in range(d):
-            for c in range(d):
+            for g in range(d):
                 for e in range(d):
-                    out[a, b, c, e] = (h[a, c] * h[b, e] - h[a, e] * h[b, c]) / G
+                    out[a, b, g, e] = (h[a, g] * h[b, e] - h[a, e] * h[b, g]) / G
     return out
 
 
 @njit(cache=True)
-def transport_rate(q, v, p, m, out):
-    """dp^α/dt = −Γ^α_βγ vᵝ pᵞ = (s_α / (m_α G)) h(V, P), eq (16); O(d), out shape (d,)."""
+def transport_rate(q, v, p, m, w, c, out):
+    """dp^α/dt = −Γ^α_βγ vᵝ pᵞ = (σ_α / (m_α G)) h(V, P), eq (16); O(d), out shape (d,)."""
     d = q.size
-    C, sk2, G = _chart_scalars(q, m, out)  # out holds s until the last loop
-    f = _hess(q, out, C, sk2, v, p) / G
+    C, sk2, G = _chart_scalars(q, m, w, c, out)  # out holds σ until the last loop
+    f = _hess(q, w, out, C, sk2, v, p) / G
     for a in range(d):
         out[a] = f * out[a] / m[a]
     return out
 
 
 @njit(cache=True)
-def geodesic_acceleration(q, v, m, out):
+def geodesic_acceleration(q, v, m, a, c, out):
     """dv^α/dt = −Γ^α_βγ vᵝ vᵞ, eq (14) (`transport_rate` with p = v); out shape (d,)."""
-    return transport_rate(q, v, v, m, out)
+    return transport_rate(q, v, v, m, a, c, out)
 
 
 @njit(cache=True)
-def curvature_operator(q, x, y, m, out):
+def curvature_operator(q, x, y, m, w, c, out):
     """(R(x, y) y)^α = g^αβ [h_β(x) h(y, y) − h_β(y) h(x, y)] / G, the operator of the Jacobi
     equation J'' + R(J, v) v = 0; O(d), out shape (d,)."""
     d = q.size
     s = np.empty(d)
-    C, sk2, G = _chart_scalars(q, m, s)
-    hyy = _hess(q, s, C, sk2, y, y)
-    hxy = _hess(q, s, C, sk2, x, y)
+    C, sk2, G = _chart_scalars(q, m, w, c, s)
+    hyy = _hess(q, w, s, C, sk2, y, y)
+    hxy = _hess(q, w, s, C, sk2, x, y)
     sx = 0.0
     sy = 0.0
     for a in range(d):
@@ -170,9 +176,9 @@ def curvature_operator(q, x, y, m, out):
         sy += s[a] * y[a]
     acc = 0.0
     for a in range(d):  # lowered: L_α = h_α(x) h(y,y) − h_α(y) h(x,y), h_α(x) = Σ_β h_αβ xᵝ
-        c = math.cos(q[a])
-        hx = -(c * x[a] - C * s[a] * sx / sk2)
-        hy = -(c * y[a] - C * s[a] * sy / sk2)
+        k = w[a] * math.cos(q[a])
+        hx = -(k * x[a] - C * s[a] * sx / sk2)
+        hy = -(k * y[a] - C * s[a] * sy / sk2)
         out[a] = (hx * hyy - hy * hxy) / G
         acc += s[a] * out[a] / m[a]
     for a in range(d):  # raised with the Sherman–Morrison inverse
@@ -181,9 +187,9 @@ def curvature_operator(q, x, y, m, out):
 
 
 @njit(cache=True)
-def eliminated_component(q, x, sin_k):
+def eliminated_component(q, x, a, sin_k):
     """Ambient component of the eliminated angle of the tangent vector x (tangency, eq 10)."""
-    return _eliminated_at(q, x, 0, q.size, sin_k)
+    return _eliminated_at(q, x, 0, q.size, a, sin_k)
 
 
 @njit(cache=True)

@@ -9,9 +9,10 @@ the sign pattern; the default (equal weights, c = 0) is the paper's manifold and
 even where it is critical (N = 4, the cone points every N = 4 run meets).
 
 Points are ambient angle vectors ``theta``, shape (n,); tangent vectors are
-ambient velocity vectors ``u``, shape (n,), with Σ uᵢ sin θᵢ = 0 (eq 10).
+ambient velocity vectors ``u``, shape (n,), with Σ aᵢ uᵢ sin θᵢ = 0 (eq 10).
 Chart ``k`` uses the local coordinates θ without θₖ (see ``charts.geometry.atlas``);
-its domain is sin θₖ ≠ 0 and the sign of sin θₖ is the chart's branch.
+its domain is sin θₖ ≠ 0, i.e. |Σ_{α≠k} a_α cos θ_α − c| < aₖ, and the sign of sin θₖ is the
+chart's branch.
 """
 from __future__ import annotations
 
@@ -20,7 +21,7 @@ import warnings
 
 import numpy as np
 
-from .atlas import chart_coordinates, local_masses
+from .atlas import chart_coordinates, eliminated_angle, local_masses, local_weights
 from .checks import finite_array, integer, number
 from .kernels import geometry
 from .projection import project_constraint, tangent_part
@@ -117,7 +118,8 @@ class RotorSystem:
         self.minv = 1.0 / masses
         self.weights, self.level = _check_family(self.n, weights, level)
         self.dim = self.n - 1
-        self._gen = geometry(self.n)  # generated for the shipped N, structured otherwise
+        # generated for the shipped N (the paper's module for a = 1, c = 0), structured otherwise
+        self._gen = geometry(self.n, self.weights, self.level)
 
     @property
     def is_paper_family(self) -> bool:
@@ -211,15 +213,12 @@ class RotorSystem:
 
     # -- charts --------------------------------------------------------------------------
     def best_chart(self, theta) -> int:
-        """The chart with the largest |sin θₖ| (the best conditioned metric)."""
-        return int(np.argmax(np.abs(np.sin(theta))))
+        """The chart with the largest |aₖ sin θₖ| (the best conditioned metric; |sin θₖ| for
+        the paper's weights)."""
+        return int(np.argmax(np.abs(self.weights * np.sin(theta))))
 
     def _chart(self, theta, chart):
-        if not self.is_paper_family:
-            raise NotImplementedError(
-                f"chart geometry (metric, Christoffel, Riemann, the chart formulation) is not yet "
-                f"written for weights/level other than 1/0 ({self!r}); use the ambient routes "
-                f"(formulation='ambient', sectional_curvature_gauss, curvature route 'exact')")
+        """(k, local indices, q, local masses, local weights) of ``chart`` at theta."""
         theta = self.check_point(theta)
         k = self.best_chart(theta) if chart is None else chart
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= k < self.n:
@@ -229,17 +228,18 @@ class RotorSystem:
             best = self.best_chart(theta)
             if abs(np.sin(theta[best])) < TOL["chart_domain"]:
                 raise ValueError(f"theta = {theta.tolist()} is a singular point of the manifold "
-                                 "(every sin theta_i = 0: the gradient of sum(cos theta) "
+                                 "(every sin theta_i = 0: the gradient of sum(a cos theta) "
                                  "vanishes); the metric and curvature are not defined there in "
                                  "any chart")
             raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = {sk:.2e}; "
                              f"use chart={best} (the best conditioned) or chart=None")
         idx = chart_coordinates(self.n, k)
-        return int(k), idx, theta[idx], local_masses(self.masses, k)
+        return (int(k), idx, theta[idx], local_masses(self.masses, k),
+                local_weights(self.weights, k))
 
     def to_chart(self, theta, u, chart):
         """Local coordinates and velocity components of (theta, u) in ``chart``."""
-        k, idx, q, _ = self._chart(theta, chart)
+        k, idx, q, _, _ = self._chart(theta, chart)
         return q, np.asarray(u, dtype=float)[idx]
 
     def from_chart(self, q, v, chart, branch):
@@ -250,22 +250,26 @@ class RotorSystem:
                              f"got {branch!r}")
         q = finite_array("q", q, shape=(self.dim,))
         v = finite_array("v", v, shape=(self.dim,))
-        C = np.cos(q).sum()
-        if abs(C) >= 1.0:
-            raise ValueError(f"q is outside the domain of chart {chart}: |sum cos q| = {abs(C):.6f} >= 1")
-        sk = np.copysign(np.sqrt(1.0 - C * C), branch)
-        theta = np.insert(q, chart, np.arctan2(sk, -C))
-        u = np.insert(v, chart, self._gen.eliminated_component(q, v, sk))
+        a = local_weights(self.weights, chart)
+        ck, sk, D = eliminated_angle(q, self.dim, a, self.level, float(branch))
+        if not D > 0.0:
+            what = "|sum cos q|" if self.is_paper_family else "|sum a cos q - level|"
+            C = abs(a[-1] * ck)
+            raise ValueError(f"q is outside the domain of chart {chart}: {what} = {C:.6f} >= "
+                             f"{a[-1]:g} (no theta_{chart} solves the constraint); use another "
+                             "chart (RotorSystem.best_chart)")
+        theta = np.insert(q, chart, np.arctan2(sk, ck))
+        u = np.insert(v, chart, self._gen.eliminated_component(q, v, a, sk))
         return theta, u
 
     def metric(self, theta, chart=None):
         """g_ab (eq 13) in ``chart`` (default: best conditioned), shape (n−1, n−1)."""
-        _, _, q, m = self._chart(theta, chart)
-        return self._gen.metric(q, m, np.empty((self.dim, self.dim)))
+        _, _, q, m, a = self._chart(theta, chart)
+        return self._gen.metric(q, m, a, self.level, np.empty((self.dim, self.dim)))
 
     def metric_inverse(self, theta, chart=None):
-        _, _, q, m = self._chart(theta, chart)
-        return self._gen.metric_inverse(q, m, np.empty((self.dim, self.dim)))
+        _, _, q, m, a = self._chart(theta, chart)
+        return self._gen.metric_inverse(q, m, a, self.level, np.empty((self.dim, self.dim)))
 
     def _array(self, name, rank):
         if self.dim ** rank > MAX_ENTRIES:
@@ -276,31 +280,31 @@ class RotorSystem:
 
     def christoffel(self, theta, chart=None):
         """Γ^a_bc (eq 15), upper index first, shape (n−1,)*3."""
-        _, _, q, m = self._chart(theta, chart)
-        return self._gen.christoffel(q, m, self._array("Christoffel", 3))
+        _, _, q, m, a = self._chart(theta, chart)
+        return self._gen.christoffel(q, m, a, self.level, self._array("Christoffel", 3))
 
     def christoffel_contract(self, theta, v, w, chart=None):
         """Γ^a_bc v^b w^c (eqs 14, 16) for ambient tangent vectors v, w, without the N³ array
         (O(N) for the structured kernels); local components of ``chart``, shape (n−1,)."""
-        k, idx, q, m = self._chart(theta, chart)
+        k, idx, q, m, a = self._chart(theta, chart)
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")
-        return -self._gen.transport_rate(q, v[idx], w[idx], m, np.empty(self.dim))
+        return -self._gen.transport_rate(q, v[idx], w[idx], m, a, self.level, np.empty(self.dim))
 
     def riemann(self, theta, chart=None):
         """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩, all indices down, shape (n−1,)*4.
 
         Sectional curvature: K(X, Y) = R_abcd X^a Y^b X^c Y^d / (|X|²|Y|² − ⟨X,Y⟩²)."""
-        _, _, q, m = self._chart(theta, chart)
-        return self._gen.riemann(q, m, self._array("Riemann", 4))
+        _, _, q, m, a = self._chart(theta, chart)
+        return self._gen.riemann(q, m, a, self.level, self._array("Riemann", 4))
 
     def curvature_operator(self, theta, x, y, chart=None):
         """(R(x, y) y)^a in ``chart`` for ambient tangent vectors x, y (the Jacobi operator,
         J'' + R(J, v) v = 0), shape (n−1,)."""
-        k, idx, q, m = self._chart(theta, chart)
+        k, idx, q, m, a = self._chart(theta, chart)
         x = self.check_tangent(theta, x, "x")
         y = self.check_tangent(theta, y, "y")
-        return self._gen.curvature_operator(q, x[idx], y[idx], m, np.empty(self.dim))
+        return self._gen.curvature_operator(q, x[idx], y[idx], m, a, self.level, np.empty(self.dim))
 
     def sectional_curvature(self, theta, v, w, chart=None):
         """Exact sectional curvature of the plane spanned by ambient tangent vectors v, w at
@@ -310,17 +314,17 @@ class RotorSystem:
         theta = self.check_point(theta)
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")
-        k, idx, q, m = self._chart(theta, chart)
-        ip = lambda a, b: self.inner(theta, a, b)
+        k, idx, q, m, a = self._chart(theta, chart)
+        ip = lambda x, y: self.inner(theta, x, y)
         area2 = plane_area2(ip(v, v), ip(w, w), ip(v, w))
-        r = self._gen.curvature_operator(q, v[idx], w[idx], m, np.empty(self.dim))
-        r = np.insert(r, k, self._gen.eliminated_component(q, r, np.sin(theta[k])))
+        r = self._gen.curvature_operator(q, v[idx], w[idx], m, a, self.level, np.empty(self.dim))
+        r = np.insert(r, k, self._gen.eliminated_component(q, r, a, np.sin(theta[k])))
         return float(ip(v, r) / area2)
 
     def sectional_curvature_gauss(self, theta, v, w):
-        """Sectional curvature by the Gauss equation of the hypersurface F = Σcos θ = 0 in
+        """Sectional curvature by the Gauss equation of the hypersurface F = Σ a cos θ = c in
         (Rᴺ, diag m): K = [h(v,v)h(w,w) − h(v,w)²] / (|∇F|² (|v|²|w|² − ⟨v,w⟩²)) with
-        h = Hess F = −diag(cos θ) and |∇F|² = Σ sin²θ/m.  An independent route to K."""
+        h = Hess F = −diag(a cos θ) and |∇F|² = Σ a² sin²θ/m.  An independent route to K."""
         theta = self.check_point(theta)
         v = self.check_tangent(theta, v, "v")
         w = self.check_tangent(theta, w, "w")

@@ -126,11 +126,6 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     n = system["n"]
 
     # -- integrator --------------------------------------------------------------------------
-    family = any(x != 1 for x in system.get("weights") or [])
-    if integ["formulation"] == "chart" and (family or system.get("level", 0.0) != 0.0):
-        raise SceneError(f"{source}: [system] weights/level other than 1/0 are not allowed with "
-                         "formulation = 'chart' (not yet written for the constraint family, "
-                         "docs/families.md): set [integrator] formulation = 'ambient'")
     method = integ["method"]
     if method == "rk4":
         for key in ("rtol", "atol"):

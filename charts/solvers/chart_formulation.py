@@ -10,18 +10,24 @@ with Γ from the chart kernels (``charts.flows.chart``: generated for the shippe
 otherwise; canonical chart; chart k is the canonical one after moving θₖ last, which is why
 the local masses are ``(m without mₖ, mₖ)``).
 
+On the family Σ aᵢ cos θᵢ = c every |sin θᵢ| below is the weighted |aᵢ sin θᵢ| (the
+components of ∇F; the paper's a = 1 gives the same numbers).
+
 Switching (:func:`leave_chart`): after every accepted step the chart is left when
 |sin θₖ| < τ · maxᵢ |sin θᵢ| for the chart with the largest |sin θᵢ| (ties: lowest index).
 The new chart has ratio 1 ≥ τ, so the rule cannot flip back at once (hysteresis by
 construction); the metric condition number in chart k is 1 + Σ_{α≠k} m_k sin²θ_α /
 (m_α sin²θₖ) ≤ 1 + (N − 1)·max(m)/(τ² min(m)) at step boundaries; see docs/integrators.md
 for the choice of τ = :data:`DEFAULT_TAU`.  The point, velocity and transported vectors go through their
-ambient representation (θₖ = atan2(branch·√(1 − C²), −C), uₖ = −Σ v_α sin q_α / sin θₖ);
+ambient representation (θₖ = atan2(branch·√D / aₖ, −C / aₖ), D = aₖ² − C²,
+C = Σ a_α cos q_α − c, ``charts.geometry.atlas.eliminated_angle``; uₖ = −Σ v_α a_α sin q_α /
+(aₖ sin θₖ));
 the switch happens at the step's end time and integration resumes from exactly there with
 the same step-size controller state.  Every switch is logged as (t, from, to).
 
-Parameters: ``par = (N, local masses (N), masses (N), offset of θₖ, τ, speed, project,
-cap fraction)``, ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
+Parameters: ``par = (N, local masses (N), local weights (N), level, masses (N), weights (N),
+offset of θₖ, τ, speed, project, cap fraction)`` (the first 2 + 2N are those of
+``charts.flows.chart.rates``), ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
 the multiple of 2π that keeps the reconstructed θₖ continuous with the ambient angle.
 """
 from __future__ import annotations
@@ -33,7 +39,7 @@ import numpy as np
 from numba import njit
 
 from ..flows.chart import chart_rates, structured_rates
-from ..geometry.atlas import ambient_index, eliminated_component, local_index
+from ..geometry.atlas import ambient_index, eliminated_angle, eliminated_component, local_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
 from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
@@ -46,8 +52,14 @@ __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
 #: equivalent within that sweep's scatter, and 0.9 leaves a 10 % hysteresis margin.
 DEFAULT_TAU = 0.9
 
-# par layout (N = par[0])
-_OFF, _TAU, _SPEED, _PROJ, _CAP = range(5)  # offsets after the 2N mass entries, + 1
+# par layout (N = par[0]): the scalars follow the 4N mass and weight entries, N and the level
+_OFF, _TAU, _SPEED, _PROJ, _CAP = range(5)
+
+
+@njit(cache=True, inline="always")
+def _b(n):
+    """Index of the first scalar (offset of θₖ) in par."""
+    return 2 + 4 * n
 
 
 @njit(cache=True)
@@ -60,7 +72,7 @@ def should_leave(sin_k_abs, sin_max, tau):
 def leave_chart(sin_abs, k, tau):
     """The chart to switch to from chart ``k``, or −1 to stay.
 
-    ``sin_abs`` : |sin θᵢ|, shape (N,).  Leave when :func:`should_leave`, for the argmax
+    ``sin_abs`` : |aᵢ sin θᵢ| (weights a; the paper's |sin θᵢ|), shape (N,).  Leave when :func:`should_leave`, for the argmax
     of ``sin_abs`` (lowest index on ties).  Pure function of its arguments."""
     j = 0
     for i in range(1, sin_abs.size):
@@ -80,12 +92,9 @@ def chart_condition_bound(n, tau, masses=None):
 
 
 @njit(cache=True)
-def _sin_k(y, n, branch):
-    C = 0.0
-    for a in range(n - 1):
-        C += math.cos(y[a])
-    s2 = 1.0 - C * C
-    return C, math.copysign(math.sqrt(max(s2, 0.0)), branch), s2
+def _sin_k(y, par, n, branch):
+    """(cos θₖ, sin θₖ, D = (aₖ sin θₖ)²) of the chart state y (``eliminated_angle``)."""
+    return eliminated_angle(y, n - 1, par[1 + n:1 + 2 * n], par[1 + 2 * n], branch)
 
 
 @njit(cache=True)
@@ -94,17 +103,18 @@ def _to_ambient_impl(y, par, ipar, row):
     d = n - 1
     nv = ipar[1]
     k = ipar[2]
-    C, sk, _ = _sin_k(y, n, ipar[3])
-    row[k] = math.atan2(sk, -C) + par[1 + 2 * n + _OFF]
+    ck, sk, _ = _sin_k(y, par, n, ipar[3])
+    row[k] = math.atan2(sk, ck) + par[_b(n) + _OFF]
+    w = par[1 + n:1 + 2 * n]
     for b in range(1 + nv):  # velocity and transported vectors
-        row[(1 + b) * n + k] = eliminated_component(y, y, (1 + b) * d, d, sk)
+        row[(1 + b) * n + k] = eliminated_component(y, y, (1 + b) * d, d, w, sk)
     for a in range(d):
         i = ambient_index(a, k)
         row[i] = y[a]
         for b in range(1 + nv):
             row[(1 + b) * n + i] = y[(1 + b) * d + a]
-    if par[1 + 2 * n + _PROJ] != 0.0:  # samples from the dense output get the energy too
-        rescale_speed(row, n, n, par[1 + n:1 + 2 * n], par[1 + 2 * n + _SPEED])
+    if par[_b(n) + _PROJ] != 0.0:  # samples from the dense output get the energy too
+        rescale_speed(row, n, n, par[2 + 2 * n:2 + 3 * n], par[_b(n) + _SPEED])
     return 0.0
 
 
@@ -113,55 +123,59 @@ def _to_ambient(y, par, ipar, row):
 
 
 @njit(cache=True)
-def enter_chart(row, n, nv, j, masses, y, par, ipar):
+def enter_chart(row, n, nv, j, masses, weights, y, par, ipar):
     """Chart ``j`` representation of the ambient ``row`` = (θ, u, p¹…pᵏ): fills ``y``,
-    the local masses and θⱼ offset in ``par``, and chart/branch in ``ipar``."""
+    the local masses and weights and θⱼ offset in ``par``, and chart/branch in ``ipar``."""
     d = n - 1
     thj = row[j]
     sj = math.sin(thj)
     ipar[2] = j
     ipar[3] = 1 if sj >= 0.0 else -1
-    par[1 + 2 * n + _OFF] = thj - math.atan2(sj, math.cos(thj))
+    par[_b(n) + _OFF] = thj - math.atan2(sj, math.cos(thj))
     for a in range(d):
         i = ambient_index(a, j)
         par[1 + a] = masses[i]
+        par[1 + n + a] = weights[i]
         for b in range(2 + nv):
             y[b * d + a] = row[b * n + i]
     par[n] = masses[j]
+    par[2 * n] = weights[j]
 
 
 def _post(y, par, ipar, t, log):
     n = ipar[0]
     d = n - 1
     k = ipar[2]
-    C, sk, s2 = _sin_k(y, n, ipar[3])
-    if not s2 > 0.0:  # the step ended outside the chart (|Σ cos q| >= 1): no θₖ, no uₖ
+    _, sk, s2 = _sin_k(y, par, n, ipar[3])
+    if not s2 > 0.0:  # the step ended outside the chart (|C| >= aₖ): no θₖ, no uₖ
         return DOMAIN
+    w = par[1 + n:1 + 2 * n]
     code = POST_OK
-    if par[1 + 2 * n + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
-        E = par[n] * eliminated_component(y, y, d, d, sk) ** 2
+    if par[_b(n) + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
+        E = par[n] * eliminated_component(y, y, d, d, w, sk) ** 2
         for a in range(d):
             E += par[1 + a] * y[d + a] ** 2
-        f = par[1 + 2 * n + _SPEED] / math.sqrt(E)
+        f = par[_b(n) + _SPEED] / math.sqrt(E)
         for a in range(d):
             y[d + a] *= f
         code = POST_CHANGED
-    # argmax of |sin θᵢ| over the ambient angles, ties to the lowest index (as leave_chart)
+    # argmax of |aᵢ sin θᵢ| over the ambient angles, ties to the lowest index (as leave_chart)
     j = -1
     smax = -1.0
+    gk = abs(w[d] * sk)
     for i in range(n):
-        s = abs(sk) if i == k else abs(math.sin(y[local_index(i, k)]))
+        s = gk if i == k else abs(w[local_index(i, k)] * math.sin(y[local_index(i, k)]))
         if s > smax:
             smax = s
             j = i
-    if not should_leave(abs(sk), smax, par[1 + 2 * n + _TAU]):
-        if abs(sk) < CHART_MIN_RATIO * smax:  # kept (no switch) up to its edge: stop
+    if not should_leave(gk, smax, par[_b(n) + _TAU]):
+        if gk < CHART_MIN_RATIO * smax:  # kept (no switch) up to its edge: stop
             return DOMAIN
         return code
     nv = ipar[1]
     row = np.empty((2 + nv) * n)  # allocation only at a switch, never per step
     _to_ambient_impl(y, par, ipar, row)
-    enter_chart(row, n, nv, j, par[1 + n:1 + 2 * n], y, par, ipar)
+    enter_chart(row, n, nv, j, par[2 + 2 * n:2 + 3 * n], par[2 + 3 * n:2 + 4 * n], y, par, ipar)
     c = ipar[4]
     log[c, 0] = t
     log[c, 1] = k
@@ -173,24 +187,26 @@ def _post(y, par, ipar, t, log):
 def _cap(y, par, ipar):
     n = ipar[0]
     d = n - 1
-    C, sk, s2 = _sin_k(y, n, ipar[3])
+    _, sk, s2 = _sin_k(y, par, n, ipar[3])
     if s2 <= 0.0:
         return 0.0
+    w = par[1 + n:1 + 2 * n]
     S = s2
-    U = eliminated_component(y, y, d, d, sk) ** 2
+    U = eliminated_component(y, y, d, d, w, sk) ** 2
     for a in range(d):
-        S += math.sin(y[a]) ** 2
+        S += (w[a] * math.sin(y[a])) ** 2
         U += y[d + a] ** 2
     if U == 0.0:
         return np.inf
-    return min(step_cap(S, U, par[1 + 2 * n + _CAP]), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
+    return min(step_cap(S, U, par[_b(n) + _CAP]), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
 
 
 @cache
-def chart_rhs(n: int):
+def chart_rhs(n: int, paper: bool = False):
     """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop: the
-    structured right-hand side once for every N (cached on disk), a generated one per N."""
-    rates = chart_rates(n)
+    structured right-hand side once for every N (cached on disk), a generated one per N and
+    per module (``paper``: the paper's Σ cos θ = 0, else the family)."""
+    rates = chart_rates(n, paper)
     if rates is structured_rates:
         return _structured_rhs()
     return njit(RHS_SIG)(rates)
@@ -223,33 +239,32 @@ class ChartFlow(Formulation):
         self.chart = chart
 
     def hooks(self):
-        return (chart_rhs(self.n),) + _common_hooks()
+        return (chart_rhs(self.n, self.system.is_paper_family),) + _common_hooks()
 
     def initial(self, theta, u, P):
         n = self.n
         sys = self.system
-        if not sys.is_paper_family:
-            raise NotImplementedError(
-                f"the chart formulation is not yet written for weights/level other than 1/0 "
-                f"({sys!r}); use formulation='ambient'")
         k = sys.best_chart(theta) if self.chart is None else int(self.chart)
         nv = P.shape[0]
         row = np.concatenate([theta, u, P.ravel()])
         y = np.empty((2 + nv) * (n - 1))
-        par = np.zeros(1 + 2 * n + 5)
+        b = 2 + 4 * n
+        par = np.zeros(b + 5)
         par[0] = n
-        par[1 + n:1 + 2 * n] = sys.masses
-        par[1 + 2 * n + _TAU] = self.tau
-        par[1 + 2 * n + _SPEED] = float(sys.speed(u))
-        par[1 + 2 * n + _PROJ] = float(self.project)
-        par[1 + 2 * n + _CAP] = self.cap_fraction
+        par[1 + 2 * n] = sys.level
+        par[2 + 2 * n:2 + 3 * n] = sys.masses
+        par[2 + 3 * n:2 + 4 * n] = sys.weights
+        par[b + _TAU] = self.tau
+        par[b + _SPEED] = float(sys.speed(u))
+        par[b + _PROJ] = float(self.project)
+        par[b + _CAP] = self.cap_fraction
         ipar = np.array([n, nv, 0, 1, 0], dtype=np.int64)
         self.initial_switches = []
-        j = leave_chart(np.abs(np.sin(theta)), k, self.tau)
+        j = leave_chart(np.abs(sys.weights * np.sin(theta)), k, self.tau)
         if j >= 0:  # a requested chart that the rule would leave: switch at t = 0
             self.initial_switches.append((0.0, k, j))
             k = j
-        enter_chart(row, n, nv, k, sys.masses.copy(), y, par, ipar)
+        enter_chart(row, n, nv, k, sys.masses.copy(), sys.weights.copy(), y, par, ipar)
         return y, par, ipar
 
     def drain_log(self, log, ipar):

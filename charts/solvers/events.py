@@ -18,7 +18,6 @@ start of the next is reported once; a zero at t0 is reported, as in SciPy.
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import brentq
 
 __all__ = ["check_events", "EventTracker", "ROOT_XTOL"]
 
@@ -102,6 +101,8 @@ class EventTracker:
                 elif g1[j] == 0:
                     root = b
                 else:
+                    from scipy.optimize import brentq  # here: scipy.optimize is half of `import charts`
+
                     def g(s, k=k):
                         return float(self.events[k][0](self.t_of(s), self.sol.sample([s])[0]))
                     root = brentq(g, a, b, xtol=ROOT_XTOL, rtol=4 * np.finfo(float).eps)

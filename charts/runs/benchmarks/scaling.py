@@ -77,20 +77,20 @@ def _repeat_rhs(f, y, par, dy, reps):
 def rhs_cost(n, which, reps=100_000, repeat=3):
     """CPU seconds per evaluation of the chart right-hand side (eqs 14 + 16, one transported
     vector) for N = ``n`` with the ``which`` = 'generated' or 'structured' kernels."""
-    from ...flows.chart import chart_rates, structured_rates
+    from ...flows.chart import local_parameters, structured_rates
     from ...solvers.chart_formulation import chart_rhs
 
     if which == "structured":
         rhs = njit(RHS_SIG)(structured_rates)
     elif source(n) == "generated":
-        rhs = chart_rhs(n)
+        rhs = chart_rhs(n, paper=True)
     else:
         return None
     system = RotorSystem(n)
     theta, u = system.random_state(seed=1)
     k = system.best_chart(theta)
     y = np.concatenate([np.delete(theta, k), np.delete(u, k), np.delete(u, k)])
-    par = np.concatenate([[n], np.delete(system.masses, k), system.masses[k:k + 1]])
+    par = local_parameters(system.masses, system.weights, system.level, k)
     dy = np.empty_like(y)
     _repeat_rhs(rhs, y, par, dy, 10)
     out = []
