@@ -47,7 +47,7 @@ def write_result(outdir: Path, result: dict) -> None:
 
 def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
     """Build the result of the run so far and write every output file; return the result."""
-    sc, plan, system = st.scene, st.plan, st.system
+    sc, plan = st.scene, st.plan
     eff = sc.effects
     t_done = max(0, units_done(st, ends) - transient) * unit
     if not plan.main_pass:    # the separate passes only: done when the last one has run
