@@ -27,7 +27,7 @@ from .arguments import positive_int, positive_time, progress_reporter, project_s
 from .lyapunov import exponents_from_marks
 from .statistics import batch_ends
 
-__all__ = ["LinkageResult", "linkage_run", "linkage_trajectory", "gauss_curvature", "cone_distance", "CONE_POINTS"]
+__all__ = ["LinkageResult", "linkage_run", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
 
 #: The six cone points of Σ cos θ = 0 (N = 4): two angles 0, two π.
 CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
@@ -83,6 +83,13 @@ class LinkageResult:
     def __repr__(self):
         pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
         return f"LinkageResult([{pm}], eps={self.params.get('eps')})"
+
+
+def frame_curvatures(system, row, k):
+    """K(v̂, eᵢ), i = 1…k, shape (k,), at a recorded row [y; ξ¹…ξᵏ] (shape ≥ (14 (1 + k),),
+    e.g. ``LinkageFlow.Z.ravel()``): the planes of the module doc (Gauss equation)."""
+    fr = _frame(system, row, k)
+    return np.array([gauss_curvature(system, row[:NQ], fr[0], e) for e in fr[1:]])
 
 
 def _frame(system, row, k):
@@ -150,8 +157,7 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
     K = np.full((S, k), np.nan)
     if curvature:
         for i in range(S):
-            fr = _frame(system, rows[i], k)
-            K[i] = [gauss_curvature(system, rows[i, :NQ], fr[0], e) for e in fr[1:]]
+            K[i] = frame_curvatures(system, rows[i], k)
     states = rows[:, :NY].copy()
     min_sin2 = float(np.min(np.sum(np.sin(states[:, :4]) ** 2, axis=1)))
     params = dict(eps=system.eps, rho=system.rho, disk_mass=system.disk_mass,

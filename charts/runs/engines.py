@@ -1,6 +1,7 @@
 """The engines of the chunked main pass of a scene run.
 
-:class:`KernelEngine` — ambient RK4 with tangent vectors (the fused kernel);
+:class:`KernelEngine` — ambient RK4 with tangent vectors (the fused kernel; for a linkage
+scene the linkage's `LinkageFlow`, which has the same interface);
 :class:`IntegrateEngine` — ``charts.integrate`` (chart formulation or adaptive method).
 Both advance a :class:`~charts.runs.run_state.RunState` in place chunk by chunk and call the
 recorders at every recording position.  :func:`chunk_bounds` cuts the run into its
@@ -61,11 +62,14 @@ class KernelEngine:
         self.step_unit = record_interval(st.plan) or None
 
     def advance(self, nsteps: int):
+        from ..solvers.linkage import DegenerateMetricError
         from ..solvers.status import IntegrationError
 
         st = self.st
         try:
             st.flow.advance(nsteps, where="scene (ambient RK4)")
+        except DegenerateMetricError as exc:   # the message says what to do (disk inertia)
+            raise RunError(f"{exc} In a scene: [system] disk_mass, disk_inertia.") from None
         except IntegrationError as exc:
             raise RunError(f"{exc}; set [integrator] project = true or a smaller dt, or start "
                            "from another state") from None

@@ -94,7 +94,8 @@ def plan_scene(scene: Scene) -> Plan:
     integ, run, eff = scene.integrator, scene.run, scene.effects
     ambient_rk4 = integ["formulation"] == "ambient" and integ["method"] == "rk4"
     engine = "kernel" if ambient_rk4 else "integrate"
-    state_dim = 2 * n if integ["formulation"] == "ambient" else 2 * (n - 1)
+    linkage = scene.system.get("kind") == "linkage"   # q = (θ₀…θ₃, x, y, α): 14 variables
+    state_dim = 14 if linkage else 2 * n if integ["formulation"] == "ambient" else 2 * (n - 1)
     plan = Plan(engine, integ["formulation"], integ["method"], state_dim)
     # the recording grid: integrator steps for the kernel engine, samples otherwise
     unit = integ["dt"] if engine == "kernel" else run["sample_dt"]
@@ -118,9 +119,13 @@ def plan_scene(scene: Scene) -> Plan:
         k = max(k, c["n_directions"])
         plan.every["curvature"] = ticks(c["sample_every"], unit)
         plan.stored["curvature"] = ticks(run["t_final"], c["sample_every"])
-        if c["route"] in ("numerical", "both"):
+        if c["route"] in ("numerical", "both"):   # (the linkage's route is "exact")
             plan.transport_vectors = c["n_directions"] + 1
-    if "angles" in eff:
+    if "angles" in eff and linkage:
+        from .scene_linkage import linkage_angles_plan
+        plan.adjoint_vectors = 2
+        plan.angles = linkage_angles_plan(scene)
+    elif "angles" in eff:
         a = eff["angles"]
         dt = integ["dt"]
         m = a["n_vectors"]

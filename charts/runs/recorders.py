@@ -8,6 +8,7 @@ import numpy as np
 from ..geometry.projection import invariants as invariants_of
 
 from .run_state import RunState
+from .scene_linkage import is_linkage, linkage_curvature, linkage_invariants
 
 __all__ = ["make_recorders", "invariants", "curvature_sample"]
 
@@ -15,7 +16,7 @@ __all__ = ["make_recorders", "invariants", "curvature_sample"]
 def make_recorders(st: RunState, transient_units: int):
     """Functions called with the absolute unit position after each advance."""
     sc, plan = st.scene, st.plan
-    n = st.system.n
+    n = st.nq                          # the velocities of y = (positions, velocities) start here
     eff = sc.effects
     unit = sc.integrator["dt"] if plan.engine == "kernel" else sc.run["sample_dt"]
     recs = []
@@ -57,7 +58,11 @@ def make_recorders(st: RunState, transient_units: int):
 
         def rec_curv(pos, every=every, kdir=kdir, routes=routes):
             r = rel(pos)
-            if r > 0 and r % every == 0:
+            if r > 0 and r % every == 0 and is_linkage(sc):   # the Gauss equation
+                st.rec_t["curvature"].append(r * unit)
+                st.rec["curvature_y"].append(st.y.copy())
+                st.rec["curvature_exact"].append(linkage_curvature(st, kdir))
+            elif r > 0 and r % every == 0:
                 Kn, Ke = curvature_sample(st, kdir, routes)
                 st.rec_t["curvature"].append(r * unit)
                 st.rec["curvature_y"].append(st.y.copy())
@@ -70,7 +75,10 @@ def make_recorders(st: RunState, transient_units: int):
 
 
 def invariants(st: RunState):
-    """[Σ a cos θ − c, Σ u a sin θ, E/E₀ − 1] of the current state (``geometry.projection``)."""
+    """[Σ a cos θ − c, Σ u a sin θ, E/E₀ − 1] of the current state (``geometry.projection``);
+    for the linkage its constraint, tangency and energy (``scene_linkage.linkage_invariants``)."""
+    if is_linkage(st.scene):
+        return linkage_invariants(st.system, st.y, st.speed)
     n = st.system.n
     F, G, E = invariants_of(st.y[:n], st.y[n:], st.system.masses, st.system.weights,
                             st.system.level)

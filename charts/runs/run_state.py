@@ -14,8 +14,10 @@ import numpy as np
 from ..geometry.system import RotorSystem
 from .plan import Plan
 from .scene import Scene, scene_to_dict
+from .scene_linkage import is_linkage, linkage_flow, linkage_system
 
 __all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done", "tangent_flow",
+           "scene_system",
            "lyapunov_settings_of"]
 
 #: File name of the checkpoint in the output folder.
@@ -37,16 +39,25 @@ class RunState:
 
     def __init__(self, scene: Scene, plan: Plan, system: RotorSystem):
         self.scene, self.plan, self.system = scene, plan, system
-        if scene.initial["theta"] is not None:
+        #: positions in y before the velocities: N, or 7 for the linkage's q = (θ, x, y, α)
+        self.nq = system.n
+        if is_linkage(scene):
+            q, v = system.random_state(seed=scene.initial["seed"], speed=scene.system["speed"])
+            self.nq = q.size
+            self.y0 = np.concatenate([q, v])
+            self.speed = float(system.speed(v))
+            self.flow = linkage_flow(scene, system, q, v, plan.tangent_vectors)
+        elif scene.initial["theta"] is not None:
             theta, u = np.array(scene.initial["theta"]), np.array(scene.initial["u"])
         else:
             theta, u = system.random_state(seed=scene.initial["seed"],
                                            speed=scene.system["speed"])
-        self.y0 = np.concatenate([theta, u])
-        self.speed = float(system.speed(u))
-        #: the tangent flow of the kernel engine (state, vectors, log-norm sums), else None
-        self.flow = tangent_flow(scene, system, theta, u, plan.tangent_vectors) \
-            if plan.engine == "kernel" else None
+        if not is_linkage(scene):
+            self.y0 = np.concatenate([theta, u])
+            self.speed = float(system.speed(u))
+            #: the tangent flow of the kernel engine (state, vectors, log-norm sums), else None
+            self.flow = tangent_flow(scene, system, theta, u, plan.tangent_vectors) \
+                if plan.engine == "kernel" else None
         self._y = self.y0.copy()
         self.lyap_marks = []           # (tick, logsum) at Lyapunov batch boundaries
         self.rhs = 0                   # evaluations of the (augmented) vector field
@@ -119,6 +130,15 @@ class RunState:
             self.rec[name] = list(a["rec_" + name])
         for name in self.rec_t:
             self.rec_t[name] = list(a["rect_" + name])
+
+
+def scene_system(scene: Scene):
+    """The system a scene runs: its `RotorSystem`, or the `LinkageSystem` of a linkage
+    scene (``charts.runs.scene_linkage``)."""
+    if is_linkage(scene):
+        return linkage_system(scene)
+    return RotorSystem(scene.system["n"], scene.system["masses"], scene.system.get("weights"),
+                       scene.system.get("level", 0.0))
 
 
 def lyapunov_settings_of(scene: Scene, system: RotorSystem, k: int):

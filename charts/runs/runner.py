@@ -30,14 +30,14 @@ from pathlib import Path
 import numpy as np
 
 from ..compilation import NOTE_SECONDS, compile_timer
-from ..geometry.system import RotorSystem
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
 from .outdir import OutputLock, prepare_output
 from .paper import PAPER_EXPONENTS
 from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
 from .recorders import make_recorders
-from .run_state import CHECKPOINT, RunError, RunState, scene_hash, units_done
+from .run_state import CHECKPOINT, RunError, RunState, scene_hash, scene_system, units_done
+from .scene_linkage import is_linkage, linkage_angles_pass
 from .scene import Scene
 from .scene_results import FTLE_STATS, finalize, write_result
 
@@ -63,8 +63,7 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
 
 
 def _run_locked(scene: Scene, outdir: Path, resume: bool, quiet: bool, on_chunk) -> dict:
-    system = RotorSystem(scene.system["n"], scene.system["masses"], scene.system.get("weights"),
-                         scene.system.get("level", 0.0))
+    system = scene_system(scene)
     plan = plan_scene(scene)
     st = RunState(scene, plan, system)
     ck = outdir / CHECKPOINT
@@ -168,6 +167,8 @@ def _angles_pass(st: RunState):
     backward adjoint vectors along the re-integrated trajectory (``charts.analyses.hyperbolicity``)."""
     from ..analyses.hyperbolicity import hyperbolicity_angles
 
+    if is_linkage(st.scene):                 # its own test, charts.analyses.linkage_angles
+        return linkage_angles_pass(st)
     sc, sys_ = st.scene, st.system
     a = sc.effects["angles"]
     dt = sc.integrator["dt"]

@@ -32,6 +32,8 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
 from ..solvers.status import check_step
 from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
                            where)
+from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
+                            system_kind_problems)
 from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
@@ -113,11 +115,72 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
             continue
         effects[ename] = section_values(source, {ename: eraw}, ename, EFFECTS[ename], problems,
                                   label=f"effects.{ename}")[0]
-    problems.raise_all()              # the checks below relate keys that must be valid first
     raw_sys = data.get("system", {})
+    system_kind_problems(source, raw_sys, system["kind"], problems)
+    problems.raise_all()              # the checks below relate keys that must be valid first
+    linkage = system["kind"] == "linkage"
+    if linkage:                       # the exact linkage of the Appendix (docs/linkage.md)
+        check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_int)
+    else:
+        _check_rotors(source, system, raw_sys, initial, raw_init)
     n = system["n"]
 
-    # -- system --------------------------------------------------------------------------
+    # -- integrator --------------------------------------------------------------------------
+    method = integ["method"]
+    if method == "rk4":
+        for key in ("rtol", "atol"):
+            if key in raw_int:
+                raise SceneError(f"{where(source, 'integrator', key)} = {raw_int[key]!r} is not "
+                                 "allowed with method = 'rk4' (fixed step: set dt, or use "
+                                 "method = 'dop853')")
+        integ["dt"] = integ["dt"] if integ["dt"] is not None else 0.01
+        try:                # the API's step-size policy (status.check_step): the rotors' cap
+            if not linkage:
+                check_step(integ["dt"], system["speed"], n)
+        except ValueError as exc:
+            raise SceneError(f"{where(source, 'integrator', 'dt')}: {exc}") from None
+    else:
+        if "dt" in raw_int:
+            raise SceneError(f"{where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "
+                             "allowed with method = 'dop853' (adaptive: set rtol/atol, or use "
+                             "method = 'rk4')")
+        integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
+        # atol: None = integrate's default, rtol·min(1, speed)
+
+    # -- run: times on the grids ---------------------------------------------------------------
+    grid = integ["dt"] if method == "rk4" else None
+    if run["sample_dt"] is None:
+        run["sample_dt"] = grid if grid is not None else 0.01
+    elif grid is not None:
+        multiple_of(source, "run", "sample_dt", run["sample_dt"], grid, "[integrator] dt")
+    sdt = run["sample_dt"]
+    if run["t_transient"] > 0:
+        multiple_of(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
+    n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
+    if run["checkpoint_every"] is None:
+        per = max(1, n_samples // 20)
+        run["checkpoint_every"] = per * sdt
+    else:
+        multiple_of(source, "run", "checkpoint_every", run["checkpoint_every"], sdt,
+                  "[run] sample_dt")
+
+    # -- effects -----------------------------------------------------------------------------------
+    if linkage:
+        check_linkage_effects(source, run, effects, raw_eff)
+    _check_effects(source, n, integ, run, effects)
+    if not effects:
+        raise SceneError(f"{source}: the scene requests no effect: add at least one "
+                         f"[effects.<name>] table (effects: {', '.join(EFFECTS)})")
+
+    return Scene(name=name, description=top["description"], system=system, initial=initial,
+                 integrator=integ, run=run, effects=effects, source=source)
+
+
+def _check_rotors(source, system, raw_sys, initial, raw_init):
+    """The joined rules of a rotor scene's [system] and [initial] (kind = "rotors")."""
+    n = system["n"]
+    for key in ("kind",) + LINKAGE_KEYS:    # no trace of the linkage's keys: ids unchanged
+        del system[key]
     if system["masses"] is not None and len(system["masses"]) != n:
         raise SceneError(f"{where(source, 'system', 'masses')} = {system['masses']!r} is not "
                          f"allowed: expected a list of n = {n} positive numbers")
@@ -157,53 +220,6 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         if not system["speed"] > 0:
             raise SceneError(f"{where(source, 'initial', 'u')} = {initial['u']!r} is not "
                              "allowed: the velocity must be nonzero (a geodesic needs a speed)")
-
-    # -- integrator --------------------------------------------------------------------------
-    method = integ["method"]
-    if method == "rk4":
-        for key in ("rtol", "atol"):
-            if key in raw_int:
-                raise SceneError(f"{where(source, 'integrator', key)} = {raw_int[key]!r} is not "
-                                 "allowed with method = 'rk4' (fixed step: set dt, or use "
-                                 "method = 'dop853')")
-        integ["dt"] = integ["dt"] if integ["dt"] is not None else 0.01
-        try:                                  # the API's step-size policy (status.check_step)
-            check_step(integ["dt"], system["speed"], n)
-        except ValueError as exc:
-            raise SceneError(f"{where(source, 'integrator', 'dt')}: {exc}") from None
-    else:
-        if "dt" in raw_int:
-            raise SceneError(f"{where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "
-                             "allowed with method = 'dop853' (adaptive: set rtol/atol, or use "
-                             "method = 'rk4')")
-        integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
-        # atol: None = integrate's default, rtol·min(1, speed)
-
-    # -- run: times on the grids ---------------------------------------------------------------
-    grid = integ["dt"] if method == "rk4" else None
-    if run["sample_dt"] is None:
-        run["sample_dt"] = grid if grid is not None else 0.01
-    elif grid is not None:
-        multiple_of(source, "run", "sample_dt", run["sample_dt"], grid, "[integrator] dt")
-    sdt = run["sample_dt"]
-    if run["t_transient"] > 0:
-        multiple_of(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
-    n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
-    if run["checkpoint_every"] is None:
-        per = max(1, n_samples // 20)
-        run["checkpoint_every"] = per * sdt
-    else:
-        multiple_of(source, "run", "checkpoint_every", run["checkpoint_every"], sdt,
-                  "[run] sample_dt")
-
-    # -- effects -----------------------------------------------------------------------------------
-    _check_effects(source, n, integ, run, effects)
-    if not effects:
-        raise SceneError(f"{source}: the scene requests no effect: add at least one "
-                         f"[effects.<name>] table (effects: {', '.join(EFFECTS)})")
-
-    return Scene(name=name, description=top["description"], system=system, initial=initial,
-                 integrator=integ, run=run, effects=effects, source=source)
 
 
 def _check_family(source, system):

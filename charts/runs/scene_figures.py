@@ -17,7 +17,10 @@ __all__ = ["waveforms_png", "spectrum_png", "drift_png", "lyapunov_png", "angles
            "curvature_png", "CURVATURE_QUANTILES"]
 
 def _title(sc, what):
-    return f"{sc.name}: {what}, N = {sc.system['n']}"
+    s = sc.system
+    if s.get("kind") == "linkage":
+        return f"{sc.name}: {what}, linkage ε = {s['eps']:g}, ρ = {s['rho']:g}"
+    return f"{sc.name}: {what}, N = {s['n']}"
 
 
 def waveforms_png(sc, t, U) -> bytes:

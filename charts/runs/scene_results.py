@@ -22,6 +22,7 @@ from .paper import PAPER_EXPONENTS
 from .recorders import invariants
 from .run_state import CHECKPOINT, RunState, units_done
 from .scene import scene_to_dict
+from .scene_linkage import is_linkage, linkage_result
 
 __all__ = ["finalize", "write_result", "waveforms_result", "spectrum_result", "drift_result",
            "lyapunov_result", "curvature_result", "angles_result", "clv_result",
@@ -46,8 +47,7 @@ def write_result(outdir: Path, result: dict) -> None:
 
 def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
     """Build the result of the run so far and write every output file; return the result."""
-    sc, plan, system = st.scene, st.plan, st.system
-    n = system.n
+    sc, plan = st.scene, st.plan
     eff = sc.effects
     t_done = max(0, units_done(st, ends) - transient) * unit
     if not plan.main_pass:    # the separate passes only: done when the last one has run
@@ -60,6 +60,8 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
                         ("switches", switches_result)):
         if name in eff:
             build(st, out, t_done=t_done, status=status)
+    if is_linkage(sc):
+        linkage_result(st, out)
     comp = plan.as_dict()
     comp["stored_samples"] = {k: v[0] for k, v in out.stored.items()}
     comp["stored_values"] = int(sum(v[1] for v in out.stored.values()))
@@ -79,8 +81,8 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
         "timings": {"integration_wall_s": round(max(st.elapsed - st.compile_s, 0.0), 4),
                     "compile_wall_s": round(st.compile_s, 4)},
         "computation": comp,
-        "initial_state": {"theta": st.y0[:n].tolist(), "u": st.y0[n:].tolist()},
-        "final_state": {"theta": st.y[:n].tolist(), "u": st.y[n:].tolist()},
+        "initial_state": _state(st, st.y0),
+        "final_state": _state(st, st.y),
         "drift": _drift_summary(st, out),
         "results": out.results,
         "files": files,
@@ -108,6 +110,12 @@ def _write_netcdf(outdir, result, arrays):
         return
     result["files"].insert(result["files"].index("arrays.npz") + 1, SCENE_NETCDF)
     SceneResult.from_run(result, arrays, result["source"]).save(outdir / SCENE_NETCDF)
+
+
+def _state(st, y):
+    """A state as result.json holds it: θ and u, or the linkage's q = (θ₀…θ₃, x, y, α), v."""
+    keys = ("q", "v") if is_linkage(st.scene) else ("theta", "u")
+    return {keys[0]: y[:st.nq].tolist(), keys[1]: y[st.nq:].tolist()}
 
 
 def _drift_summary(st, out):
@@ -190,8 +198,13 @@ def lyapunov_result(st, out, *, t_done, **_):
     if len(marks) >= 2:
         res["stderr"] = stderr.tolist()
         res["batches"] = len(batches)
-    equal = np.allclose(st.system.masses, 1.0) and st.system.is_paper_family
-    if n in PAPER_EXPONENTS and equal:
+    if is_linkage(st.scene):             # its ε → 0 limit is the paper's N = 4 system
+        res["paper"] = [round(float(p) * st.speed, 12)
+                        for p in PAPER_EXPONENTS[4][: ly["n_exponents"]]]
+        res["paper_note"] = ("section 2, N = 4: the linkage's limit ε → 0 (Σ cos θᵢ = 0), unit "
+                             "speed; scaled by the speed")
+    elif n in PAPER_EXPONENTS and np.allclose(st.system.masses, 1.0) \
+            and st.system.is_paper_family:
         paper = np.array(PAPER_EXPONENTS[n]) * st.speed
         res["paper"] = [round(float(p), 12) for p in paper[: ly["n_exponents"]]]
         res["paper_note"] = "section 2, unit speed, equal masses; scaled by the speed"

@@ -35,6 +35,10 @@ def _ge(lo):
     return lambda v: None if v >= lo else f"a number >= {lo:g}"
 
 
+def _open(lo, hi):
+    return lambda v: None if lo < v < hi else f"a number in ({lo:g}, {hi:g})"
+
+
 def _between(lo, hi):
     return lambda v: None if lo <= v <= hi else f"a number in [{lo:g}, {hi:g}]"
 
@@ -47,8 +51,13 @@ TOP_KEYS = {
 
 SCHEMA: dict[str, dict[str, Key]] = {
     "system": {
-        "n": Key("int", None, "Number of rotors N (>= 3; the manifold has dimension N−1).",
-                 check=_ge(3), required=True),
+        "kind": Key("str", "rotors", "\"rotors\": N rotors on Σ aᵢ cos θᵢ = level (the "
+                    "paper's); \"linkage\": the exact four-rotor linkage of the Appendix "
+                    "(docs/linkage.md), with eps, rho, disk_mass, disk_inertia.",
+                    choices=("rotors", "linkage")),
+        "n": Key("int", None, "Number of rotors N (>= 3; the manifold has dimension N−1). "
+                 "Required for kind = \"rotors\"; 4 for the linkage (may be omitted).",
+                 check=_ge(3)),
         "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
                       "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
                       else "a list of numbers, each > 0"),
@@ -59,6 +68,16 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "level": Key("float", 0.0, "Level c of the constraint Σ aᵢ cos θᵢ = c (default 0, the "
                      "paper's case); |c| < Σ aᵢ, and a critical value Σ ±aᵢ warns "
                      "(docs/families.md)."),
+        "eps": Key("float", None, "Linkage only (required there): crank length ε of the "
+                   "rotors' hinges, 0 < ε < 0.5 (rods R = 1); ε → 0 gives Σ cos θᵢ = 0.",
+                   check=_open(0, 0.5)),
+        "rho": Key("float", None, "Linkage only: radius ρ of the disk's hinges, < 0.5 "
+                   "(default 2ε, as LinkageSystem: unset in a sweep over eps, ρ/ε stays 2).",
+                   check=_open(0, 0.5)),
+        "disk_mass": Key("float", 0.0, "Linkage only: the disk's mass m_d (default 0, the "
+                         "Appendix's massless disk).", check=_ge(0)),
+        "disk_inertia": Key("float", 0.0, "Linkage only: the disk's moment of inertia I_d "
+                            "(default 0).", check=_ge(0)),
         "speed": Key("float", 1.0, "Speed along the geodesic ‖u‖_g = √(Σ mᵢuᵢ²) of a seeded "
                      "initial state (the paper uses 1). Not allowed with an explicit u.",
                      check=_gt(0)),

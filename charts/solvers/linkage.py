@@ -21,7 +21,7 @@ from ..flows.linkage import NY, linkage_rates
 from ..geometry.linkage import project_state_linkage, project_tangent_linkage
 from .rk import RHS_SIG, RHS_TYPE, rk4_step
 from .status import NONFINITE, RUNNING, IntegrationError
-from .tangent import orthonormalize
+from .tangent import StackedFlow, orthonormalize
 
 __all__ = ["LinkageFlow", "linkage_rhs", "linkage_kernel", "DegenerateMetricError", "DEGENERATE", "GRAM_MIN"]
 
@@ -104,7 +104,7 @@ _NO_ROWS = np.empty((0, 0))
 _NO_EVENTS = np.empty(0, dtype=np.int64)
 
 
-class LinkageFlow:
+class LinkageFlow(StackedFlow):
     """The linkage state (q, v) and ``k`` tangent vectors (random, projected onto T_r and
     orthonormalised; ``seed``), advanced by `linkage_kernel`.
 
@@ -131,9 +131,15 @@ class LinkageFlow:
         self.logsum = np.zeros(k)
         self.health = np.array([np.inf])
 
-    @property
-    def steps(self) -> int:
-        return int(self.counter[0])
+    def state(self) -> dict:
+        """Copies of every array that decides the next step (for checkpoints), as
+        `TangentFlow.state`; ``health`` keeps the smallest KKT health seen."""
+        return {"Z": self.Z.copy(), "counter": self.counter.copy(),
+                "logsum": self.logsum.copy(), "health": self.health.copy()}
+
+    def load_state(self, a) -> None:
+        for key, arr in self.state().items():
+            getattr(self, key)[...] = a[key]
 
     def advance(self, nsteps, *, events=None, event_logs=None, where="linkage RK4"):
         """Advance ``nsteps`` steps; DegenerateMetricError / IntegrationError on failure."""

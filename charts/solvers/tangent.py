@@ -31,9 +31,8 @@ from ..geometry.projection import project_state, project_tangent, project_tangen
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
-__all__ = ["TangentFlow", "tangent_kernel", "orthonormalize", "inner_weights", "shift_sincos",
-           "reorth_steps", "substeps", "countdowns",
-           "REORTH_TIME"]
+__all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "inner_weights",
+           "shift_sincos", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -295,7 +294,25 @@ _NO_ROWS = np.empty((0, 0))
 _NO_EVENTS = np.empty(0, dtype=np.int64)
 
 
-class TangentFlow:
+class StackedFlow:
+    """What every flow of a state and its tangent vectors stacked as ``Z`` = [y; ξ¹; …; ξᵏ]
+    with a global step ``counter`` provides (`TangentFlow`, ``charts.solvers.linkage.LinkageFlow``):
+    views of the state ``y`` and the vectors ``X``, and the steps done."""
+
+    @property
+    def y(self):
+        return self.Z[0]
+
+    @property
+    def X(self):
+        return self.Z[1:]
+
+    @property
+    def steps(self) -> int:
+        return int(self.counter[0])
+
+
+class TangentFlow(StackedFlow):
     """The state (θ, u) and ``k`` tangent vectors, advanced by `tangent_kernel`.
 
     Parameters
@@ -338,18 +355,6 @@ class TangentFlow:
         self.sc = np.vstack([a * np.sin(self.Z[0, :n]), a * np.cos(self.Z[0, :n])])
         self.counter = np.zeros(1, dtype=np.int64)
         self.logsum = np.zeros(k)
-
-    @property
-    def y(self):
-        return self.Z[0]
-
-    @property
-    def X(self):
-        return self.Z[1:]
-
-    @property
-    def steps(self) -> int:
-        return int(self.counter[0])
 
     def advance(self, nsteps, *, rec_start=0, rec_every=0, states=None, events=None,
                 event_logs=None, where="RK4"):

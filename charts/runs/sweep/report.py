@@ -14,6 +14,7 @@ import numpy as np
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ..plotting import new_figure, save_png
+from .linkage import paper_limit_row, plot_linkage_sweep
 from .points import SweepPoint
 from .table import HEAD, TAIL, WEIGHT_VECTOR, csv_text, format_cell
 
@@ -82,8 +83,8 @@ def write_summary(path: Path, summary: dict) -> None:
 
 
 def summary_markdown(summary: dict) -> str:
-    """The headline statistics as a markdown table (exponents ± s.e., fractions of positive
-    curvature, angle minima and 0.1 % quantiles); every column is in summary.csv."""
+    """The headline statistics as a markdown table (exponents and fractions of positive
+    curvature ± s.e., angle minima and 0.1 % quantiles); every column is in summary.csv."""
     stats = [c for c in summary["stats"] if c.startswith("lambda_")
              or (c.startswith("Kpos_exact") or (c.startswith("Kpos_numerical")
                                                 and not any(x.startswith("Kpos_exact")
@@ -102,9 +103,12 @@ def summary_markdown(summary: dict) -> str:
                 cells.append(f"{v:.4f} ± {se:.4f}" if se is not None else f"{v:.4f}")
             elif c.startswith("phi_"):
                 cells.append(f"{v:.1e}")
+            elif c.startswith("Kpos_") and se is not None:
+                cells.append(f"{v:.3f} ± {se:.3f}")
             else:
                 cells.append(f"{v:.3f}")
         lines.append("| " + " | ".join(cells) + " |")
+    lines += paper_limit_row(summary, stats)     # a linkage sweep over ε: the limit ε → 0
     return "\n".join(lines) + "\n"
 
 
@@ -195,6 +199,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
         files.append(str(path))
     if len(numeric) == 1:
         files.append(_overview(summary, folder, title, numeric[0], groups, gkey, glabel))
+    files += plot_linkage_sweep(summary, folder, title)
     return files
 
 

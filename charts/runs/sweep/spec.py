@@ -25,7 +25,8 @@ __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
 
 MODES = ("grid", "random")
 #: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns.
-SYSTEM_AXES = {"n": "n", "speed": "speed", "level": "level"}
+#: (``eps``: the linkage's crank length, [system] kind = "linkage".)
+SYSTEM_AXES = {"n": "n", "speed": "speed", "level": "level", "eps": "eps"}
 #: Tables of named patterns, ``[sweep.<name>]``: each is one more axis (the pattern name) and
 #: fills the [system] key of the same name with the evaluated vector.
 PATTERNS = ("masses", "weights")

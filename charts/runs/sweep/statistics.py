@@ -12,6 +12,13 @@ __all__ = ["stat_columns", "result_statistics"]
 #: β and A for β = 2, each with its batch-means standard error, and the count below).
 ANGLE_STATS = ("min", "p001", "median", "frac_small", "n", "law_count", "law_exponent",
                "law_exponent_se", "law_coef2", "law_coef2_se")
+#: The linkage's own columns (``charts.runs.scene_linkage.linkage_result``): the smallest
+#: Σ sin²θᵢ at the curvature samples (0 at a cone point of Σ cos θ = 0; with curvature
+#: only), the smallest KKT health, the distance of M from the four avoided cone points and
+#: the number of cone points on M.
+LINKAGE_STATS = ("sin2_min", "kkt_health_min", "cone_distance_min", "cone_points_on_manifold")
+_LINKAGE_RESULT = dict(zip(LINKAGE_STATS, ("min_sin2", "min_kkt_health", "cone_distance_min",
+                                           "cone_points_on_manifold")))
 
 
 def stat_columns(scene: Scene) -> list[str]:
@@ -32,6 +39,8 @@ def stat_columns(scene: Scene) -> list[str]:
         v = eff["angles"]["variant"]
         for var in (["full", "restricted"] if v == "both" else [v]):
             cols += [f"phi_{var}_{s}" for s in ANGLE_STATS]
+    if scene.system.get("kind") == "linkage":
+        cols += LINKAGE_STATS[0 if "curvature" in eff else 1:]
     if "clv" in eff:
         c = eff["clv"]
         for var in (["full", "restricted"] if c["variant"] == "both" else [c["variant"]]):
@@ -61,6 +70,10 @@ def result_statistics(result: dict, arrays) -> dict:
         if var in an:
             for s in ANGLE_STATS:
                 out[f"phi_{var}_{s}"] = _finite_or_none(an[var].get(s))
+    lk = res.get("linkage", {})
+    for col, key in _LINKAGE_RESULT.items():
+        if key in lk:
+            out[col] = lk[key]
     cl = res.get("clv", {})
     for var in ("full", "restricted"):
         if var in cl:

@@ -1,0 +1,65 @@
+"""The linkage's ε-study in one figure: exponents, positive curvature and the approach to
+the cone points of Σ cos θ = 0 against the crank length ε (docs/linkage.md), from the rows
+of a sweep summary (one dict per ε: statistic → mean over seeds, ``<statistic>_se`` its
+standard error)."""
+from __future__ import annotations
+
+from .style import new_figure
+
+__all__ = ["plot_linkage_epsilon", "ERROR_BARS"]
+
+#: Error bars and bands are ± this many standard errors.
+ERROR_BARS = 2.0
+
+
+def _series(rows, x, stat):
+    rs = sorted((r for r in rows if r.get(stat) is not None), key=lambda r: r[x])
+    return ([r[x] for r in rs], [r[stat] for r in rs],
+            [ERROR_BARS * (r.get(stat + "_se") or 0.0) for r in rs])
+
+
+def plot_linkage_epsilon(rows, x="eps", *, paper=(), title="the linkage against ε"):
+    """``(fig, axes)``: three panels against ``x`` (log scale) — the Lyapunov exponents
+    ``lambda_i`` with the paper's values ``paper`` (the limit ε → 0, Σ cos θᵢ = 0) as
+    dashed lines; the fractions ``Kpos_exact_i`` of samples with K(v̂, eᵢ) > 0; the
+    distance of M from the avoided cone points (``cone_distance_min``), the smallest
+    Σ sin²θᵢ met (``sin2_min``) and the smallest angle φ (``phi_restricted_min``)."""
+    fig, ax = new_figure(1, 3, figsize=(13, 4))
+    colors = ("C0", "C1", "C2")
+    stats = sorted({k for r in rows for k in r})
+    for i, c in enumerate(colors, 1):
+        if f"lambda_{i}" in stats:
+            ax[0].errorbar(*_series(rows, x, f"lambda_{i}"), fmt="o-", color=c, capsize=3,
+                           label=f"linkage λ{i}")
+        if i <= len(paper):
+            ax[0].axhline(paper[i - 1], color=c, ls="--", lw=1,
+                          label=f"paper λ{i} = {paper[i - 1]:.3f} (ε → 0)")
+        if f"Kpos_exact_{i}" in stats:
+            ax[1].errorbar(*_series(rows, x, f"Kpos_exact_{i}"), fmt="o-", color=c, capsize=3,
+                           label=f"K(v̂, e{i}) > 0")
+    if "Kpos_exact_any" in stats:
+        ax[1].errorbar(*_series(rows, x, "Kpos_exact_any"), fmt="s:", color="k", capsize=3,
+                       label="either > 0")
+    for stat, label, fmt in (("cone_distance_min", "distance of M from the avoided cone "
+                              "points (rad)", "o-"),
+                             ("sin2_min", "smallest Σ sin²θᵢ met", "s-"),
+                             ("phi_restricted_min", "smallest angle φ (rad)", "^-")):
+        if stat in stats:
+            xs, ys, _ = _series(rows, x, stat)
+            ax[2].plot(xs, ys, fmt, label=label)
+    if "cone_distance_min" in stats:
+        xs = sorted(r[x] for r in rows)
+        ax[2].plot(xs, [2 * e for e in xs], "k:", label="2ε")
+    ax[0].set(ylabel="Lyapunov exponent (1/time)", title="Lyapunov exponents")
+    ax[1].set(ylabel="fraction of samples", title="Positive sectional curvature")
+    ax[2].set(yscale="log", ylabel="rad, or dimensionless", title="Cone points and tangencies")
+    ticks = sorted({r[x] for r in rows})
+    for a in ax:
+        a.set_xscale("log")
+        a.set_xticks(ticks, [f"{t:g}" for t in ticks])
+        a.minorticks_off()
+        a.set_xlabel("ε (crank length; rods R = 1)")
+        a.legend(fontsize=7)
+        a.grid(alpha=0.3)
+    fig.suptitle(f"{title} (error bars ± {ERROR_BARS:g} s.e.)", fontsize=10)
+    return fig, ax
