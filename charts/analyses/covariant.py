@@ -48,7 +48,8 @@ from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .finite_time import domination, finite_time_statistics
-from .hyperbolicity import angle_statistics, smallest_singular_values
+from .hyperbolicity import angle_statistics
+from .singular_values import smallest_singular_values
 
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
            "MAX_MEMORY"]

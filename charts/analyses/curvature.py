@@ -27,27 +27,23 @@ For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 from math import sqrt
 
 import numpy as np
-from numba import njit, types
-from numba.core.dispatcher import Dispatcher
+from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import (flow_rhs, stage_work, state_stage, tangent_factors, tangent_rate,
+from ..flows.ambient import (flow_rhs, state_stage, tangent_factors, tangent_rate,
                              transport_rate)
-from ..geometry.atlas import chart_coordinates, local_masses, local_weights
 from ..geometry.checks import finite_array
-from ..geometry.kernels import geometry, source
-from ..geometry.structured import gauss_frame_curvature
 from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of)
+from .exact_curvature import exact_curvature_matrix, exact_curvatures
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
            "exact_curvatures", "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
@@ -197,92 +193,6 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
         Ps[smp] = P
         numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[smp], work)
     return RUNNING, Ka.shape[0]
-
-
-def exact_curvature_matrix(system, theta, P):
-    """Route (b) at one point: `exact_curvatures` of theta (N,) and the frame P (k + 1, N);
-    returns shape (k, k)."""
-    return exact_curvatures(system, np.asarray(theta, float)[None], np.asarray(P, float)[None])[0]
-
-
-def exact_curvatures(system, theta, P):
-    """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frames P,
-    shape (S, k + 1, N) (row 0 = p_0), at the points theta, shape (S, N), from the generated
-    Riemann tensor in the best chart (``RotorSystem.best_chart``; with the weights and level
-    of the constraint), or by the Gauss equation (with the weighted normal) where N has no
-    generated kernels.  Compiled over all samples; returns shape (S, k, k)."""
-    theta = np.ascontiguousarray(theta, dtype=float)
-    P = np.ascontiguousarray(P, dtype=float)
-    S, r = P.shape[0], P.shape[1]
-    K = np.empty((S, r - 1, r - 1))
-    n = system.n
-    if source(n) == "structured":
-        _gauss_frames(theta, P, system.masses, system.weights, K)
-        return K
-    charts_ = np.asarray(system.best_chart(theta), dtype=np.int64).reshape(S)
-    idx = np.array([chart_coordinates(n, k) for k in range(n)], dtype=np.int64)
-    lm = np.array([local_masses(system.masses, k) for k in range(n)])
-    lw = np.array([local_weights(system.weights, k) for k in range(n)])
-    riemann = geometry(n, system.weights, system.level).riemann
-    # a generated function left to CPython (``charts.geometry.kernels.JIT_MAX_LINES``) runs
-    # the same loop in Python
-    run = _riemann_frames_compiled() if isinstance(riemann, Dispatcher) else _riemann_frames
-    run(riemann, theta, P, charts_, idx, lm, lw, float(system.level), K)
-    return K
-
-
-@njit(cache=True)
-def _gauss_frames(theta, P, m, wts, K):
-    for i in range(theta.shape[0]):
-        gauss_frame_curvature(theta[i], P[i], m, wts, K[i])
-
-
-def _riemann_frames(riemann, theta, P, charts_, idx, lm, lw, level, K):
-    """K[i] = Q₁ (R_abcd Q₀ᵇ Q₀ᵈ) Q₁ᵀ with Q = P[i] in the local coordinates of chart
-    charts_[i] (ambient indices idx[k], local masses lm[k], local weights lw[k]) and R =
-    riemann there (constraint level ``level``)."""
-    S, r, n = P.shape
-    d = n - 1
-    q = np.empty(d)
-    R = np.empty((d, d, d, d))
-    Q = np.empty((r, d))
-    Rp = np.empty((d, d))
-    for i in range(S):
-        k = charts_[i]
-        for a in range(d):
-            q[a] = theta[i, idx[k, a]]
-            for b in range(r):
-                Q[b, a] = P[i, b, idx[k, a]]
-        riemann(q, lm[k], lw[k], level, R)
-        for a in range(d):           # R_abcd p0^b p0^d
-            for c in range(d):
-                acc = 0.0
-                for b in range(d):
-                    for e in range(d):
-                        acc += R[a, b, c, e] * Q[0, b] * Q[0, e]
-                Rp[a, c] = acc
-        for x in range(r - 1):       # p_i^a (…)_ac p_j^c
-            for y in range(r - 1):
-                acc = 0.0
-                for a in range(d):
-                    for c in range(d):
-                        acc += Q[1 + x, a] * Rp[a, c] * Q[1 + y, c]
-                K[i, x, y] = acc
-
-
-_RIEMANN_SIG = types.float64[:, :, :, ::1](types.float64[::1], types.float64[::1],
-                                           types.float64[::1], types.float64,
-                                           types.float64[:, :, :, ::1])
-
-
-@cache
-def _riemann_frames_compiled():
-    """`_riemann_frames` compiled on first use with the Riemann function as a first-class
-    function argument (one compilation for every N, cached on disk)."""
-    _f8, _i8 = types.float64, types.int64
-    sig = types.void(types.FunctionType(_RIEMANN_SIG), _f8[:, ::1], _f8[:, :, ::1], _i8[::1],
-                     _i8[:, ::1], _f8[:, ::1], _f8[:, ::1], _f8, _f8[:, :, ::1])
-    return njit(sig, cache=True)(_riemann_frames)
 
 
 @dataclass

@@ -34,7 +34,7 @@ forward vectors are stored only at the S sample points: S·m·2N floats.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import ceil, copysign, sqrt
+from math import ceil
 
 import numpy as np
 from numba import njit
@@ -51,6 +51,7 @@ from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
+from .singular_values import smallest_singular_values
 from .statistics import small_value_law
 
 __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
@@ -61,7 +62,6 @@ SMALL_ANGLE = 0.05
 #: the fields of `small_value_law` that `angle_statistics` reports as ``law_<field>``.
 LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
 _CAP = CAP_FRACTION["rk4"]
-_EPS = 2.0 ** -52
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
 #: forward segments per compiled call (the progress is reported between calls).
@@ -108,52 +108,6 @@ def adjoint_step(Z, minv, a, h):
     _adjoint_rk4(Z.reshape(L), np.empty(L), np.empty(4 * L), s0, c0, np.empty(n), np.empty(n),
                  np.empty(n), np.empty(n), minv, a, h, np.uint64(n), np.uint64(R),
                  np.uint64(d), np.uint64(L))
-
-
-@njit(cache=True)
-def smallest_singular_values(M, out):
-    """out[q] = the smallest singular value of M[q], shape (r, c) with r <= c, by one-sided
-    Jacobi (Hestenes) rotations of the rows of a copy until they are orthogonal: their norms
-    are then the singular values, each to high relative accuracy (rounding level for the
-    small matrices of the angle tests)."""
-    S, r, c = M.shape
-    if r > c:
-        raise ValueError("smallest_singular_values: M must have no more rows than columns")
-    A = np.empty((r, c))
-    for q in range(S):
-        A[:, :] = M[q]
-        for sweep in range(60):
-            rotated = False
-            for i in range(r - 1):
-                for j in range(i + 1, r):
-                    a = 0.0
-                    b = 0.0
-                    g = 0.0
-                    for x in range(c):
-                        a += A[i, x] * A[i, x]
-                        b += A[j, x] * A[j, x]
-                        g += A[i, x] * A[j, x]
-                    if abs(g) <= c * _EPS * sqrt(a * b):
-                        continue
-                    rotated = True
-                    zeta = (b - a) / (2.0 * g)
-                    t = copysign(1.0, zeta) / (abs(zeta) + sqrt(1.0 + zeta * zeta))
-                    cs = 1.0 / sqrt(1.0 + t * t)
-                    sn = cs * t
-                    for x in range(c):
-                        u = A[i, x]
-                        v = A[j, x]
-                        A[i, x] = cs * u - sn * v
-                        A[j, x] = sn * u + cs * v
-            if not rotated:
-                break
-        smin = np.inf
-        for i in range(r):
-            nrm = 0.0
-            for x in range(c):
-                nrm += A[i, x] * A[i, x]
-            smin = min(smin, sqrt(nrm))
-        out[q] = smin
 
 
 @njit(cache=True)

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 from .scene import Scene
 
-__all__ = ["Plan", "plan_scene", "ticks", "ANGLES_CHECKPOINT_STEPS"]
+__all__ = ["Plan", "plan_scene", "ticks", "linkage_angles_plan", "ANGLES_CHECKPOINT_STEPS"]
 
 #: Steps between the stored trajectory checkpoints of the angles pass (its memory bound:
 #: one state per checkpoint; the backward pass re-integrates each segment from it).
@@ -88,6 +88,18 @@ def ticks(t, unit):
     return int(round(t / unit))
 
 
+def linkage_angles_plan(scene) -> dict:
+    """The angles pass of `linkage_angles`: forward t_transient + t_final + t_transient,
+    backward t_final + t_transient, two vectors each, re-orthonormalised every step."""
+    dt = scene.integrator["dt"]
+    n_tr, total = ticks(scene.run["t_transient"], dt), ticks(scene.run["t_final"], dt)
+    steps = (2 * n_tr + total) + (n_tr + total)
+    return {"forward_vectors": 2, "adjoint_vectors": 2, "steps": steps,
+            "rhs_evaluations": 4 * steps, "stored_trajectory_checkpoints": 0,
+            "stored_samples": ticks(scene.run["t_final"],
+                                    scene.effects["angles"]["sample_every"]) + 1}
+
+
 def plan_scene(scene: Scene) -> Plan:
     """The smallest computation serving ``scene.effects`` (no integration happens here)."""
     n = scene.system["n"]
@@ -122,7 +134,6 @@ def plan_scene(scene: Scene) -> Plan:
         if c["route"] in ("numerical", "both"):   # (the linkage's route is "exact")
             plan.transport_vectors = c["n_directions"] + 1
     if "angles" in eff and linkage:
-        from .scene_linkage import linkage_angles_plan
         plan.adjoint_vectors = 2
         plan.angles = linkage_angles_plan(scene)
     elif "angles" in eff:

@@ -8,7 +8,8 @@ import numpy as np
 from ..geometry.projection import invariants as invariants_of
 
 from .run_state import RunState
-from .scene_linkage import is_linkage, linkage_curvature, linkage_invariants
+from .linkage_run import linkage_curvature, linkage_invariants
+from .scene_linkage import is_linkage
 
 __all__ = ["make_recorders", "invariants", "curvature_sample"]
 

@@ -14,7 +14,8 @@ import numpy as np
 from ..geometry.system import RotorSystem
 from .plan import Plan
 from .scene import Scene, scene_to_dict
-from .scene_linkage import is_linkage, linkage_flow, linkage_system
+from .linkage_run import linkage_flow, linkage_system
+from .scene_linkage import is_linkage
 
 __all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done", "tangent_flow",
            "scene_system",

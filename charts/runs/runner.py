@@ -37,7 +37,8 @@ from .paper import PAPER_EXPONENTS
 from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
 from .recorders import make_recorders
 from .run_state import CHECKPOINT, RunError, RunState, scene_hash, scene_system, units_done
-from .scene_linkage import is_linkage, linkage_angles_pass
+from .linkage_run import linkage_angles_pass
+from .scene_linkage import is_linkage
 from .scene import Scene
 from .scene_results import FTLE_STATS, finalize, write_result
 

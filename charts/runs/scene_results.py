@@ -22,7 +22,8 @@ from .paper import PAPER_EXPONENTS
 from .recorders import invariants
 from .run_state import CHECKPOINT, RunState, units_done
 from .scene import scene_to_dict
-from .scene_linkage import is_linkage, linkage_result
+from .linkage_run import linkage_result
+from .scene_linkage import is_linkage
 
 __all__ = ["finalize", "write_result", "waveforms_result", "spectrum_result", "drift_result",
            "lyapunov_result", "curvature_result", "angles_result", "clv_result",
