@@ -157,7 +157,7 @@ def _cmd_scenes(args) -> int:
         except (SceneError, IndexError) as exc:
             desc = f"(invalid: {exc})" if isinstance(exc, SceneError) else ""
         print(f"{name:<{width}}  {desc}")
-    print(f"\nrun one with: charts run NAME -o DIR   (print it: charts scenes NAME)")
+    print("\nrun one with: charts run NAME -o DIR   (print it: charts scenes NAME)")
     return 0
 
 

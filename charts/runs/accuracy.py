@@ -23,7 +23,6 @@ table), ``accuracy.json`` (every number).
 """
 from __future__ import annotations
 
-import argparse
 import json
 import time
 from dataclasses import asdict, dataclass

@@ -26,7 +26,6 @@ forward and backward.
 """
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import pickle

@@ -10,7 +10,6 @@ import signal
 import threading
 import time
 import uuid
-from pathlib import Path
 
 from ...analyses.arguments import positive_int
 from ..io import atomic_text

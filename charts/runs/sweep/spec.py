@@ -7,7 +7,6 @@ docs/sweeps.md.
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
