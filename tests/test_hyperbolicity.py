@@ -117,14 +117,18 @@ def test_angles_are_converged_in_both_variants():
     """Longer transients (forward and backward) give the same angles at the same points:
     the small full-variant angles are a property of the splitting, not of unconverged
     vectors.  Convergence is geometric at the gap λ_m − 0 ≈ 0.23 (N = 4), slowed by the
-    polynomial growth in the zero-exponent Jordan blocks (measured error 1e-4 after 50
-    time units); after 100 time units allow 1e-6 relative."""
+    polynomial growth in the zero-exponent Jordan blocks: the full variant's error was 1e-4
+    after 50 time units, 1e-7 to 1e-5 after 100 (it depends on the trajectory, i.e. on the
+    machine's rounding after a few hundred time units of chaos) and 2e-9 after 150.  The
+    samples compared here have 150 time units or more of convergence in both directions in
+    both runs (the first half of b's window: run a's backward transient ends 100 after it);
+    allow 1e-6 relative."""
     s = RotorSystem(4)
     th, u = s.random_state(seed=7)
     a = hyperbolicity_angles(s, th, u, 200.0, t_transient=100.0)
     b = hyperbolicity_angles(s, th, u, 100.0, t_transient=200.0)
     ia = int(np.searchsorted(a.t, b.t[0] - 1e-9))
-    n = min(a.t.size - ia, b.t.size)
+    n = min(a.t.size - ia, b.t.size) // 2
     assert n > 100
     for name in ("phi_full", "phi_restricted"):
         x, y = getattr(a, name)[ia:ia + n], getattr(b, name)[:n]
