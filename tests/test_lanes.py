@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import charts
-from charts.analyses.lyapunov import lyapunov_ensemble, lyapunov_spectrum
+from charts.analyses.lyapunov import MIN_LANES, lyapunov_ensemble, lyapunov_spectrum
 from charts.geometry.system import RotorSystem
 from charts.solvers.lanes import LaneFlows
 from charts.solvers.status import NONFINITE, RUNNING, SINGULAR
@@ -49,13 +49,16 @@ def test_every_lane_equals_the_tangent_kernel_bit_for_bit(name):
     assert lanes.steps == 450
 
 
+@pytest.mark.parametrize("members", [3, MIN_LANES + 1])
 @pytest.mark.parametrize("name", ["N=3", "N=4 weights, level"])
-def test_ensemble_members_equal_lyapunov_spectrum(name):
+def test_ensemble_members_equal_lyapunov_spectrum(name, members):
     """Each member of `lyapunov_ensemble` is `lyapunov_spectrum` on its own random state and
-    seed: exponents, batches, history and settings identical."""
+    seed: exponents, batches, history and settings identical, in lanes (at least
+    `MIN_LANES` members) and one after the other (fewer)."""
     system = SYSTEMS[name]
     kw = dict(t_transient=2.0, n_batches=4, record_every=2.0)
-    ens = lyapunov_ensemble(system, 3, 8.0, seed=7, workers=1, speed=1.3, **kw)
+    ens = lyapunov_ensemble(system, members, 8.0, seed=7, workers=1, speed=1.3, **kw)
+    assert len(ens.members) == members
     for i, m in enumerate(ens.members):
         th, u = system.random_state(seed=7 + i, speed=1.3)
         r = lyapunov_spectrum(system, th, u, 8.0, seed=7 + i, **kw)
@@ -105,9 +108,11 @@ def test_a_stopping_lane_is_frozen_and_leaves_the_others_alone():
     assert np.array_equal(lanes.Z[:, [1, 3]], frozen, equal_nan=True)
 
 
-def test_ensemble_reports_the_member_that_stops():
+@pytest.mark.parametrize("members", [3, MIN_LANES + 1])
+def test_ensemble_reports_the_member_that_stops(members):
     """`lyapunov_ensemble` raises the error `lyapunov_spectrum` raises for the member, naming
-    its seed (here a system whose random states are replaced by the singular geodesic)."""
+    its seed (here a system whose random states are replaced by the singular geodesic), in
+    lanes and one after the other."""
 
     class Aimed(RotorSystem):
         def random_state(self, seed=0, speed=1.0):
@@ -115,7 +120,8 @@ def test_ensemble_reports_the_member_that_stops():
 
     system = Aimed(4)
     with pytest.raises(charts.SingularPointError, match=r"seed=11\).*t = 1\b"):
-        lyapunov_ensemble(system, 3, 4.0, seed=10, workers=1, t_transient=0.0, n_batches=2)
+        lyapunov_ensemble(system, members, 4.0, seed=10, workers=1, t_transient=0.0,
+                          n_batches=2)
     with pytest.raises(charts.SingularPointError, match=r"t = 1\b"):
         lyapunov_spectrum(system, *THROUGH, 4.0, t_transient=0.0, n_batches=2)
 

@@ -234,3 +234,29 @@ def test_summary_keeps_integers_integers():
     from charts.runs.sweep.report import _num
     assert _num("4") == 4 and isinstance(_num("4"), int)
     assert _num("0.5") == 0.5 and _num("1e-3") == 1e-3 and _num("(1,1,1,m)") == "(1,1,1,m)"
+
+
+def test_the_seeds_of_a_point_run_in_lanes_with_the_rows_of_single_runs(tmp_path):
+    """`MIN_LANES` seeds of one point share a lane kernel on the cluster; every row equals
+    the row of its point run alone (`evaluate_point`)."""
+    from charts.analyses.lyapunov import MIN_LANES
+    from charts.runs.sweep.execute import lane_blocks, same_scene_groups
+    from charts.runs.sweep.table import point_row
+    from charts.runs.sweep.worker import evaluate_point
+
+    base = {**BASE, "run": {"t_final": 4.0, "t_transient": 1.0},
+            "effects": {"lyapunov": {"n_batches": 2}, "curvature": {"route": "exact"}}}
+    sweep = parse_sweep({"name": "lanes", "scene": base,
+                         "sweep": {"seeds": list(range(1, MIN_LANES + 1)),
+                                   "parameters": {"n": [4]}}}, source="t.toml")
+    pts = sweep_points(sweep)
+    assert [len(b) for b in lane_blocks(same_scene_groups(pts), 1)] == [MIN_LANES]
+    res = run_sweep(sweep, tmp_path / "out", workers=1, quiet=True, plots=False)
+    assert not res["failed"] and not res["lost"]
+    columns = point_columns(pts)
+    header, rows = read_table(tmp_path / "out" / TABLE)
+    for p, row in zip(pts, rows):
+        alone = dict(zip(columns, point_row(p, evaluate_point(p.raw), columns)))
+        for c in columns:
+            if c not in ("wall_s",):
+                assert str(row[c]) == alone[c] or float(row[c]) == float(alone[c]), c

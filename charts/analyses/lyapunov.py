@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field, replace
+from functools import partial
 
 import numpy as np
 
@@ -36,7 +37,8 @@ from .statistics import batch_ends, batch_estimates
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
            "lyapunov_spectrum", "lyapunov_ensemble", "lyapunov_lanes", "lyapunov_schedule",
-           "lyapunov_result", "chunk_sizes", "LANE_BLOCK", "reconstruct_spectrum",
+           "lyapunov_result", "chunk_sizes", "averaging_logs", "LANE_BLOCK", "MIN_LANES",
+           "reconstruct_spectrum",
            "identify_nonphysical", "exponents_from_marks"]
 
 
@@ -249,14 +251,25 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     flow.advance(cfg.transient, where=where)
     rep.update(cfg.transient * cfg.dt)
     flow.logsum[:] = 0.0
-    records, ends, events = lyapunov_schedule(cfg)
-    logs = np.zeros((len(events), cfg.k))
-    at = np.array(events, dtype=np.int64) + flow.steps  # the kernel counts from the start
-    for size in chunk_sizes(cfg):
-        flow.advance(size, events=at, event_logs=logs, where=where)
-        rep.update(size * cfg.dt)
+    logs = averaging_logs(flow, cfg, partial(flow.advance, where=where), rep.update)
     rep.close()
     return lyapunov_result(system, cfg, logs, flow.speed)
+
+
+def averaging_logs(flow, cfg: LyapunovSettings, advance, update=None):
+    """The averaging part of a Lyapunov run on ``flow`` (a `TangentFlow`, or the lanes'
+    `LaneFlows`), its transient done and its log-norm sums zeroed: ``advance(steps, events=,
+    event_logs=)`` in the `chunk_sizes` of ``cfg``, ``update(t)`` (optional) after each chunk
+    with its time.  Returns the log-norm sums at the events of `lyapunov_schedule`, shape
+    (events,) + ``flow.logsum.shape``."""
+    _, _, events = lyapunov_schedule(cfg)
+    logs = np.zeros((len(events),) + flow.logsum.shape)
+    at = np.array(events, dtype=np.int64) + flow.steps  # the kernel counts from the start
+    for size in chunk_sizes(cfg):
+        advance(size, events=at, event_logs=logs)
+        if update is not None:
+            update(size * cfg.dt)
+    return logs
 
 
 def lyapunov_schedule(cfg: LyapunovSettings):
@@ -330,31 +343,39 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
 
 #: Most trajectories one lane kernel advances together (larger ensembles: several blocks).
 LANE_BLOCK = 64
+#: Fewest trajectories worth one lane kernel: below, the members run one after the other in
+#: the one-trajectory kernel, which is faster there (docs/performance.md, "Ensembles in
+#: vector lanes": 0.9x its pace at 4 lanes, 1.3x at 8, N = 5).
+MIN_LANES = 6
 
 
 def lyapunov_lanes(job, update=None):
     """[`LyapunovResult`] of the seeds of ``job`` = (system, settings, seeds, speed), from
-    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows`;
-    ``update(t)`` (optional) gets the averaging time done by all members after each chunk."""
+    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows` (fewer
+    than `MIN_LANES`: one after the other); ``update(t)`` (optional) gets the averaging time
+    done by all members after each chunk."""
     system, cfg, seeds, speed = job
     cfgs = [replace(cfg, seed=s) for s in seeds]
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
              for s, c in zip(seeds, cfgs)]
+    where = [f"lyapunov_ensemble (ambient RK4, member seed={s})" for s in seeds]
+    if len(seeds) < MIN_LANES:
+        logs = []
+        for f, c, w in zip(flows, cfgs, where):
+            f.advance(cfg.transient, where=w)
+            f.logsum[:] = 0.0
+            logs.append(averaging_logs(f, c, partial(f.advance, where=w), update))
+        return [lyapunov_result(system, c, lg, f.speed) for c, lg, f in zip(cfgs, logs, flows)]
     lanes = LaneFlows(flows)
 
     def advance(steps, **kw):
         lanes.advance(steps, **kw)
         for l in lanes.stopped_lanes()[:1]:
-            raise lanes.error(l, f"lyapunov_ensemble (ambient RK4, member seed={seeds[l]})")
+            raise lanes.error(l, where[l])
 
     advance(cfg.transient)
     lanes.logsum[...] = 0.0
-    _, _, events = lyapunov_schedule(cfg)
-    logs = np.zeros((len(events), len(seeds), cfg.k))
-    at = np.array(events, dtype=np.int64) + lanes.steps
-    for size in chunk_sizes(cfg):
-        advance(size, events=at, event_logs=logs)
-        if update is not None:
-            update(len(seeds) * size * cfg.dt)
+    logs = averaging_logs(lanes, cfg, advance,
+                          None if update is None else lambda t: update(len(seeds) * t))
     return [lyapunov_result(system, c, logs[:, i], f.speed)
             for i, (c, f) in enumerate(zip(cfgs, flows))]

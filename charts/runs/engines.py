@@ -19,7 +19,8 @@ from .run_state import RunError, RunState
 from .scene import Scene
 
 __all__ = ["KernelEngine", "IntegrateEngine", "chunk_bounds", "record_interval",
-           "lyapunov_batch_ends"]
+           "lyapunov_batch_ends", "kernel_failure", "count_kernel_steps", "KERNEL_ROUTE",
+           "recording_stops"]
 
 
 def chunk_bounds(scene: Scene, plan: Plan) -> list[int]:
@@ -53,6 +54,36 @@ def record_interval(plan: Plan) -> int:
     return g
 
 
+#: How the kernel engine names its route in an integration error.
+KERNEL_ROUTE = "scene (ambient RK4)"
+
+
+def kernel_failure(exc) -> RunError:
+    """The `RunError` of a scene whose kernel engine stopped with ``exc`` (an
+    ``IntegrationError``): what happened and what to change."""
+    return RunError(f"{exc}; set [integrator] project = true or a smaller dt, or start from "
+                    "another state")
+
+
+def count_kernel_steps(st: RunState, nsteps: int) -> None:
+    """Book ``nsteps`` RK4 steps of the kernel engine (4 evaluations each) in ``st``."""
+    st.rhs += 4 * nsteps
+    st.steps += nsteps
+
+
+def recording_stops(start: int, end: int, unit, origin: int = 0) -> list[int]:
+    """Where the kernel engine stops between units ``start`` and ``end`` to record: every
+    multiple of ``unit`` counted from ``origin`` (the end of the transient), and ``end``
+    (``unit`` None or 0: at ``end`` only)."""
+    if not unit:
+        return [end] if end > start else []
+    stops, pos = [], start
+    while pos < end:
+        pos = min(end, origin + ((pos - origin) // unit + 1) * unit)
+        stops.append(pos)
+    return stops
+
+
 class KernelEngine:
     """Ambient RK4 of eq (8) with k tangent vectors (eq 17) re-orthonormalised (eq 18): the
     run state's `TangentFlow` (``charts.solvers.tangent``); k = 0 integrates the state alone."""
@@ -67,22 +98,18 @@ class KernelEngine:
 
         st = self.st
         try:
-            st.flow.advance(nsteps, where="scene (ambient RK4)")
+            st.flow.advance(nsteps, where=KERNEL_ROUTE)
         except DegenerateMetricError as exc:   # the message says what to do (disk inertia)
             raise RunError(f"{exc} In a scene: [system] disk_mass, disk_inertia.") from None
         except IntegrationError as exc:
-            raise RunError(f"{exc}; set [integrator] project = true or a smaller dt, or start "
-                           "from another state") from None
-        st.rhs += 4 * nsteps
-        st.steps += nsteps
+            raise kernel_failure(exc) from None
+        count_kernel_steps(st, nsteps)
 
     def run_chunk(self, start: int, end: int, recorders, origin: int = 0):
         """Advance from unit ``start`` to ``end``, stopping at every multiple of the
         recording unit counted from ``origin`` (the end of the transient) to record."""
-        unit = self.step_unit if (self.step_unit and recorders) else (end - start)
         pos = start
-        while pos < end:
-            nxt = min(end, origin + ((pos - origin) // unit + 1) * unit)
+        for nxt in recording_stops(start, end, self.step_unit if recorders else None, origin):
             self.advance(nxt - pos)
             pos = nxt
             for rec in recorders:

@@ -42,10 +42,7 @@ from .scene_linkage import is_linkage
 from .scene import Scene
 from .scene_results import FTLE_STATS, finalize, write_result
 
-__all__ = ["Plan", "plan_scene", "run_scene", "RunError", "PAPER_EXPONENTS"]
-
-
-#: Compile time above which a run says it compiled kernels (loading cached ones takes less).
+__all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "PAPER_EXPONENTS"]
 
 
 def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False,
@@ -60,107 +57,154 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     """
     outdir = prepare_output(outdir)
     with OutputLock(outdir, f"charts run {scene.name}"):
-        return _run_locked(scene, outdir, resume, quiet, on_chunk)
+        run = SceneRun(scene, outdir, resume)
+        bar = run.progress_bar(quiet)
+        status, failure = "complete", None
+        try:
+            with compile_timer(run.st.add_compile_time):
+                run.run_chunks(run.engine(), bar, on_chunk)
+        except (KeyboardInterrupt, RunError) as exc:
+            status, failure = run.stop(exc)
+        finally:
+            bar.close()
+        run.note_compile_time(quiet)
+        return run.finish(status, failure)
 
 
-def _run_locked(scene: Scene, outdir: Path, resume: bool, quiet: bool, on_chunk) -> dict:
-    system = scene_system(scene)
-    plan = plan_scene(scene)
-    st = RunState(scene, plan, system)
-    ck = outdir / CHECKPOINT
-    digest = scene_hash(scene)
-    if resume:
-        if not ck.exists():
-            raise RunError(f"--resume: no checkpoint in {outdir} (nothing to resume; "
-                           "run without --resume)")
-        with np.load(ck) as a:
-            if str(a["scene_hash"]) != digest:
-                raise RunError(f"--resume: the checkpoint in {outdir} belongs to a different "
-                               "scene (the scene file changed); run without --resume")
-            st.load_arrays(a)
-    elif ck.exists() or (outdir / "result.json").exists():
-        prev = _read_status(outdir)
-        if prev == "interrupted":
-            raise RunError(f"{outdir} holds an interrupted run: continue it with --resume, or "
-                           "choose another output folder")
-    engine = KernelEngine(st) if plan.engine == "kernel" else IntegrateEngine(st)
-    unit = scene.integrator["dt"] if plan.engine == "kernel" else scene.run["sample_dt"]
-    transient = ticks(scene.run["t_transient"], unit)
-    ends = [e + transient for e in chunk_bounds(scene, plan)]
-    if transient:
-        ends = [transient] + ends
-    recorders = make_recorders(st, transient)
-    lyap_ends = set()
-    if "lyapunov" in scene.effects:
-        lyap_ends = {transient + e for e in lyapunov_batch_ends(scene, plan)}
+class SceneRun:
+    """One scene's run into its output folder (checked and locked by the caller): the run
+    state, the chunk ends, the recorders and the checkpoint.  `run_scene` drives one;
+    ``charts.runs.seed_lanes`` drives several in the lanes of one kernel."""
 
-    n_main = len(ends) if plan.main_pass else 0
-    passes = plan.passes
-    n_units = n_main + len(passes)
-    st.n_main = n_main
+    def __init__(self, scene: Scene, outdir: Path, resume: bool):
+        self.scene, self.outdir = scene, outdir
+        system = scene_system(scene)
+        self.plan = plan = plan_scene(scene)
+        self.st = st = RunState(scene, plan, system)
+        self.ck = outdir / CHECKPOINT
+        self.digest = scene_hash(scene)
+        if resume:
+            if not self.ck.exists():
+                raise RunError(f"--resume: no checkpoint in {outdir} (nothing to resume; "
+                               "run without --resume)")
+            with np.load(self.ck) as a:
+                if str(a["scene_hash"]) != self.digest:
+                    raise RunError(f"--resume: the checkpoint in {outdir} belongs to a "
+                                   "different scene (the scene file changed); run without "
+                                   "--resume")
+                st.load_arrays(a)
+        elif self.ck.exists() or (outdir / "result.json").exists():
+            if _read_status(outdir) == "interrupted":
+                raise RunError(f"{outdir} holds an interrupted run: continue it with --resume, "
+                               "or choose another output folder")
+        self.unit = scene.integrator["dt"] if plan.engine == "kernel" else scene.run["sample_dt"]
+        self.transient = transient = ticks(scene.run["t_transient"], self.unit)
+        self.ends = [e + transient for e in chunk_bounds(scene, plan)]
+        if transient:
+            self.ends = [transient] + self.ends
+        self.recorders = make_recorders(st, transient)
+        self.lyap_ends = set()
+        if "lyapunov" in scene.effects:
+            self.lyap_ends = {transient + e for e in lyapunov_batch_ends(scene, plan)}
+        self.n_main = len(self.ends) if plan.main_pass else 0
+        self.passes = plan.passes
+        self.n_units = self.n_main + len(self.passes)
+        st.n_main = self.n_main
 
-    from tqdm.auto import tqdm
-    t_total = (scene.run["t_transient"] + scene.run["t_final"]) * (1 if plan.main_pass else 0)
-    t_total += plan.pass_steps() * scene.integrator["dt"] if passes else 0.0
-    bar = tqdm(total=round(t_total, 10), unit="t", desc=scene.name, disable=quiet,
-               leave=False, initial=round(units_done(st, ends) * unit, 10))
-    status = "complete"
-    try:
-        with compile_timer(st.add_compile_time):
-            _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders,
-                        lyap_ends, unit, digest, ck, bar, on_chunk)
-    except (KeyboardInterrupt, RunError) as exc:
+    def engine(self):
+        """The engine of the main pass (``charts.runs.engines``)."""
+        return KernelEngine(self.st) if self.plan.engine == "kernel" else IntegrateEngine(self.st)
+
+    def progress_bar(self, quiet: bool):
+        """A tqdm bar over the run's time units (main pass and separate passes)."""
+        from tqdm.auto import tqdm
+
+        sc, plan = self.scene, self.plan
+        t_total = (sc.run["t_transient"] + sc.run["t_final"]) * (1 if plan.main_pass else 0)
+        t_total += plan.pass_steps() * sc.integrator["dt"] if self.passes else 0.0
+        return tqdm(total=round(t_total, 10), unit="t", desc=sc.name, disable=quiet,
+                    leave=False, initial=round(units_done(self.st, self.ends) * self.unit, 10))
+
+    def chunk_start(self, idx: int) -> int:
+        """The unit at which main chunk ``idx`` starts."""
+        return self.ends[idx - 1] if idx else 0
+
+    def recorders_of(self, idx: int):
+        """The recorders that run in main chunk ``idx`` (none inside the transient)."""
+        return self.recorders if self.ends[idx] > self.transient else []
+
+    def end_main_chunk(self, idx: int) -> float:
+        """After main chunk ``idx``: the transient does not count for the exponents; the
+        Lyapunov batch marks.  Returns the time advanced."""
+        st, end = self.st, self.ends[idx]
+        if end == self.transient:
+            st.logsum[:] = 0.0
+        if end in self.lyap_ends:
+            st.lyap_marks.append((end - self.transient, st.logsum.copy()))
+        return (end - self.chunk_start(idx)) * self.unit
+
+    def checkpoint(self, idx: int, wall_s: float) -> None:
+        """Chunk ``idx`` is done (``wall_s`` seconds): the whole state into checkpoint.npz."""
+        st = self.st
+        st.chunk_index = idx + 1
+        st.elapsed += wall_s
+        st.done = st.chunk_index == self.n_units
+        arr = st.to_arrays()
+        arr["scene_hash"] = np.array(self.digest)
+        atomic_write(self.ck, npz_bytes(arr))
+
+    def run_chunks(self, engine, bar, on_chunk=None) -> None:
+        """The chunks from ``st.chunk_index`` on, a checkpoint after each (``engine`` runs the
+        main pass; None if it is done)."""
+        st = self.st
+        for idx in range(st.chunk_index, self.n_units):
+            t_wall = time.perf_counter()
+            if idx < self.n_main:
+                engine.run_chunk(self.chunk_start(idx), self.ends[idx], self.recorders_of(idx),
+                                 self.transient)
+                advanced = self.end_main_chunk(idx)
+            else:
+                name = self.passes[idx - self.n_main]
+                (_angles_pass if name == "angles" else _clv_pass)(st)
+                advanced = getattr(self.plan, name)["steps"] * self.scene.integrator["dt"]
+            self.checkpoint(idx, time.perf_counter() - t_wall)
+            bar.update(advanced)
+            if on_chunk is not None:
+                on_chunk(idx, self.n_units)
+
+    def stop(self, exc):
+        """An interrupt or a `RunError` stopped the run: roll back to the last checkpoint
+        (the chunk in flight is discarded).  Returns (status, failure message or None)."""
         status = "interrupted" if isinstance(exc, KeyboardInterrupt) else "failed"
         failure = None if status == "interrupted" else str(exc)
-        # roll back to the last checkpoint: the chunk in flight is discarded
-        if st.chunk_index and ck.exists():
-            with np.load(ck) as a:
-                st.load_arrays(a)
+        if self.st.chunk_index and self.ck.exists():
+            with np.load(self.ck) as a:
+                self.st.load_arrays(a)
         else:
-            st = RunState(scene, plan, system)
-        st.n_main = n_main
-    finally:
-        bar.close()
-    if st.compile_s > NOTE_SECONDS and not quiet:
-        print(f"{scene.name}: compiled the kernels for N = {system.n} in {st.compile_s:.1f} s "
-              "(once: they are cached on disk for the next runs)", file=sys.stderr)
-    result = finalize(st, status, ends, transient, unit, outdir)
-    if status == "interrupted":
-        raise KeyboardInterrupt(result)
-    if status == "failed":
-        result["error"] = failure
-        write_result(outdir, result)
-        raise RunError(f"{failure} (the finished part is in {outdir}/result.json)")
-    return result
+            compile_s = self.st.compile_s
+            self.st = RunState(self.scene, self.plan, self.st.system)
+            self.st.compile_s = compile_s
+        self.st.n_main = self.n_main
+        return status, failure
 
+    def note_compile_time(self, quiet: bool) -> None:
+        st = self.st
+        if st.compile_s > NOTE_SECONDS and not quiet:
+            print(f"{self.scene.name}: compiled the kernels for N = {st.system.n} in "
+                  f"{st.compile_s:.1f} s (once: they are cached on disk for the next runs)",
+                  file=sys.stderr)
 
-def _run_chunks(st, engine, ends, transient, n_main, n_units, passes, recorders, lyap_ends,
-                unit, digest, ck, bar, on_chunk):
-    """The chunks from ``st.chunk_index`` on, a checkpoint after each."""
-    for idx in range(st.chunk_index, n_units):
-        t_wall = time.perf_counter()
-        if idx < n_main:
-            start = ends[idx - 1] if idx else 0
-            engine.run_chunk(start, ends[idx], recorders if ends[idx] > transient else [],
-                             transient)
-            if ends[idx] == transient:      # the transient does not count for exponents
-                st.logsum[:] = 0.0
-            if ends[idx] in lyap_ends:
-                st.lyap_marks.append((ends[idx] - transient, st.logsum.copy()))
-            advanced = (ends[idx] - start) * unit
-        else:
-            name = passes[idx - n_main]
-            (_angles_pass if name == "angles" else _clv_pass)(st)
-            advanced = getattr(st.plan, name)["steps"] * st.scene.integrator["dt"]
-        st.chunk_index = idx + 1
-        st.elapsed += time.perf_counter() - t_wall
-        st.done = st.chunk_index == n_units
-        arr = st.to_arrays()
-        arr["scene_hash"] = np.array(digest)
-        atomic_write(ck, npz_bytes(arr))
-        bar.update(advanced)
-        if on_chunk is not None:
-            on_chunk(idx, n_units)
+    def finish(self, status: str, failure=None) -> dict:
+        """The result (every output file written); raises KeyboardInterrupt (interrupted) or
+        `RunError` (failed, the finished part written) after writing it."""
+        result = finalize(self.st, status, self.ends, self.transient, self.unit, self.outdir)
+        if status == "interrupted":
+            raise KeyboardInterrupt(result)
+        if status == "failed":
+            result["error"] = failure
+            write_result(self.outdir, result)
+            raise RunError(f"{failure} (the finished part is in {self.outdir}/result.json)")
+        return result
 
 
 def _angles_pass(st: RunState):

@@ -243,6 +243,13 @@ def _stop(l, st, step, Z, sc, status, stopped, frozen):
         frozen[D + n + j, l] = sc[1, j, l]
 
 
+def _same_system(a, b) -> bool:
+    """Whether two `RotorSystem` s are the same system (masses, weights and level)."""
+    return a is b or (type(a) is type(b) and a.n == b.n and a.level == b.level
+                      and np.array_equal(a.masses, b.masses)
+                      and np.array_equal(a.weights, b.weights))
+
+
 _NO_EVENTS = np.empty(0, dtype=np.int64)
 _NO_LOGS = np.empty((0, 0, 0))
 
@@ -254,7 +261,8 @@ class LaneFlows:
     Parameters
     ----------
     flows : sequence of TangentFlow
-        The lanes' starting points (their state is copied; they share ``system``, ``dt``,
+        The lanes' starting points (their state is copied; they share the system (equal
+        masses, weights and level), ``dt``,
         ``w``, ``restricted``, ``reorth_every`` and ``project_every``, checked here) and no
         steps done.
 
@@ -268,7 +276,7 @@ class LaneFlows:
             raise ValueError("flows must hold at least one TangentFlow")
         f0 = flows[0]
         for f in flows:
-            same = (f.system is f0.system and f.dt == f0.dt and np.array_equal(f.w, f0.w)
+            same = (_same_system(f.system, f0.system) and f.dt == f0.dt and np.array_equal(f.w, f0.w)
                     and f.restricted == f0.restricted and f.reorth_every == f0.reorth_every
                     and f.project_every == f0.project_every and f.Z.shape == f0.Z.shape
                     and f.steps == 0)
@@ -294,6 +302,12 @@ class LaneFlows:
     def lane(self, l):
         """Lane l's stacked state Z, shape (1 + k, 2N) (a copy)."""
         return self.Z[:, l].reshape(-1, 2 * self.system.n).copy()
+
+    def store(self, l, flow) -> None:
+        """Lane l's whole state (stacked state, sin/cos, step counter, log-norm sums) into the
+        `TangentFlow` ``flow``: what ``flow`` would hold had it advanced alone."""
+        flow.load_state({"Z": self.lane(l), "sc": self.sc[:, :, l], "counter": self.counter,
+                         "logsum": self.logsum[l]})
 
     def stopped_lanes(self):
         """The lanes that stopped (see `error`), in order."""

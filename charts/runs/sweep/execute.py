@@ -20,10 +20,12 @@ from .report import SUMMARY, plot_sweep, summarize, write_summary
 from .spec import Sweep, SweepError
 from .table import (TABLE, TableAppender, finish_table, point_columns, point_row,
                     prepare_table)
-from .worker import evaluate_point
+from ...analyses.lyapunov import LANE_BLOCK, MIN_LANES
+from ..seed_lanes import seed_family
+from .worker import evaluate_points
 
-__all__ = ["run_sweep", "dask_client", "same_scene_groups", "check_scheduler_address", "META",
-           "SCHEDULER_TIMEOUT_S"]
+__all__ = ["run_sweep", "dask_client", "same_scene_groups", "lane_blocks",
+           "check_scheduler_address", "META", "SCHEDULER_TIMEOUT_S"]
 
 META = "sweep.json"
 #: How long a client waits for an existing scheduler before the sweep fails.
@@ -172,37 +174,30 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
     bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
     futures = {}
     try:
+        nw = len(client.scheduler_info().get("workers", {}))
         if not quiet:
-            nw = len(client.scheduler_info().get("workers", {}))
             where = scheduler or f"a local cluster of {nw} workers"
             bar.write(f"{sweep.name}: {total} points ({n_done} finished before, {len(todo)} to "
                       f"compute) on {where}")
-        for group in same_scene_groups(todo):    # identical scenes are computed once
-            fut = client.submit(evaluate_point, group[0].raw,
-                                key=f"charts-sweep-{group[0].point_id}", pure=False)
-            futures[fut] = group
+        # identical scenes are computed once; the seeds of a point together, in lanes
+        for block in lane_blocks(same_scene_groups(todo), max(nw, 1)):
+            fut = client.submit(evaluate_points, [group[0].raw for group in block],
+                                key=f"charts-sweep-{block[0][0].point_id}", pure=False)
+            futures[fut] = block
         for fut in as_completed(list(futures)):
-            group = futures[fut]
+            block = futures[fut]
             try:
-                out = fut.result()
+                outs = fut.result()
             except Exception as exc:        # the worker died or could not run it
-                info["lost"] += [(p.index, f"{type(exc).__name__}: {exc}") for p in group]
-                bar.update(len(group))
+                info["lost"] += [(p.index, f"{type(exc).__name__}: {exc}")
+                                 for group in block for p in group]
+                bar.update(sum(len(group) for group in block))
                 continue
-            for p in group:
-                app.add(point_row(p, out, columns),
-                        {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
-                         "status": out["status"], "wall_s": out["wall_s"],
-                         "worker": out["worker"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
-                         **({"same_scene_as": group[0].index} if p is not group[0] else {})})
-                info["computed"].append(p.point_id)
-                if out["status"] != "complete":
-                    info["failed"].append((p.index, out["error"]))
-                bar.update(1)
-                if on_point is not None:
-                    on_point(n_done + len(info["computed"]), total)
-            lead = out["stats"].get("lambda_1")
-            bar.set_postfix_str(f"#{group[0].index}" + (f" λ1={lead:.3f}" if lead is not None else ""))
+            for group, out in zip(block, outs):
+                _add_rows(group, out, columns, app, info, bar, on_point, n_done, total)
+            lead = outs[-1]["stats"].get("lambda_1")
+            bar.set_postfix_str(f"#{block[-1][0].index}"
+                                + (f" λ1={lead:.3f}" if lead is not None else ""))
     except BaseException as exc:
         if isinstance(exc, KeyboardInterrupt):
             # the teardown of an interrupted client logs its cancelled tasks' errors with
@@ -216,3 +211,43 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+def _add_rows(group, out, columns, app, info, bar, on_point, n_done, total):
+    """The rows of ``group`` (points of one scene) from its outcome ``out``."""
+    for p in group:
+        app.add(point_row(p, out, columns),
+                {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
+                 "status": out["status"], "wall_s": out["wall_s"],
+                 "worker": out["worker"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
+                 **({"same_scene_as": group[0].index} if p is not group[0] else {})})
+        info["computed"].append(p.point_id)
+        if out["status"] != "complete":
+            info["failed"].append((p.index, out["error"]))
+        bar.update(1)
+        if on_point is not None:
+            on_point(n_done + len(info["computed"]), total)
+
+
+def lane_blocks(groups, n_workers: int) -> list[list]:
+    """The groups of identical points (`same_scene_groups`) cut into the blocks one task
+    computes: the groups of one seed family (``charts.runs.seed_lanes.seed_family``) share a
+    lane kernel, in blocks of `MIN_LANES` to `LANE_BLOCK` (as many as give the
+    ``n_workers`` work where the family is large enough); every other group is a block of its
+    own."""
+    families = {}
+    for group in groups:
+        key = seed_family(group[0].scene)
+        families.setdefault(key if key is not None else id(group), []).append(group)
+    total = len(groups)
+    blocks = []
+    for fam in families.values():
+        g = len(fam)
+        if g < MIN_LANES:
+            blocks += [[group] for group in fam]
+            continue
+        share = -(-n_workers * g // total)          # this family's part of the workers
+        nb = max(-(-g // LANE_BLOCK), min(share, g // MIN_LANES))
+        cut = [g * b // nb for b in range(nb + 1)]
+        blocks += [fam[a:b] for a, b in zip(cut, cut[1:])]
+    return blocks

@@ -1,5 +1,6 @@
-"""What a Dask worker does for one point: run its scene quietly in a temporary folder and
-return one row of statistics (a point that fails to integrate is a row too)."""
+"""What a Dask worker does for one point, or for the seeds of one point together: run the
+scenes quietly in a temporary folder and return one row of statistics per point (a point
+that fails to integrate is a row too)."""
 from __future__ import annotations
 
 import json
@@ -12,11 +13,13 @@ from pathlib import Path
 
 import numpy as np
 
+from ...analyses.lyapunov import MIN_LANES
 from .. import runner
 from ..scene import parse_scene
+from ..seed_lanes import run_seed_lanes, seed_family
 from .statistics import result_statistics
 
-__all__ = ["evaluate_point"]
+__all__ = ["evaluate_point", "evaluate_points"]
 
 
 def evaluate_point(raw: dict) -> dict:
@@ -25,19 +28,44 @@ def evaluate_point(raw: dict) -> dict:
     a point that fails to integrate (status 'failed' with the message)."""
     scene = parse_scene(raw, source=raw.get("name", "<point>"))
     t0 = time.perf_counter()
-    status, error, arrays = "complete", "", None
     with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
         try:
-            result = runner.run_scene(scene, td, quiet=True)
+            outcome = runner.run_scene(scene, td, quiet=True)
         except runner.RunError as exc:
-            status, error = "failed", str(exc).replace(td, "<point>")
-            try:
-                result = json.loads((Path(td) / "result.json").read_text())
-            except (OSError, ValueError):
-                result = {}
-        if (Path(td) / "arrays.npz").exists():
-            with np.load(Path(td) / "arrays.npz") as a:
-                arrays = {k: a[k] for k in a.files if k.startswith("curvature_")}
+            outcome = exc
+        return _point_outcome(outcome, Path(td), time.perf_counter() - t0)
+
+
+def evaluate_points(raws: list) -> list:
+    """`evaluate_point` of each of ``raws``; points of one seed family
+    (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
+    one kernel (the same rows, bit for bit; each point's wall time is the block's share)."""
+    scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
+    families = {seed_family(sc) for sc in scenes}
+    if len(scenes) < MIN_LANES or None in families or len(families) != 1:
+        return [evaluate_point(raw) for raw in raws]
+    t0 = time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
+        dirs = [Path(td) / f"point-{i}" for i in range(len(scenes))]
+        outcomes = run_seed_lanes(scenes, dirs)
+        share = (time.perf_counter() - t0) / len(scenes)
+        return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
+
+
+def _point_outcome(outcome, folder: Path, wall_s: float) -> dict:
+    """The row data of a point from its run's result dict or `RunError` ``outcome`` and its
+    output folder (the scene's arrays); a point with non-finite results failed."""
+    status, error, arrays = "complete", "", None
+    result = outcome
+    if isinstance(outcome, runner.RunError):
+        status, error = "failed", str(outcome).replace(str(folder), "<point>")
+        try:
+            result = json.loads((folder / "result.json").read_text())
+        except (OSError, ValueError):
+            result = {}
+    if (folder / "arrays.npz").exists():
+        with np.load(folder / "arrays.npz") as a:
+            arrays = {k: a[k] for k in a.files if k.startswith("curvature_")}
     stats = result_statistics(result, arrays)
     bad = sorted(k for k, v in stats.items() if v is not None and not math.isfinite(v))
     drift = result.get("drift", {})
@@ -49,5 +77,5 @@ def evaluate_point(raw: dict) -> dict:
                  "manifold; set [scene.integrator] project = true or a smaller dt")
     return {"status": status, "error": error, "stats": stats,
             "t_final": result.get("progress", {}).get("t_done"),
-            "wall_s": round(time.perf_counter() - t0, 3),
+            "wall_s": round(wall_s, 3),
             "worker": f"{socket.gethostname()}:{os.getpid()}"}
