@@ -59,8 +59,9 @@ PRESETS = {
 
 # ------------------------------------------------------------------------ worker tasks
 def _task_lyapunov(n, seeds, t, batches):
-    """The members ``seeds`` of N in the lanes of one kernel (each equal to
-    ``lyapunov_spectrum`` from ``random_state(seed)``), stacked along a first member axis."""
+    """The members ``seeds`` of N in the lanes of one kernel (`lyapunov_lanes`: one by one
+    below ``MIN_LANES``; each equal to ``lyapunov_spectrum`` from ``random_state(seed)``),
+    stacked along a first member axis."""
     from ..analyses.lyapunov import lyapunov_lanes, lyapunov_settings
     from ..geometry.system import RotorSystem
     s = RotorSystem(n)
@@ -115,7 +116,7 @@ def _task_waveform(n, seed, t):
 def _tasks(cfg):
     tasks = {}
     for n in NS:
-        seeds = list(range(100, 100 + cfg["lyap_members"]))     # one task: lanes of one kernel
+        seeds = list(range(100, 100 + cfg["lyap_members"]))     # one task (lyapunov_lanes)
         tasks[("lyap", n, 0)] = (_task_lyapunov, (n, seeds, cfg["lyap_t"], cfg["lyap_batches"]))
         for i in range(cfg["angle_members"]):
             a = (n, 200 + i, cfg["angle_t"], cfg["angle_transient"])
