@@ -41,10 +41,10 @@ from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
+from ..flows.ambient import adjoint_factors, adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean
-from ..solvers.rk import rk4_combine, rk4_stage_point
+from ..solvers.rk import rk4_combine, rk4_node, rk4_point
 from ..solvers.status import CAP_FRACTION, RUNNING, status_error, step_cap
 from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
                                tangent_kernel)
@@ -69,26 +69,36 @@ _SEGMENTS = 1000
 
 
 @njit(cache=True, inline="always")
-def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, minv, wts, h, n, R, d, L):
+def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, h, n, R, d, L):
     """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
     and of the adjoint flow ẇ = −Jᵀw for the R − 1 vectors after it (flat, length L = R·d),
     with the weighted sin/cos s0, c0 of the state's angles kept current by the tangent
-    kernel's angle shift (``charts.solvers.tangent.shift_sincos``; stage 0 is a shift by 0).
-    n, R, d, L unsigned (see the tangent kernel)."""
+    kernel's angle shift (``charts.solvers.tangent.shift_sincos``); the per-rotor factors
+    of the adjoint (``charts.flows.ambient.adjoint_factors``) once per stage for all vectors.
+    n, R, d, L unsigned, stage 0 outside the branch-free stage point (see the tangent
+    kernel's step)."""
     zero = np.uint64(0)
     for j in range(n):
         th[j] = Zf[j]
     for st in range(4):
-        rk4_stage_point(Zf, K, st, h, L, Zt)
         o = np.uint64(st) * L
-        for j in range(n):
-            dl[j] = Zt[j] - th[j]
-        shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
+        if st == 0:
+            for i in range(L):
+                Zt[i] = Zf[i]
+            for j in range(n):
+                s[j] = s0[j]
+                c[j] = c0[j]
+        else:
+            rk4_point(Zf, K, o - L, rk4_node(st) * h, L, Zt)
+            for j in range(n):
+                dl[j] = Zt[j] - th[j]
+            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
         lam, B = multiplier(Zt, zero, n, minv, s, c)
         iB = 1.0 / B if B > 0.0 else 0.0
         state_rate(Zt, zero, n, minv, s, lam, K, o)
+        adjoint_factors(Zt, zero, n, minv, s, c, lam, iB, fa, fb, fp)
         for r in range(np.uint64(1), R):
-            adjoint_rate(Zt, r * d, n, Zt, zero, minv, s, c, lam, iB, K, o + r * d)
+            adjoint_rate(Zt, r * d, n, minv, s, fa, fb, fp, K, o + r * d)
     rk4_combine(Zf, K, h, L, Zf)
     for j in range(n):
         dl[j] = Zf[j] - th[j]
@@ -106,8 +116,8 @@ def adjoint_step(Z, minv, a, h):
     c0 = np.empty(n)
     sincos(Z[0], 0, n, a, s0, c0)
     _adjoint_rk4(Z.reshape(L), np.empty(L), np.empty(4 * L), s0, c0, np.empty(n), np.empty(n),
-                 np.empty(n), np.empty(n), minv, a, h, np.uint64(n), np.uint64(R),
-                 np.uint64(d), np.uint64(L))
+                 np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), minv, a, h,
+                 np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L))
 
 
 @njit(cache=True)
@@ -151,6 +161,9 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     dl = np.empty(n)
     s = np.empty(n)
     c = np.empty(n)
+    fa = np.empty(n)
+    fb = np.empty(n)
+    fp = np.empty(n)
     Wr = np.empty((kk, d))
     logs = np.zeros(kk)
     nseg = ck.shape[0] - 1
@@ -169,8 +182,8 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
             hc = step_cap(ss, uu, _CAP)
             nsub = 1 if hc >= dt else int(ceil(dt / hc))
             for _ in range(nsub):
-                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, minv, wts, -dt / nsub, nu, Ru, du,
-                             Lu)
+                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt / nsub,
+                             nu, Ru, du, Lu)
             step = (seg + 1) * ck_every - jj - 1
             if step % reorth == 0:
                 orthonormalize(Wv, w, logs)
