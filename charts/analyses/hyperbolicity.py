@@ -29,7 +29,9 @@ forward kernel's step policy: near an N = 4 singular point a step is cut into eq
 sub-steps within the cap of ``charts.solvers.status``.  (With fixed backward steps the angles
 before a close approach differed from those of the covariant-vector route by up to 0.61
 relative, with the policy by 1.1e-4: tests/test_covariant.py.)  The
-forward vectors are stored only at the S sample points: S·m·2N floats.
+forward vectors are stored only at the S sample points: S·m·2N floats.  Each set of
+vectors is carried only where it is needed: V up to the window's end (then the state
+alone, same bits), W back to the window's start (the first transient is not retraced).
 """
 from __future__ import annotations
 
@@ -43,7 +45,7 @@ from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..flows.ambient import adjoint_factors, adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.checks import finite_array
-from ..geometry.projection import project_tangent_euclidean
+from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point
 from ..solvers.status import CAP_FRACTION, RUNNING, status_error, step_cap
 from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
@@ -122,34 +124,59 @@ def adjoint_step(Z, minv, a, h):
 
 @njit(cache=True)
 def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
-                    logsum, rec_start, rec_every, states, ck, a, b):
+                    logsum, rec_start, rec_every, states, ck, a, b, vec_end):
     """Forward segments a … b−1 of ``ce`` steps of the tangent kernel (restricted vectors,
-    samples recorded into ``states``), the state at each segment's end into ck[i + 1].
+    samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
+    global step ``vec_end`` the state alone (its bits do not depend on the vectors).
     Returns the kernel's status."""
     no_events = np.empty(0, dtype=np.int64)
     none = np.empty((0, 0))
+    y = Z[:1]
     for i in range(a, b):
-        status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
-                                   True, project, logsum, rec_start, rec_every, states,
-                                   no_events, none)
-        if status != RUNNING:
-            return status
+        left = ce
+        if counter[0] < vec_end:
+            k = min(ce, vec_end - counter[0])
+            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
+                                       w, True, project, logsum, rec_start, rec_every, states,
+                                       no_events, none)
+            if status != RUNNING:
+                return status
+            left -= k
+        if left > 0:
+            status, _ = tangent_kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
+                                       reorth, w, True, project, logsum, 0, 0, none, no_events,
+                                       none)
+            if status != RUNNING:
+                return status
         ck[i + 1] = Z[0]
     return RUNNING
 
 
 @njit(cache=True)
+def _adjoint_substeps(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, dt, hc, n, R, d,
+                      L):
+    """The backward step −dt as ⌈dt/hc⌉ equal `_adjoint_rk4` sub-steps (the forward kernel's
+    step policy near a singular point, ``charts.solvers.status``)."""
+    nsub = int(ceil(dt / hc))
+    for _ in range(nsub):
+        _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt / nsub, n, R,
+                     d, L)
+
+
+@njit(cache=True)
 def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, Vs, Mf, Mr,
                      w):
-    """Backward pass over all segments (last first), W re-orthonormalised at every step index
-    that is a multiple of ``reorth`` (which divides the sample steps); at sample steps store
-    Mf[k] = W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ (restricted)."""
+    """Backward pass over the segments (last first) down to step ``first_sample``, W
+    re-orthonormalised at every step index that is a multiple of ``reorth`` (which divides
+    the sample steps); at sample steps store Mf[k] = W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ
+    (restricted)."""
     d = ck.shape[1]
     n = d // 2
     kk = W.shape[0]
     Z = np.empty((1 + kk, d))
     Z[1:] = W
     Wv = Z[1:]
+    y = Z[0]
     L = (1 + kk) * d
     Zf = Z.reshape(L)
     nu, Ru, du, Lu = np.uint64(n), np.uint64(1 + kk), np.uint64(d), np.uint64(L)
@@ -164,13 +191,21 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     fa = np.empty(n)
     fb = np.empty(n)
     fp = np.empty(n)
+    ga = np.empty(d)
+    gb = np.empty(d)
     Wr = np.empty((kk, d))
     logs = np.zeros(kk)
+    junk = np.zeros(kk)
     nseg = ck.shape[0] - 1
     S = Vs.shape[0]
-    for seg in range(nseg - 1, -1, -1):
+    for seg in range(nseg - 1, first_sample // ck_every - 1, -1):
         Z[0] = ck[seg + 1]
         sincos(Zf, 0, n, wts, s0, c0)
+        step = (seg + 1) * ck_every
+        to_reorth = step % reorth or reorth  # steps to the next multiple of reorth
+        j = step - first_sample              # (> 0) and to the next sample, of index q − 1
+        q = -(-j // sample_every)
+        to_sample = j % sample_every or sample_every
         for jj in range(ck_every):
             # the forward kernel's step policy (charts.solvers.status): near an N = 4
             # singular point the step is cut into equal sub-steps within the cap
@@ -180,28 +215,38 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
                 ss += s0[i] * s0[i]
                 uu += Zf[n + i] * Zf[n + i]
             hc = step_cap(ss, uu, _CAP)
-            nsub = 1 if hc >= dt else int(ceil(dt / hc))
-            for _ in range(nsub):
-                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt / nsub,
-                             nu, Ru, du, Lu)
-            step = (seg + 1) * ck_every - jj - 1
-            if step % reorth == 0:
+            if hc >= dt:
+                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt, nu, Ru,
+                             du, Lu)
+            else:
+                _adjoint_substeps(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, dt, hc,
+                                  nu, Ru, du, Lu)
+            step -= 1
+            to_reorth -= 1
+            if to_reorth == 0:
+                to_reorth = reorth
                 orthonormalize(Wv, w, logs)
-            j = step - first_sample
-            if j >= 0 and j % sample_every == 0 and j // sample_every < S:
-                q = j // sample_every
-                Wr[:, :] = Wv
-                project_tangent_euclidean(Z[0], Wr, wts)
-                orthonormalize(Wr, w, np.zeros(kk))
-                for r in range(kk):
-                    for s_ in range(kk):
-                        af = 0.0
-                        ar = 0.0
+            to_sample -= 1
+            if to_sample == 0:
+                to_sample = sample_every
+                q -= 1
+                if q < S:
+                    for r in range(kk):
                         for i in range(d):
-                            af += Wv[r, i] * Vs[q, s_, i]
-                            ar += Wr[r, i] * Vs[q, s_, i]
-                        Mf[q, r, s_] = af
-                        Mr[q, r, s_] = ar
+                            Wr[r, i] = Wv[r, i]
+                    project_tangent_euclidean_sc(y, Wr, s0, c0, ga, gb)
+                    orthonormalize(Wr, w, junk)
+                    for r in range(kk):
+                        for s_ in range(kk):
+                            af = 0.0
+                            ar = 0.0
+                            for i in range(d):
+                                af += Wv[r, i] * Vs[q, s_, i]
+                                ar += Wr[r, i] * Vs[q, s_, i]
+                            Mf[q, r, s_] = af
+                            Mr[q, r, s_] = ar
+            if step == first_sample:
+                return logs
     return logs
 
 
@@ -210,8 +255,9 @@ class AngleResult(Archivable):
     """Angles φ (rad) between E_u and E_cs at the S sample points.
 
     t : (S,) sample times; phi_full, phi_restricted : (S,) the two variants;
-    forward_exponents, adjoint_exponents : (m,) growth rates seen by V and (backward) W,
-    a check that both passes converged to the expanding subspaces.
+    forward_exponents, adjoint_exponents : (m,) growth rates seen by V over [0, t_transient +
+    t_final] and (backward) by W over [t_transient, end], the spans where each is carried: a
+    check that both passes converged to the expanding subspaces.
     """
     t: np.ndarray
     phi_full: np.ndarray
@@ -343,7 +389,8 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         b = min(nseg, a + _SEGMENTS)
         status = _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
                                  system.weights, system.level, flow.speed, dt, ce, reorth,
-                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b)
+                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b,
+                                 n_tr + n_win)
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
         rep.update((b - a) * ce * dt)
@@ -355,14 +402,13 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     blog = _backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample, reorth, Vs, Mf, Mr, flow.w)
     rep.update(nsteps * dt)
     rep.close()
-    T = nsteps * dt
     t = (n_tr + np.arange(S) * sample) * dt
     params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
                   level=system.level, dt=dt, m=m, t_final=n_win * dt,
                   t_transient=n_tr * dt, sample_every=sample * dt, speed=flow.speed,
                   checkpoint_every=ce * dt, project_every=project * dt or None, seed=seed)
-    return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flow.logsum / T, blog / T,
-                       params)
+    return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flow.logsum / ((n_tr + n_win) * dt),
+                       blog / ((nsteps - n_tr) * dt), params)
 
 
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
