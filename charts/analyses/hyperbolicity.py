@@ -36,7 +36,7 @@ alone, same bits), W back to the window's start (the first transient is not retr
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import ceil
+from math import ceil, isfinite
 
 import numpy as np
 from numba import njit
@@ -47,9 +47,10 @@ from ..flows.ambient import adjoint_factors, adjoint_rate, multiplier, sincos, s
 from ..geometry.checks import finite_array
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point
-from ..solvers.status import CAP_FRACTION, RUNNING, status_error, step_cap
-from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
-                               tangent_kernel)
+from ..solvers.status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S,
+                              status_error, step_cap)
+from ..solvers.tangent import (TangentFlow, orthonormal_rows, orthonormalize, reorth_steps,
+                               shift_sincos, tangent_kernel)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
@@ -165,11 +166,12 @@ def _adjoint_substeps(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, dt
 
 @njit(cache=True)
 def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, Vs, Mf, Mr,
-                     w):
+                     w, logs):
     """Backward pass over the segments (last first) down to step ``first_sample``, W
     re-orthonormalised at every step index that is a multiple of ``reorth`` (which divides
-    the sample steps); at sample steps store Mf[k] = W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ
-    (restricted)."""
+    the sample steps, logs of the norms added to ``logs``); at sample steps store Mf[k] =
+    W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ (restricted).  Returns (status, step): RUNNING,
+    or NONFINITE / SINGULAR (the forward kernel's tests) at that step."""
     d = ck.shape[1]
     n = d // 2
     kk = W.shape[0]
@@ -194,8 +196,6 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
     ga = np.empty(d)
     gb = np.empty(d)
     Wr = np.empty((kk, d))
-    logs = np.zeros(kk)
-    junk = np.zeros(kk)
     nseg = ck.shape[0] - 1
     S = Vs.shape[0]
     for seg in range(nseg - 1, first_sample // ck_every - 1, -1):
@@ -214,8 +214,14 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
             for i in range(n):
                 ss += s0[i] * s0[i]
                 uu += Zf[n + i] * Zf[n + i]
+            # (the two exits, never taken after a forward pass that passed, also keep the
+            # loop fast: without them Numba's code for this loop is twice as slow, measured)
+            if not isfinite(ss + uu):
+                return NONFINITE, step
             hc = step_cap(ss, uu, _CAP)
             if hc >= dt:
+                if ss < SINGULAR_S:
+                    return SINGULAR, step
                 _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt, nu, Ru,
                              du, Lu)
             else:
@@ -235,7 +241,7 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
                         for i in range(d):
                             Wr[r, i] = Wv[r, i]
                     project_tangent_euclidean_sc(y, Wr, s0, c0, ga, gb)
-                    orthonormalize(Wr, w, junk)
+                    orthonormal_rows(Wr, w)
                     for r in range(kk):
                         for s_ in range(kk):
                             af = 0.0
@@ -246,8 +252,8 @@ def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every,
                             Mf[q, r, s_] = af
                             Mr[q, r, s_] = ar
             if step == first_sample:
-                return logs
-    return logs
+                return RUNNING, step
+    return RUNNING, first_sample
 
 
 @dataclass
@@ -399,7 +405,11 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     orthonormalize(W, flow.w, np.zeros(m))
     Mf = np.empty((S, m, m))
     Mr = np.empty((S, m, m))
-    blog = _backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample, reorth, Vs, Mf, Mr, flow.w)
+    blog = np.zeros(m)
+    status, step = _backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample,
+                                    reorth, Vs, Mf, Mr, flow.w, blog)
+    if status != RUNNING:
+        raise status_error(status, step * dt, "hyperbolicity_angles (backward RK4)")
     rep.update(nsteps * dt)
     rep.close()
     t = (n_tr + np.arange(S) * sample) * dt
