@@ -1,15 +1,18 @@
 """The compiled pieces of the analyses against independent routes: the smallest singular
 value (one-sided Jacobi) against LAPACK, the backward step of the angle test (sin/cos shifted
 between stages) against a plain RK4 of the wrappers, route (b) over many samples against the
-Gauss equation point by point, and the covariant vectors' compiled forward pass stopping at
-the N = 4 singular point like every route."""
+Gauss equation point by point, the backward pass stopping at a non-finite state, and the
+covariant vectors' compiled forward pass stopping at the N = 4 singular point like every
+route."""
 import numpy as np
 import pytest
 
 import charts
 from charts.analyses.curvature import exact_curvatures
+from charts.analyses.adjoint_pass import backward_kernel
 from charts.analyses.hyperbolicity import adjoint_step, smallest_singular_values
 from charts.flows.ambient import adjoint_rhs, flow_rhs
+from charts.solvers.status import NONFINITE
 from charts.geometry.structured import gauss_frame_curvature
 
 
@@ -60,6 +63,21 @@ def test_adjoint_step_equals_plain_rk4(h):
     Z = np.vstack([np.concatenate([th, u]), W])
     adjoint_step(Z, s.minv, s.weights, h)
     assert np.abs(Z - ref).max() <= 1e-13 * np.abs(ref).max()
+
+
+def test_backward_pass_stops_at_a_nonfinite_state_like_the_forward_kernel():
+    """The backward pass takes the forward kernel's exits: a non-finite checkpoint gives
+    NONFINITE at the step where the pass meets it (never the angles of a NaN state)."""
+    s = charts.RotorSystem(5)
+    th, u = s.random_state(seed=3)
+    ck = np.tile(np.concatenate([th, u]), (4, 1))
+    ck[3, 0] = np.nan                  # the state the pass starts from (segment 2's end)
+    W = np.linalg.qr(np.random.default_rng(0).normal(size=(10, 3)))[0].T.copy()
+    Vs = np.zeros((2, 3, 10))
+    M = np.zeros((2, 3, 3))
+    status, step = backward_kernel(ck, W, s.minv, s.weights, 0.01, 10, 5, 5, 5, Vs, M,
+                                   M.copy(), np.ones(10), np.zeros(3))
+    assert (status, step) == (NONFINITE, 30)
 
 
 @pytest.mark.parametrize("n", [3, 5])
