@@ -1,7 +1,7 @@
 """The backward pass of the angle test (section 4, ``charts.analyses.hyperbolicity``): eq (8)
 integrated backward from each trajectory checkpoint jointly with m adjoint vectors
 (ẇ = −J(x(t))ᵀ w), by RK4 with the forward kernel's step policy, and at the sample points
-the matrices whose smallest singular values are the sines of the angles."""
+the sines of the angles (the smallest singular values of W Vᵀ)."""
 from __future__ import annotations
 
 from math import ceil, isfinite
@@ -14,6 +14,7 @@ from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point
 from ..solvers.status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, step_cap
 from ..solvers.tangent import orthonormal_rows, orthonormalize, shift_sincos
+from .singular_values import smallest_singular_values
 
 __all__ = ["adjoint_step", "backward_kernel"]
 
@@ -84,13 +85,15 @@ def _adjoint_substeps(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, dt
 
 
 @njit(cache=True)
-def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, Vs, Mf, Mr,
-                     w, logs):
+def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, V, w,
+                    logs, sf, sr):
     """Backward pass over the segments (last first) down to step ``first_sample``, W
     re-orthonormalised at every step index that is a multiple of ``reorth`` (which divides
-    the sample steps, logs of the norms added to ``logs``); at sample steps store Mf[k] =
-    W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ (restricted).  Returns (status, step): RUNNING,
-    or NONFINITE / SINGULAR (the forward kernel's tests) at that step."""
+    the sample steps, logs of the norms added to ``logs``); at the k-th sample step the
+    smallest singular values of W V_kᵀ into sf[k] (full) and of W_r V_kᵀ into sr[k]
+    (restricted), V_k the m forward vectors after the state in V[k] (the forward pass's
+    records, shape (S, (1 + m)·2N)).  Returns (status, step): RUNNING, or NONFINITE /
+    SINGULAR (the forward kernel's tests) at that step."""
     d = ck.shape[1]
     n = d // 2
     kk = W.shape[0]
@@ -114,9 +117,11 @@ def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, 
     fp = np.empty(n)
     ga = np.empty(d)
     gb = np.empty(d)
+    M = np.empty((2, kk, kk))
+    sv = np.empty(2)
     Wr = np.empty((kk, d))
     nseg = ck.shape[0] - 1
-    S = Vs.shape[0]
+    S = V.shape[0]
     for seg in range(nseg - 1, first_sample // ck_every - 1, -1):
         Z[0] = ck[seg + 1]
         sincos(Zf, 0, n, wts, s0, c0)
@@ -166,10 +171,13 @@ def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, 
                             af = 0.0
                             ar = 0.0
                             for i in range(d):
-                                af += Wv[r, i] * Vs[q, s_, i]
-                                ar += Wr[r, i] * Vs[q, s_, i]
-                            Mf[q, r, s_] = af
-                            Mr[q, r, s_] = ar
+                                af += Wv[r, i] * V[q, d + s_ * d + i]
+                                ar += Wr[r, i] * V[q, d + s_ * d + i]
+                            M[0, r, s_] = af
+                            M[1, r, s_] = ar
+                    smallest_singular_values(M, sv)
+                    sf[q] = sv[0]
+                    sr[q] = sv[1]
             if step == first_sample:
                 return RUNNING, step
     return RUNNING, first_sample

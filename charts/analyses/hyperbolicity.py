@@ -161,9 +161,7 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     return out
 
 
-def _sin_to_angle(M):
-    sv = np.empty(M.shape[0])
-    smallest_singular_values(M, sv)
+def _sin_to_angle(sv):
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
@@ -238,14 +236,13 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
         rep.update((b - a) * ce * dt)
-    Vs = np.ascontiguousarray(states[:, 2 * n:].reshape(S, m, 2 * n))
     W = np.random.default_rng([seed, 1]).normal(size=(m, 2 * n))
     orthonormalize(W, flow.w, np.zeros(m))
-    Mf = np.empty((S, m, m))
-    Mr = np.empty((S, m, m))
+    sf = np.empty(S)
+    sr = np.empty(S)
     blog = np.zeros(m)
     status, step = backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample,
-                                    reorth, Vs, Mf, Mr, flow.w, blog)
+                                   reorth, states, flow.w, blog, sf, sr)
     if status != RUNNING:
         raise status_error(status, step * dt, "hyperbolicity_angles (backward RK4)")
     rep.update(nsteps * dt)
@@ -255,7 +252,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
                   level=system.level, dt=dt, m=m, t_final=n_win * dt,
                   t_transient=n_tr * dt, sample_every=sample * dt, speed=flow.speed,
                   checkpoint_every=ce * dt, project_every=project * dt or None, seed=seed)
-    return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flow.logsum / ((n_tr + n_win) * dt),
+    return AngleResult(t, _sin_to_angle(sf), _sin_to_angle(sr), flow.logsum / ((n_tr + n_win) * dt),
                        blog / ((nsteps - n_tr) * dt), params)
 
 
