@@ -6,8 +6,10 @@ smallest angle between two subspaces given by orthonormal bases (the angle tests
 root of the characteristic polynomial λ³ − tλ² + c₂λ − det² of MᵀM, whose coefficients
 come from M directly (t = ‖M‖²_F, c₂ = ‖adj M‖²_F, det M), found by Newton's method from
 0 (monotone: the cubic is increasing and concave below its smallest root).  Where the
-rounding bound of that root exceeds `CLOSED_TOL`·σ_max (nearly equal smallest singular
-values, a badly conditioned det) the matrix goes to the Jacobi rotations below."""
+rounding bound of that root exceeds `CLOSED_TOL`·σ_max (close smallest singular values, a
+badly conditioned det) it is refined by the Rayleigh quotient ‖Mx‖/‖x‖ of its eigenvector x
+of MᵀM, and where even that is ill-determined (nearly equal smallest singular values) the
+matrix goes to the Jacobi rotations below."""
 from __future__ import annotations
 
 from math import copysign, sqrt
@@ -19,8 +21,11 @@ __all__ = ["smallest_singular_values"]
 
 #: the unit roundoff of float64: rows count as orthogonal below c·_EPS·|a||b|.
 _EPS = 2.0 ** -52
-#: largest rounding bound of the closed 3 × 3 route, relative to σ_max, that is accepted.
+#: largest rounding bound of the closed 3 × 3 route, relative to σ_max, that is accepted;
+#: beyond it the root is refined by a Rayleigh quotient (`_rayleigh_3x3`).
 CLOSED_TOL = 4e-15
+#: smallest sin² of the angle between two rows of MᵀM − λI that the refinement accepts.
+RAYLEIGH_MIN = 1e-6
 
 
 @njit(cache=True, inline="always")
@@ -69,8 +74,47 @@ def _smallest_3x3(M, q):
     err = (2.0 * abs(det) * edet + 8.0 * _EPS * (lam * (lam * (lam + t) + c2) + D)) / dp
     sig = sqrt(lam)
     if err > 2.0 * sig * CLOSED_TOL * sqrt(t) and err > (CLOSED_TOL * CLOSED_TOL) * t:
-        return -1.0
+        return _rayleigh_3x3(a, b, c, d, e, f, g, h, i, lam)
     return sig
+
+
+@njit(cache=True, inline="always")
+def _rayleigh_3x3(a, b, c, d, e, f, g, h, i, lam):
+    """σ_min of M = [[a, b, c], [d, e, f], [g, h, i]] as ‖Mx‖/‖x‖, x the eigenvector of MᵀM
+    for its approximate smallest eigenvalue lam (the cross product of two rows of MᵀM − lam·I):
+    the Rayleigh quotient's error is second order in x's, i.e. in lam's error over the gap
+    to the next eigenvalue; −1 (Jacobi) where those rows are nearly parallel (nearly equal
+    smallest singular values)."""
+    g00 = a * a + d * d + g * g - lam
+    g11 = b * b + e * e + h * h - lam
+    g22 = c * c + f * f + i * i - lam
+    g01 = a * b + d * e + g * h
+    g02 = a * c + d * f + g * i
+    g12 = b * c + e * f + h * i
+    best = -1.0
+    x0 = x1 = x2 = 0.0
+    for k in range(3):        # the cross products r0 × r1, r0 × r2, r1 × r2 of the rows
+        if k == 0:
+            p0, p1, p2, q0, q1, q2 = g00, g01, g02, g01, g11, g12
+        elif k == 1:
+            p0, p1, p2, q0, q1, q2 = g00, g01, g02, g02, g12, g22
+        else:
+            p0, p1, p2, q0, q1, q2 = g01, g11, g12, g02, g12, g22
+        y0 = p1 * q2 - p2 * q1
+        y1 = p2 * q0 - p0 * q2
+        y2 = p0 * q1 - p1 * q0
+        yy = y0 * y0 + y1 * y1 + y2 * y2
+        # sin² of the angle between the two rows
+        rel = yy / ((p0 * p0 + p1 * p1 + p2 * p2) * (q0 * q0 + q1 * q1 + q2 * q2) + 1e-300)
+        if rel > best:
+            best = rel
+            x0, x1, x2 = y0, y1, y2
+    if not best > RAYLEIGH_MIN:
+        return -1.0
+    m0 = a * x0 + b * x1 + c * x2
+    m1 = d * x0 + e * x1 + f * x2
+    m2 = g * x0 + h * x1 + i * x2
+    return sqrt((m0 * m0 + m1 * m1 + m2 * m2) / (x0 * x0 + x1 * x1 + x2 * x2))
 
 
 @njit(cache=True)
