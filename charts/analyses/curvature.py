@@ -132,13 +132,15 @@ def curvature_frame(y, X, minv, wts, m, Xj, P):
 @njit(cache=True, inline="always")
 def _frame_rates(zt, n, k, kp, minv, s, c, f, g, p, q, K, o):
     """The rates of eq (8), eq (17) for the k vectors and eq (19) for the kp frame vectors of
-    the packed state zt = [y; X; P] into K[o:], s, c = a sin θ, a cos θ of its angles."""
-    d = 2 * n
+    the packed state zt = [y; X; P] into K[o:], s, c = a sin θ, a cos θ of its angles.
+    n, k, kp, o unsigned (no negative-index wraparound: see the tangent kernel's step)."""
+    zero = np.uint64(0)
+    d = n + n
     oP = d + k * d
-    lam, B = multiplier(zt, 0, n, minv, s, c)
+    lam, B = multiplier(zt, zero, n, minv, s, c)
     iB = 1.0 / B if B > 0.0 else 0.0
-    state_rate(zt, 0, n, minv, s, lam, K, o)
-    tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)
+    state_rate(zt, zero, n, minv, s, lam, K, o)
+    tangent_factors(zt, zero, n, minv, s, c, lam, f, g, p, q)
     for r in range(k):
         tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)
     for r in range(kp):
@@ -177,19 +179,20 @@ def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K, work=None):
         for i in range(n):
             z[oP + r * n + i] = P[r, i]
     sincos(z, 0, n, wts, s0, c0)
-    _frame_rates(z, n, k, kp, minv, s0, c0, f, g, p, q, Kst, 0)   # stage 0, shared
+    nu, ku, kpu, Lu = np.uint64(n), np.uint64(k), np.uint64(kp), np.uint64(L)
+    _frame_rates(z, nu, ku, kpu, minv, s0, c0, f, g, p, q, Kst, np.uint64(0))  # stage 0, shared
     cs[:, :] = 0.0
     for sign in (1.0, -1.0):
         h = sign * dt
         for st in range(1, 4):
             a = rk4_node(st) * h
-            op = (st - 1) * L
-            rk4_point(z, Kst, op, a, L, zt)
-            for j in range(n):
+            op = np.uint64(st - 1) * Lu
+            rk4_point(z, Kst, op, a, Lu, zt)
+            for j in range(nu):
                 dl[j] = a * Kst[op + j]
-            shift_sincos(s0, c0, dl, zt, n, wts, s, c)
-            _frame_rates(zt, n, k, kp, minv, s, c, f, g, p, q, Kst, st * L)
-        rk4_combine(z, Kst, h, L, z2)
+            shift_sincos(s0, c0, dl, zt, nu, wts, s, c)
+            _frame_rates(zt, nu, ku, kpu, minv, s, c, f, g, p, q, Kst, op + Lu)
+        rk4_combine(z, Kst, h, Lu, z2)
         for i in range(k):
             for j in range(k):
                 acc = 0.0
