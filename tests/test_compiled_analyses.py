@@ -1,15 +1,18 @@
 """The compiled pieces of the analyses against independent routes: the smallest singular
-value (one-sided Jacobi) against LAPACK, the backward step of the angle test (sin/cos shifted
+value (closed 3 × 3 route, one-sided Jacobi) against LAPACK, the backward step of the angle test (sin/cos shifted
 between stages) against a plain RK4 of the wrappers, route (b) over many samples against the
-Gauss equation point by point, and the covariant vectors' compiled forward pass stopping at
-the N = 4 singular point like every route."""
+Gauss equation point by point, the backward pass stopping at a non-finite state, and the
+covariant vectors' compiled forward pass stopping at the N = 4 singular point like every
+route."""
 import numpy as np
 import pytest
 
 import charts
 from charts.analyses.curvature import exact_curvatures
+from charts.analyses.adjoint_pass import backward_kernel
 from charts.analyses.hyperbolicity import adjoint_step, smallest_singular_values
 from charts.flows.ambient import adjoint_rhs, flow_rhs
+from charts.solvers.status import NONFINITE
 from charts.geometry.structured import gauss_frame_curvature
 
 
@@ -18,6 +21,24 @@ def test_smallest_singular_value_equals_lapack(shape):
     """Absolute difference ≤ 1e-14·σ_max: LAPACK's own error is ~ε·σ_max (measured ≤ 4e-15)."""
     M = np.random.default_rng(1).normal(size=shape)
     out = np.empty(shape[0])
+    smallest_singular_values(M, out)
+    sv = np.linalg.svd(M, compute_uv=False)
+    assert np.all(np.abs(out - sv[:, -1]) <= 1e-14 * sv[:, 0])
+
+
+def test_smallest_singular_value_of_3x3_with_close_smallest_pair_equals_lapack():
+    """The closed 3 × 3 route where its root is ill-conditioned (σ₂/σ₃ − 1 from 1e-12 to 1,
+    σ₃ from 1e-6 to 0.3, scaled by 1e±3): the Rayleigh refinement or the Jacobi rotations
+    keep the error ≤ 1e-14·σ_max (measured ≤ 3e-16)."""
+    rng = np.random.default_rng(7)
+    M = np.empty((2000, 3, 3))
+    for q in range(M.shape[0]):
+        U = np.linalg.qr(rng.normal(size=(3, 3)))[0]
+        V = np.linalg.qr(rng.normal(size=(3, 3)))[0]
+        s3 = 10 ** rng.uniform(-6, -0.5)
+        sig = [rng.uniform(0.5, 1.0), s3 * (1 + 10 ** rng.uniform(-12, 0)), s3]
+        M[q] = U @ np.diag(sig) @ V.T * 10 ** rng.uniform(-3, 3)
+    out = np.empty(M.shape[0])
     smallest_singular_values(M, out)
     sv = np.linalg.svd(M, compute_uv=False)
     assert np.all(np.abs(out - sv[:, -1]) <= 1e-14 * sv[:, 0])
@@ -60,6 +81,20 @@ def test_adjoint_step_equals_plain_rk4(h):
     Z = np.vstack([np.concatenate([th, u]), W])
     adjoint_step(Z, s.minv, s.weights, h)
     assert np.abs(Z - ref).max() <= 1e-13 * np.abs(ref).max()
+
+
+def test_backward_pass_stops_at_a_nonfinite_state_like_the_forward_kernel():
+    """The backward pass takes the forward kernel's exits: a non-finite checkpoint gives
+    NONFINITE at the step where the pass meets it (never the angles of a NaN state)."""
+    s = charts.RotorSystem(5)
+    th, u = s.random_state(seed=3)
+    ck = np.tile(np.concatenate([th, u]), (4, 1))
+    ck[3, 0] = np.nan                  # the state the pass starts from (segment 2's end)
+    W = np.linalg.qr(np.random.default_rng(0).normal(size=(10, 3)))[0].T.copy()
+    V = np.zeros((2, 40))
+    status, step = backward_kernel(ck, W, s.minv, s.weights, 0.01, 10, 5, 5, 5, V, np.ones(10),
+                                   np.zeros(3), np.empty(2), np.empty(2))
+    assert (status, step) == (NONFINITE, 30)
 
 
 @pytest.mark.parametrize("n", [3, 5])

@@ -34,13 +34,14 @@ from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import (flow_rhs, state_stage, tangent_factors, tangent_rate,
-                             transport_rate)
+from ..flows.ambient import (flow_rhs, multiplier, sincos, state_rate, state_stage,
+                             tangent_factors, tangent_rate, transport_rate)
 from ..geometry.checks import finite_array
 from ..geometry.system import TOL
-from ..solvers.rk import rk4_combine, rk4_stage_point
+from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
+from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
+                               tangent_kernel)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
@@ -128,32 +129,75 @@ def curvature_frame(y, X, minv, wts, m, Xj, P):
     return uu
 
 
+@njit(cache=True, inline="always")
+def _frame_rates(zt, n, k, kp, minv, s, c, f, g, p, q, K, o):
+    """The rates of eq (8), eq (17) for the k vectors and eq (19) for the kp frame vectors of
+    the packed state zt = [y; X; P] into K[o:], s, c = a sin θ, a cos θ of its angles.
+    n, k, kp, o unsigned (no negative-index wraparound: see the tangent kernel's step)."""
+    zero = np.uint64(0)
+    d = n + n
+    oP = d + k * d
+    lam, B = multiplier(zt, zero, n, minv, s, c)
+    iB = 1.0 / B if B > 0.0 else 0.0
+    state_rate(zt, zero, n, minv, s, lam, K, o)
+    tangent_factors(zt, zero, n, minv, s, c, lam, f, g, p, q)
+    for r in range(k):
+        tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)
+    for r in range(kp):
+        transport_rate(zt, oP + r * n, n, zt, 0, f, c, iB, K, o + oP + r * n)
+
+
 @njit(cache=True)
 def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K, work=None):
     """Route (a), eqs (20)–(21) with the minus sign: K[i, j] from one RK4 step of ±dt of
-    the trajectory, the Jacobi fields Xj and the frame P (`curvature_frame`); ``work`` from
-    `curvature_work` (allocated when not given)."""
+    the trajectory, the Jacobi fields Xj and the frame P (`curvature_frame`): the steps of
+    `frame_step`, sharing their first stage, with the sin/cos of the later stages shifted
+    from those at y (``charts.solvers.tangent.shift_sincos``, as in the tangent kernel)
+    instead of libm.  ``work`` from `curvature_work` (allocated when not given)."""
     n = y.size // 2
+    d = 2 * n
     k = Xj.shape[0]
+    kp = P.shape[0]
     if work is None:
         work = curvature_work(n, k)
-    nf = work.size - (2 * n + k * 2 * n + (k + 1) * n + k * k)
-    y2 = work[nf:nf + 2 * n]
-    X2 = work[nf + 2 * n:nf + 2 * n + k * 2 * n].reshape((k, 2 * n))
-    o = nf + 2 * n + k * 2 * n
-    P2 = work[o:o + (k + 1) * n].reshape((k + 1, n))
-    cs = work[o + (k + 1) * n:].reshape((k, k))
+    oP = d + k * d
+    L = oP + kp * n
+    z = work[:L]
+    zt = work[L:2 * L]
+    z2 = work[2 * L:3 * L]
+    Kst = work[3 * L:7 * L]
+    w = work[7 * L:7 * L + 10 * n]
+    s0, c0, s, c, f = w[:n], w[n:2 * n], w[2 * n:3 * n], w[3 * n:4 * n], w[4 * n:5 * n]
+    g, p, q, dl = w[5 * n:6 * n], w[6 * n:7 * n], w[7 * n:8 * n], w[8 * n:9 * n]
+    cs = work[7 * L + 10 * n:7 * L + 10 * n + k * k].reshape((k, k))
+    for i in range(d):
+        z[i] = y[i]
+    for r in range(k):
+        for i in range(d):
+            z[d + r * d + i] = Xj[r, i]
+    for r in range(kp):
+        for i in range(n):
+            z[oP + r * n + i] = P[r, i]
+    sincos(z, 0, n, wts, s0, c0)
+    nu, ku, kpu, Lu = np.uint64(n), np.uint64(k), np.uint64(kp), np.uint64(L)
+    _frame_rates(z, nu, ku, kpu, minv, s0, c0, f, g, p, q, Kst, np.uint64(0))  # stage 0, shared
     cs[:, :] = 0.0
     for sign in (1.0, -1.0):
-        y2[:] = y
-        X2[:, :] = Xj
-        P2[:, :] = P
-        frame_step(y2, X2, P2, minv, wts, sign * dt, work[:nf])
+        h = sign * dt
+        for st in range(1, 4):
+            a = rk4_node(st) * h
+            op = np.uint64(st - 1) * Lu
+            rk4_point(z, Kst, op, a, Lu, zt)
+            for j in range(nu):
+                dl[j] = a * Kst[op + j]
+            shift_sincos(s0, c0, dl, zt, nu, wts, s, c)
+            _frame_rates(zt, nu, ku, kpu, minv, s, c, f, g, p, q, Kst, op + Lu)
+        rk4_combine(z, Kst, h, Lu, z2)
         for i in range(k):
             for j in range(k):
                 acc = 0.0
-                for q in range(n):
-                    acc += m[q] * X2[j, q] * P2[i + 1, q]
+                for r in range(n):
+                    acc += m[r] * z2[d + j * d + r] * z2[oP + (i + 1) * n + r]
                 cs[i, j] += acc
     for i in range(k):
         for j in range(k):
@@ -163,36 +207,45 @@ def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K, work=None):
 @njit(cache=True)
 def curvature_work(n, k):
     """Work array of `numerical_curvature` for N = n and k Jacobi fields."""
-    return np.empty(6 * (2 * n + k * 2 * n + (k + 1) * n) + 6 * n
-                    + 2 * n + k * 2 * n + (k + 1) * n + k * k)
+    return np.empty(7 * (2 * n + k * 2 * n + (k + 1) * n) + 10 * n + k * k)
+
+
+#: samples advanced per tangent-kernel call by `_sample_curvature` (their states buffered).
+_BLOCK = 64
 
 
 @njit(cache=True)
 def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth, w,
                       project_every, Ka, Ys, Ps):
-    """Advance the tangent flow Z = [y; X] ``sample_steps`` steps at a time (re-orthonormalised
-    every ``reorth`` steps, a divisor of ``sample_steps``) and at each sample store y, the
-    frame and the route-(a) matrix.
-    Returns (status, samples done)."""
+    """Advance the tangent flow Z = [y; X] ``sample_steps`` steps per sample (re-orthonormalised
+    every ``reorth`` steps, a divisor of ``sample_steps``), `_BLOCK` samples per kernel call
+    with their states recorded, and at each sample store y, the frame and the route-(a)
+    matrix.  Returns (status, samples done)."""
     n = Z.shape[1] // 2
     k = Z.shape[0] - 1
     logs = np.zeros(k)
-    none = np.empty((0, 0))
     no_events = np.empty(0, dtype=np.int64)
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     work = curvature_work(n, k)
-    for smp in range(Ka.shape[0]):
-        status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth,
-                                      w, True, project_every, logs, 0, 0, none, no_events, none)
+    S = Ka.shape[0]
+    buf = np.empty((min(S, _BLOCK), Z.size))
+    for a in range(0, S, _BLOCK):
+        nb = min(_BLOCK, S - a)
+        status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt,
+                                      nb * sample_steps, reorth, w, True, project_every, logs,
+                                      counter[0] + sample_steps, sample_steps, buf, no_events,
+                                      buf)
         if status != RUNNING:
-            return status, smp
-        y = Z[0]
-        uu = curvature_frame(y, Z[1:], minv, wts, m, Xj, P)
-        Ys[smp] = y
-        Ps[smp] = P
-        numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[smp], work)
-    return RUNNING, Ka.shape[0]
+            return status, a
+        for b in range(nb):
+            zb = buf[b].reshape((k + 1, 2 * n))
+            y = zb[0]
+            uu = curvature_frame(y, zb[1:], minv, wts, m, Xj, P)
+            Ys[a + b] = y
+            Ps[a + b] = P
+            numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[a + b], work)
+    return RUNNING, S
 
 
 @dataclass

@@ -23,31 +23,28 @@ Two variants are computed from the same V and W:
   T_r is the projection of the complement of E_cs), V lies in T_r already.
 
 Memory: the trajectory is kept only as checkpoints every ``checkpoint_every``; the backward
-pass restarts each segment from its checkpoint and integrates eq (8) backward jointly with
+pass (``charts.analyses.adjoint_pass``) restarts each segment from its checkpoint and integrates eq (8) backward jointly with
 the adjoint (over one segment the backward RK4 retraces the forward one to ~1e-13), with the
 forward kernel's step policy: near an N = 4 singular point a step is cut into equal
 sub-steps within the cap of ``charts.solvers.status``.  (With fixed backward steps the angles
 before a close approach differed from those of the covariant-vector route by up to 0.61
 relative, with the policy by 1.1e-4: tests/test_covariant.py.)  The
-forward vectors are stored only at the S sample points: S·m·2N floats.
+forward vectors are stored only at the S sample points: S·m·2N floats.  Each set of
+vectors is carried only where it is needed: V up to the window's end (then the state
+alone, same bits), W back to the window's start (the first transient is not retraced).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import ceil
-
 import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.checks import finite_array
-from ..geometry.projection import project_tangent_euclidean
-from ..solvers.rk import rk4_combine, rk4_stage_point
-from ..solvers.status import CAP_FRACTION, RUNNING, status_error, step_cap
-from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
-                               tangent_kernel)
+from ..solvers.status import RUNNING, status_error
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
+from .adjoint_pass import adjoint_step, backward_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension)
 from .ensemble import EnsembleResult, run_ensemble
@@ -61,135 +58,40 @@ __all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "ang
 SMALL_ANGLE = 0.05
 #: the fields of `small_value_law` that `angle_statistics` reports as ``law_<field>``.
 LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
-_CAP = CAP_FRACTION["rk4"]
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
 #: forward segments per compiled call (the progress is reported between calls).
 _SEGMENTS = 1000
 
 
-@njit(cache=True, inline="always")
-def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, minv, wts, h, n, R, d, L):
-    """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
-    and of the adjoint flow ẇ = −Jᵀw for the R − 1 vectors after it (flat, length L = R·d),
-    with the weighted sin/cos s0, c0 of the state's angles kept current by the tangent
-    kernel's angle shift (``charts.solvers.tangent.shift_sincos``; stage 0 is a shift by 0).
-    n, R, d, L unsigned (see the tangent kernel)."""
-    zero = np.uint64(0)
-    for j in range(n):
-        th[j] = Zf[j]
-    for st in range(4):
-        rk4_stage_point(Zf, K, st, h, L, Zt)
-        o = np.uint64(st) * L
-        for j in range(n):
-            dl[j] = Zt[j] - th[j]
-        shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
-        lam, B = multiplier(Zt, zero, n, minv, s, c)
-        iB = 1.0 / B if B > 0.0 else 0.0
-        state_rate(Zt, zero, n, minv, s, lam, K, o)
-        for r in range(np.uint64(1), R):
-            adjoint_rate(Zt, r * d, n, Zt, zero, minv, s, c, lam, iB, K, o + r * d)
-    rk4_combine(Zf, K, h, L, Zf)
-    for j in range(n):
-        dl[j] = Zf[j] - th[j]
-    shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
-
-
-@njit(cache=True)
-def adjoint_step(Z, minv, a, h):
-    """One RK4 step of size h (h < 0: backward), in place, of eq (8) for Z[0] and of the
-    adjoint flow ẇ = −Jᵀw for the rows Z[1:] (weights a), as in the backward pass."""
-    R, d = Z.shape
-    n = d // 2
-    L = R * d
-    s0 = np.empty(n)
-    c0 = np.empty(n)
-    sincos(Z[0], 0, n, a, s0, c0)
-    _adjoint_rk4(Z.reshape(L), np.empty(L), np.empty(4 * L), s0, c0, np.empty(n), np.empty(n),
-                 np.empty(n), np.empty(n), minv, a, h, np.uint64(n), np.uint64(R),
-                 np.uint64(d), np.uint64(L))
-
-
 @njit(cache=True)
 def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
-                    logsum, rec_start, rec_every, states, ck, a, b):
+                    logsum, rec_start, rec_every, states, ck, a, b, vec_end):
     """Forward segments a … b−1 of ``ce`` steps of the tangent kernel (restricted vectors,
-    samples recorded into ``states``), the state at each segment's end into ck[i + 1].
+    samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
+    global step ``vec_end`` the state alone (its bits do not depend on the vectors).
     Returns the kernel's status."""
     no_events = np.empty(0, dtype=np.int64)
     none = np.empty((0, 0))
+    y = Z[:1]
     for i in range(a, b):
-        status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
-                                   True, project, logsum, rec_start, rec_every, states,
-                                   no_events, none)
-        if status != RUNNING:
-            return status
+        left = ce
+        if counter[0] < vec_end:
+            k = min(ce, vec_end - counter[0])
+            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
+                                       w, True, project, logsum, rec_start, rec_every, states,
+                                       no_events, none)
+            if status != RUNNING:
+                return status
+            left -= k
+        if left > 0:
+            status, _ = tangent_kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
+                                       reorth, w, True, project, logsum, 0, 0, none, no_events,
+                                       none)
+            if status != RUNNING:
+                return status
         ck[i + 1] = Z[0]
     return RUNNING
-
-
-@njit(cache=True)
-def _backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, Vs, Mf, Mr,
-                     w):
-    """Backward pass over all segments (last first), W re-orthonormalised at every step index
-    that is a multiple of ``reorth`` (which divides the sample steps); at sample steps store
-    Mf[k] = W Vs[k]ᵀ (full) and Mr[k] = W_r Vs[k]ᵀ (restricted)."""
-    d = ck.shape[1]
-    n = d // 2
-    kk = W.shape[0]
-    Z = np.empty((1 + kk, d))
-    Z[1:] = W
-    Wv = Z[1:]
-    L = (1 + kk) * d
-    Zf = Z.reshape(L)
-    nu, Ru, du, Lu = np.uint64(n), np.uint64(1 + kk), np.uint64(d), np.uint64(L)
-    zt = np.empty(L)
-    K = np.empty(4 * L)
-    s0 = np.empty(n)
-    c0 = np.empty(n)
-    th = np.empty(n)
-    dl = np.empty(n)
-    s = np.empty(n)
-    c = np.empty(n)
-    Wr = np.empty((kk, d))
-    logs = np.zeros(kk)
-    nseg = ck.shape[0] - 1
-    S = Vs.shape[0]
-    for seg in range(nseg - 1, -1, -1):
-        Z[0] = ck[seg + 1]
-        sincos(Zf, 0, n, wts, s0, c0)
-        for jj in range(ck_every):
-            # the forward kernel's step policy (charts.solvers.status): near an N = 4
-            # singular point the step is cut into equal sub-steps within the cap
-            ss = 0.0
-            uu = 0.0
-            for i in range(n):
-                ss += s0[i] * s0[i]
-                uu += Zf[n + i] * Zf[n + i]
-            hc = step_cap(ss, uu, _CAP)
-            nsub = 1 if hc >= dt else int(ceil(dt / hc))
-            for _ in range(nsub):
-                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, minv, wts, -dt / nsub, nu, Ru, du,
-                             Lu)
-            step = (seg + 1) * ck_every - jj - 1
-            if step % reorth == 0:
-                orthonormalize(Wv, w, logs)
-            j = step - first_sample
-            if j >= 0 and j % sample_every == 0 and j // sample_every < S:
-                q = j // sample_every
-                Wr[:, :] = Wv
-                project_tangent_euclidean(Z[0], Wr, wts)
-                orthonormalize(Wr, w, np.zeros(kk))
-                for r in range(kk):
-                    for s_ in range(kk):
-                        af = 0.0
-                        ar = 0.0
-                        for i in range(d):
-                            af += Wv[r, i] * Vs[q, s_, i]
-                            ar += Wr[r, i] * Vs[q, s_, i]
-                        Mf[q, r, s_] = af
-                        Mr[q, r, s_] = ar
-    return logs
 
 
 @dataclass
@@ -197,8 +99,9 @@ class AngleResult(Archivable):
     """Angles φ (rad) between E_u and E_cs at the S sample points.
 
     t : (S,) sample times; phi_full, phi_restricted : (S,) the two variants;
-    forward_exponents, adjoint_exponents : (m,) growth rates seen by V and (backward) W,
-    a check that both passes converged to the expanding subspaces.
+    forward_exponents, adjoint_exponents : (m,) growth rates seen by V over [0, t_transient +
+    t_final] and (backward) by W over [t_transient, end], the spans where each is carried: a
+    check that both passes converged to the expanding subspaces.
     """
     t: np.ndarray
     phi_full: np.ndarray
@@ -258,9 +161,7 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     return out
 
 
-def _sin_to_angle(M):
-    sv = np.empty(M.shape[0])
-    smallest_singular_values(M, sv)
+def _sin_to_angle(sv):
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
@@ -330,26 +231,29 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         b = min(nseg, a + _SEGMENTS)
         status = _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
                                  system.weights, system.level, flow.speed, dt, ce, reorth,
-                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b)
+                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b,
+                                 n_tr + n_win)
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
         rep.update((b - a) * ce * dt)
-    Vs = np.ascontiguousarray(states[:, 2 * n:].reshape(S, m, 2 * n))
     W = np.random.default_rng([seed, 1]).normal(size=(m, 2 * n))
     orthonormalize(W, flow.w, np.zeros(m))
-    Mf = np.empty((S, m, m))
-    Mr = np.empty((S, m, m))
-    blog = _backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample, reorth, Vs, Mf, Mr, flow.w)
+    sf = np.empty(S)
+    sr = np.empty(S)
+    blog = np.zeros(m)
+    status, step = backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample,
+                                   reorth, states, flow.w, blog, sf, sr)
+    if status != RUNNING:
+        raise status_error(status, step * dt, "hyperbolicity_angles (backward RK4)")
     rep.update(nsteps * dt)
     rep.close()
-    T = nsteps * dt
     t = (n_tr + np.arange(S) * sample) * dt
     params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
                   level=system.level, dt=dt, m=m, t_final=n_win * dt,
                   t_transient=n_tr * dt, sample_every=sample * dt, speed=flow.speed,
                   checkpoint_every=ce * dt, project_every=project * dt or None, seed=seed)
-    return AngleResult(t, _sin_to_angle(Mf), _sin_to_angle(Mr), flow.logsum / T, blog / T,
-                       params)
+    return AngleResult(t, _sin_to_angle(sf), _sin_to_angle(sr), flow.logsum / ((n_tr + n_win) * dt),
+                       blog / ((nsteps - n_tr) * dt), params)
 
 
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,

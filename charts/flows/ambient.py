@@ -50,7 +50,7 @@ __all__ = [
     "factor_q", "tangent_term",
     "tangent_acceleration", "multiplier_lanes", "state_rate_lanes", "tangent_factors_lanes",
     "tangent_rate_lanes", "sincos", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
-    "adjoint_rate", "state_stage", "stage_work", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
+    "factor_dlam", "adjoint_factors", "adjoint_rate", "state_stage", "stage_work", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
 ]
 
 
@@ -184,16 +184,32 @@ def transport_rate(x, o, n, y, yo, f, c, iB, dx, do):
 
 
 @njit(cache=True, inline="always")
-def adjoint_rate(x, o, n, y, yo, minv, s, c, lam, iB, dx, do):
-    """ẇ = −J(y)ᵀ w for the adjoint vector w = x[o:o+2N] at the state y[yo:yo+2N]."""
+def factor_dlam(u, s, c, lam, minv, iB):
+    """∂Λ/∂θᵢ = −(uᵢ² sᵢ + 2Λ sᵢcᵢ/mᵢ)/B, the per-rotor factor of ẇ = −J(y)ᵀ w."""
+    return (-u * u * s - lam * 2.0 * s * c * minv) * iB
+
+
+@njit(cache=True, inline="always")
+def adjoint_factors(y, yo, n, minv, s, c, lam, iB, fa, fb, fp):
+    """The per-rotor factors of ẇ = −J(y)ᵀ w at the state y[yo:yo+2N] (shared by all
+    adjoint vectors): fa = ∂Λ/∂θ, fb = g = Λc/m and fp = p/B = 2uc/B (eq 17's factors)."""
+    for j in range(n):
+        u = y[yo + n + j]
+        fa[j] = factor_dlam(u, s[j], c[j], lam, minv[j], iB)
+        fb[j] = factor_g(lam, c[j], minv[j])
+        fp[j] = factor_p(u, c[j]) * iB
+
+
+@njit(cache=True, inline="always")
+def adjoint_rate(x, o, n, minv, s, fa, fb, fp, dx, do):
+    """ẇ = −J(y)ᵀ w for the adjoint vector w = x[o:o+2N], with the factors fa, fb, fp of
+    `adjoint_factors` at y."""
     sb = 0.0  # Σ sᵢ bᵢ / mᵢ, b = velocity part of w
     for i in range(n):
         sb += s[i] * x[o + n + i] * minv[i]
     for j in range(n):
-        u = y[yo + n + j]
-        dlam_dtheta = (-u * u * s[j] - lam * 2.0 * s[j] * c[j] * minv[j]) * iB
-        dx[do + j] = dlam_dtheta * sb + lam * c[j] * minv[j] * x[o + n + j]
-        dx[do + n + j] = -(x[o + j] - 2.0 * u * c[j] * iB * sb)
+        dx[do + j] = fa[j] * sb + fb[j] * x[o + n + j]
+        dx[do + n + j] = -(x[o + j] - fp[j] * sb)
 
 
 # ------------------------------------------------------------------ L trajectories (lanes)
@@ -309,10 +325,14 @@ def adjoint_rhs(y, W, minv, a, dW):
     c = np.empty(n)
     sincos(y, 0, n, a, s, c)
     lam, B = multiplier(y, 0, n, minv, s, c)
+    fa = np.empty(n)
+    fb = np.empty(n)
+    fp = np.empty(n)
+    adjoint_factors(y, 0, n, minv, s, c, lam, 1.0 / B, fa, fb, fp)
     wf = W.reshape(W.size)
     dwf = dW.reshape(dW.size)
     for r in range(W.shape[0]):
-        adjoint_rate(wf, 2 * n * r, n, y, 0, minv, s, c, lam, 1.0 / B, dwf, 2 * n * r)
+        adjoint_rate(wf, 2 * n * r, n, minv, s, fa, fb, fp, dwf, 2 * n * r)
     return B
 
 

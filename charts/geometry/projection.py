@@ -21,7 +21,7 @@ import numpy as np
 from numba import njit
 
 __all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc",
-           "project_tangent_euclidean", "invariants", "invariants_of"]
+           "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of"]
 
 
 @njit(cache=True, inline="always")
@@ -137,14 +137,27 @@ def project_tangent(y, X, minv, a):
 @njit(cache=True)
 def project_tangent_euclidean(y, W, wts):
     """Euclidean-orthogonal projection of the rows of W, shape (k, 2N), onto T_r at y
-    (the complement of span(∇F, ∇G), ∇F ∝ (a sin θ, 0), ∇G = (u a cos θ, a sin θ)); wts = a."""
+    (`project_tangent_euclidean_sc` with libm sin/cos of y's angles); wts = a."""
     n = y.size // 2
-    a = np.zeros(2 * n)
-    b = np.zeros(2 * n)
+    s = np.empty(n)
+    c = np.empty(n)
     for i in range(n):
-        a[i] = wts[i] * sin(y[i])
-        b[i] = y[n + i] * (wts[i] * cos(y[i]))
-        b[n + i] = wts[i] * sin(y[i])
+        s[i] = wts[i] * sin(y[i])
+        c[i] = wts[i] * cos(y[i])
+    project_tangent_euclidean_sc(y, W, s, c, np.empty(2 * n), np.empty(2 * n))
+
+
+@njit(cache=True, inline="always")
+def project_tangent_euclidean_sc(y, W, s, c, a, b):
+    """Euclidean-orthogonal projection of the rows of W, shape (k, 2N), onto T_r at y
+    (the complement of span(∇F, ∇G), ∇F ∝ (a sin θ, 0), ∇G = (u a cos θ, a sin θ)); s, c =
+    a sin θ, a cos θ of y; a, b (2N,) work space."""
+    n = y.size // 2
+    for i in range(n):
+        a[i] = s[i]
+        a[n + i] = 0.0
+        b[i] = y[n + i] * c[i]
+        b[n + i] = s[i]
     aa = 0.0
     ab = 0.0
     bb = 0.0

@@ -31,7 +31,8 @@ from ..geometry.projection import project_state, project_tangent, project_tangen
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
-__all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "inner_weights",
+__all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
+           "inner_weights",
            "shift_sincos", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
@@ -51,25 +52,40 @@ _C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
 _CAP = CAP_FRACTION["rk4"]
 
 
+@njit(cache=True, inline="always")
+def _gram_schmidt_row(X, w, r, d):
+    """Row r of X made orthogonal to rows 0 … r−1 (orthonormal) and normalised in
+    ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ; returns its norm before normalising."""
+    for q in range(r):
+        p = 0.0
+        for i in range(d):
+            p += w[i] * X[r, i] * X[q, i]
+        for i in range(d):
+            X[r, i] -= p * X[q, i]
+    nrm = 0.0
+    for i in range(d):
+        nrm += w[i] * X[r, i] * X[r, i]
+    nrm = sqrt(nrm)
+    for i in range(d):
+        X[r, i] /= nrm
+    return nrm
+
+
 @njit(cache=True)
 def orthonormalize(X, w, logs):
     """Modified Gram–Schmidt (eq 18) of the rows of X in ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ, in place;
     logs[r] += log of the r-th norm."""
     k, d = X.shape
     for r in range(k):
-        for q in range(r):
-            p = 0.0
-            for i in range(d):
-                p += w[i] * X[r, i] * X[q, i]
-            for i in range(d):
-                X[r, i] -= p * X[q, i]
-        nrm = 0.0
-        for i in range(d):
-            nrm += w[i] * X[r, i] * X[r, i]
-        nrm = sqrt(nrm)
-        logs[r] += log(nrm)
-        for i in range(d):
-            X[r, i] /= nrm
+        logs[r] += log(_gram_schmidt_row(X, w, r, d))
+
+
+@njit(cache=True)
+def orthonormal_rows(X, w):
+    """`orthonormalize` without the logarithms of the norms (a basis only)."""
+    k, d = X.shape
+    for r in range(k):
+        _gram_schmidt_row(X, w, r, d)
 
 
 @njit(cache=True, inline="always")
