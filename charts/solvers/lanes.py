@@ -27,17 +27,51 @@ from math import isfinite
 
 import numpy as np
 from numba import njit
+from numba.core import config
+from numba.core.compiler import CompilerBase, DefaultPassBuilder
+from numba.core.compiler_machinery import register_pass
+from numba.core.typed_passes import NativeLowering
 
-from ..flows.ambient import (multiplier_lanes, sincos, stage_work, state_rate_lanes,
+from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
 from ..geometry.projection import project_state, project_tangent_sc
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
-from .tangent import countdowns, orthonormalize, shift_sincos, substeps
+from .tangent import countdowns, orthonormalize, shift_sincos_lanes, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows"]
 
 _CAP = CAP_FRACTION["rk4"]
+
+
+@register_pass(mutates_CFG=False, analysis_only=False)
+class _VectorLowering(NativeLowering):
+    """Numba's lowering with LLVM's SLP vectoriser on (``NUMBA_SLP_VECTORIZE``, off by
+    default), for this function's code only: it packs the unrolled blocks of `LANE_WIDTH`
+    lanes into vector instructions (the loop vectoriser does not: a block is unrolled
+    before it runs).  Same IEEE operations, so the same bits."""
+
+    _name = "charts_vector_lowering"
+
+    def run_pass(self, state):
+        slp = config.SLP_VECTORIZE
+        config.SLP_VECTORIZE = 1
+        try:
+            return super().run_pass(state)
+        finally:
+            config.SLP_VECTORIZE = slp
+
+
+class _LanesCompiler(CompilerBase):
+    """Numba's nopython pipeline with the function's array arguments marked ``noalias``
+    (LLVM may then reorder their loads and stores without run-time overlap checks; only for
+    functions whose callers pass distinct arrays: `_lanes_run`) and `_VectorLowering`."""
+
+    def define_pipelines(self):
+        self.state.flags.noalias = True
+        pm = DefaultPassBuilder.define_nopython_pipeline(self.state)
+        pm.passes = [(_VectorLowering if p is NativeLowering else p, d) for p, d in pm.passes]
+        return [pm]
 
 
 @njit(cache=True, inline="always")
@@ -49,56 +83,62 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
     `charts.solvers.tangent._rk4_step`: the same operations per lane, in the same order,
     written out as there (the stage points as shared inline functions, called from the two
     branches of the stage loop, cost both kernels ~40 %, measured).  Sizes unsigned
-    (``np.uint64``) as there."""
+    (``np.uint64``) as there; L a multiple of `LANE_WIDTH`."""
+    W = LANE_WIDTH
     nl = n * L
-    for i in range(nl):
-        th[i] = Zf[i]
-    zero = np.uint64(0)
+    z0 = nl - nl
+    for i0 in range(z0, nl, W):
+        for i in range(i0, i0 + W):
+            th[i] = Zf[i]
     dL = d * L
     for st in range(4):
         o = np.uint64(st) * M
         if st == 0:
             for i in range(M):
                 Zt[i] = Zf[i]
-            for i in range(nl):
-                s[i] = s0[i]
-                c[i] = c0[i]
+            for i0 in range(z0, nl, W):
+                for i in range(i0, i0 + W):
+                    s[i] = s0[i]
+                    c[i] = c0[i]
         else:
             a = rk4_node(st) * h
             op = o - M
             rk4_point(Zf, K, op, a, M, Zt)
-            for i in range(nl):
-                dl[i] = a * K[op + i]
-            shift_sincos(s0, c0, dl, Zt, nl, wl, s, c)
-        multiplier_lanes(Zt, zero, n, L, minv, s, c, lam, iB)
-        state_rate_lanes(Zt, zero, n, L, minv, s, lam, K, o)
-        tangent_factors_lanes(Zt, zero, n, L, minv, s, c, lam, f, g, p, q)
+            for i0 in range(z0, nl, W):
+                for i in range(i0, i0 + W):
+                    dl[i] = a * K[op + i]
+            shift_sincos_lanes(s0, c0, dl, Zt, nl, wl, s, c)
+        multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
+        state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
+        tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
         for r in range(np.uint64(1), R):
             tangent_rate_lanes(Zt, r * dL, n, L, f, g, p, q, iB, dlam, K, o + r * dL)
     rk4_combine(Zf, K, h, M, Zf)
-    for i in range(nl):
-        dl[i] = Zf[i] - th[i]
-    shift_sincos(s0, c0, dl, Zf, nl, wl, s0, c0)
+    for i0 in range(z0, nl, W):
+        for i in range(i0, i0 + W):
+            dl[i] = Zf[i] - th[i]
+    shift_sincos_lanes(s0, c0, dl, Zf, nl, wl, s0, c0)
 
 
 @njit(cache=True, inline="always")
-def _gather(Z2, S2, l, z, s0, c0):
-    """Lane l of Z2 (R·d, L) and S2 (2, N, L) into z (R·d,), s0, c0 (N,)."""
+def _gather(Zf, s0, c0, Lp, l, z, zs, zc):
+    """Lane l of the flat lanes Zf, s0, c0 (element i of lane l at i·Lp + l) into z (R·d,),
+    zs, zc (N,)."""
     for i in range(z.size):
-        z[i] = Z2[i, l]
-    for j in range(s0.size):
-        s0[j] = S2[0, j, l]
-        c0[j] = S2[1, j, l]
+        z[i] = Zf[i * Lp + l]
+    for j in range(zs.size):
+        zs[j] = s0[j * Lp + l]
+        zc[j] = c0[j * Lp + l]
 
 
 @njit(cache=True, inline="always")
-def _scatter(z, s0, c0, Z2, S2, l):
+def _scatter(z, zs, zc, Zf, s0, c0, Lp, l):
     """The inverse of `_gather`."""
     for i in range(z.size):
-        Z2[i, l] = z[i]
-    for j in range(s0.size):
-        S2[0, j, l] = s0[j]
-        S2[1, j, l] = c0[j]
+        Zf[i * Lp + l] = z[i]
+    for j in range(zs.size):
+        s0[j * Lp + l] = zs[j]
+        c0[j * Lp + l] = zc[j]
 
 
 @njit(cache=True)
@@ -114,30 +154,65 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     ``status`` (L,) holds each lane's status (RUNNING, or SINGULAR / NONFINITE once it
     stopped, with the global step in ``stopped[l]``); a stopped lane keeps, in ``frozen``
     (the shape of Z plus 2N rows for its sin/cos), the state `tangent_kernel` would have
-    returned, and leaves every call with it.  Returns the number of running lanes."""
+    returned, and leaves every call with it.  Returns the number of running lanes.
+
+    The steps run in `_lanes_run` on copies of Z and sc with the lane count rounded up to a
+    multiple of `LANE_WIDTH` (the extra lanes: copies of lane 0, never read back) and every
+    array distinct, as its ``noalias`` compilation requires."""
     D, L = Z.shape
     n = wts.size
-    d = 2 * n
-    R = D // d
-    k = R - 1
-    M = D * L
-    nl = n * L
-    nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(L)
-    Zf = Z.reshape(M)
-    s0 = sc[0].reshape(nl)
-    c0 = sc[1].reshape(nl)
-    Zt = np.empty(M)
-    K = np.empty(4 * M)
-    th = np.empty(nl)
-    dl = np.empty(nl)
-    s, c, f, g, p, q = np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl)
-    lam, iB, dlam, S, U = np.empty(L), np.empty(L), np.empty(L), np.empty(L), np.empty(L)
-    code = np.empty(L, dtype=np.int64)
-    cap = np.empty(L)
+    W = int(LANE_WIDTH)
+    Lp = (L + W - 1) // W * W
+    M = D * Lp
+    nl = n * Lp
+    Zp, s0, c0 = np.empty(M), np.empty(nl), np.empty(nl)
+    for l in range(Lp):
+        src = l if l < L else 0
+        for i in range(D):
+            Zp[i * Lp + l] = Z[i, src]
+        for j in range(n):
+            s0[j * Lp + l] = sc[0, j, src]
+            c0[j * Lp + l] = sc[1, j, src]
     wl = np.empty(nl)
     for j in range(n):
-        for l in range(L):
-            wl[j * L + l] = wts[j]
+        for l in range(Lp):
+            wl[j * Lp + l] = wts[j]
+    work = (np.empty(M), np.empty(4 * M), np.empty(nl), np.empty(nl), np.empty(nl),
+            np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl),
+            np.empty(Lp), np.empty(Lp), np.empty(Lp), wl)
+    running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
+                         speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
+                         events, event_logs, work)
+    for l in range(L):
+        for i in range(D):
+            Z[i, l] = Zp[i * Lp + l]
+        for j in range(n):
+            sc[0, j, l] = s0[j * Lp + l]
+            sc[1, j, l] = c0[j * Lp + l]
+    return running
+
+
+@njit(cache=True, pipeline_class=_LanesCompiler)
+def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
+               nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
+               work):
+    """The time loop of `lanes_kernel` on the flat lanes Zf, s0, c0 (element i of lane l at
+    i·Lp + l, Lp a multiple of `LANE_WIDTH`; lanes ≥ L = status.size are padding, copied
+    from lane 0 after each re-orthonormalisation); ``work``: the step's work arrays and the
+    weights per lane.  Every array argument distinct (``noalias``)."""
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl = work
+    L = status.size
+    Lp = lam.size
+    n = wts.size
+    d = 2 * n
+    M = Zf.size
+    D = M // Lp
+    R = D // d
+    k = R - 1
+    nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
+    S, U = np.empty(L), np.empty(L)
+    code = np.empty(L, dtype=np.int64)
+    cap = np.empty(L)
     # one lane in the one-trajectory layout (projections, eq 18, sub-steps)
     z = np.empty(D)
     zs0 = np.empty(n)
@@ -160,8 +235,8 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             U[l] = 0.0
         for j in range(n):
             for l in range(L):
-                S[l] += s0[j * L + l] * s0[j * L + l]
-                U[l] += Zf[(n + j) * L + l] * Zf[(n + j) * L + l]
+                S[l] += s0[j * Lp + l] * s0[j * Lp + l]
+                U[l] += Zf[(n + j) * Lp + l] * Zf[(n + j) * Lp + l]
         for l in range(L):  # the policy, across the lanes
             code[l], cap[l] = fixed_step_status(S[l], U[l], dt, _CAP)
         nsub = 0
@@ -170,11 +245,11 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
                 continue
             st, hc = code[l], cap[l]
             if st != RUNNING:
-                _stop(l, st, counter[0], Z, sc, status, stopped, frozen)
+                _stop(l, st, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
             elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
                 sub[nsub] = l
                 subcap[nsub] = hc
-                _gather(Z, sc, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
+                _gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
                 nsub += 1
         _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv, wl, dt,
                     nu, Ru, du, Mu, Lu)
@@ -183,19 +258,19 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             zz = subZ[t]
             ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
                           minv, wts, dt, subcap[t], nu, Ru, du, np.uint64(D))
-            _scatter(zz, subS[t, 0], subS[t, 1], Z, sc, l)
+            _scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
             if not ok:
-                _stop(l, SINGULAR, counter[0], Z, sc, status, stopped, frozen)
+                _stop(l, SINGULAR, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
             to_proj = project_every
             for l in range(L):
                 if status[l] == RUNNING:
-                    _gather(Z, sc, l, z, zs0, zc0)
+                    _gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
                     project_state(y1, m, wts, level, speed[l])
                     sincos(z, 0, n, wts, zs0, zc0)
-                    _scatter(z, zs0, zc0, Z, sc, l)
+                    _scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
         to_reorth -= 1
         if to_reorth == 0:
             to_reorth = reorth_every
@@ -203,13 +278,16 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
                 for l in range(L):
                     if status[l] != RUNNING:
                         continue
-                    _gather(Z, sc, l, z, zs0, zc0)
+                    _gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
                     if restricted:
                         project_tangent_sc(y1, X1, minv, zs0, zc0)
                     orthonormalize(X1, w, logsum[l])
-                    _scatter(z, zs0, zc0, Z, sc, l)
+                    _scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
                     if not isfinite(logsum[l, R - 2]):
-                        _stop(l, NONFINITE, counter[0], Z, sc, status, stopped, frozen)
+                        _stop(l, NONFINITE, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
+            _gather(Zf, s0, c0, Lp, 0, z, zs0, zc0)
+            for l in range(L, Lp):
+                _scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
         if ev < events.size and counter[0] == events[ev]:
             for l in range(L):
                 if status[l] == RUNNING:
@@ -222,25 +300,25 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             running += 1
         else:
             for i in range(D):
-                Z[i, l] = frozen[i, l]
+                Zf[i * Lp + l] = frozen[i, l]
             for j in range(n):
-                sc[0, j, l] = frozen[D + j, l]
-                sc[1, j, l] = frozen[D + n + j, l]
+                s0[j * Lp + l] = frozen[D + j, l]
+                c0[j * Lp + l] = frozen[D + n + j, l]
     return running
 
 
 @njit(cache=True)
-def _stop(l, st, step, Z, sc, status, stopped, frozen):
+def _stop(l, st, step, Zf, s0, c0, Lp, status, stopped, frozen):
     """Stop lane l with status st at the global step ``step``, freezing its state."""
     status[l] = st
     stopped[l] = step
-    D = Z.shape[0]
-    n = sc.shape[1]
+    D = Zf.size // Lp
+    n = s0.size // Lp
     for i in range(D):
-        frozen[i, l] = Z[i, l]
+        frozen[i, l] = Zf[i * Lp + l]
     for j in range(n):
-        frozen[D + j, l] = sc[0, j, l]
-        frozen[D + n + j, l] = sc[1, j, l]
+        frozen[D + j, l] = s0[j * Lp + l]
+        frozen[D + n + j, l] = c0[j * Lp + l]
 
 
 _NO_EVENTS = np.empty(0, dtype=np.int64)
