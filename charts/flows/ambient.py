@@ -209,15 +209,17 @@ def multiplier_lanes(y, o, n, L, minv, s, c, lam, iB):
     s, c shape (N·L,) (element j·L + l); L a multiple of `LANE_WIDTH`."""
     W = LANE_WIDTH
     for l0 in range(L - L, L, W):
-        for l in range(l0, l0 + W):
-            lam[l] = 0.0
-            iB[l] = 0.0
+        for t in range(W):
+            lam[l0 + t] = 0.0
+            iB[l0 + t] = 0.0
         for j in range(n):
-            for l in range(l0, l0 + W):
-                lam[l] += a_term(y[o + (n + j) * L + l], c[j * L + l])
-                iB[l] += b_term(s[j * L + l], minv[j])
-        for l in range(l0, l0 + W):
-            lam[l], iB[l] = multiplier_of(lam[l], iB[l])
+            a = o + (n + j) * L + l0
+            b = j * L + l0
+            for t in range(W):
+                lam[l0 + t] += a_term(y[a + t], c[b + t])
+                iB[l0 + t] += b_term(s[b + t], minv[j])
+        for t in range(W):
+            lam[l0 + t], iB[l0 + t] = multiplier_of(lam[l0 + t], iB[l0 + t])
 
 
 @njit(cache=True, inline="always")
@@ -226,12 +228,14 @@ def state_rate_lanes(y, o, n, L, minv, s, lam, dy, do):
     W = LANE_WIDTH
     nL = n * L
     for e0 in range(nL - nL, nL, W):    # θ̇ = u, lanes and rotors in one flat loop
-        for e in range(e0, e0 + W):
-            dy[do + e] = y[o + nL + e]
+        for t in range(W):
+            dy[do + e0 + t] = y[o + nL + e0 + t]
     for i in range(n):
+        a = do + (n + i) * L
+        b = i * L
         for l0 in range(L - L, L, W):
-            for l in range(l0, l0 + W):
-                dy[do + (n + i) * L + l] = acceleration(lam[l], s[i * L + l], minv[i])
+            for t in range(W):
+                dy[a + l0 + t] = acceleration(lam[l0 + t], s[b + l0 + t], minv[i])
 
 
 @njit(cache=True, inline="always")
@@ -239,14 +243,17 @@ def tangent_factors_lanes(y, o, n, L, minv, s, c, lam, f, g, p, q):
     """The factors of eq (17) of the L states y[o + i·L + l] into f, g, p, q, shape (N·L,)."""
     W = LANE_WIDTH
     for j in range(n):
+        a = o + (n + j) * L
+        b = j * L
         for l0 in range(L - L, L, W):
-            for l in range(l0, l0 + W):
-                e = j * L + l
-                u = y[o + (n + j) * L + l]
+            for t in range(W):
+                e = b + l0 + t
+                u = y[a + l0 + t]
                 f[e] = factor_f(s[e], minv[j])
-                g[e] = factor_g(lam[l], c[e], minv[j])
+                gj = factor_g(lam[l0 + t], c[e], minv[j])
+                g[e] = gj
                 p[e] = factor_p(u, c[e])
-                q[e] = factor_q(s[e], u, g[e])
+                q[e] = factor_q(s[e], u, gj)
 
 
 @njit(cache=True, inline="always")
@@ -254,24 +261,27 @@ def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
     """Eq (17) of the L tangent vectors x[o + i·L + l] into dx[do + i·L + l]; dlam, shape
     (L,), is work space."""
     W = LANE_WIDTH
-    for l0 in range(L - L, L, W):
-        for l in range(l0, l0 + W):
-            dlam[l] = 0.0
-        for j in range(n):
-            for l in range(l0, l0 + W):
-                e = j * L + l
-                dlam[l] += tangent_term(p[e], q[e], x[o + (n + j) * L + l], x[o + j * L + l])
-        for l in range(l0, l0 + W):
-            dlam[l] *= iB[l]
     nL = n * L
+    for l0 in range(L - L, L, W):
+        for t in range(W):
+            dlam[l0 + t] = 0.0
+        for j in range(n):
+            a = o + (n + j) * L + l0
+            b = j * L + l0
+            for t in range(W):
+                dlam[l0 + t] += tangent_term(p[b + t], q[b + t], x[a + t], x[o + b + t])
+        for t in range(W):
+            dlam[l0 + t] *= iB[l0 + t]
     for e0 in range(nL - nL, nL, W):
-        for e in range(e0, e0 + W):
-            dx[do + e] = x[o + nL + e]
+        for t in range(W):
+            dx[do + e0 + t] = x[o + nL + e0 + t]
     for i in range(n):
+        a = do + (n + i) * L
+        b = i * L
         for l0 in range(L - L, L, W):
-            for l in range(l0, l0 + W):
-                e = i * L + l
-                dx[do + (n + i) * L + l] = tangent_acceleration(dlam[l], f[e], g[e], x[o + e])
+            for t in range(W):
+                e = b + l0 + t
+                dx[a + l0 + t] = tangent_acceleration(dlam[l0 + t], f[e], g[e], x[o + e])
 
 
 # ------------------------------------------------------------------ stages

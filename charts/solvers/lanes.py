@@ -35,7 +35,7 @@ from numba.core.typed_passes import NativeLowering
 from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
 from ..geometry.projection import project_state, project_tangent_sc
-from .rk import rk4_combine, rk4_node, rk4_point
+from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
 from .tangent import countdowns, orthonormalize, shift_sincos_lanes, substeps
 
@@ -54,12 +54,13 @@ class _VectorLowering(NativeLowering):
     _name = "charts_vector_lowering"
 
     def run_pass(self, state):
-        slp = config.SLP_VECTORIZE
-        config.SLP_VECTORIZE = 1
+        codegen = state.targetctx.codegen()
+        saved = config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect
+        config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = 1, 0, False
         try:
             return super().run_pass(state)
         finally:
-            config.SLP_VECTORIZE = slp
+            config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = saved
 
 
 class _LanesCompiler(CompilerBase):
@@ -83,40 +84,49 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
     `charts.solvers.tangent._rk4_step`: the same operations per lane, in the same order,
     written out as there (the stage points as shared inline functions, called from the two
     branches of the stage loop, cost both kernels ~40 %, measured).  Sizes unsigned
-    (``np.uint64``) as there; L a multiple of `LANE_WIDTH`."""
+    (``np.uint64``) as there; every loop in blocks of `LANE_WIDTH` (L a multiple)."""
     W = LANE_WIDTH
     nl = n * L
     z0 = nl - nl
     for i0 in range(z0, nl, W):
-        for i in range(i0, i0 + W):
-            th[i] = Zf[i]
+        for t in range(W):
+            th[i0 + t] = Zf[i0 + t]
     dL = d * L
+    h6 = RK4_WEIGHTS[0] * h
     for st in range(4):
         o = np.uint64(st) * M
         if st == 0:
-            for i in range(M):
-                Zt[i] = Zf[i]
+            for i0 in range(z0, M, W):
+                for t in range(W):
+                    Zt[i0 + t] = Zf[i0 + t]
             for i0 in range(z0, nl, W):
-                for i in range(i0, i0 + W):
-                    s[i] = s0[i]
-                    c[i] = c0[i]
+                for t in range(W):
+                    s[i0 + t] = s0[i0 + t]
+                    c[i0 + t] = c0[i0 + t]
         else:
             a = rk4_node(st) * h
             op = o - M
-            rk4_point(Zf, K, op, a, M, Zt)
+            for i0 in range(z0, M, W):  # `rk4_point`
+                for t in range(W):
+                    Zt[i0 + t] = stage_point(Zf[i0 + t], a, K[op + i0 + t])
             for i0 in range(z0, nl, W):
-                for i in range(i0, i0 + W):
-                    dl[i] = a * K[op + i]
+                for t in range(W):
+                    dl[i0 + t] = a * K[op + i0 + t]
             shift_sincos_lanes(s0, c0, dl, Zt, nl, wl, s, c)
         multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
         state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
         tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
         for r in range(np.uint64(1), R):
             tangent_rate_lanes(Zt, r * dL, n, L, f, g, p, q, iB, dlam, K, o + r * dL)
-    rk4_combine(Zf, K, h, M, Zf)
+    M2 = M + M
+    M3 = M2 + M
+    for i0 in range(z0, M, W):  # `rk4_combine`
+        for t in range(W):
+            i = i0 + t
+            Zf[i] = rk4_sum(Zf[i], h6, K[i], K[M + i], K[M2 + i], K[M3 + i])
     for i0 in range(z0, nl, W):
-        for i in range(i0, i0 + W):
-            dl[i] = Zf[i] - th[i]
+        for t in range(W):
+            dl[i0 + t] = Zf[i0 + t] - th[i0 + t]
     shift_sincos_lanes(s0, c0, dl, Zf, nl, wl, s0, c0)
 
 

@@ -110,8 +110,8 @@ def shift_sincos_lanes(s0, c0, dl, theta, n, a, s, c):
     """`shift_sincos` of n elements in blocks of ``LANE_WIDTH`` (n a multiple of it)."""
     W = LANE_WIDTH
     for j0 in range(n - n, n, W):
-        for j in range(j0, j0 + W):
-            s[j], c[j] = shifted(s0[j], c0[j], dl[j])
+        for t in range(W):
+            s[j0 + t], c[j0 + t] = shifted(s0[j0 + t], c0[j0 + t], dl[j0 + t])
     _libm_beyond_shift(dl, theta, n, a, s, c)
 
 
