@@ -85,15 +85,12 @@ def shifted(sj, cj, d):
 
 @njit(cache=True, inline="always")
 def _libm_beyond_shift(dl, theta, n, a, s, c):
-    """s, c = a sin, a cos of theta (libm) where |δ| > `SHIFT_MAX`."""
-    big = 0  # (a vectorisable count first: the test is rare and the loop below is not)
+    """s, c = a sin, a cos of theta (libm) where |δ| > `SHIFT_MAX` (rare: called only where
+    a vectorisable count found such a δ)."""
     for j in range(n):
-        big += abs(dl[j]) > SHIFT_MAX
-    if big:
-        for j in range(n):
-            if abs(dl[j]) > SHIFT_MAX:
-                s[j] = a[j] * sin(theta[j])
-                c[j] = a[j] * cos(theta[j])
+        if abs(dl[j]) > SHIFT_MAX:
+            s[j] = a[j] * sin(theta[j])
+            c[j] = a[j] * cos(theta[j])
 
 
 @njit(cache=True, inline="always")
@@ -102,17 +99,26 @@ def shift_sincos(s0, c0, dl, theta, n, a, s, c):
     (N,) (`shifted`; libm of theta for |δ| > `SHIFT_MAX`).  s, c may be s0, c0 (in place)."""
     for j in range(n):
         s[j], c[j] = shifted(s0[j], c0[j], dl[j])
-    _libm_beyond_shift(dl, theta, n, a, s, c)
+    big = 0
+    for j in range(n):
+        big += abs(dl[j]) > SHIFT_MAX
+    if big:
+        _libm_beyond_shift(dl, theta, n, a, s, c)
 
 
 @njit(cache=True, inline="always")
 def shift_sincos_lanes(s0, c0, dl, theta, n, a, s, c):
     """`shift_sincos` of n elements in blocks of ``LANE_WIDTH`` (n a multiple of it)."""
     W = LANE_WIDTH
+    big = 0
     for j0 in range(n - n, n, W):
         for t in range(W):
             s[j0 + t], c[j0 + t] = shifted(s0[j0 + t], c0[j0 + t], dl[j0 + t])
-    _libm_beyond_shift(dl, theta, n, a, s, c)
+    for j0 in range(n - n, n, W):
+        for t in range(W):
+            big += abs(dl[j0 + t]) > SHIFT_MAX
+    if big:
+        _libm_beyond_shift(dl, theta, n, a, s, c)
 
 
 @njit(cache=True, inline="always")
