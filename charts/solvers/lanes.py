@@ -23,7 +23,7 @@ arithmetic never mixes with its: a NaN stays in its lane).
 """
 from __future__ import annotations
 
-from math import isfinite
+from math import isfinite, log
 
 import numpy as np
 from numba import njit
@@ -34,10 +34,10 @@ from numba.core.typed_passes import NativeLowering
 
 from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
-from ..geometry.projection import project_state, project_tangent_sc
+from ..geometry.projection import project_state, project_tangent_lanes
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
-from .tangent import countdowns, orthonormalize, shift_sincos_lanes, substeps
+from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows"]
 
@@ -230,35 +230,41 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     R = D // d
     k = R - 1
     nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
-    S, U = np.empty(L), np.empty(L)
-    code = np.empty(L, dtype=np.int64)
-    cap = np.empty(L)
+    W = LANE_WIDTH
+    S, U = np.empty(Lp), np.empty(Lp)
+    code = np.empty(Lp, dtype=np.int64)
+    cap = np.empty(Lp)
     # one lane in the one-trajectory layout (projections, eq 18, sub-steps)
     z = np.empty(D)
     zs0 = np.empty(n)
     zc0 = np.empty(n)
-    X1 = z[d:].reshape(k, d)
     y1 = z[:d]
     Zt1 = np.empty(D)
     K1 = np.empty(4 * D)
     th1 = np.empty(n)
     dl1 = np.empty(n)
     s1, c1, f1, g1, p1, q1 = stage_work(n)
+    v1, v2, v3 = np.empty(Lp), np.empty(Lp), np.empty(Lp)
+    nrm = np.empty(max(k, 1) * Lp)
+    ku = np.uint64(k)
     sub = np.empty(L, dtype=np.int64)
     subcap = np.empty(L)
     subZ = np.empty((L, D))
     subS = np.empty((L, 2, n))
     to_proj, to_reorth, ev = countdowns(counter[0], project_every, reorth_every, events)
     for it in range(nsteps):
-        for l in range(L):
-            S[l] = 0.0
-            U[l] = 0.0
-        for j in range(n):
-            for l in range(L):
-                S[l] += s0[j * Lp + l] * s0[j * Lp + l]
-                U[l] += Zf[(n + j) * Lp + l] * Zf[(n + j) * Lp + l]
-        for l in range(L):  # the policy, across the lanes
-            code[l], cap[l] = fixed_step_status(S[l], U[l], dt, _CAP)
+        for l0 in range(Lu - Lu, Lu, W):  # the policy, across the lanes (padding too)
+            for t in range(W):
+                S[l0 + t] = 0.0
+                U[l0 + t] = 0.0
+            for j in range(nu):
+                a = j * Lu + l0
+                b = (nu + j) * Lu + l0
+                for t in range(W):
+                    S[l0 + t] += s0[a + t] * s0[a + t]
+                    U[l0 + t] += Zf[b + t] * Zf[b + t]
+            for t in range(W):
+                code[l0 + t], cap[l0 + t] = fixed_step_status(S[l0 + t], U[l0 + t], dt, _CAP)
         nsub = 0
         for l in range(L):
             if status[l] != RUNNING or (code[l] == RUNNING and cap[l] >= dt):
@@ -294,20 +300,18 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
         to_reorth -= 1
         if to_reorth == 0:
             to_reorth = reorth_every
-            if R > 1:
+            if R > 1:  # across all lanes (a stopped lane's copy is restored at the end)
+                if restricted:
+                    project_tangent_lanes(Zf, nu, ku, Lu, minv, s0, c0, v1, v2, v3)
+                orthonormalize_lanes(Zf, du * Lu, ku, du, Lu, w, v1, nrm)
                 for l in range(L):
                     if status[l] != RUNNING:
                         continue
-                    _gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
-                    if restricted:
-                        project_tangent_sc(y1, X1, minv, zs0, zc0)
-                    orthonormalize(X1, w, logsum[l])
-                    _scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
+                    for r in range(k):
+                        logsum[l, r] += log(nrm[r * Lp + l])
                     if not isfinite(logsum[l, R - 2]):
                         _stop(l, NONFINITE, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
-            _gather(Zf, s0, c0, Lp, 0, z, zs0, zc0)
-            for l in range(L, Lp):
-                _scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
+            _refresh(Zf, s0, c0, Lp, status, z, zs0, zc0)
         if ev < events.size and counter[0] == events[ev]:
             for l in range(L):
                 if status[l] == RUNNING:
@@ -325,6 +329,27 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
                 s0[j * Lp + l] = frozen[D + j, l]
                 c0[j * Lp + l] = frozen[D + n + j, l]
     return running
+
+
+@njit(cache=True, inline="always")
+def _refresh(Zf, s0, c0, Lp, status, z, zs, zc):
+    """Copy the first running lane into the padding lanes and the stopped lanes (which
+    would otherwise go on computing on a state that may overflow)."""
+    L = status.size
+    first = -1
+    for l in range(L):
+        if status[l] == RUNNING:
+            first = l
+            break
+    if first < 0:
+        return
+    gathered = False
+    for l in range(Lp):
+        if l >= L or status[l] != RUNNING:
+            if not gathered:
+                _gather(Zf, s0, c0, Lp, first, z, zs, zc)
+                gathered = True
+            _scatter(z, zs, zc, Zf, s0, c0, Lp, l)
 
 
 @njit(cache=True)
