@@ -257,40 +257,31 @@ def tangent_factors_lanes(y, o, n, L, minv, s, c, lam, f, g, p, q):
 
 
 @njit(cache=True, inline="always")
-def tangent_rate_lanes(x, o, n, k, L, f, g, p, q, iB, dlam, dx, do):
-    """Eq (17) of k tangent vectors of each of the L lanes, row r of lane l at
-    x[o + r·2N·L + i·L + l], into dx[do + r·2N·L + i·L + l]; the rows of a block of lanes
-    together, so that the factors are loaded once for all rows.  dlam, shape (k·L,), is
-    work space."""
+def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
+    """Eq (17) of the L tangent vectors x[o + i·L + l] into dx[do + i·L + l]; dlam, shape
+    (L,), is work space."""
     W = LANE_WIDTH
     nL = n * L
-    rs = nL + nL
     for l0 in range(L - L, L, W):
-        for r in range(k):
-            for t in range(W):
-                dlam[r * L + l0 + t] = 0.0
+        for t in range(W):
+            dlam[l0 + t] = 0.0
         for j in range(n):
+            a = o + (n + j) * L + l0
             b = j * L + l0
-            for r in range(k):
-                a = o + r * rs + b
-                for t in range(W):
-                    dlam[r * L + l0 + t] += tangent_term(p[b + t], q[b + t], x[a + nL + t],
-                                                         x[a + t])
-        for r in range(k):
             for t in range(W):
-                dlam[r * L + l0 + t] *= iB[l0 + t]
-    for r in range(k):
-        for e0 in range(nL - nL, nL, W):
-            for t in range(W):
-                dx[do + r * rs + e0 + t] = x[o + r * rs + nL + e0 + t]
+                dlam[l0 + t] += tangent_term(p[b + t], q[b + t], x[a + t], x[o + b + t])
+        for t in range(W):
+            dlam[l0 + t] *= iB[l0 + t]
+    for e0 in range(nL - nL, nL, W):
+        for t in range(W):
+            dx[do + e0 + t] = x[o + nL + e0 + t]
     for i in range(n):
+        a = do + (n + i) * L
         b = i * L
         for l0 in range(L - L, L, W):
-            for r in range(k):
-                a = r * rs + b + l0
-                for t in range(W):
-                    dx[do + a + nL + t] = tangent_acceleration(dlam[r * L + l0 + t], f[b + l0 + t],
-                                                               g[b + l0 + t], x[o + a + t])
+            for t in range(W):
+                e = b + l0 + t
+                dx[a + l0 + t] = tangent_acceleration(dlam[l0 + t], f[e], g[e], x[o + e])
 
 
 # ------------------------------------------------------------------ stages

@@ -116,7 +116,8 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
         multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
         state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
         tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
-        tangent_rate_lanes(Zt, dL, n, R - np.uint64(1), L, f, g, p, q, iB, dlam, K, o + dL)
+        for r in range(np.uint64(1), R):
+            tangent_rate_lanes(Zt, r * dL, n, L, f, g, p, q, iB, dlam, K, o + r * dL)
     M2 = M + M
     M3 = M2 + M
     for i0 in range(z0, M, W):  # `rk4_combine`
@@ -198,7 +199,7 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             wl[j * Lp + l] = wts[j]
     work = (_aligned(M), _aligned(4 * M), _aligned(nl), _aligned(nl), _aligned(nl),
             _aligned(nl), _aligned(nl), _aligned(nl), _aligned(nl), _aligned(nl),
-            _aligned(Lp), _aligned(Lp), _aligned(max(D // (2 * n) - 1, 1) * Lp), wl)
+            _aligned(Lp), _aligned(Lp), _aligned(Lp), wl)
     running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
                          speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
                          events, event_logs, work)
