@@ -130,7 +130,8 @@ def project_tangent_lanes(Z, n, k, L, minv, s, c, B, dF, dG):
     s, c (weighted sin/cos of y's angles) at [j·L + l] (L a multiple of `LANE_WIDTH`);
     B, dF, dG, shape (L,), are work space.  Sizes unsigned."""
     W = LANE_WIDTH
-    dL = 2 * n * L
+    one = np.uint64(1)
+    dL = (n + n) * L                    # (unsigned throughout: no negative-index checks)
     for l0 in range(L - L, L, W):
         for t in range(W):
             B[l0 + t] = 0.0
@@ -138,8 +139,8 @@ def project_tangent_lanes(Z, n, k, L, minv, s, c, B, dF, dG):
             for t in range(W):
                 e = j * L + l0 + t
                 B[l0 + t] += s[e] * s[e] * minv[j]
-        for r in range(1, k + 1):
-            ro = r * dL + l0
+        for r in range(k):
+            ro = (r + one) * dL + l0
             for t in range(W):
                 dF[l0 + t] = 0.0
                 dG[l0 + t] = 0.0
