@@ -93,26 +93,23 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
             th[i0 + t] = Zf[i0 + t]
     dL = d * L
     h6 = RK4_WEIGHTS[0] * h
-    for st in range(4):
+    # stage 0 at Zf, s0, c0 themselves (no copies)
+    multiplier_lanes(Zf, z0, n, L, minv, s0, c0, lam, iB)
+    state_rate_lanes(Zf, z0, n, L, minv, s0, lam, K, z0)
+    tangent_factors_lanes(Zf, z0, n, L, minv, s0, c0, lam, f, g, p, q)
+    for r in range(np.uint64(1), R):
+        tangent_rate_lanes(Zf, r * dL, n, L, f, g, p, q, iB, dlam, K, r * dL)
+    for st in range(1, 4):
         o = np.uint64(st) * M
-        if st == 0:
-            for i0 in range(z0, M, W):
-                for t in range(W):
-                    Zt[i0 + t] = Zf[i0 + t]
-            for i0 in range(z0, nl, W):
-                for t in range(W):
-                    s[i0 + t] = s0[i0 + t]
-                    c[i0 + t] = c0[i0 + t]
-        else:
-            a = rk4_node(st) * h
-            op = o - M
-            for i0 in range(z0, M, W):  # `rk4_point`
-                for t in range(W):
-                    Zt[i0 + t] = stage_point(Zf[i0 + t], a, K[op + i0 + t])
-            for i0 in range(z0, nl, W):
-                for t in range(W):
-                    dl[i0 + t] = a * K[op + i0 + t]
-            shift_sincos_lanes(s0, c0, dl, Zt, nl, wl, s, c)
+        a = rk4_node(st) * h
+        op = o - M
+        for i0 in range(z0, M, W):  # `rk4_point`
+            for t in range(W):
+                Zt[i0 + t] = stage_point(Zf[i0 + t], a, K[op + i0 + t])
+        for i0 in range(z0, nl, W):
+            for t in range(W):
+                dl[i0 + t] = a * K[op + i0 + t]
+        shift_sincos_lanes(s0, c0, dl, Zt, nl, wl, s, c)
         multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
         state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
         tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
