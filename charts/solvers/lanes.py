@@ -158,7 +158,6 @@ def _aligned(size):
     return b[off:off + size]
 
 
-@njit(cache=True)
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                  nsteps, reorth_every, w, restricted, project_every, logsum, events,
                  event_logs):
@@ -173,9 +172,24 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     (the shape of Z plus 2N rows for its sin/cos), the state `tangent_kernel` would have
     returned, and leaves every call with it.  Returns the number of running lanes.
 
-    The steps run in `_lanes_run` on copies of Z and sc with the lane count rounded up to a
-    multiple of `LANE_WIDTH` (the extra lanes: copies of lane 0, never read back) and every
-    array distinct, as its ``noalias`` compilation requires."""
+    The steps run in `_lanes_run`, compiled for each N and k (their loops then have constant
+    lengths, which LLVM unrolls), on copies of Z and sc with the lane count rounded up to a
+    multiple of `LANE_WIDTH` (the extra lanes: copies of a running lane, never read back) and
+    every array distinct, as its ``noalias`` compilation requires."""
+    n = int(wts.size)
+    k = Z.shape[0] // (2 * n) - 1
+    Zp, s0, c0, work = _lanes_in(Z, sc, wts)
+    running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
+                         speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
+                         events, event_logs, work, (0,) * n, (0,) * k)
+    _lanes_out(Zp, s0, c0, Z, sc)
+    return running
+
+
+@njit(cache=True)
+def _lanes_in(Z, sc, wts):
+    """The flat, padded, aligned copies of Z and sc (see `lanes_kernel`) and the work
+    arrays of `_lanes_run`."""
     D, L = Z.shape
     n = wts.size
     W = int(LANE_WIDTH)
@@ -197,35 +211,41 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     work = (_aligned(M), _aligned(4 * M), _aligned(nl), _aligned(nl), _aligned(nl),
             _aligned(nl), _aligned(nl), _aligned(nl), _aligned(nl), _aligned(nl),
             _aligned(Lp), _aligned(Lp), _aligned(Lp), wl)
-    running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
-                         speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
-                         events, event_logs, work)
+    return Zp, s0, c0, work
+
+
+@njit(cache=True)
+def _lanes_out(Zp, s0, c0, Z, sc):
+    """The inverse of `_lanes_in` for the L lanes of Z and sc."""
+    D, L = Z.shape
+    n = sc.shape[1]
+    Lp = Zp.size // D
     for l in range(L):
         for i in range(D):
             Z[i, l] = Zp[i * Lp + l]
         for j in range(n):
             sc[0, j, l] = s0[j * Lp + l]
             sc[1, j, l] = c0[j * Lp + l]
-    return running
 
 
 @njit(cache=True, pipeline_class=_LanesCompiler)
 def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
-               work):
+               work, n_tag, k_tag):
     """The time loop of `lanes_kernel` on the flat lanes Zf, s0, c0 (element i of lane l at
     i·Lp + l, Lp a multiple of `LANE_WIDTH`; lanes ≥ L = status.size are padding, copied
     from lane 0 after each re-orthonormalisation); ``work``: the step's work arrays and the
-    weights per lane.  Every array argument distinct (``noalias``)."""
+    weights per lane; ``n_tag``, ``k_tag``: tuples of N and k elements, so that each (N, k)
+    has its own compilation.  Every array argument distinct (``noalias``)."""
+    n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
+    k = len(k_tag)
     Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl = work
     L = status.size
     Lp = lam.size
-    n = wts.size
     d = 2 * n
-    M = Zf.size
-    D = M // Lp
-    R = D // d
-    k = R - 1
+    R = k + 1
+    D = R * d
+    M = D * Lp
     nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
     W = LANE_WIDTH
     S, U = np.empty(Lp), np.empty(Lp)
