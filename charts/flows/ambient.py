@@ -226,29 +226,26 @@ def multiplier_lanes(y, o, n, L, minv, s, c, lam, iB):
 def state_rate_lanes(y, o, n, L, minv, s, lam, dy, do):
     """Eq (8) of the L states y[o + i·L + l] into dy[do + i·L + l]."""
     W = LANE_WIDTH
-    nL = n * L
-    for e0 in range(nL - nL, nL, W):    # θ̇ = u, lanes and rotors in one flat loop
-        for t in range(W):
-            dy[do + e0 + t] = y[o + nL + e0 + t]
-    for i in range(n):
-        a = do + (n + i) * L
-        b = i * L
-        for l0 in range(L - L, L, W):
+    for l0 in range(L - L, L, W):
+        for i in range(n):
+            a = i * L + l0
+            b = (n + i) * L + l0
             for t in range(W):
-                dy[a + l0 + t] = acceleration(lam[l0 + t], s[b + l0 + t], minv[i])
+                dy[do + a + t] = y[o + b + t]
+                dy[do + b + t] = acceleration(lam[l0 + t], s[a + t], minv[i])
 
 
 @njit(cache=True, inline="always")
 def tangent_factors_lanes(y, o, n, L, minv, s, c, lam, f, g, p, q):
     """The factors of eq (17) of the L states y[o + i·L + l] into f, g, p, q, shape (N·L,)."""
     W = LANE_WIDTH
-    for j in range(n):
-        a = o + (n + j) * L
-        b = j * L
-        for l0 in range(L - L, L, W):
+    for l0 in range(L - L, L, W):
+        for j in range(n):
+            a = o + (n + j) * L + l0
+            b = j * L + l0
             for t in range(W):
-                e = b + l0 + t
-                u = y[a + l0 + t]
+                e = b + t
+                u = y[a + t]
                 f[e] = factor_f(s[e], minv[j])
                 gj = factor_g(lam[l0 + t], c[e], minv[j])
                 g[e] = gj
@@ -261,7 +258,6 @@ def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
     """Eq (17) of the L tangent vectors x[o + i·L + l] into dx[do + i·L + l]; dlam, shape
     (L,), is work space."""
     W = LANE_WIDTH
-    nL = n * L
     for l0 in range(L - L, L, W):
         for t in range(W):
             dlam[l0 + t] = 0.0
@@ -272,16 +268,13 @@ def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
                 dlam[l0 + t] += tangent_term(p[b + t], q[b + t], x[a + t], x[o + b + t])
         for t in range(W):
             dlam[l0 + t] *= iB[l0 + t]
-    for e0 in range(nL - nL, nL, W):
-        for t in range(W):
-            dx[do + e0 + t] = x[o + nL + e0 + t]
-    for i in range(n):
-        a = do + (n + i) * L
-        b = i * L
-        for l0 in range(L - L, L, W):
+        for i in range(n):
+            a = i * L + l0
+            b = (n + i) * L + l0
             for t in range(W):
-                e = b + l0 + t
-                dx[a + l0 + t] = tangent_acceleration(dlam[l0 + t], f[e], g[e], x[o + e])
+                dx[do + a + t] = x[o + b + t]
+                dx[do + b + t] = tangent_acceleration(dlam[l0 + t], f[a + t], g[a + t],
+                                                      x[o + a + t])
 
 
 # ------------------------------------------------------------------ stages
