@@ -2,19 +2,23 @@
 
 Each lane is one `TangentFlow`: a state y and k tangent vectors advanced by RK4 of eqs (8)
 and (17), projected onto the invariants every ``project_every`` steps and re-orthonormalised
-(eq 18) every ``reorth_every`` steps.  The lanes are stored as a structure of arrays: element
-i of the stacked state Z = [y; X] (flat, i < (1 + k)·2N) of lane l at ``Z[i, l]``, the lane
-innermost, so that the RK4 stages — the equations' lane loops ``*_lanes`` of
-``charts.flows.ambient``, `rk4_point`, `rk4_combine` and `shift_sincos` (elementwise) — run
-across the lanes in the CPU's vector units.  What happens once per lane and per projection or
-re-orthonormalisation (`project_state`, `sincos`, `project_tangent_sc`, `orthonormalize`) and
-a step the singular-point policy cuts into sub-steps (`substeps`) is done lane by lane
-through the one-trajectory homes, on a copy of the lane in the one-trajectory layout.
+(eq 18) every ``reorth_every`` steps.  The lanes are a structure of arrays, the lane
+innermost (``charts.solvers.lane_layout``: element i of the stacked state Z = [y; X] of lane
+l at ``i·Lp + l``, Lp = L rounded up to a multiple of ``LANE_WIDTH`` = 8), and every loop
+over lanes runs in blocks of 8 lanes, one AVX-512 register: the RK4 stages (the equations'
+lane loops ``*_lanes`` of ``charts.flows.ambient``, the stage point and sum of
+``charts.solvers.rk``, `shift_sincos_lanes`), the step policy (``fixed_step_status``), the
+projection onto T_r (`project_tangent_lanes`) and Gram–Schmidt (`orthonormalize_lanes`).  Lane by lane, on a copy in the one-trajectory layout, remain what
+calls libm (the projection of the state, `project_state` and `sincos`; the logs of eq 18's
+norms) and a step the singular-point policy cuts into sub-steps (`substeps`).  The time
+loop `_lanes_run` is compiled for each (N, k) so that its rotor and row loops have constant
+lengths.
 
 Identity with the one-trajectory kernel.  Every lane does the operations of
 `tangent_kernel` in the same order (no fast-math, no fused multiply-add: Numba compiles
-neither unless asked, and libm's sin/cos are called lane by lane), so lane l ends with the
-bits of a `TangentFlow` from the same start (tests/test_lanes.py).
+neither unless asked; libm's sin, cos and log lane by lane; sqrt and division are correctly
+rounded in vector units too), so lane l ends with the bits of a `TangentFlow` from the same
+start (tests/test_lanes.py).
 
 Per-lane status.  A lane that stops (the policy of ``charts.solvers.status``: singular point,
 non-finite state) is frozen at the state `tangent_kernel` would have returned and flagged in
@@ -27,14 +31,11 @@ from math import isfinite, log
 
 import numpy as np
 from numba import njit
-from numba.core import config
-from numba.core.compiler import CompilerBase, DefaultPassBuilder
-from numba.core.compiler_machinery import register_pass
-from numba.core.typed_passes import NativeLowering
 
 from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
 from ..geometry.projection import project_state, project_tangent_lanes
+from .lane_layout import LanesCompiler, gather, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
 from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, substeps
@@ -42,37 +43,6 @@ from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, subst
 __all__ = ["lanes_kernel", "LaneFlows"]
 
 _CAP = CAP_FRACTION["rk4"]
-
-
-@register_pass(mutates_CFG=False, analysis_only=False)
-class _VectorLowering(NativeLowering):
-    """Numba's lowering with LLVM's SLP vectoriser on (``NUMBA_SLP_VECTORIZE``, off by
-    default), for this function's code only: it packs the unrolled blocks of `LANE_WIDTH`
-    lanes into vector instructions (the loop vectoriser does not: a block is unrolled
-    before it runs).  Same IEEE operations, so the same bits."""
-
-    _name = "charts_vector_lowering"
-
-    def run_pass(self, state):
-        codegen = state.targetctx.codegen()
-        saved = config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect
-        config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = 1, 0, False
-        try:
-            return super().run_pass(state)
-        finally:
-            config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = saved
-
-
-class _LanesCompiler(CompilerBase):
-    """Numba's nopython pipeline with the function's array arguments marked ``noalias``
-    (LLVM may then reorder their loads and stores without run-time overlap checks; only for
-    functions whose callers pass distinct arrays: `_lanes_run`) and `_VectorLowering`."""
-
-    def define_pipelines(self):
-        self.state.flags.noalias = True
-        pm = DefaultPassBuilder.define_nopython_pipeline(self.state)
-        pm.passes = [(_VectorLowering if p is NativeLowering else p, d) for p, d in pm.passes]
-        return [pm]
 
 
 @njit(cache=True, inline="always")
@@ -127,37 +97,6 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
     shift_sincos_lanes(s0, c0, dl, Zf, nl, wl, s0, c0)
 
 
-@njit(cache=True, inline="always")
-def _gather(Zf, s0, c0, Lp, l, z, zs, zc):
-    """Lane l of the flat lanes Zf, s0, c0 (element i of lane l at i·Lp + l) into z (R·d,),
-    zs, zc (N,)."""
-    for i in range(z.size):
-        z[i] = Zf[i * Lp + l]
-    for j in range(zs.size):
-        zs[j] = s0[j * Lp + l]
-        zc[j] = c0[j * Lp + l]
-
-
-@njit(cache=True, inline="always")
-def _scatter(z, zs, zc, Zf, s0, c0, Lp, l):
-    """The inverse of `_gather`."""
-    for i in range(z.size):
-        Zf[i * Lp + l] = z[i]
-    for j in range(zs.size):
-        s0[j * Lp + l] = zs[j]
-        c0[j * Lp + l] = zc[j]
-
-
-@njit(cache=True)
-def _aligned(size):
-    """An empty float array of ``size`` whose data starts on a 64-byte boundary (a cache
-    line: a block of `LANE_WIDTH` doubles then never straddles two lines; Numba's own
-    arrays are aligned to 32 bytes, which cost the lane step ~15 %, measured)."""
-    b = np.empty(size + 8)
-    off = (64 - b.ctypes.data % 64) % 64 // 8
-    return b[off:off + size]
-
-
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                  nsteps, reorth_every, w, restricted, project_every, logsum, events,
                  event_logs):
@@ -178,57 +117,15 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     every array distinct, as its ``noalias`` compilation requires."""
     n = int(wts.size)
     k = Z.shape[0] // (2 * n) - 1
-    Zp, s0, c0, work = _lanes_in(Z, sc, wts)
+    Zp, s0, c0, work = lanes_in(Z, sc, wts)
     running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
                          speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
                          events, event_logs, work, (0,) * n, (0,) * k)
-    _lanes_out(Zp, s0, c0, Z, sc)
+    lanes_out(Zp, s0, c0, Z, sc)
     return running
 
 
-@njit(cache=True)
-def _lanes_in(Z, sc, wts):
-    """The flat, padded, aligned copies of Z and sc (see `lanes_kernel`) and the work
-    arrays of `_lanes_run`."""
-    D, L = Z.shape
-    n = wts.size
-    W = int(LANE_WIDTH)
-    Lp = (L + W - 1) // W * W
-    M = D * Lp
-    nl = n * Lp
-    Zp, s0, c0 = _aligned(M), _aligned(nl), _aligned(nl)
-    for l in range(Lp):
-        src = l if l < L else 0
-        for i in range(D):
-            Zp[i * Lp + l] = Z[i, src]
-        for j in range(n):
-            s0[j * Lp + l] = sc[0, j, src]
-            c0[j * Lp + l] = sc[1, j, src]
-    wl = _aligned(nl)
-    for j in range(n):
-        for l in range(Lp):
-            wl[j * Lp + l] = wts[j]
-    work = (_aligned(M), _aligned(4 * M), _aligned(nl), _aligned(nl), _aligned(nl),
-            _aligned(nl), _aligned(nl), _aligned(nl), _aligned(nl), _aligned(nl),
-            _aligned(Lp), _aligned(Lp), _aligned(Lp), wl)
-    return Zp, s0, c0, work
-
-
-@njit(cache=True)
-def _lanes_out(Zp, s0, c0, Z, sc):
-    """The inverse of `_lanes_in` for the L lanes of Z and sc."""
-    D, L = Z.shape
-    n = sc.shape[1]
-    Lp = Zp.size // D
-    for l in range(L):
-        for i in range(D):
-            Z[i, l] = Zp[i * Lp + l]
-        for j in range(n):
-            sc[0, j, l] = s0[j * Lp + l]
-            sc[1, j, l] = c0[j * Lp + l]
-
-
-@njit(cache=True, pipeline_class=_LanesCompiler)
+@njit(cache=True, pipeline_class=LanesCompiler)
 def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
                work, n_tag, k_tag):
@@ -292,7 +189,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
             elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
                 sub[nsub] = l
                 subcap[nsub] = hc
-                _gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
+                gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
                 nsub += 1
         _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv, wl, dt,
                     nu, Ru, du, Mu, Lu)
@@ -301,7 +198,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
             zz = subZ[t]
             ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
                           minv, wts, dt, subcap[t], nu, Ru, du, np.uint64(D))
-            _scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
+            scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
             if not ok:
                 _stop(l, SINGULAR, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
         counter[0] += 1
@@ -310,10 +207,10 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
             to_proj = project_every
             for l in range(L):
                 if status[l] == RUNNING:
-                    _gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
+                    gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
                     project_state(y1, m, wts, level, speed[l])
                     sincos(z, 0, n, wts, zs0, zc0)
-                    _scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
+                    scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
         to_reorth -= 1
         if to_reorth == 0:
             to_reorth = reorth_every
@@ -364,9 +261,9 @@ def _refresh(Zf, s0, c0, Lp, status, z, zs, zc):
     for l in range(Lp):
         if l >= L or status[l] != RUNNING:
             if not gathered:
-                _gather(Zf, s0, c0, Lp, first, z, zs, zc)
+                gather(Zf, s0, c0, Lp, first, z, zs, zc)
                 gathered = True
-            _scatter(z, zs, zc, Zf, s0, c0, Lp, l)
+            scatter(z, zs, zc, Zf, s0, c0, Lp, l)
 
 
 @njit(cache=True)

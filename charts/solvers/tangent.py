@@ -20,7 +20,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 """
 from __future__ import annotations
 
-from math import ceil, cos, gcd, isfinite, log, sin, sqrt
+from math import ceil, cos, gcd, isfinite, sin
 
 import numpy as np
 from numba import njit
@@ -28,6 +28,7 @@ from numba import njit
 from ..flows.ambient import (LANE_WIDTH, multiplier, sincos, stage_work, state_rate,
                              tangent_factors, tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
+from .gram_schmidt import inner_term, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
@@ -49,67 +50,6 @@ SHIFT_MAX = 0.05
 _S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
 _C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
 _CAP = CAP_FRACTION["rk4"]
-
-
-@njit(cache=True, inline="always")
-def inner_term(w, a, b):
-    """The i-th term wᵢ aᵢ bᵢ of the inner product ⟨a, b⟩ of eq (18)."""
-    return w * a * b
-
-
-@njit(cache=True)
-def orthonormalize(X, w, logs):
-    """Modified Gram–Schmidt (eq 18) of the rows of X in ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ, in place;
-    logs[r] += log of the r-th norm."""
-    k, d = X.shape
-    for r in range(k):
-        for q in range(r):
-            p = 0.0
-            for i in range(d):
-                p += inner_term(w[i], X[r, i], X[q, i])
-            for i in range(d):
-                X[r, i] -= p * X[q, i]
-        nrm = 0.0
-        for i in range(d):
-            nrm += inner_term(w[i], X[r, i], X[r, i])
-        nrm = sqrt(nrm)
-        logs[r] += log(nrm)
-        for i in range(d):
-            X[r, i] /= nrm
-
-
-@njit(cache=True, inline="always")
-def orthonormalize_lanes(Z, o, k, d, L, w, p, nrm):
-    """`orthonormalize` of L lanes at once, the same operations per lane in the same order:
-    element i of row r of lane l at Z[o + (r·d + i)·L + l] (L a multiple of `LANE_WIDTH`);
-    the r-th norm of lane l into nrm[r·L + l] (its log is the caller's: libm, lane by lane);
-    p, shape (L,), is work space.  Sizes unsigned."""
-    W = LANE_WIDTH
-    dL = d * L
-    for l0 in range(L - L, L, W):
-        for r in range(k):
-            ro = o + r * dL + l0
-            for q in range(r):
-                qo = o + q * dL + l0
-                for t in range(W):
-                    p[l0 + t] = 0.0
-                for i in range(d):
-                    for t in range(W):
-                        p[l0 + t] += inner_term(w[i], Z[ro + i * L + t], Z[qo + i * L + t])
-                for i in range(d):
-                    for t in range(W):
-                        Z[ro + i * L + t] -= p[l0 + t] * Z[qo + i * L + t]
-            no = r * L + l0
-            for t in range(W):
-                nrm[no + t] = 0.0
-            for i in range(d):
-                for t in range(W):
-                    nrm[no + t] += inner_term(w[i], Z[ro + i * L + t], Z[ro + i * L + t])
-            for t in range(W):
-                nrm[no + t] = sqrt(nrm[no + t])
-            for i in range(d):
-                for t in range(W):
-                    Z[ro + i * L + t] /= nrm[no + t]
 
 
 @njit(cache=True, inline="always")
