@@ -20,7 +20,9 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-__all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc",
+from ..flows.ambient import LANE_WIDTH
+
+__all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
            "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of"]
 
 
@@ -88,6 +90,18 @@ def project_state(y, m, a, level, speed):
         rescale_speed(y, n, n, m, speed)
 
 
+@njit(cache=True, inline="always")
+def removed(x, a, B, s, minv):
+    """x − (a/B) sᵢ/mᵢ: the component a of x along ∇F or ∇G removed M-orthogonally."""
+    return x - a / B * s * minv
+
+
+@njit(cache=True, inline="always")
+def dg_term(s, xu, u, c, xt):
+    """The j-th term sⱼ ũⱼ + uⱼ cⱼ θ̃ⱼ of δG."""
+    return s * xu + u * c * xt
+
+
 @njit(cache=True)
 def project_tangent_sc(y, X, minv, s, c):
     """Project each row of X, shape (k, 2N), onto T_r at y: remove its δF and δG
@@ -101,12 +115,53 @@ def project_tangent_sc(y, X, minv, s, c):
         for j in range(n):
             dF += s[j] * X[r, j]
         for j in range(n):
-            X[r, j] -= dF / B * s[j] * minv[j]
+            X[r, j] = removed(X[r, j], dF, B, s[j], minv[j])
         dG = 0.0
         for j in range(n):
-            dG += s[j] * X[r, n + j] + y[n + j] * c[j] * X[r, j]
+            dG += dg_term(s[j], X[r, n + j], y[n + j], c[j], X[r, j])
         for j in range(n):
-            X[r, n + j] -= dG / B * s[j] * minv[j]
+            X[r, n + j] = removed(X[r, n + j], dG, B, s[j], minv[j])
+
+
+@njit(cache=True, inline="always")
+def project_tangent_lanes(Z, n, k, L, minv, s, c, B, dF, dG):
+    """`project_tangent_sc` of L lanes at once, the same operations per lane in the same
+    order: element i of row r of the stacked state [y; X] of lane l at Z[(r·2N + i)·L + l],
+    s, c (weighted sin/cos of y's angles) at [j·L + l] (L a multiple of `LANE_WIDTH`);
+    B, dF, dG, shape (L,), are work space.  Sizes unsigned."""
+    W = LANE_WIDTH
+    one = np.uint64(1)
+    dL = (n + n) * L                    # (unsigned throughout: no negative-index checks)
+    for l0 in range(L - L, L, W):
+        for t in range(W):
+            B[l0 + t] = 0.0
+        for j in range(n):
+            for t in range(W):
+                e = j * L + l0 + t
+                B[l0 + t] += s[e] * s[e] * minv[j]
+        for r in range(k):
+            ro = (r + one) * dL + l0
+            for t in range(W):
+                dF[l0 + t] = 0.0
+                dG[l0 + t] = 0.0
+            for j in range(n):
+                for t in range(W):
+                    dF[l0 + t] += s[j * L + l0 + t] * Z[ro + j * L + t]
+            for j in range(n):
+                for t in range(W):
+                    e = j * L + l0 + t
+                    Z[ro + j * L + t] = removed(Z[ro + j * L + t], dF[l0 + t], B[l0 + t], s[e],
+                                                minv[j])
+            for j in range(n):
+                for t in range(W):
+                    e = j * L + l0 + t
+                    dG[l0 + t] += dg_term(s[e], Z[ro + (n + j) * L + t], Z[(n + j) * L + l0 + t],
+                                          c[e], Z[ro + j * L + t])
+            for j in range(n):
+                for t in range(W):
+                    e = j * L + l0 + t
+                    Z[ro + (n + j) * L + t] = removed(Z[ro + (n + j) * L + t], dG[l0 + t],
+                                                      B[l0 + t], s[e], minv[j])
 
 
 @njit(cache=True)

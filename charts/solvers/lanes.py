@@ -2,19 +2,23 @@
 
 Each lane is one `TangentFlow`: a state y and k tangent vectors advanced by RK4 of eqs (8)
 and (17), projected onto the invariants every ``project_every`` steps and re-orthonormalised
-(eq 18) every ``reorth_every`` steps.  The lanes are stored as a structure of arrays: element
-i of the stacked state Z = [y; X] (flat, i < (1 + k)·2N) of lane l at ``Z[i, l]``, the lane
-innermost, so that the RK4 stages — the equations' lane loops ``*_lanes`` of
-``charts.flows.ambient``, `rk4_point`, `rk4_combine` and `shift_sincos` (elementwise) — run
-across the lanes in the CPU's vector units.  What happens once per lane and per projection or
-re-orthonormalisation (`project_state`, `sincos`, `project_tangent_sc`, `orthonormalize`) and
-a step the singular-point policy cuts into sub-steps (`substeps`) is done lane by lane
-through the one-trajectory homes, on a copy of the lane in the one-trajectory layout.
+(eq 18) every ``reorth_every`` steps.  The lanes are a structure of arrays, the lane
+innermost (``charts.solvers.lane_layout``: element i of the stacked state Z = [y; X] of lane
+l at ``i·Lp + l``, Lp = L rounded up to a multiple of ``LANE_WIDTH`` = 8), and every loop
+over lanes runs in blocks of 8 lanes, one AVX-512 register: the RK4 stages (the equations'
+lane loops ``*_lanes`` of ``charts.flows.ambient``, the stage point and sum of
+``charts.solvers.rk``, `shift_sincos_lanes`), the step policy (``fixed_step_status``), the
+projection onto T_r (`project_tangent_lanes`) and Gram–Schmidt (`orthonormalize_lanes`).  Lane by lane, on a copy in the one-trajectory layout, remain what
+calls libm (the projection of the state, `project_state` and `sincos`; the logs of eq 18's
+norms) and a step the singular-point policy cuts into sub-steps (`substeps`).  The time
+loop `_lanes_run` is compiled for each (N, k) so that its rotor and row loops have constant
+lengths.
 
 Identity with the one-trajectory kernel.  Every lane does the operations of
 `tangent_kernel` in the same order (no fast-math, no fused multiply-add: Numba compiles
-neither unless asked, and libm's sin/cos are called lane by lane), so lane l ends with the
-bits of a `TangentFlow` from the same start (tests/test_lanes.py).
+neither unless asked; libm's sin, cos and log lane by lane; sqrt and division are correctly
+rounded in vector units too), so lane l ends with the bits of a `TangentFlow` from the same
+start (tests/test_lanes.py).
 
 Per-lane status.  A lane that stops (the policy of ``charts.solvers.status``: singular point,
 non-finite state) is frozen at the state `tangent_kernel` would have returned and flagged in
@@ -23,17 +27,18 @@ arithmetic never mixes with its: a NaN stays in its lane).
 """
 from __future__ import annotations
 
-from math import isfinite
+from math import isfinite, log
 
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import (multiplier_lanes, sincos, stage_work, state_rate_lanes,
+from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
-from ..geometry.projection import project_state, project_tangent_sc
-from .rk import rk4_combine, rk4_node, rk4_point
+from ..geometry.projection import project_state, project_tangent_lanes
+from .lane_layout import LanesCompiler, gather, lanes_in, lanes_out, scatter
+from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
-from .tangent import countdowns, orthonormalize, shift_sincos, substeps
+from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows"]
 
@@ -49,59 +54,49 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
     `charts.solvers.tangent._rk4_step`: the same operations per lane, in the same order,
     written out as there (the stage points as shared inline functions, called from the two
     branches of the stage loop, cost both kernels ~40 %, measured).  Sizes unsigned
-    (``np.uint64``) as there."""
+    (``np.uint64``) as there; every loop in blocks of `LANE_WIDTH` (L a multiple)."""
+    W = LANE_WIDTH
     nl = n * L
-    for i in range(nl):
-        th[i] = Zf[i]
-    zero = np.uint64(0)
+    z0 = nl - nl
+    for i0 in range(z0, nl, W):
+        for t in range(W):
+            th[i0 + t] = Zf[i0 + t]
     dL = d * L
-    for st in range(4):
+    h6 = RK4_WEIGHTS[0] * h
+    # stage 0 at Zf, s0, c0 themselves (no copies)
+    multiplier_lanes(Zf, z0, n, L, minv, s0, c0, lam, iB)
+    state_rate_lanes(Zf, z0, n, L, minv, s0, lam, K, z0)
+    tangent_factors_lanes(Zf, z0, n, L, minv, s0, c0, lam, f, g, p, q)
+    for r in range(np.uint64(1), R):
+        tangent_rate_lanes(Zf, r * dL, n, L, f, g, p, q, iB, dlam, K, r * dL)
+    for st in range(1, 4):
         o = np.uint64(st) * M
-        if st == 0:
-            for i in range(M):
-                Zt[i] = Zf[i]
-            for i in range(nl):
-                s[i] = s0[i]
-                c[i] = c0[i]
-        else:
-            a = rk4_node(st) * h
-            op = o - M
-            rk4_point(Zf, K, op, a, M, Zt)
-            for i in range(nl):
-                dl[i] = a * K[op + i]
-            shift_sincos(s0, c0, dl, Zt, nl, wl, s, c)
-        multiplier_lanes(Zt, zero, n, L, minv, s, c, lam, iB)
-        state_rate_lanes(Zt, zero, n, L, minv, s, lam, K, o)
-        tangent_factors_lanes(Zt, zero, n, L, minv, s, c, lam, f, g, p, q)
+        a = rk4_node(st) * h
+        op = o - M
+        for i0 in range(z0, M, W):  # `rk4_point`
+            for t in range(W):
+                Zt[i0 + t] = stage_point(Zf[i0 + t], a, K[op + i0 + t])
+        for i0 in range(z0, nl, W):
+            for t in range(W):
+                dl[i0 + t] = a * K[op + i0 + t]
+        shift_sincos_lanes(s0, c0, dl, Zt, nl, wl, s, c)
+        multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
+        state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
+        tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
         for r in range(np.uint64(1), R):
             tangent_rate_lanes(Zt, r * dL, n, L, f, g, p, q, iB, dlam, K, o + r * dL)
-    rk4_combine(Zf, K, h, M, Zf)
-    for i in range(nl):
-        dl[i] = Zf[i] - th[i]
-    shift_sincos(s0, c0, dl, Zf, nl, wl, s0, c0)
+    M2 = M + M
+    M3 = M2 + M
+    for i0 in range(z0, M, W):  # `rk4_combine`
+        for t in range(W):
+            i = i0 + t
+            Zf[i] = rk4_sum(Zf[i], h6, K[i], K[M + i], K[M2 + i], K[M3 + i])
+    for i0 in range(z0, nl, W):
+        for t in range(W):
+            dl[i0 + t] = Zf[i0 + t] - th[i0 + t]
+    shift_sincos_lanes(s0, c0, dl, Zf, nl, wl, s0, c0)
 
 
-@njit(cache=True, inline="always")
-def _gather(Z2, S2, l, z, s0, c0):
-    """Lane l of Z2 (R·d, L) and S2 (2, N, L) into z (R·d,), s0, c0 (N,)."""
-    for i in range(z.size):
-        z[i] = Z2[i, l]
-    for j in range(s0.size):
-        s0[j] = S2[0, j, l]
-        c0[j] = S2[1, j, l]
-
-
-@njit(cache=True, inline="always")
-def _scatter(z, s0, c0, Z2, S2, l):
-    """The inverse of `_gather`."""
-    for i in range(z.size):
-        Z2[i, l] = z[i]
-    for j in range(s0.size):
-        S2[0, j, l] = s0[j]
-        S2[1, j, l] = c0[j]
-
-
-@njit(cache=True)
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                  nsteps, reorth_every, w, restricted, project_every, logsum, events,
                  event_logs):
@@ -114,67 +109,87 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     ``status`` (L,) holds each lane's status (RUNNING, or SINGULAR / NONFINITE once it
     stopped, with the global step in ``stopped[l]``); a stopped lane keeps, in ``frozen``
     (the shape of Z plus 2N rows for its sin/cos), the state `tangent_kernel` would have
-    returned, and leaves every call with it.  Returns the number of running lanes."""
-    D, L = Z.shape
-    n = wts.size
+    returned, and leaves every call with it.  Returns the number of running lanes.
+
+    The steps run in `_lanes_run`, compiled for each N and k (their loops then have constant
+    lengths, which LLVM unrolls), on copies of Z and sc with the lane count rounded up to a
+    multiple of `LANE_WIDTH` (the extra lanes: copies of a running lane, never read back) and
+    every array distinct, as its ``noalias`` compilation requires."""
+    n = int(wts.size)
+    k = Z.shape[0] // (2 * n) - 1
+    Zp, s0, c0, work = lanes_in(Z, sc, wts)
+    running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
+                         speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
+                         events, event_logs, work, (0,) * n, (0,) * k)
+    lanes_out(Zp, s0, c0, Z, sc)
+    return running
+
+
+@njit(cache=True, pipeline_class=LanesCompiler)
+def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
+               nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
+               work, n_tag, k_tag):
+    """The time loop of `lanes_kernel` on the flat lanes Zf, s0, c0 (element i of lane l at
+    i·Lp + l, Lp a multiple of `LANE_WIDTH`; lanes ≥ L = status.size are padding, copied
+    from lane 0 after each re-orthonormalisation); ``work``: the step's work arrays and the
+    weights per lane; ``n_tag``, ``k_tag``: tuples of N and k elements, so that each (N, k)
+    has its own compilation.  Every array argument distinct (``noalias``)."""
+    n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
+    k = len(k_tag)
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl = work
+    L = status.size
+    Lp = lam.size
     d = 2 * n
-    R = D // d
-    k = R - 1
-    M = D * L
-    nl = n * L
-    nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(L)
-    Zf = Z.reshape(M)
-    s0 = sc[0].reshape(nl)
-    c0 = sc[1].reshape(nl)
-    Zt = np.empty(M)
-    K = np.empty(4 * M)
-    th = np.empty(nl)
-    dl = np.empty(nl)
-    s, c, f, g, p, q = np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl), np.empty(nl)
-    lam, iB, dlam, S, U = np.empty(L), np.empty(L), np.empty(L), np.empty(L), np.empty(L)
-    code = np.empty(L, dtype=np.int64)
-    cap = np.empty(L)
-    wl = np.empty(nl)
-    for j in range(n):
-        for l in range(L):
-            wl[j * L + l] = wts[j]
+    R = k + 1
+    D = R * d
+    M = D * Lp
+    nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
+    W = LANE_WIDTH
+    S, U = np.empty(Lp), np.empty(Lp)
+    code = np.empty(Lp, dtype=np.int64)
+    cap = np.empty(Lp)
     # one lane in the one-trajectory layout (projections, eq 18, sub-steps)
     z = np.empty(D)
     zs0 = np.empty(n)
     zc0 = np.empty(n)
-    X1 = z[d:].reshape(k, d)
     y1 = z[:d]
     Zt1 = np.empty(D)
     K1 = np.empty(4 * D)
     th1 = np.empty(n)
     dl1 = np.empty(n)
     s1, c1, f1, g1, p1, q1 = stage_work(n)
+    v1, v2, v3 = np.empty(Lp), np.empty(Lp), np.empty(Lp)
+    nrm = np.empty(max(k, 1) * Lp)
+    ku = np.uint64(k)
     sub = np.empty(L, dtype=np.int64)
     subcap = np.empty(L)
     subZ = np.empty((L, D))
     subS = np.empty((L, 2, n))
     to_proj, to_reorth, ev = countdowns(counter[0], project_every, reorth_every, events)
     for it in range(nsteps):
-        for l in range(L):
-            S[l] = 0.0
-            U[l] = 0.0
-        for j in range(n):
-            for l in range(L):
-                S[l] += s0[j * L + l] * s0[j * L + l]
-                U[l] += Zf[(n + j) * L + l] * Zf[(n + j) * L + l]
-        for l in range(L):  # the policy, across the lanes
-            code[l], cap[l] = fixed_step_status(S[l], U[l], dt, _CAP)
+        for l0 in range(Lu - Lu, Lu, W):  # the policy, across the lanes (padding too)
+            for t in range(W):
+                S[l0 + t] = 0.0
+                U[l0 + t] = 0.0
+            for j in range(nu):
+                a = j * Lu + l0
+                b = (nu + j) * Lu + l0
+                for t in range(W):
+                    S[l0 + t] += s0[a + t] * s0[a + t]
+                    U[l0 + t] += Zf[b + t] * Zf[b + t]
+            for t in range(W):
+                code[l0 + t], cap[l0 + t] = fixed_step_status(S[l0 + t], U[l0 + t], dt, _CAP)
         nsub = 0
         for l in range(L):
             if status[l] != RUNNING or (code[l] == RUNNING and cap[l] >= dt):
                 continue
             st, hc = code[l], cap[l]
             if st != RUNNING:
-                _stop(l, st, counter[0], Z, sc, status, stopped, frozen)
+                _stop(l, st, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
             elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
                 sub[nsub] = l
                 subcap[nsub] = hc
-                _gather(Z, sc, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
+                gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
                 nsub += 1
         _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv, wl, dt,
                     nu, Ru, du, Mu, Lu)
@@ -183,33 +198,34 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             zz = subZ[t]
             ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
                           minv, wts, dt, subcap[t], nu, Ru, du, np.uint64(D))
-            _scatter(zz, subS[t, 0], subS[t, 1], Z, sc, l)
+            scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
             if not ok:
-                _stop(l, SINGULAR, counter[0], Z, sc, status, stopped, frozen)
+                _stop(l, SINGULAR, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
             to_proj = project_every
             for l in range(L):
                 if status[l] == RUNNING:
-                    _gather(Z, sc, l, z, zs0, zc0)
+                    gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
                     project_state(y1, m, wts, level, speed[l])
                     sincos(z, 0, n, wts, zs0, zc0)
-                    _scatter(z, zs0, zc0, Z, sc, l)
+                    scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
         to_reorth -= 1
         if to_reorth == 0:
             to_reorth = reorth_every
-            if R > 1:
+            if R > 1:  # across all lanes (a stopped lane's copy is restored at the end)
+                if restricted:
+                    project_tangent_lanes(Zf, nu, ku, Lu, minv, s0, c0, v1, v2, v3)
+                orthonormalize_lanes(Zf, du * Lu, ku, du, Lu, w, v1, nrm)
                 for l in range(L):
                     if status[l] != RUNNING:
                         continue
-                    _gather(Z, sc, l, z, zs0, zc0)
-                    if restricted:
-                        project_tangent_sc(y1, X1, minv, zs0, zc0)
-                    orthonormalize(X1, w, logsum[l])
-                    _scatter(z, zs0, zc0, Z, sc, l)
+                    for r in range(k):
+                        logsum[l, r] += log(nrm[r * Lp + l])
                     if not isfinite(logsum[l, R - 2]):
-                        _stop(l, NONFINITE, counter[0], Z, sc, status, stopped, frozen)
+                        _stop(l, NONFINITE, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
+            _refresh(Zf, s0, c0, Lp, status, z, zs0, zc0)
         if ev < events.size and counter[0] == events[ev]:
             for l in range(L):
                 if status[l] == RUNNING:
@@ -222,25 +238,46 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
             running += 1
         else:
             for i in range(D):
-                Z[i, l] = frozen[i, l]
+                Zf[i * Lp + l] = frozen[i, l]
             for j in range(n):
-                sc[0, j, l] = frozen[D + j, l]
-                sc[1, j, l] = frozen[D + n + j, l]
+                s0[j * Lp + l] = frozen[D + j, l]
+                c0[j * Lp + l] = frozen[D + n + j, l]
     return running
 
 
+@njit(cache=True, inline="always")
+def _refresh(Zf, s0, c0, Lp, status, z, zs, zc):
+    """Copy the first running lane into the padding lanes and the stopped lanes (which
+    would otherwise go on computing on a state that may overflow)."""
+    L = status.size
+    first = -1
+    for l in range(L):
+        if status[l] == RUNNING:
+            first = l
+            break
+    if first < 0:
+        return
+    gathered = False
+    for l in range(Lp):
+        if l >= L or status[l] != RUNNING:
+            if not gathered:
+                gather(Zf, s0, c0, Lp, first, z, zs, zc)
+                gathered = True
+            scatter(z, zs, zc, Zf, s0, c0, Lp, l)
+
+
 @njit(cache=True)
-def _stop(l, st, step, Z, sc, status, stopped, frozen):
+def _stop(l, st, step, Zf, s0, c0, Lp, status, stopped, frozen):
     """Stop lane l with status st at the global step ``step``, freezing its state."""
     status[l] = st
     stopped[l] = step
-    D = Z.shape[0]
-    n = sc.shape[1]
+    D = Zf.size // Lp
+    n = s0.size // Lp
     for i in range(D):
-        frozen[i, l] = Z[i, l]
+        frozen[i, l] = Zf[i * Lp + l]
     for j in range(n):
-        frozen[D + j, l] = sc[0, j, l]
-        frozen[D + n + j, l] = sc[1, j, l]
+        frozen[D + j, l] = s0[j * Lp + l]
+        frozen[D + n + j, l] = c0[j * Lp + l]
 
 
 def _same_system(a, b) -> bool:

@@ -26,7 +26,8 @@ from numba import njit, types
 from .dop853_coefficients import A, B, D, E3, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED
 
 __all__ = [
-    "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "rk4_stage_point",
+    "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "stage_point",
+    "rk4_sum", "rk4_stage_point",
     "rk4_combine",
     "rk4_step", "dop853_step", "dop853_dense", "hermite_dense", "dense_eval", "initial_step", "step_factor",
     "N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER",
@@ -63,7 +64,19 @@ def rk4_point(z, K, o, a, L, zt):
     kernels, a branch here would keep Numba's reference counting in their loops
     (docs/performance.md).  Offsets may be unsigned (no negative-index wraparound)."""
     for i in range(L):
-        zt[i] = z[i] + a * K[o + i]
+        zt[i] = stage_point(z[i], a, K[o + i])
+
+
+@njit(cache=True, inline="always")
+def stage_point(z, a, k):
+    """One element of `rk4_point`: z + a·k."""
+    return z + a * k
+
+
+@njit(cache=True, inline="always")
+def rk4_sum(z, h6, k0, k1, k2, k3):
+    """One element of `rk4_combine`: z + h6·(k₀ + 2k₁ + 2k₂ + k₃), h6 = h/6."""
+    return z + h6 * (k0 + 2.0 * k1 + 2.0 * k2 + k3)
 
 
 @njit(cache=True, inline="always")
@@ -74,7 +87,7 @@ def rk4_combine(z, K, h, L, out):
     L2 = L + L
     L3 = L2 + L
     for i in range(L):
-        out[i] = z[i] + h6 * (K[i] + 2.0 * K[L + i] + 2.0 * K[L2 + i] + K[L3 + i])
+        out[i] = rk4_sum(z[i], h6, K[i], K[L + i], K[L2 + i], K[L3 + i])
 
 
 @njit(cache=True, inline="always")

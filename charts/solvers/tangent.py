@@ -20,20 +20,21 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 """
 from __future__ import annotations
 
-from math import ceil, cos, gcd, isfinite, log, sin, sqrt
+from math import ceil, cos, gcd, isfinite, sin
 
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import (multiplier, sincos, stage_work, state_rate, tangent_factors,
-                             tangent_rate)
+from ..flows.ambient import (LANE_WIDTH, multiplier, sincos, stage_work, state_rate,
+                             tangent_factors, tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
+from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error, step_cap
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
-           "inner_weights",
-           "shift_sincos", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
+           "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
+           "shift_sincos_lanes", "shifted", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -53,63 +54,52 @@ _CAP = CAP_FRACTION["rk4"]
 
 
 @njit(cache=True, inline="always")
-def _gram_schmidt_row(X, w, r, d):
-    """Row r of X made orthogonal to rows 0 … r−1 (orthonormal) and normalised in
-    ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ; returns its norm before normalising."""
-    for q in range(r):
-        p = 0.0
-        for i in range(d):
-            p += w[i] * X[r, i] * X[q, i]
-        for i in range(d):
-            X[r, i] -= p * X[q, i]
-    nrm = 0.0
-    for i in range(d):
-        nrm += w[i] * X[r, i] * X[r, i]
-    nrm = sqrt(nrm)
-    for i in range(d):
-        X[r, i] /= nrm
-    return nrm
+def shifted(sj, cj, d):
+    """(a sin, a cos) of θ₀ + δ from sj, cj = a sin θ₀, a cos θ₀ by the angle-addition
+    formula with the polynomials for |δ| ≤ `SHIFT_MAX` (linear in sj, cj: the weight a rides
+    along)."""
+    d2 = d * d
+    sd = d + d * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * _S[3])))
+    cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * _C[3])))
+    return sj + (sj * cm + cj * sd), cj + (cj * cm - sj * sd)
 
 
-@njit(cache=True)
-def orthonormalize(X, w, logs):
-    """Modified Gram–Schmidt (eq 18) of the rows of X in ⟨a, b⟩ = Σ wᵢ aᵢ bᵢ, in place;
-    logs[r] += log of the r-th norm."""
-    k, d = X.shape
-    for r in range(k):
-        logs[r] += log(_gram_schmidt_row(X, w, r, d))
-
-
-@njit(cache=True)
-def orthonormal_rows(X, w):
-    """`orthonormalize` without the logarithms of the norms (a basis only)."""
-    k, d = X.shape
-    for r in range(k):
-        _gram_schmidt_row(X, w, r, d)
+@njit(cache=True, inline="always")
+def _libm_beyond_shift(dl, theta, n, a, s, c):
+    """s, c = a sin, a cos of theta (libm) where |δ| > `SHIFT_MAX` (rare: called only where
+    a vectorisable count found such a δ)."""
+    for j in range(n):
+        if abs(dl[j]) > SHIFT_MAX:
+            s[j] = a[j] * sin(theta[j])
+            c[j] = a[j] * cos(theta[j])
 
 
 @njit(cache=True, inline="always")
 def shift_sincos(s0, c0, dl, theta, n, a, s, c):
     """s, c = a sin, a cos of θ = θ₀ + δ from s0, c0 = a sin θ₀, a cos θ₀ and δ = dl, shape
-    (N,), by the angle-addition formula (linear in s0, c0, so the weights a ride along;
-    polynomials for |δ| ≤ `SHIFT_MAX`, else libm of theta).  s, c may be s0, c0 (in place)."""
+    (N,) (`shifted`; libm of theta for |δ| > `SHIFT_MAX`).  s, c may be s0, c0 (in place)."""
     for j in range(n):
-        d = dl[j]
-        d2 = d * d
-        sd = d + d * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * _S[3])))
-        cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * _C[3])))
-        sj = s0[j]
-        cj = c0[j]
-        s[j] = sj + (sj * cm + cj * sd)
-        c[j] = cj + (cj * cm - sj * sd)
-    big = 0  # (a vectorisable count first: the test is rare and the loop below is not)
+        s[j], c[j] = shifted(s0[j], c0[j], dl[j])
+    big = 0
     for j in range(n):
         big += abs(dl[j]) > SHIFT_MAX
     if big:
-        for j in range(n):
-            if abs(dl[j]) > SHIFT_MAX:
-                s[j] = a[j] * sin(theta[j])
-                c[j] = a[j] * cos(theta[j])
+        _libm_beyond_shift(dl, theta, n, a, s, c)
+
+
+@njit(cache=True, inline="always")
+def shift_sincos_lanes(s0, c0, dl, theta, n, a, s, c):
+    """`shift_sincos` of n elements in blocks of ``LANE_WIDTH`` (n a multiple of it)."""
+    W = LANE_WIDTH
+    big = 0
+    for j0 in range(n - n, n, W):
+        for t in range(W):
+            s[j0 + t], c[j0 + t] = shifted(s0[j0 + t], c0[j0 + t], dl[j0 + t])
+    for j0 in range(n - n, n, W):
+        for t in range(W):
+            big += abs(dl[j0 + t]) > SHIFT_MAX
+    if big:
+        _libm_beyond_shift(dl, theta, n, a, s, c)
 
 
 @njit(cache=True, inline="always")

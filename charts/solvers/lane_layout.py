@@ -1,0 +1,132 @@
+"""The layout of the lane kernel (``charts.solvers.lanes``) and its compilation.
+
+Layout: L trajectories as flat arrays, element i of lane l at ``i·Lp + l``, the lane count
+rounded up to a multiple Lp of `LANE_WIDTH` (padding lanes: copies of a running lane), each
+array starting on a cache line (`aligned`); `lanes_in` / `lanes_out` convert from / to the
+(R·d, L) and (2, N, L) arrays of `LaneFlows`, `gather` / `scatter` copy one lane to / from
+the one-trajectory layout.
+
+Compilation (`LanesCompiler`): the kernel's array arguments are marked ``noalias`` (so its
+callers must pass distinct arrays) and only LLVM's SLP vectoriser packs its loops (the
+loop vectoriser off): the blocks of `LANE_WIDTH` lanes are loops of constant length,
+unrolled before vectorisation, whose packing into vector instructions is SLP's work.
+Neither changes an arithmetic operation (no fast-math, no FMA contraction), so each lane
+keeps the bits of the one-trajectory kernel.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+from numba.core import config
+from numba.core.compiler import CompilerBase, DefaultPassBuilder
+from numba.core.compiler_machinery import register_pass
+from numba.core.typed_passes import NativeLowering
+
+from ..flows.ambient import LANE_WIDTH
+
+__all__ = ["LanesCompiler", "aligned", "lanes_in", "lanes_out", "gather", "scatter"]
+
+
+@register_pass(mutates_CFG=False, analysis_only=False)
+class VectorLowering(NativeLowering):
+    """Numba's lowering with LLVM's SLP vectoriser on (``NUMBA_SLP_VECTORIZE``, off by
+    default), for this function's code only: it packs the unrolled blocks of `LANE_WIDTH`
+    lanes into vector instructions (the loop vectoriser does not: a block is unrolled
+    before it runs).  Same IEEE operations, so the same bits."""
+
+    _name = "charts_vector_lowering"
+
+    def run_pass(self, state):
+        codegen = state.targetctx.codegen()
+        saved = config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect
+        config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = 1, 0, False
+        try:
+            return super().run_pass(state)
+        finally:
+            config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = saved
+
+
+class LanesCompiler(CompilerBase):
+    """Numba's nopython pipeline with the function's array arguments marked ``noalias``
+    (LLVM may then reorder their loads and stores without run-time overlap checks; only for
+    functions whose callers pass distinct arrays: ``charts.solvers.lanes._lanes_run``) and
+    `VectorLowering`."""
+
+    def define_pipelines(self):
+        self.state.flags.noalias = True
+        pm = DefaultPassBuilder.define_nopython_pipeline(self.state)
+        pm.passes = [(VectorLowering if p is NativeLowering else p, d) for p, d in pm.passes]
+        return [pm]
+
+
+@njit(cache=True)
+def aligned(size):
+    """An empty float array of ``size`` whose data starts on a 64-byte boundary (a cache
+    line: a block of `LANE_WIDTH` doubles then never straddles two lines; Numba aligns its
+    arrays to 32 bytes: 147 against 123 ns per lane-step for the lane step in a stand-alone
+    harness, N = 5, 16 lanes)."""
+    b = np.empty(size + 8)
+    off = (64 - b.ctypes.data % 64) % 64 // 8
+    return b[off:off + size]
+
+
+@njit(cache=True)
+def lanes_in(Z, sc, wts):
+    """The flat, padded, aligned copies of Z and sc (``charts.solvers.lanes.lanes_kernel``;
+    padding lanes: copies of lane 0) and the work arrays of its time loop."""
+    D, L = Z.shape
+    n = wts.size
+    W = int(LANE_WIDTH)
+    Lp = (L + W - 1) // W * W
+    M = D * Lp
+    nl = n * Lp
+    Zp, s0, c0, wl = aligned(M), aligned(nl), aligned(nl), aligned(nl)
+    for l in range(Lp):
+        src = l if l < L else 0
+        for i in range(D):
+            Zp[i * Lp + l] = Z[i, src]
+        for j in range(n):
+            s0[j * Lp + l] = sc[0, j, src]
+            c0[j * Lp + l] = sc[1, j, src]
+    for j in range(n):
+        for l in range(Lp):
+            wl[j * Lp + l] = wts[j]
+    work = (aligned(M), aligned(4 * M), aligned(nl), aligned(nl), aligned(nl), aligned(nl),
+            aligned(nl), aligned(nl), aligned(nl), aligned(nl), aligned(Lp), aligned(Lp),
+            aligned(Lp), wl)
+    return Zp, s0, c0, work
+
+
+@njit(cache=True)
+def lanes_out(Zp, s0, c0, Z, sc):
+    """The inverse of `lanes_in` for the L lanes of Z and sc."""
+    D, L = Z.shape
+    n = sc.shape[1]
+    Lp = Zp.size // D
+    for l in range(L):
+        for i in range(D):
+            Z[i, l] = Zp[i * Lp + l]
+        for j in range(n):
+            sc[0, j, l] = s0[j * Lp + l]
+            sc[1, j, l] = c0[j * Lp + l]
+
+
+@njit(cache=True, inline="always")
+def gather(Zf, s0, c0, Lp, l, z, zs, zc):
+    """Lane l of the flat lanes Zf, s0, c0 (element i of lane l at i·Lp + l) into z (R·d,),
+    zs, zc (N,)."""
+    for i in range(z.size):
+        z[i] = Zf[i * Lp + l]
+    for j in range(zs.size):
+        zs[j] = s0[j * Lp + l]
+        zc[j] = c0[j * Lp + l]
+
+
+@njit(cache=True, inline="always")
+def scatter(z, zs, zc, Zf, s0, c0, Lp, l):
+    """The inverse of `gather`."""
+    for i in range(z.size):
+        Zf[i * Lp + l] = z[i]
+    for j in range(zs.size):
+        s0[j * Lp + l] = zs[j]
+        c0[j * Lp + l] = zc[j]
