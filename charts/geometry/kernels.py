@@ -58,7 +58,7 @@ def chart_module(n: int, paper: bool = False):
 
 
 #: Generated functions called inside numba kernels (``charts.flows.chart``): always compiled.
-KERNEL_FUNCTIONS = ("geodesic_acceleration", "transport_rate")
+KERNEL_FUNCTIONS = ("geodesic_acceleration_sc", "transport_rate_sc")
 #: A generated function called only from Python is left to CPython when its source is longer
 #: than this: LLVM's compile time grows superlinearly with straight-line code (N = 7 Riemann,
 #: 1585 lines: 277 s to compile, 0.44 ms per call in CPython), while every function of the
