@@ -263,19 +263,25 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         ist[D.I_IEVAL] = first
         T_out = np.zeros(te.size - first)
         Y_out = np.zeros((te.size - first, na))
-    else:
-        ts.append(np.array([0.0]))
-        rows.append(row0[None, :])
-        rows_out = max(_EVERY_STEP_BUFFER, min(int(chunk_steps), _EVERY_STEP_BYTES // (8 * na)))
-        T_out = np.zeros(rows_out)
-        Y_out = np.zeros((rows_out, na))
+    else:  # the loop writes every step into the buffer after the t = 0 row
+        # (RK4: room for the whole run unless the cap shortens steps, up to _EVERY_STEP_BYTES)
+        expected = math.ceil(t_final / dt) + 2 if method == "rk4" else int(chunk_steps)
+        rows_out = max(_EVERY_STEP_BUFFER, min(expected, _EVERY_STEP_BYTES // (8 * na)))
+        T_out = np.empty(rows_out)
+        Y_out = np.empty((rows_out, na))
+        T_out[0] = 0.0
+        Y_out[0] = row0
+        ist[D.I_NOUT] = 1
     switches = list(form.initial_switches)
 
     def drain():
+        nonlocal T_out, Y_out
         nout = int(ist[D.I_NOUT])
-        if not use_eval and nout:
-            ts.append(T_out[:nout].copy())
-            rows.append(Y_out[:nout].copy())
+        if not use_eval and nout == T_out.size:  # full: keep it, the loop gets a fresh one
+            ts.append(T_out)
+            rows.append(Y_out)
+            T_out = np.empty_like(T_out)
+            Y_out = np.empty_like(Y_out)
             ist[D.I_NOUT] = 0
         switches.extend(form.drain_log(log, ipar))
         if dense:
@@ -283,14 +289,16 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
             ist[D.I_NSEG] = 0
 
     def result(status, s_end):
-        if use_eval:
-            nout = int(ist[D.I_NOUT])
-            ts.append(T_out[:nout])
-            rows.append(Y_out[:nout])
-        s = np.concatenate(ts)
-        Y = np.concatenate(rows, axis=0)
+        nout = int(ist[D.I_NOUT])
+        ts.append(T_out[:nout])
+        rows.append(Y_out[:nout])
+        if len(rows) == 1 and 2 * nout >= Y_out.shape[0]:  # one buffer, mostly used: no copy
+            s, Y = ts[0], rows[0]
+        else:
+            s = np.concatenate(ts)
+            Y = np.concatenate(rows, axis=0)
         sw = [(t0 + sign * w[0],) + tuple(w[1:]) for w in switches if w[0] <= s_end]
-        keep = s <= s_end
+        keep = slice(0, int(np.searchsorted(s, s_end, side="right")))  # s <= s_end (s increases)
         t = te_user[:s.size][keep] if use_eval else t0 + sign * s[keep]
         Y = Y[keep]
         if sol is not None:
