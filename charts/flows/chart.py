@@ -81,21 +81,23 @@ def rates(y, par, dy, ga, tr):
     c = par[1 + 2 * n]
     ws, wc = point_sincos(y, par, d)
     _, _, s2 = eliminated_angle_sc(wc, d, w, c, 1.0)
-    if s2 <= 0.0:
+    health = -1.0
+    if s2 > 0.0:  # (one exit: the views are released in one place, see rk.rk4_point)
+        S = 0.0
+        for a in range(d):
+            S += ws[a] ** 2
+        health = S + s2
+        v = y[d:2 * d]
+        ga(ws, wc, v, m, w, c, dy[d:2 * d])
+        for a in range(d):
+            dy[a] = y[d + a]
+        for r in range(nv):
+            o = (2 + r) * d
+            tr(ws, wc, v, y[o:o + d], m, w, c, dy[o:o + d])
+    else:
         for i in range(y.size):
             dy[i] = 0.0
-        return -1.0
-    S = 0.0
-    for a in range(d):
-        S += ws[a] ** 2
-    v = y[d:2 * d]
-    ga(ws, wc, v, m, w, c, dy[d:2 * d])
-    for a in range(d):
-        dy[a] = y[d + a]
-    for r in range(nv):
-        o = (2 + r) * d
-        tr(ws, wc, v, y[o:o + d], m, w, c, dy[o:o + d])
-    return S + s2
+    return health
 
 
 def structured_rates(y, par, dy):

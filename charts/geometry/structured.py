@@ -160,7 +160,7 @@ def riemann(q, m, w, c, out):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def transport_rate_sc(ws, wc, v, p, m, w, c, out):
     """dp^α/dt = −Γ^α_βγ vᵝ pᵞ = (σ_α / (m_α G)) h(V, P), eq (16), with σ = ws = w sin q and
     κ = wc = w cos q given; O(d), out shape (d,)."""
@@ -172,7 +172,7 @@ def transport_rate_sc(ws, wc, v, p, m, w, c, out):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
     """dv^α/dt = −Γ^α_βγ vᵝ vᵞ, eq (14) (`transport_rate_sc` with p = v); out shape (d,)."""
     return transport_rate_sc(ws, wc, v, v, m, a, c, out)

@@ -216,18 +216,21 @@ def chart_rhs(n: int, paper: bool = False):
     rates = chart_rates(n, paper)
     if rates is structured_rates:
         return _structured_rhs()
-    return njit(RHS_SIG)(rates)
+    return njit(RHS_SIG, error_model="numpy")(rates)
 
 
 @cache
 def _structured_rhs():
-    return njit(RHS_SIG, cache=True)(structured_rates)
+    return njit(RHS_SIG, cache=True, error_model="numpy")(structured_rates)
 
 
 @cache
 def _common_hooks():
-    return (njit(CAP_SIG, cache=True)(_cap), njit(POST_SIG, cache=True)(_post),
-            njit(OUT_SIG, cache=True)(_to_ambient))
+    # (numpy's error model: no zero-division branches, so no reference counting of the
+    # views; every divisor is checked nonzero first, or is a weight or a positive norm)
+    opts = dict(cache=True, error_model="numpy")
+    return (njit(CAP_SIG, **opts)(_cap), njit(POST_SIG, **opts)(_post),
+            njit(OUT_SIG, **opts)(_to_ambient))
 
 
 class ChartFlow(Formulation):
