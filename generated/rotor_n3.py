@@ -8,6 +8,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 3
 DIM = 2
 
@@ -125,63 +127,67 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (2,)."""
     x0 = 1/m[0]
     x1 = 1/m[1]
-    x2 = ws0**2
-    x3 = ws1**2
-    x4 = -c + wc0 + wc1
+    x2 = ws[0]**2
+    x3 = ws[1]**2
+    x4 = -c + wc[0] + wc[1]
     x5 = a[2]**2 - x4**2
     x6 = 1/(m[2]*(x0*x2 + x1*x3) + x5)
     x7 = m[2]*x4/x5**2
-    x8 = x3*x7*ws0
+    x8 = x3*x7*ws[0]
     x9 = 2*v[0]*v[1]
     x10 = v[1]**2
     x11 = m[2]/x5
-    x12 = x11*ws1
+    x12 = x11*ws[1]
     x13 = v[0]**2
-    x14 = x2*x7*ws1
-    x15 = x10*(x12*wc1 - x7*ws1**3) + x13*(x12*wc0 - x14) - x8*x9
+    x14 = x2*x7*ws[1]
+    x15 = x10*(x12*wc[1] - x7*ws[1]**3) + x13*(x12*wc[0] - x14) - x8*x9
     x16 = m[2]*x6
-    x17 = x11*ws0
-    x18 = x10*(x17*wc1 - x8) + x13*(x17*wc0 - x7*ws0**3) - x14*x9
-    out[0] = m[2]*x0*x1*x15*x6*ws0*ws1 - x18*(x0 - x16*x2/m[0]**2)
-    out[1] = m[2]*x0*x1*x18*x6*ws0*ws1 - x15*(x1 - x16*x3/m[1]**2)
+    x17 = x11*ws[0]
+    x18 = x10*(x17*wc[1] - x8) + x13*(x17*wc[0] - x7*ws[0]**3) - x14*x9
+    out[0] = m[2]*x0*x1*x15*x6*ws[0]*ws[1] - x18*(x0 - x16*x2/m[0]**2)
+    out[1] = m[2]*x0*x1*x18*x6*ws[0]*ws[1] - x15*(x1 - x16*x3/m[1]**2)
+    return out
+
+
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (2,)."""
+    x0 = 1/m[0]
+    x1 = 1/m[1]
+    x2 = ws[0]**2
+    x3 = ws[1]**2
+    x4 = -c + wc[0] + wc[1]
+    x5 = a[2]**2 - x4**2
+    x6 = 1/(m[2]*(x0*x2 + x1*x3) + x5)
+    x7 = m[2]*x4/x5**2
+    x8 = x3*x7*ws[0]
+    x9 = v[0]*p[1]
+    x10 = v[1]*p[0]
+    x11 = m[2]/x5
+    x12 = x11*ws[1]
+    x13 = x2*x7*ws[1]
+    x14 = v[0]*p[0]*(x12*wc[0] - x13) + v[1]*p[1]*(x12*wc[1] - x7*ws[1]**3) - x10*x8 - x8*x9
+    x15 = m[2]*x6
+    x16 = x11*ws[0]
+    x17 = v[0]*p[0]*(x16*wc[0] - x7*ws[0]**3) + v[1]*p[1]*(x16*wc[1] - x8) - x10*x13 - x13*x9
+    out[0] = m[2]*x0*x1*x14*x6*ws[0]*ws[1] - x17*(x0 - x15*x2/m[0]**2)
+    out[1] = m[2]*x0*x1*x17*x6*ws[0]*ws[1] - x14*(x1 - x15*x3/m[1]**2)
     return out
 
 
 def transport_rate(q, v, p, m, a, c, out):
     """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    x0 = 1/m[0]
-    x1 = 1/m[1]
-    x2 = ws0**2
-    x3 = ws1**2
-    x4 = -c + wc0 + wc1
-    x5 = a[2]**2 - x4**2
-    x6 = 1/(m[2]*(x0*x2 + x1*x3) + x5)
-    x7 = m[2]*x4/x5**2
-    x8 = x3*x7*ws0
-    x9 = v[0]*p[1]
-    x10 = v[1]*p[0]
-    x11 = m[2]/x5
-    x12 = x11*ws1
-    x13 = x2*x7*ws1
-    x14 = v[0]*p[0]*(x12*wc0 - x13) + v[1]*p[1]*(x12*wc1 - x7*ws1**3) - x10*x8 - x8*x9
-    x15 = m[2]*x6
-    x16 = x11*ws0
-    x17 = v[0]*p[0]*(x16*wc0 - x7*ws0**3) + v[1]*p[1]*(x16*wc1 - x8) - x10*x13 - x13*x9
-    out[0] = m[2]*x0*x1*x14*x6*ws0*ws1 - x17*(x0 - x15*x2/m[0]**2)
-    out[1] = m[2]*x0*x1*x17*x6*ws0*ws1 - x14*(x1 - x15*x3/m[1]**2)
-    return out
+    return transport_rate_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

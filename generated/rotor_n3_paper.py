@@ -9,6 +9,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 3
 DIM = 2
 
@@ -121,14 +123,15 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
-    x0 = math.sin(q[0])
-    x1 = math.sin(q[1])
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (2,)."""
+    x0 = ws[0]
+    x1 = ws[1]
     x2 = 1/m[0]
     x3 = 1/m[1]
-    x4 = math.cos(q[0])
-    x5 = math.cos(q[1])
+    x4 = wc[0]
+    x5 = wc[1]
     x6 = x4 + x5
     x7 = x6**2
     x8 = x0**2
@@ -152,14 +155,20 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return out
 
 
-def transport_rate(q, v, p, m, a, c, out):
-    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
-    x0 = math.sin(q[0])
-    x1 = math.sin(q[1])
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((math.sin(q[0]), math.sin(q[1])), (math.cos(q[0]), math.cos(q[1])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (2,)."""
+    x0 = ws[0]
+    x1 = ws[1]
     x2 = 1/m[0]
     x3 = 1/m[1]
-    x4 = math.cos(q[0])
-    x5 = math.cos(q[1])
+    x4 = wc[0]
+    x5 = wc[1]
     x6 = x4 + x5
     x7 = x6**2
     x8 = x0**2
@@ -180,6 +189,11 @@ def transport_rate(q, v, p, m, a, c, out):
     out[0] = m[2]*x0*x1*x10*x19*x2*x3 - x22*(x2 - x20*x8/m[0]**2)
     out[1] = m[2]*x0*x1*x10*x2*x22*x3 - x19*(x3 - x20*x9/m[1]**2)
     return out
+
+
+def transport_rate(q, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+    return transport_rate_sc((math.sin(q[0]), math.sin(q[1])), (math.cos(q[0]), math.cos(q[1])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

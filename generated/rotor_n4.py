@@ -8,6 +8,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 4
 DIM = 3
 
@@ -310,53 +312,48 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    wc2 = a[2]*math.cos(q[2])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    ws2 = a[2]*math.sin(q[2])
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (3,)."""
     x0 = 1/m[0]
-    x1 = ws0**2
+    x1 = ws[0]**2
     x2 = 1/m[1]
-    x3 = ws1**2
+    x3 = ws[1]**2
     x4 = 1/m[2]
-    x5 = ws2**2
-    x6 = -c + wc0 + wc1 + wc2
+    x5 = ws[2]**2
+    x6 = -c + wc[0] + wc[1] + wc[2]
     x7 = a[3]**2 - x6**2
     x8 = m[3]/(m[3]*(x0*x1 + x2*x3 + x4*x5) + x7)
-    x9 = x0*x8*ws0
+    x9 = x0*x8*ws[0]
     x10 = 2*v[0]
     x11 = v[2]*x10
     x12 = m[3]*x6/x7**2
-    x13 = x12*ws0
-    x14 = x13*ws1*ws2
+    x13 = x12*ws[0]
+    x14 = x13*ws[1]*ws[2]
     x15 = x13*x3
     x16 = v[1]*x10
-    x17 = x12*ws2
+    x17 = x12*ws[2]
     x18 = x17*x3
     x19 = 2*v[1]*v[2]
     x20 = v[1]**2
     x21 = m[3]/x7
-    x22 = x21*ws1
+    x22 = x21*ws[1]
     x23 = v[0]**2
-    x24 = x12*ws1
+    x24 = x12*ws[1]
     x25 = x1*x24
     x26 = v[2]**2
     x27 = x24*x5
-    x28 = -x11*x14 - x15*x16 - x18*x19 + x20*(-x12*ws1**3 + x22*wc1) + x23*(x22*wc0 - x25) + x26*(x22*wc2 - x27)
-    x29 = x2*ws1
+    x28 = -x11*x14 - x15*x16 - x18*x19 + x20*(-x12*ws[1]**3 + x22*wc[1]) + x23*(x22*wc[0] - x25) + x26*(x22*wc[2] - x27)
+    x29 = x2*ws[1]
     x30 = x28*x29
     x31 = x13*x5
-    x32 = x21*ws2
+    x32 = x21*ws[2]
     x33 = x1*x17
-    x34 = -x11*x31 - x14*x16 - x19*x27 + x20*(-x18 + x32*wc1) + x23*(x32*wc0 - x33) + x26*(-x12*ws2**3 + x32*wc2)
-    x35 = x4*ws2
+    x34 = -x11*x31 - x14*x16 - x19*x27 + x20*(-x18 + x32*wc[1]) + x23*(x32*wc[0] - x33) + x26*(-x12*ws[2]**3 + x32*wc[2])
+    x35 = x4*ws[2]
     x36 = x34*x35
-    x37 = x21*ws0
-    x38 = -x11*x33 - x14*x19 - x16*x25 + x20*(-x15 + x37*wc1) + x23*(-x12*ws0**3 + x37*wc0) + x26*(-x31 + x37*wc2)
+    x37 = x21*ws[0]
+    x38 = -x11*x33 - x14*x19 - x16*x25 + x20*(-x15 + x37*wc[1]) + x23*(-x12*ws[0]**3 + x37*wc[0]) + x26*(-x31 + x37*wc[2])
     x39 = x38*x9
     out[0] = x30*x9 + x36*x9 - x38*(x0 - x1*x8/m[0]**2)
     out[1] = -x28*(x2 - x3*x8/m[1]**2) + x29*x36*x8 + x29*x39
@@ -364,57 +361,62 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return out
 
 
-def transport_rate(q, v, p, m, a, c, out):
-    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    wc2 = a[2]*math.cos(q[2])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    ws2 = a[2]*math.sin(q[2])
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (3,)."""
     x0 = 1/m[0]
-    x1 = ws0**2
+    x1 = ws[0]**2
     x2 = 1/m[1]
-    x3 = ws1**2
+    x3 = ws[1]**2
     x4 = 1/m[2]
-    x5 = ws2**2
-    x6 = -c + wc0 + wc1 + wc2
+    x5 = ws[2]**2
+    x6 = -c + wc[0] + wc[1] + wc[2]
     x7 = a[3]**2 - x6**2
     x8 = m[3]/(m[3]*(x0*x1 + x2*x3 + x4*x5) + x7)
-    x9 = x0*x8*ws0
+    x9 = x0*x8*ws[0]
     x10 = v[0]*p[2]
     x11 = m[3]*x6/x7**2
-    x12 = x11*ws0
-    x13 = x12*ws1*ws2
+    x12 = x11*ws[0]
+    x13 = x12*ws[1]*ws[2]
     x14 = v[2]*p[0]
     x15 = x12*x3
     x16 = v[0]*p[1]
     x17 = v[1]*p[0]
-    x18 = x11*ws2
+    x18 = x11*ws[2]
     x19 = x18*x3
     x20 = v[1]*p[2]
     x21 = v[2]*p[1]
     x22 = m[3]/x7
-    x23 = x22*ws1
-    x24 = x11*ws1
+    x23 = x22*ws[1]
+    x24 = x11*ws[1]
     x25 = x1*x24
     x26 = x24*x5
-    x27 = v[0]*p[0]*(x23*wc0 - x25) + v[1]*p[1]*(-x11*ws1**3 + x23*wc1) + v[2]*p[2]*(x23*wc2 - x26) - x10*x13 - x13*x14 - x15*x16 - x15*x17 - x19*x20 - x19*x21
-    x28 = x2*ws1
+    x27 = v[0]*p[0]*(x23*wc[0] - x25) + v[1]*p[1]*(-x11*ws[1]**3 + x23*wc[1]) + v[2]*p[2]*(x23*wc[2] - x26) - x10*x13 - x13*x14 - x15*x16 - x15*x17 - x19*x20 - x19*x21
+    x28 = x2*ws[1]
     x29 = x27*x28
     x30 = x12*x5
-    x31 = x22*ws2
+    x31 = x22*ws[2]
     x32 = x1*x18
-    x33 = v[0]*p[0]*(x31*wc0 - x32) + v[1]*p[1]*(-x19 + x31*wc1) + v[2]*p[2]*(-x11*ws2**3 + x31*wc2) - x10*x30 - x13*x16 - x13*x17 - x14*x30 - x20*x26 - x21*x26
-    x34 = x4*ws2
+    x33 = v[0]*p[0]*(x31*wc[0] - x32) + v[1]*p[1]*(-x19 + x31*wc[1]) + v[2]*p[2]*(-x11*ws[2]**3 + x31*wc[2]) - x10*x30 - x13*x16 - x13*x17 - x14*x30 - x20*x26 - x21*x26
+    x34 = x4*ws[2]
     x35 = x33*x34
-    x36 = x22*ws0
-    x37 = v[0]*p[0]*(-x11*ws0**3 + x36*wc0) + v[1]*p[1]*(-x15 + x36*wc1) + v[2]*p[2]*(-x30 + x36*wc2) - x10*x32 - x13*x20 - x13*x21 - x14*x32 - x16*x25 - x17*x25
+    x36 = x22*ws[0]
+    x37 = v[0]*p[0]*(-x11*ws[0]**3 + x36*wc[0]) + v[1]*p[1]*(-x15 + x36*wc[1]) + v[2]*p[2]*(-x30 + x36*wc[2]) - x10*x32 - x13*x20 - x13*x21 - x14*x32 - x16*x25 - x17*x25
     x38 = x37*x9
     out[0] = x29*x9 + x35*x9 - x37*(x0 - x1*x8/m[0]**2)
     out[1] = -x27*(x2 - x3*x8/m[1]**2) + x28*x35*x8 + x28*x38
     out[2] = x29*x34*x8 - x33*(x4 - x5*x8/m[2]**2) + x34*x38
     return out
+
+
+def transport_rate(q, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+    return transport_rate_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

@@ -9,6 +9,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 4
 DIM = 3
 
@@ -308,21 +310,22 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (3,)."""
     x0 = 1/m[0]
-    x1 = math.sin(q[0])
-    x2 = math.cos(q[0])
-    x3 = math.cos(q[1])
-    x4 = math.cos(q[2])
+    x1 = ws[0]
+    x2 = wc[0]
+    x3 = wc[1]
+    x4 = wc[2]
     x5 = x2 + x3 + x4
     x6 = x5**2
     x7 = x1**2
     x8 = 1/m[1]
-    x9 = math.sin(q[1])
+    x9 = ws[1]
     x10 = x9**2
     x11 = 1/m[2]
-    x12 = math.sin(q[2])
+    x12 = ws[2]
     x13 = x12**2
     x14 = m[3]/(m[3]*(x0*x7 + x10*x8 + x11*x13) - x6 + 1)
     x15 = x0*x1*x14
@@ -363,21 +366,27 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return out
 
 
-def transport_rate(q, v, p, m, a, c, out):
-    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((math.sin(q[0]), math.sin(q[1]), math.sin(q[2])), (math.cos(q[0]), math.cos(q[1]), math.cos(q[2])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (3,)."""
     x0 = 1/m[0]
-    x1 = math.sin(q[0])
-    x2 = math.cos(q[0])
-    x3 = math.cos(q[1])
-    x4 = math.cos(q[2])
+    x1 = ws[0]
+    x2 = wc[0]
+    x3 = wc[1]
+    x4 = wc[2]
     x5 = x2 + x3 + x4
     x6 = x5**2
     x7 = x1**2
     x8 = 1/m[1]
-    x9 = math.sin(q[1])
+    x9 = ws[1]
     x10 = x9**2
     x11 = 1/m[2]
-    x12 = math.sin(q[2])
+    x12 = ws[2]
     x13 = x12**2
     x14 = m[3]/(m[3]*(x0*x7 + x10*x8 + x11*x13) - x6 + 1)
     x15 = x0*x1*x14
@@ -415,6 +424,11 @@ def transport_rate(q, v, p, m, a, c, out):
     out[1] = x14*x35*x42 - x34*(x8 - x10*x14/m[1]**2) + x35*x45
     out[2] = x14*x36*x41 - x40*(x11 - x13*x14/m[2]**2) + x41*x45
     return out
+
+
+def transport_rate(q, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+    return transport_rate_sc((math.sin(q[0]), math.sin(q[1]), math.sin(q[2])), (math.cos(q[0]), math.cos(q[1]), math.cos(q[2])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

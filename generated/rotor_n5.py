@@ -8,6 +8,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 5
 DIM = 4
 
@@ -680,79 +682,154 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    wc2 = a[2]*math.cos(q[2])
-    wc3 = a[3]*math.cos(q[3])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    ws2 = a[2]*math.sin(q[2])
-    ws3 = a[3]*math.sin(q[3])
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (4,)."""
     x0 = 1/m[0]
-    x1 = ws0**2
+    x1 = ws[0]**2
     x2 = 1/m[1]
-    x3 = ws1**2
+    x3 = ws[1]**2
     x4 = 1/m[2]
-    x5 = ws2**2
+    x5 = ws[2]**2
     x6 = 1/m[3]
-    x7 = ws3**2
-    x8 = -c + wc0 + wc1 + wc2 + wc3
+    x7 = ws[3]**2
+    x8 = -c + wc[0] + wc[1] + wc[2] + wc[3]
     x9 = a[4]**2 - x8**2
     x10 = m[4]/(m[4]*(x0*x1 + x2*x3 + x4*x5 + x6*x7) + x9)
-    x11 = x0*x10*ws0
+    x11 = x0*x10*ws[0]
     x12 = 2*v[0]
     x13 = v[2]*x12
     x14 = m[4]*x8/x9**2
-    x15 = x14*ws0
-    x16 = x15*ws1
-    x17 = x16*ws2
+    x15 = x14*ws[0]
+    x16 = x15*ws[1]
+    x17 = x16*ws[2]
     x18 = v[3]*x12
-    x19 = x16*ws3
-    x20 = x14*ws1
+    x19 = x16*ws[3]
+    x20 = x14*ws[1]
     x21 = 2*v[2]*v[3]
-    x22 = ws2*ws3
+    x22 = ws[2]*ws[3]
     x23 = x21*x22
     x24 = x15*x3
     x25 = v[1]*x12
-    x26 = x14*ws2
+    x26 = x14*ws[2]
     x27 = x26*x3
     x28 = 2*v[1]
     x29 = v[2]*x28
-    x30 = x14*ws3
+    x30 = x14*ws[3]
     x31 = x3*x30
     x32 = v[3]*x28
     x33 = v[1]**2
     x34 = m[4]/x9
-    x35 = x34*ws1
+    x35 = x34*ws[1]
     x36 = v[0]**2
     x37 = x1*x20
     x38 = v[2]**2
     x39 = x20*x5
     x40 = v[3]**2
     x41 = x20*x7
-    x42 = -x13*x17 - x18*x19 - x20*x23 - x24*x25 - x27*x29 - x31*x32 + x33*(-x14*ws1**3 + x35*wc1) + x36*(x35*wc0 - x37) + x38*(x35*wc2 - x39) + x40*(x35*wc3 - x41)
-    x43 = x2*ws1
+    x42 = -x13*x17 - x18*x19 - x20*x23 - x24*x25 - x27*x29 - x31*x32 + x33*(-x14*ws[1]**3 + x35*wc[1]) + x36*(x35*wc[0] - x37) + x38*(x35*wc[2] - x39) + x40*(x35*wc[3] - x41)
+    x43 = x2*ws[1]
     x44 = x42*x43
     x45 = x15*x22
     x46 = x15*x5
     x47 = x30*x5
-    x48 = x34*ws2
+    x48 = x34*ws[2]
     x49 = x1*x26
     x50 = x26*x7
-    x51 = -x13*x46 - x17*x25 - x18*x45 - x20*x22*x32 - x21*x47 - x29*x39 + x33*(-x27 + x48*wc1) + x36*(x48*wc0 - x49) + x38*(-x14*ws2**3 + x48*wc2) + x40*(x48*wc3 - x50)
-    x52 = x4*ws2
+    x51 = -x13*x46 - x17*x25 - x18*x45 - x20*x22*x32 - x21*x47 - x29*x39 + x33*(-x27 + x48*wc[1]) + x36*(x48*wc[0] - x49) + x38*(-x14*ws[2]**3 + x48*wc[2]) + x40*(x48*wc[3] - x50)
+    x52 = x4*ws[2]
     x53 = x51*x52
-    x54 = x29*ws2
+    x54 = x29*ws[2]
     x55 = x15*x7
-    x56 = x34*ws3
+    x56 = x34*ws[3]
     x57 = x1*x30
-    x58 = -x13*x45 - x18*x55 - x19*x25 - x20*x54*ws3 - x21*x50 - x32*x41 + x33*(-x31 + x56*wc1) + x36*(x56*wc0 - x57) + x38*(-x47 + x56*wc2) + x40*(-x14*ws3**3 + x56*wc3)
-    x59 = x6*ws3
+    x58 = -x13*x45 - x18*x55 - x19*x25 - x20*x54*ws[3] - x21*x50 - x32*x41 + x33*(-x31 + x56*wc[1]) + x36*(x56*wc[0] - x57) + x38*(-x47 + x56*wc[2]) + x40*(-x14*ws[3]**3 + x56*wc[3])
+    x59 = x6*ws[3]
     x60 = x58*x59
-    x61 = x34*ws0
-    x62 = -x13*x49 - x15*x23 - x16*x54 - x18*x57 - x19*x32 - x25*x37 + x33*(-x24 + x61*wc1) + x36*(-x14*ws0**3 + x61*wc0) + x38*(-x46 + x61*wc2) + x40*(-x55 + x61*wc3)
+    x61 = x34*ws[0]
+    x62 = -x13*x49 - x15*x23 - x16*x54 - x18*x57 - x19*x32 - x25*x37 + x33*(-x24 + x61*wc[1]) + x36*(-x14*ws[0]**3 + x61*wc[0]) + x38*(-x46 + x61*wc[2]) + x40*(-x55 + x61*wc[3])
+    x63 = x11*x62
+    x64 = x10*x43
+    x65 = x10*x52
+    x66 = x10*x59
+    out[0] = x11*x44 + x11*x53 + x11*x60 - x62*(x0 - x1*x10/m[0]**2)
+    out[1] = -x42*(x2 - x10*x3/m[1]**2) + x43*x63 + x53*x64 + x60*x64
+    out[2] = x44*x65 - x51*(x4 - x10*x5/m[2]**2) + x52*x63 + x60*x65
+    out[3] = x44*x66 + x53*x66 - x58*(x6 - x10*x7/m[3]**2) + x59*x63
+    return out
+
+
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2]), a[3]*math.sin(q[3])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2]), a[3]*math.cos(q[3])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (4,)."""
+    x0 = 1/m[0]
+    x1 = ws[0]**2
+    x2 = 1/m[1]
+    x3 = ws[1]**2
+    x4 = 1/m[2]
+    x5 = ws[2]**2
+    x6 = 1/m[3]
+    x7 = ws[3]**2
+    x8 = -c + wc[0] + wc[1] + wc[2] + wc[3]
+    x9 = a[4]**2 - x8**2
+    x10 = m[4]/(m[4]*(x0*x1 + x2*x3 + x4*x5 + x6*x7) + x9)
+    x11 = x0*x10*ws[0]
+    x12 = v[0]*p[2]
+    x13 = m[4]*x8/x9**2
+    x14 = x13*ws[0]
+    x15 = x14*ws[1]
+    x16 = x15*ws[2]
+    x17 = v[0]*p[3]
+    x18 = x15*ws[3]
+    x19 = v[2]*p[0]
+    x20 = v[2]*p[3]
+    x21 = x13*ws[1]
+    x22 = ws[2]*ws[3]
+    x23 = x21*x22
+    x24 = v[3]*p[0]
+    x25 = v[3]*p[2]
+    x26 = x14*x3
+    x27 = v[0]*p[1]
+    x28 = v[1]*p[0]
+    x29 = x13*ws[2]
+    x30 = x29*x3
+    x31 = v[1]*p[2]
+    x32 = x13*ws[3]
+    x33 = x3*x32
+    x34 = v[1]*p[3]
+    x35 = v[2]*p[1]
+    x36 = v[3]*p[1]
+    x37 = m[4]/x9
+    x38 = x37*ws[1]
+    x39 = x1*x21
+    x40 = x21*x5
+    x41 = x21*x7
+    x42 = v[0]*p[0]*(x38*wc[0] - x39) + v[1]*p[1]*(-x13*ws[1]**3 + x38*wc[1]) + v[2]*p[2]*(x38*wc[2] - x40) + v[3]*p[3]*(x38*wc[3] - x41) - x12*x16 - x16*x19 - x17*x18 - x18*x24 - x20*x23 - x23*x25 - x26*x27 - x26*x28 - x30*x31 - x30*x35 - x33*x34 - x33*x36
+    x43 = x2*ws[1]
+    x44 = x42*x43
+    x45 = x14*x22
+    x46 = x14*x5
+    x47 = x32*x5
+    x48 = x37*ws[2]
+    x49 = x1*x29
+    x50 = x29*x7
+    x51 = v[0]*p[0]*(x48*wc[0] - x49) + v[1]*p[1]*(-x30 + x48*wc[1]) + v[2]*p[2]*(-x13*ws[2]**3 + x48*wc[2]) + v[3]*p[3]*(x48*wc[3] - x50) - x12*x46 - x16*x27 - x16*x28 - x17*x45 - x19*x46 - x20*x47 - x23*x34 - x23*x36 - x24*x45 - x25*x47 - x31*x40 - x35*x40
+    x52 = x4*ws[2]
+    x53 = x51*x52
+    x54 = x31*ws[2]
+    x55 = x14*x7
+    x56 = x37*ws[3]
+    x57 = x1*x32
+    x58 = v[0]*p[0]*(x56*wc[0] - x57) + v[1]*p[1]*(-x33 + x56*wc[1]) + v[2]*p[2]*(-x47 + x56*wc[2]) + v[3]*p[3]*(-x13*ws[3]**3 + x56*wc[3]) - x12*x45 - x17*x55 - x18*x27 - x18*x28 - x19*x45 - x20*x50 - x21*x54*ws[3] - x23*x35 - x24*x55 - x25*x50 - x34*x41 - x36*x41
+    x59 = x6*ws[3]
+    x60 = x58*x59
+    x61 = x37*ws[0]
+    x62 = v[0]*p[0]*(-x13*ws[0]**3 + x61*wc[0]) + v[1]*p[1]*(-x26 + x61*wc[1]) + v[2]*p[2]*(-x46 + x61*wc[2]) + v[3]*p[3]*(-x55 + x61*wc[3]) - x12*x49 - x15*x54 - x16*x35 - x17*x57 - x18*x34 - x18*x36 - x19*x49 - x20*x45 - x24*x57 - x25*x45 - x27*x39 - x28*x39
     x63 = x11*x62
     x64 = x10*x43
     x65 = x10*x52
@@ -766,86 +843,7 @@ def geodesic_acceleration(q, v, m, a, c, out):
 
 def transport_rate(q, v, p, m, a, c, out):
     """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    wc2 = a[2]*math.cos(q[2])
-    wc3 = a[3]*math.cos(q[3])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    ws2 = a[2]*math.sin(q[2])
-    ws3 = a[3]*math.sin(q[3])
-    x0 = 1/m[0]
-    x1 = ws0**2
-    x2 = 1/m[1]
-    x3 = ws1**2
-    x4 = 1/m[2]
-    x5 = ws2**2
-    x6 = 1/m[3]
-    x7 = ws3**2
-    x8 = -c + wc0 + wc1 + wc2 + wc3
-    x9 = a[4]**2 - x8**2
-    x10 = m[4]/(m[4]*(x0*x1 + x2*x3 + x4*x5 + x6*x7) + x9)
-    x11 = x0*x10*ws0
-    x12 = v[0]*p[2]
-    x13 = m[4]*x8/x9**2
-    x14 = x13*ws0
-    x15 = x14*ws1
-    x16 = x15*ws2
-    x17 = v[0]*p[3]
-    x18 = x15*ws3
-    x19 = v[2]*p[0]
-    x20 = v[2]*p[3]
-    x21 = x13*ws1
-    x22 = ws2*ws3
-    x23 = x21*x22
-    x24 = v[3]*p[0]
-    x25 = v[3]*p[2]
-    x26 = x14*x3
-    x27 = v[0]*p[1]
-    x28 = v[1]*p[0]
-    x29 = x13*ws2
-    x30 = x29*x3
-    x31 = v[1]*p[2]
-    x32 = x13*ws3
-    x33 = x3*x32
-    x34 = v[1]*p[3]
-    x35 = v[2]*p[1]
-    x36 = v[3]*p[1]
-    x37 = m[4]/x9
-    x38 = x37*ws1
-    x39 = x1*x21
-    x40 = x21*x5
-    x41 = x21*x7
-    x42 = v[0]*p[0]*(x38*wc0 - x39) + v[1]*p[1]*(-x13*ws1**3 + x38*wc1) + v[2]*p[2]*(x38*wc2 - x40) + v[3]*p[3]*(x38*wc3 - x41) - x12*x16 - x16*x19 - x17*x18 - x18*x24 - x20*x23 - x23*x25 - x26*x27 - x26*x28 - x30*x31 - x30*x35 - x33*x34 - x33*x36
-    x43 = x2*ws1
-    x44 = x42*x43
-    x45 = x14*x22
-    x46 = x14*x5
-    x47 = x32*x5
-    x48 = x37*ws2
-    x49 = x1*x29
-    x50 = x29*x7
-    x51 = v[0]*p[0]*(x48*wc0 - x49) + v[1]*p[1]*(-x30 + x48*wc1) + v[2]*p[2]*(-x13*ws2**3 + x48*wc2) + v[3]*p[3]*(x48*wc3 - x50) - x12*x46 - x16*x27 - x16*x28 - x17*x45 - x19*x46 - x20*x47 - x23*x34 - x23*x36 - x24*x45 - x25*x47 - x31*x40 - x35*x40
-    x52 = x4*ws2
-    x53 = x51*x52
-    x54 = x31*ws2
-    x55 = x14*x7
-    x56 = x37*ws3
-    x57 = x1*x32
-    x58 = v[0]*p[0]*(x56*wc0 - x57) + v[1]*p[1]*(-x33 + x56*wc1) + v[2]*p[2]*(-x47 + x56*wc2) + v[3]*p[3]*(-x13*ws3**3 + x56*wc3) - x12*x45 - x17*x55 - x18*x27 - x18*x28 - x19*x45 - x20*x50 - x21*x54*ws3 - x23*x35 - x24*x55 - x25*x50 - x34*x41 - x36*x41
-    x59 = x6*ws3
-    x60 = x58*x59
-    x61 = x37*ws0
-    x62 = v[0]*p[0]*(-x13*ws0**3 + x61*wc0) + v[1]*p[1]*(-x26 + x61*wc1) + v[2]*p[2]*(-x46 + x61*wc2) + v[3]*p[3]*(-x55 + x61*wc3) - x12*x49 - x15*x54 - x16*x35 - x17*x57 - x18*x34 - x18*x36 - x19*x49 - x20*x45 - x24*x57 - x25*x45 - x27*x39 - x28*x39
-    x63 = x11*x62
-    x64 = x10*x43
-    x65 = x10*x52
-    x66 = x10*x59
-    out[0] = x11*x44 + x11*x53 + x11*x60 - x62*(x0 - x1*x10/m[0]**2)
-    out[1] = -x42*(x2 - x10*x3/m[1]**2) + x43*x63 + x53*x64 + x60*x64
-    out[2] = x44*x65 - x51*(x4 - x10*x5/m[2]**2) + x52*x63 + x60*x65
-    out[3] = x44*x66 + x53*x66 - x58*(x6 - x10*x7/m[3]**2) + x59*x63
-    return out
+    return transport_rate_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2]), a[3]*math.sin(q[3])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2]), a[3]*math.cos(q[3])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

@@ -9,6 +9,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 5
 DIM = 4
 
@@ -677,25 +679,26 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (4,)."""
     x0 = 1/m[0]
-    x1 = math.sin(q[0])
-    x2 = math.cos(q[0])
-    x3 = math.cos(q[1])
-    x4 = math.cos(q[2])
-    x5 = math.cos(q[3])
+    x1 = ws[0]
+    x2 = wc[0]
+    x3 = wc[1]
+    x4 = wc[2]
+    x5 = wc[3]
     x6 = x2 + x3 + x4 + x5
     x7 = x6**2
     x8 = x1**2
     x9 = 1/m[1]
-    x10 = math.sin(q[1])
+    x10 = ws[1]
     x11 = x10**2
     x12 = 1/m[2]
-    x13 = math.sin(q[2])
+    x13 = ws[2]
     x14 = x13**2
     x15 = 1/m[3]
-    x16 = math.sin(q[3])
+    x16 = ws[3]
     x17 = x16**2
     x18 = m[4]/(m[4]*(x0*x8 + x11*x9 + x12*x14 + x15*x17) - x7 + 1)
     x19 = x0*x1*x18
@@ -762,25 +765,31 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return out
 
 
-def transport_rate(q, v, p, m, a, c, out):
-    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((math.sin(q[0]), math.sin(q[1]), math.sin(q[2]), math.sin(q[3])), (math.cos(q[0]), math.cos(q[1]), math.cos(q[2]), math.cos(q[3])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (4,)."""
     x0 = 1/m[0]
-    x1 = math.sin(q[0])
-    x2 = math.cos(q[0])
-    x3 = math.cos(q[1])
-    x4 = math.cos(q[2])
-    x5 = math.cos(q[3])
+    x1 = ws[0]
+    x2 = wc[0]
+    x3 = wc[1]
+    x4 = wc[2]
+    x5 = wc[3]
     x6 = x2 + x3 + x4 + x5
     x7 = x6**2
     x8 = x1**2
     x9 = 1/m[1]
-    x10 = math.sin(q[1])
+    x10 = ws[1]
     x11 = x10**2
     x12 = 1/m[2]
-    x13 = math.sin(q[2])
+    x13 = ws[2]
     x14 = x13**2
     x15 = 1/m[3]
-    x16 = math.sin(q[3])
+    x16 = ws[3]
     x17 = x16**2
     x18 = m[4]/(m[4]*(x0*x8 + x11*x9 + x12*x14 + x15*x17) - x7 + 1)
     x19 = x0*x1*x18
@@ -845,6 +854,11 @@ def transport_rate(q, v, p, m, a, c, out):
     out[2] = x53*x74 - x60*(x12 - x14*x18/m[2]**2) + x61*x72 + x69*x74
     out[3] = x53*x75 + x62*x75 - x67*(x15 - x17*x18/m[3]**2) + x68*x72
     return out
+
+
+def transport_rate(q, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+    return transport_rate_sc((math.sin(q[0]), math.sin(q[1]), math.sin(q[2]), math.sin(q[3])), (math.cos(q[0]), math.cos(q[1]), math.cos(q[2]), math.cos(q[3])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

@@ -8,6 +8,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 6
 DIM = 5
 
@@ -1362,67 +1364,58 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    wc2 = a[2]*math.cos(q[2])
-    wc3 = a[3]*math.cos(q[3])
-    wc4 = a[4]*math.cos(q[4])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    ws2 = a[2]*math.sin(q[2])
-    ws3 = a[3]*math.sin(q[3])
-    ws4 = a[4]*math.sin(q[4])
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (5,)."""
     x0 = 1/m[0]
-    x1 = ws0**2
+    x1 = ws[0]**2
     x2 = 1/m[1]
-    x3 = ws1**2
+    x3 = ws[1]**2
     x4 = 1/m[2]
-    x5 = ws2**2
+    x5 = ws[2]**2
     x6 = 1/m[3]
-    x7 = ws3**2
+    x7 = ws[3]**2
     x8 = 1/m[4]
-    x9 = ws4**2
-    x10 = -c + wc0 + wc1 + wc2 + wc3 + wc4
+    x9 = ws[4]**2
+    x10 = -c + wc[0] + wc[1] + wc[2] + wc[3] + wc[4]
     x11 = a[5]**2 - x10**2
     x12 = m[5]/(m[5]*(x0*x1 + x2*x3 + x4*x5 + x6*x7 + x8*x9) + x11)
-    x13 = x0*x12*ws0
+    x13 = x0*x12*ws[0]
     x14 = 2*v[0]
     x15 = v[2]*x14
     x16 = m[5]*x10/x11**2
-    x17 = x16*ws0
-    x18 = x17*ws1
-    x19 = x18*ws2
+    x17 = x16*ws[0]
+    x18 = x17*ws[1]
+    x19 = x18*ws[2]
     x20 = v[3]*x14
-    x21 = x18*ws3
+    x21 = x18*ws[3]
     x22 = v[4]*x14
-    x23 = x18*ws4
+    x23 = x18*ws[4]
     x24 = 2*v[2]
     x25 = v[3]*x24
-    x26 = x25*ws3
-    x27 = x16*ws1
-    x28 = x27*ws2
+    x26 = x25*ws[3]
+    x27 = x16*ws[1]
+    x28 = x27*ws[2]
     x29 = v[4]*x24
-    x30 = x29*ws4
+    x30 = x29*ws[4]
     x31 = 2*v[3]*v[4]
-    x32 = ws3*ws4
+    x32 = ws[3]*ws[4]
     x33 = x31*x32
     x34 = x17*x3
     x35 = v[1]*x14
-    x36 = x16*ws2
+    x36 = x16*ws[2]
     x37 = x3*x36
     x38 = 2*v[1]
     x39 = v[2]*x38
-    x40 = x16*ws3
+    x40 = x16*ws[3]
     x41 = x3*x40
     x42 = v[3]*x38
-    x43 = x16*ws4
+    x43 = x16*ws[4]
     x44 = x3*x43
     x45 = v[4]*x38
     x46 = v[1]**2
     x47 = m[5]/x11
-    x48 = x47*ws1
+    x48 = x47*ws[1]
     x49 = v[0]**2
     x50 = x1*x27
     x51 = v[2]**2
@@ -1431,42 +1424,42 @@ def geodesic_acceleration(q, v, m, a, c, out):
     x54 = x27*x7
     x55 = v[4]**2
     x56 = x27*x9
-    x57 = -x15*x19 - x20*x21 - x22*x23 - x26*x28 - x27*x33 - x28*x30 - x34*x35 - x37*x39 - x41*x42 - x44*x45 + x46*(-x16*ws1**3 + x48*wc1) + x49*(x48*wc0 - x50) + x51*(x48*wc2 - x52) + x53*(x48*wc3 - x54) + x55*(x48*wc4 - x56)
-    x58 = x2*ws1
+    x57 = -x15*x19 - x20*x21 - x22*x23 - x26*x28 - x27*x33 - x28*x30 - x34*x35 - x37*x39 - x41*x42 - x44*x45 + x46*(-x16*ws[1]**3 + x48*wc[1]) + x49*(x48*wc[0] - x50) + x51*(x48*wc[2] - x52) + x53*(x48*wc[3] - x54) + x55*(x48*wc[4] - x56)
+    x58 = x2*ws[1]
     x59 = x57*x58
-    x60 = x17*ws2
-    x61 = x60*ws3
-    x62 = x60*ws4
+    x60 = x17*ws[2]
+    x61 = x60*ws[3]
+    x62 = x60*ws[4]
     x63 = x17*x5
     x64 = x40*x5
     x65 = x43*x5
-    x66 = x47*ws2
+    x66 = x47*ws[2]
     x67 = x1*x36
     x68 = x36*x7
     x69 = x36*x9
-    x70 = -x15*x63 - x19*x35 - x20*x61 - x22*x62 - x25*x64 - x28*x42*ws3 - x28*x45*ws4 - x29*x65 - x33*x36 - x39*x52 + x46*(-x37 + x66*wc1) + x49*(x66*wc0 - x67) + x51*(-x16*ws2**3 + x66*wc2) + x53*(x66*wc3 - x68) + x55*(x66*wc4 - x69)
-    x71 = x4*ws2
+    x70 = -x15*x63 - x19*x35 - x20*x61 - x22*x62 - x25*x64 - x28*x42*ws[3] - x28*x45*ws[4] - x29*x65 - x33*x36 - x39*x52 + x46*(-x37 + x66*wc[1]) + x49*(x66*wc[0] - x67) + x51*(-x16*ws[2]**3 + x66*wc[2]) + x53*(x66*wc[3] - x68) + x55*(x66*wc[4] - x69)
+    x71 = x4*ws[2]
     x72 = x70*x71
     x73 = x17*x32
-    x74 = x39*ws2
+    x74 = x39*ws[2]
     x75 = x27*x74
     x76 = x27*x32
     x77 = x17*x7
     x78 = x43*x7
-    x79 = x47*ws3
+    x79 = x47*ws[3]
     x80 = x1*x40
     x81 = x40*x9
-    x82 = -x15*x61 - x20*x77 - x21*x35 - x22*x73 - x25*x68 - x30*x36*ws3 - x31*x78 - x42*x54 - x45*x76 + x46*(-x41 + x79*wc1) + x49*(x79*wc0 - x80) + x51*(-x64 + x79*wc2) + x53*(-x16*ws3**3 + x79*wc3) + x55*(x79*wc4 - x81) - x75*ws3
-    x83 = x6*ws3
+    x82 = -x15*x61 - x20*x77 - x21*x35 - x22*x73 - x25*x68 - x30*x36*ws[3] - x31*x78 - x42*x54 - x45*x76 + x46*(-x41 + x79*wc[1]) + x49*(x79*wc[0] - x80) + x51*(-x64 + x79*wc[2]) + x53*(-x16*ws[3]**3 + x79*wc[3]) + x55*(x79*wc[4] - x81) - x75*ws[3]
+    x83 = x6*ws[3]
     x84 = x82*x83
     x85 = x17*x9
-    x86 = x47*ws4
+    x86 = x47*ws[4]
     x87 = x1*x43
-    x88 = -x15*x62 - x20*x73 - x22*x85 - x23*x35 - x26*x36*ws4 - x29*x69 - x31*x81 - x42*x76 - x45*x56 + x46*(-x44 + x86*wc1) + x49*(x86*wc0 - x87) + x51*(-x65 + x86*wc2) + x53*(-x78 + x86*wc3) + x55*(-x16*ws4**3 + x86*wc4) - x75*ws4
-    x89 = x8*ws4
+    x88 = -x15*x62 - x20*x73 - x22*x85 - x23*x35 - x26*x36*ws[4] - x29*x69 - x31*x81 - x42*x76 - x45*x56 + x46*(-x44 + x86*wc[1]) + x49*(x86*wc[0] - x87) + x51*(-x65 + x86*wc[2]) + x53*(-x78 + x86*wc[3]) + x55*(-x16*ws[4]**3 + x86*wc[4]) - x75*ws[4]
+    x89 = x8*ws[4]
     x90 = x88*x89
-    x91 = x47*ws0
-    x92 = -x15*x67 - x17*x33 - x18*x74 - x20*x80 - x21*x42 - x22*x87 - x23*x45 - x26*x60 - x30*x60 - x35*x50 + x46*(-x34 + x91*wc1) + x49*(-x16*ws0**3 + x91*wc0) + x51*(-x63 + x91*wc2) + x53*(-x77 + x91*wc3) + x55*(-x85 + x91*wc4)
+    x91 = x47*ws[0]
+    x92 = -x15*x67 - x17*x33 - x18*x74 - x20*x80 - x21*x42 - x22*x87 - x23*x45 - x26*x60 - x30*x60 - x35*x50 + x46*(-x34 + x91*wc[1]) + x49*(-x16*ws[0]**3 + x91*wc[0]) + x51*(-x63 + x91*wc[2]) + x53*(-x77 + x91*wc[3]) + x55*(-x85 + x91*wc[4])
     x93 = x13*x92
     x94 = x12*x58
     x95 = x12*x71
@@ -1480,53 +1473,49 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return out
 
 
-def transport_rate(q, v, p, m, a, c, out):
-    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
-    wc0 = a[0]*math.cos(q[0])
-    wc1 = a[1]*math.cos(q[1])
-    wc2 = a[2]*math.cos(q[2])
-    wc3 = a[3]*math.cos(q[3])
-    wc4 = a[4]*math.cos(q[4])
-    ws0 = a[0]*math.sin(q[0])
-    ws1 = a[1]*math.sin(q[1])
-    ws2 = a[2]*math.sin(q[2])
-    ws3 = a[3]*math.sin(q[3])
-    ws4 = a[4]*math.sin(q[4])
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2]), a[3]*math.sin(q[3]), a[4]*math.sin(q[4])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2]), a[3]*math.cos(q[3]), a[4]*math.cos(q[4])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (5,)."""
     x0 = 1/m[0]
-    x1 = ws0**2
+    x1 = ws[0]**2
     x2 = 1/m[1]
-    x3 = ws1**2
+    x3 = ws[1]**2
     x4 = 1/m[2]
-    x5 = ws2**2
+    x5 = ws[2]**2
     x6 = 1/m[3]
-    x7 = ws3**2
+    x7 = ws[3]**2
     x8 = 1/m[4]
-    x9 = ws4**2
-    x10 = -c + wc0 + wc1 + wc2 + wc3 + wc4
+    x9 = ws[4]**2
+    x10 = -c + wc[0] + wc[1] + wc[2] + wc[3] + wc[4]
     x11 = a[5]**2 - x10**2
     x12 = m[5]/(m[5]*(x0*x1 + x2*x3 + x4*x5 + x6*x7 + x8*x9) + x11)
-    x13 = x0*x12*ws0
+    x13 = x0*x12*ws[0]
     x14 = v[0]*p[2]
     x15 = m[5]*x10/x11**2
-    x16 = x15*ws0
-    x17 = x16*ws1
-    x18 = x17*ws2
+    x16 = x15*ws[0]
+    x17 = x16*ws[1]
+    x18 = x17*ws[2]
     x19 = v[0]*p[3]
-    x20 = x17*ws3
+    x20 = x17*ws[3]
     x21 = v[0]*p[4]
-    x22 = x17*ws4
+    x22 = x17*ws[4]
     x23 = v[2]*p[0]
     x24 = v[2]*p[3]
-    x25 = x24*ws3
-    x26 = x15*ws1
-    x27 = x26*ws2
+    x25 = x24*ws[3]
+    x26 = x15*ws[1]
+    x27 = x26*ws[2]
     x28 = v[2]*p[4]
-    x29 = x27*ws4
+    x29 = x27*ws[4]
     x30 = v[3]*p[0]
     x31 = v[3]*p[2]
-    x32 = x31*ws3
+    x32 = x31*ws[3]
     x33 = v[3]*p[4]
-    x34 = ws3*ws4
+    x34 = ws[3]*ws[4]
     x35 = x26*x34
     x36 = v[4]*p[0]
     x37 = v[4]*p[2]
@@ -1534,62 +1523,62 @@ def transport_rate(q, v, p, m, a, c, out):
     x39 = x16*x3
     x40 = v[0]*p[1]
     x41 = v[1]*p[0]
-    x42 = x15*ws2
+    x42 = x15*ws[2]
     x43 = x3*x42
     x44 = v[1]*p[2]
-    x45 = x15*ws3
+    x45 = x15*ws[3]
     x46 = x3*x45
     x47 = v[1]*p[3]
-    x48 = x15*ws4
+    x48 = x15*ws[4]
     x49 = x3*x48
     x50 = v[1]*p[4]
     x51 = v[2]*p[1]
     x52 = v[3]*p[1]
     x53 = v[4]*p[1]
     x54 = m[5]/x11
-    x55 = x54*ws1
+    x55 = x54*ws[1]
     x56 = x1*x26
     x57 = x26*x5
     x58 = x26*x7
     x59 = x26*x9
-    x60 = v[0]*p[0]*(x55*wc0 - x56) + v[1]*p[1]*(-x15*ws1**3 + x55*wc1) + v[2]*p[2]*(x55*wc2 - x57) + v[3]*p[3]*(x55*wc3 - x58) + v[4]*p[4]*(x55*wc4 - x59) - x14*x18 - x18*x23 - x19*x20 - x20*x30 - x21*x22 - x22*x36 - x25*x27 - x27*x32 - x28*x29 - x29*x37 - x33*x35 - x35*x38 - x39*x40 - x39*x41 - x43*x44 - x43*x51 - x46*x47 - x46*x52 - x49*x50 - x49*x53
-    x61 = x2*ws1
+    x60 = v[0]*p[0]*(x55*wc[0] - x56) + v[1]*p[1]*(-x15*ws[1]**3 + x55*wc[1]) + v[2]*p[2]*(x55*wc[2] - x57) + v[3]*p[3]*(x55*wc[3] - x58) + v[4]*p[4]*(x55*wc[4] - x59) - x14*x18 - x18*x23 - x19*x20 - x20*x30 - x21*x22 - x22*x36 - x25*x27 - x27*x32 - x28*x29 - x29*x37 - x33*x35 - x35*x38 - x39*x40 - x39*x41 - x43*x44 - x43*x51 - x46*x47 - x46*x52 - x49*x50 - x49*x53
+    x61 = x2*ws[1]
     x62 = x60*x61
-    x63 = x16*ws2
-    x64 = x63*ws3
-    x65 = x63*ws4
-    x66 = x27*ws3
+    x63 = x16*ws[2]
+    x64 = x63*ws[3]
+    x65 = x63*ws[4]
+    x66 = x27*ws[3]
     x67 = x34*x42
     x68 = x16*x5
     x69 = x45*x5
     x70 = x48*x5
-    x71 = x54*ws2
+    x71 = x54*ws[2]
     x72 = x1*x42
     x73 = x42*x7
     x74 = x42*x9
-    x75 = v[0]*p[0]*(x71*wc0 - x72) + v[1]*p[1]*(-x43 + x71*wc1) + v[2]*p[2]*(-x15*ws2**3 + x71*wc2) + v[3]*p[3]*(x71*wc3 - x73) + v[4]*p[4]*(x71*wc4 - x74) - x14*x68 - x18*x40 - x18*x41 - x19*x64 - x21*x65 - x23*x68 - x24*x69 - x28*x70 - x29*x50 - x29*x53 - x30*x64 - x31*x69 - x33*x67 - x36*x65 - x37*x70 - x38*x67 - x44*x57 - x47*x66 - x51*x57 - x52*x66
-    x76 = x4*ws2
+    x75 = v[0]*p[0]*(x71*wc[0] - x72) + v[1]*p[1]*(-x43 + x71*wc[1]) + v[2]*p[2]*(-x15*ws[2]**3 + x71*wc[2]) + v[3]*p[3]*(x71*wc[3] - x73) + v[4]*p[4]*(x71*wc[4] - x74) - x14*x68 - x18*x40 - x18*x41 - x19*x64 - x21*x65 - x23*x68 - x24*x69 - x28*x70 - x29*x50 - x29*x53 - x30*x64 - x31*x69 - x33*x67 - x36*x65 - x37*x70 - x38*x67 - x44*x57 - x47*x66 - x51*x57 - x52*x66
+    x76 = x4*ws[2]
     x77 = x75*x76
     x78 = x16*x34
-    x79 = x44*ws2
+    x79 = x44*ws[2]
     x80 = x26*x79
     x81 = x16*x7
     x82 = x48*x7
-    x83 = x54*ws3
+    x83 = x54*ws[3]
     x84 = x1*x45
     x85 = x45*x9
-    x86 = v[0]*p[0]*(x83*wc0 - x84) + v[1]*p[1]*(-x46 + x83*wc1) + v[2]*p[2]*(-x69 + x83*wc2) + v[3]*p[3]*(-x15*ws3**3 + x83*wc3) + v[4]*p[4]*(x83*wc4 - x85) - x14*x64 - x19*x81 - x20*x40 - x20*x41 - x21*x78 - x23*x64 - x24*x73 - x28*x67 - x30*x81 - x31*x73 - x33*x82 - x35*x50 - x35*x53 - x36*x78 - x37*x67 - x38*x82 - x47*x58 - x51*x66 - x52*x58 - x80*ws3
-    x87 = x6*ws3
+    x86 = v[0]*p[0]*(x83*wc[0] - x84) + v[1]*p[1]*(-x46 + x83*wc[1]) + v[2]*p[2]*(-x69 + x83*wc[2]) + v[3]*p[3]*(-x15*ws[3]**3 + x83*wc[3]) + v[4]*p[4]*(x83*wc[4] - x85) - x14*x64 - x19*x81 - x20*x40 - x20*x41 - x21*x78 - x23*x64 - x24*x73 - x28*x67 - x30*x81 - x31*x73 - x33*x82 - x35*x50 - x35*x53 - x36*x78 - x37*x67 - x38*x82 - x47*x58 - x51*x66 - x52*x58 - x80*ws[3]
+    x87 = x6*ws[3]
     x88 = x86*x87
-    x89 = x42*ws4
+    x89 = x42*ws[4]
     x90 = x16*x9
-    x91 = x54*ws4
+    x91 = x54*ws[4]
     x92 = x1*x48
-    x93 = v[0]*p[0]*(x91*wc0 - x92) + v[1]*p[1]*(-x49 + x91*wc1) + v[2]*p[2]*(-x70 + x91*wc2) + v[3]*p[3]*(-x82 + x91*wc3) + v[4]*p[4]*(-x15*ws4**3 + x91*wc4) - x14*x65 - x19*x78 - x21*x90 - x22*x40 - x22*x41 - x23*x65 - x25*x89 - x28*x74 - x29*x51 - x30*x78 - x32*x89 - x33*x85 - x35*x47 - x35*x52 - x36*x90 - x37*x74 - x38*x85 - x50*x59 - x53*x59 - x80*ws4
-    x94 = x8*ws4
+    x93 = v[0]*p[0]*(x91*wc[0] - x92) + v[1]*p[1]*(-x49 + x91*wc[1]) + v[2]*p[2]*(-x70 + x91*wc[2]) + v[3]*p[3]*(-x82 + x91*wc[3]) + v[4]*p[4]*(-x15*ws[4]**3 + x91*wc[4]) - x14*x65 - x19*x78 - x21*x90 - x22*x40 - x22*x41 - x23*x65 - x25*x89 - x28*x74 - x29*x51 - x30*x78 - x32*x89 - x33*x85 - x35*x47 - x35*x52 - x36*x90 - x37*x74 - x38*x85 - x50*x59 - x53*x59 - x80*ws[4]
+    x94 = x8*ws[4]
     x95 = x93*x94
-    x96 = x54*ws0
-    x97 = v[0]*p[0]*(-x15*ws0**3 + x96*wc0) + v[1]*p[1]*(-x39 + x96*wc1) + v[2]*p[2]*(-x68 + x96*wc2) + v[3]*p[3]*(-x81 + x96*wc3) + v[4]*p[4]*(-x90 + x96*wc4) - x14*x72 - x17*x79 - x18*x51 - x19*x84 - x20*x47 - x20*x52 - x21*x92 - x22*x50 - x22*x53 - x23*x72 - x25*x63 - x28*x65 - x30*x84 - x32*x63 - x33*x78 - x36*x92 - x37*x65 - x38*x78 - x40*x56 - x41*x56
+    x96 = x54*ws[0]
+    x97 = v[0]*p[0]*(-x15*ws[0]**3 + x96*wc[0]) + v[1]*p[1]*(-x39 + x96*wc[1]) + v[2]*p[2]*(-x68 + x96*wc[2]) + v[3]*p[3]*(-x81 + x96*wc[3]) + v[4]*p[4]*(-x90 + x96*wc[4]) - x14*x72 - x17*x79 - x18*x51 - x19*x84 - x20*x47 - x20*x52 - x21*x92 - x22*x50 - x22*x53 - x23*x72 - x25*x63 - x28*x65 - x30*x84 - x32*x63 - x33*x78 - x36*x92 - x37*x65 - x38*x78 - x40*x56 - x41*x56
     x98 = x13*x97
     x99 = x12*x61
     x100 = x12*x76
@@ -1601,6 +1590,11 @@ def transport_rate(q, v, p, m, a, c, out):
     out[3] = x101*x62 + x101*x77 + x101*x95 - x86*(x6 - x12*x7/m[3]**2) + x87*x98
     out[4] = x102*x62 + x102*x77 + x102*x88 - x93*(x8 - x12*x9/m[4]**2) + x94*x98
     return out
+
+
+def transport_rate(q, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+    return transport_rate_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2]), a[3]*math.sin(q[3]), a[4]*math.sin(q[4])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2]), a[3]*math.cos(q[3]), a[4]*math.cos(q[4])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

@@ -9,6 +9,8 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
+from numba.extending import register_jitable
+
 N = 6
 DIM = 5
 
@@ -1360,29 +1362,30 @@ def riemann(q, m, a, c, out):
     return out
 
 
-def geodesic_acceleration(q, v, m, a, c, out):
-    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+@register_jitable
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (5,)."""
     x0 = 1/m[0]
-    x1 = math.sin(q[0])
-    x2 = math.cos(q[0])
-    x3 = math.cos(q[1])
-    x4 = math.cos(q[2])
-    x5 = math.cos(q[3])
-    x6 = math.cos(q[4])
+    x1 = ws[0]
+    x2 = wc[0]
+    x3 = wc[1]
+    x4 = wc[2]
+    x5 = wc[3]
+    x6 = wc[4]
     x7 = x2 + x3 + x4 + x5 + x6
     x8 = x7**2
     x9 = x1**2
     x10 = 1/m[1]
-    x11 = math.sin(q[1])
+    x11 = ws[1]
     x12 = x11**2
     x13 = 1/m[2]
-    x14 = math.sin(q[2])
+    x14 = ws[2]
     x15 = x14**2
     x16 = 1/m[3]
-    x17 = math.sin(q[3])
+    x17 = ws[3]
     x18 = x17**2
     x19 = 1/m[4]
-    x20 = math.sin(q[4])
+    x20 = ws[4]
     x21 = x20**2
     x22 = m[5]/(m[5]*(x0*x9 + x10*x12 + x13*x15 + x16*x18 + x19*x21) - x8 + 1)
     x23 = x0*x1*x22
@@ -1479,29 +1482,35 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return out
 
 
-def transport_rate(q, v, p, m, a, c, out):
-    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+def geodesic_acceleration(q, v, m, a, c, out):
+    """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14)."""
+    return geodesic_acceleration_sc((math.sin(q[0]), math.sin(q[1]), math.sin(q[2]), math.sin(q[3]), math.sin(q[4])), (math.cos(q[0]), math.cos(q[1]), math.cos(q[2]), math.cos(q[3]), math.cos(q[4])), v, m, a, c, out)
+
+
+@register_jitable
+def transport_rate_sc(ws, wc, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (5,)."""
     x0 = 1/m[0]
-    x1 = math.sin(q[0])
-    x2 = math.cos(q[0])
-    x3 = math.cos(q[1])
-    x4 = math.cos(q[2])
-    x5 = math.cos(q[3])
-    x6 = math.cos(q[4])
+    x1 = ws[0]
+    x2 = wc[0]
+    x3 = wc[1]
+    x4 = wc[2]
+    x5 = wc[3]
+    x6 = wc[4]
     x7 = x2 + x3 + x4 + x5 + x6
     x8 = x7**2
     x9 = x1**2
     x10 = 1/m[1]
-    x11 = math.sin(q[1])
+    x11 = ws[1]
     x12 = x11**2
     x13 = 1/m[2]
-    x14 = math.sin(q[2])
+    x14 = ws[2]
     x15 = x14**2
     x16 = 1/m[3]
-    x17 = math.sin(q[3])
+    x17 = ws[3]
     x18 = x17**2
     x19 = 1/m[4]
-    x20 = math.sin(q[4])
+    x20 = ws[4]
     x21 = x20**2
     x22 = m[5]/(m[5]*(x0*x9 + x10*x12 + x13*x15 + x16*x18 + x19*x21) - x8 + 1)
     x23 = x0*x1*x22
@@ -1601,6 +1610,11 @@ def transport_rate(q, v, p, m, a, c, out):
     out[3] = x106*x112 + x109*x98 + x112*x73 + x112*x88 - x97*(x16 - x18*x22/m[3]**2)
     out[4] = -x104*(x19 - x21*x22/m[4]**2) + x105*x109 + x113*x73 + x113*x88 + x113*x99
     return out
+
+
+def transport_rate(q, v, p, m, a, c, out):
+    """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16)."""
+    return transport_rate_sc((math.sin(q[0]), math.sin(q[1]), math.sin(q[2]), math.sin(q[3]), math.sin(q[4])), (math.cos(q[0]), math.cos(q[1]), math.cos(q[2]), math.cos(q[3]), math.cos(q[4])), v, p, m, a, c, out)
 
 
 def curvature_operator(q, x, y, m, a, c, out):

@@ -9,7 +9,13 @@ against a live SymPy derivation of every chart.  Masses, the weights aᵢ and th
 the constraint Σ aᵢ cos θᵢ = c are run-time arguments (weights in the masses' local order),
 so ``generated/`` holds one module per N for the whole family.  Each function works on scalars with ``math`` (so numba compiles it
 and plain CPython runs it), reads 1-D arrays, and writes into a caller-given
-``out`` array (no allocation in hot loops).
+``out`` array (no allocation in hot loops).  ``geodesic_acceleration`` and ``transport_rate``
+come in two parts: ``*_sc(ws, wc, ...)`` holds the formulas with σ = a sin q and κ = a cos q
+given (``register_jitable``, so a numba caller compiles it and CPython runs it as it is), and
+the public function evaluates σ, κ once and calls it: the chart right-hand side shares one
+evaluation between them and its health test (``charts.flows.chart``).  Both do the
+operations the single function did (the paper's ``_sc`` is its kernel with the sin/cos calls
+read from ws, wc), so the numbers keep their bits.
 
 Output is deterministic: ``sympy.cse(order='canonical')`` with numbered
 symbols and no dates; the header records the command and SymPy version.
@@ -92,14 +98,17 @@ def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = 
     names.update({y[a]: f"y[{a}]" for a in range(d)})
     sin_k = sp.Symbol("sin_k", real=True)
     # σ_α = a_α sin q_α and κ_α = a_α cos q_α become symbols computed once at the top (``atoms``)
-    atoms, calls = [], {}
+    # (the _sc variants read them from the arrays ws, wc: their callers share one evaluation)
+    atoms, calls, sc_names = [], {}, {}
     for kind, fns in (("cos", G.wcos), ("sin", G.wsin)):
         for a, f in enumerate(fns):
             sym = sp.Symbol(f"z{kind}{a}", real=True)
             calls[f] = sym
             names[sym] = f"w{kind[0]}{a}"
+            sc_names[sym] = f"w{kind[0]}[{a}]"
             atoms.append((sym, f"a[{a}]*math.{kind}(q[{a}])"))
     P = _Printer(names)
+    P_sc = _Printer({**names, **sc_names})
 
     def coded(nested):
         if isinstance(nested, list):
@@ -110,6 +119,24 @@ def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = 
         if paper:
             return _function(fname, args, doc, G.paper(outputs), P, scalar=scalar)
         return _function(fname, args, doc, coded(outputs), P, scalar=scalar, atoms=atoms)
+
+    def sc_pair(fname, args, doc, outputs):
+        """``fname_sc(ws, wc, *args[1:])`` with the formulas, σ = ws = a sin q and κ = wc =
+        a cos q given, and ``fname(*args)``, which evaluates them once and calls it."""
+        doc_sc = doc + f" ws, wc = a*sin(q), a*cos(q), shape ({d},)."
+        if paper:  # the paper's kernel with its sin/cos read from ws, wc: the same operations
+            sc = _function(f"{fname}_sc", ["ws", "wc"] + args[1:], doc_sc, G.paper(outputs), P)
+            for a in range(d):
+                sc = sc.replace(f"math.sin(q[{a}])", f"ws[{a}]").replace(f"math.cos(q[{a}])", f"wc[{a}]")
+            assert "q[" not in sc
+        else:
+            sc = _function(f"{fname}_sc", ["ws", "wc"] + args[1:], doc_sc, coded(outputs), P_sc)
+        w = "" if paper else "a[{a}]*"
+        ws = ", ".join((w + "math.sin(q[{a}])").format(a=a) for a in range(d))
+        wc = ", ".join((w + "math.cos(q[{a}])").format(a=a) for a in range(d))
+        wrapper = (f"def {fname}({', '.join(args)}):\n    \"\"\"{doc}\"\"\"\n"
+                   f"    return {fname}_sc(({ws}), ({wc}), {', '.join(args[1:])})\n")
+        return "@register_jitable\n" + sc + "\n\n" + wrapper
 
     what = (f"the paper's constraint sum(cos(theta_i)) = 0 (a = 1, c = 0 substituted before code\n"
             f"generation; a and c are accepted and ignored).  Arguments: q = local angles, shape ({d},);\n"
@@ -123,7 +150,7 @@ def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = 
         f"m = masses and a = weights, shape ({n},) each, local order with the eliminated rotor's\n"
         f"last; c = level (float); v, p, x, y = local vector components, shape ({d},).\n"
         f'Index conventions: see charts/codegen/symbolic.py.\n"""\n'
-        "import math\n\nN = {n}\nDIM = {d}\n".format(n=n, d=d),
+        "import math\n\nfrom numba.extending import register_jitable\n\nN = {n}\nDIM = {d}\n".format(n=n, d=d),
         function("metric", ["q", "m", "a", "c", "out"],
                   f"g_ab, eq (13); out shape ({shape(G.metric)}).", G.metric),
         function("metric_inverse", ["q", "m", "a", "c", "out"],
@@ -133,12 +160,12 @@ def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = 
                   G.christoffel),
         function("riemann", ["q", "m", "a", "c", "out"],
                   f"R_abcd = <R(d_c, d_d) d_b, d_a>; out shape ({shape(G.riemann)}).", G.riemann),
-        function("geodesic_acceleration", ["q", "v", "m", "a", "c", "out"],
-                  "dv^a/dt = -Gamma^a_bc v^b v^c, eq (14).",
-                  [-e for e in G.connection_contract(G.v, G.v)]),
-        function("transport_rate", ["q", "v", "p", "m", "a", "c", "out"],
-                  "dp^a/dt = -Gamma^a_bc v^b p^c, eq (16).",
-                  [-e for e in G.connection_contract(G.v, G.w)]),
+        sc_pair("geodesic_acceleration", ["q", "v", "m", "a", "c", "out"],
+                "dv^a/dt = -Gamma^a_bc v^b v^c, eq (14).",
+                [-e for e in G.connection_contract(G.v, G.v)]),
+        sc_pair("transport_rate", ["q", "v", "p", "m", "a", "c", "out"],
+                "dp^a/dt = -Gamma^a_bc v^b p^c, eq (16).",
+                [-e for e in G.connection_contract(G.v, G.w)]),
         function("curvature_operator", ["q", "x", "y", "m", "a", "c", "out"],
                   "(R(x, y) y)^a; the Jacobi equation is J'' + R(J, v) v = 0.",
                   G.curvature_operator(x, y)),

@@ -10,6 +10,8 @@ GENERATED_FUNCTIONS = (
     "metric", "metric_inverse", "christoffel", "riemann",
     "geodesic_acceleration", "transport_rate", "curvature_operator",
     "eliminated_component",
+    # the two above with σ = a sin q, κ = a cos q given (shared by the chart right-hand side)
+    "geodesic_acceleration_sc", "transport_rate_sc",
 )
 
 

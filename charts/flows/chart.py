@@ -8,10 +8,15 @@ Chart k's state is y = (q, v, p¹, …, pᵏ), shape ((2 + k)·(N − 1),):
 
 Chart k is the canonical chart with θₖ moved last (``charts.geometry.atlas``), so one
 compiled function per N (per kernel source) serves every chart and every member of the family
-Σ aᵢ cos θᵢ = c: ``par`` begins with (N, local masses (N), local weights (N), level c)
-(`local_parameters`).  The equations are written once, in `rates`, which takes the two
-kernel functions as arguments; the structured kernels need no N, so their right-hand side
-(`structured_rates`) is one function for every N, compiled once and cached on disk.
+Σ aᵢ cos θᵢ = c: ``par`` begins with (N, local masses (N), local weights (N), level c) and ends
+with a work area of 3(N − 1) floats (`local_parameters`, `WORK`): the last point q whose
+σ = a sin q, κ = a cos q were evaluated, and those σ, κ.  `point_sincos` evaluates them once
+per point, and the kernels' ``_sc`` variants, the health test and the loop's hooks
+(``charts.solvers.chart_formulation``) share them (the same numbers as evaluating them in
+each: it only skips repeating libm calls).  The equations are written once, in `rates`, which
+takes the two kernel functions as arguments; the structured kernels need no N, so their
+right-hand side (`structured_rates`) is one function for every N, compiled once and cached on
+disk.
 """
 from __future__ import annotations
 
@@ -22,53 +27,82 @@ import numpy as np
 from numba import njit
 
 from ..geometry import structured
-from ..geometry.atlas import eliminated_angle, local_masses, local_weights
+from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
 from ..geometry.kernels import compiled, source
 
-__all__ = ["rates", "chart_rates", "structured_rates", "local_parameters"]
+__all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
+           "work_area", "WORK"]
+
+#: Floats per rotor (3 per local coordinate) of the work area at the end of ``par``.
+WORK = 3
+
+
+def work_area(n: int) -> np.ndarray:
+    """A fresh work area for N = ``n``: no point evaluated yet (NaN never equals a q)."""
+    return np.full(WORK * (n - 1), np.nan)
 
 
 def local_parameters(masses, weights, level, k: int) -> np.ndarray:
-    """``par`` for `rates` in chart ``k``: (N, local masses, local weights, level)."""
+    """``par`` for `rates` in chart ``k``: (N, local masses, local weights, level, work area)."""
     n = len(masses)
-    return np.concatenate([[n], local_masses(masses, k), local_weights(weights, k), [level]])
+    return np.concatenate([[n], local_masses(masses, k), local_weights(weights, k), [level],
+                           work_area(n)])
+
+
+@njit(cache=True, inline="always")
+def point_sincos(y, par, d):
+    """(σ, κ) = (w sin q, w cos q) of the chart point q = y[:d], local weights w = par[2+d:],
+    as views of the work area at the end of ``par``: evaluated only when q is not the point
+    they were last evaluated at (after a chart switch, `work_area` resets it)."""
+    o = par.size - WORK * d
+    same = True
+    for a in range(d):
+        same = same and par[o + a] == y[a]
+    if not same:
+        for a in range(d):
+            par[o + a] = y[a]
+            par[o + d + a] = par[2 + d + a] * math.sin(y[a])
+            par[o + 2 * d + a] = par[2 + d + a] * math.cos(y[a])
+    return par[o + d:o + 2 * d], par[o + 2 * d:o + 3 * d]
 
 
 @njit(cache=True, inline="always")
 def rates(y, par, dy, ga, tr):
-    """Eqs (14) + (16) at y into dy with the kernels ``ga`` (geodesic_acceleration) and ``tr``
-    (transport_rate) of the chart whose local masses and weights are ``par[1:1+N]``,
-    ``par[1+N:1+2N]``, level ``par[1+2N]``, N = ``par[0]``.
-    Returns S = Σ aᵢ² sin²θᵢ (as the ambient formulation), or −1 outside the chart
-    (|C| >= aₖ, ``charts.geometry.atlas.eliminated_angle``)."""
+    """Eqs (14) + (16) at y into dy with the kernels ``ga`` (geodesic_acceleration_sc) and
+    ``tr`` (transport_rate_sc) of the chart whose local masses and weights are
+    ``par[1:1+N]``, ``par[1+N:1+2N]``, level ``par[1+2N]``, N = ``par[0]`` (σ, κ from
+    `point_sincos`).  Returns S = Σ aᵢ² sin²θᵢ (as the ambient formulation), or −1 outside
+    the chart (|C| >= aₖ, ``charts.geometry.atlas.eliminated_angle_sc``)."""
     n = int(par[0])
     d = n - 1
     nv = (y.size - 2 * d) // d
     m = par[1:1 + n]
     w = par[1 + n:1 + 2 * n]
     c = par[1 + 2 * n]
-    _, _, s2 = eliminated_angle(y, d, w, c, 1.0)
-    if s2 <= 0.0:
+    ws, wc = point_sincos(y, par, d)
+    _, _, s2 = eliminated_angle_sc(wc, d, w, c, 1.0)
+    health = -1.0
+    if s2 > 0.0:  # (one exit: the views are released in one place, see rk.rk4_point)
+        S = 0.0
+        for a in range(d):
+            S += ws[a] ** 2
+        health = S + s2
+        v = y[d:2 * d]
+        ga(ws, wc, v, m, w, c, dy[d:2 * d])
+        for a in range(d):
+            dy[a] = y[d + a]
+        for r in range(nv):
+            o = (2 + r) * d
+            tr(ws, wc, v, y[o:o + d], m, w, c, dy[o:o + d])
+    else:
         for i in range(y.size):
             dy[i] = 0.0
-        return -1.0
-    S = 0.0
-    for a in range(d):
-        S += (w[a] * math.sin(y[a])) ** 2
-    q = y[:d]
-    v = y[d:2 * d]
-    ga(q, v, m, w, c, dy[d:2 * d])
-    for a in range(d):
-        dy[a] = y[d + a]
-    for r in range(nv):
-        o = (2 + r) * d
-        tr(q, v, y[o:o + d], m, w, c, dy[o:o + d])
-    return S + s2
+    return health
 
 
 def structured_rates(y, par, dy):
     """`rates` with the structured kernels: any N, one compilation (the caller's signature)."""
-    return rates(y, par, dy, structured.geodesic_acceleration, structured.transport_rate)
+    return rates(y, par, dy, structured.geodesic_acceleration_sc, structured.transport_rate_sc)
 
 
 @cache
@@ -80,8 +114,8 @@ def chart_rates(n: int, paper: bool = False):
     if source(n) == "structured":
         return structured_rates
     kern = compiled(n, paper)
-    ga = kern.geodesic_acceleration
-    tr = kern.transport_rate
+    ga = kern.geodesic_acceleration_sc
+    tr = kern.transport_rate_sc
 
     def rhs(y, par, dy):
         return rates(y, par, dy, ga, tr)

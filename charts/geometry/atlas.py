@@ -14,7 +14,8 @@ import numpy as np
 from numba import njit
 
 __all__ = ["chart_coordinates", "local_masses", "local_weights", "ambient_index", "local_index",
-           "eliminated_component", "eliminated_angle"]
+           "eliminated_component", "eliminated_angle", "eliminated_component_sc",
+           "eliminated_angle_sc"]
 
 
 def chart_coordinates(n: int, k: int) -> list[int]:
@@ -45,25 +46,43 @@ def local_index(i, k):
 
 
 @njit(cache=True, inline="always")
-def eliminated_component(q, x, o, d, w, sk):
+def eliminated_component_sc(ws, x, o, d, w, sk):
     """The eliminated rotor's component of the tangent vector with local components
-    x[o:o+d] at local angles q (the first d entries) of chart k, local weights w (wₖ last),
-    where sin θₖ = sk: xₖ = −Σ_α x_α w_α sin q_α / (wₖ sin θₖ) (tangency, eq 10)."""
+    x[o:o+d] of chart k, σ = ws = w sin q given (local weights w, wₖ last), where
+    sin θₖ = sk: xₖ = −Σ_α x_α σ_α / (wₖ sin θₖ) (tangency, eq 10)."""
     acc = 0.0
     for a in range(d):
-        acc += x[o + a] * (w[a] * np.sin(q[a]))
+        acc += x[o + a] * ws[a]
     return -acc / (w[d] * sk)
 
 
 @njit(cache=True, inline="always")
-def eliminated_angle(q, d, w, c, branch):
-    """cos θₖ, sin θₖ and D = aₖ² − C² = (aₖ sin θₖ)² of chart k at local angles q (the first
-    d entries), local weights w (wₖ last), level c, on the branch sign(sin θₖ) = ``branch``:
-    aₖ cos θₖ = −C, C = Σ w_α cos q_α − c.  D <= 0: q is outside the chart (|C| >= aₖ), and
-    sin θₖ is returned as 0."""
+def eliminated_component(q, x, o, d, w, sk):
+    """`eliminated_component_sc` at local angles q (the first d entries)."""
+    ws = np.empty(d)
+    for a in range(d):
+        ws[a] = w[a] * np.sin(q[a])
+    return eliminated_component_sc(ws, x, o, d, w, sk)
+
+
+@njit(cache=True, inline="always")
+def eliminated_angle_sc(wc, d, w, c, branch):
+    """cos θₖ, sin θₖ and D = aₖ² − C² = (aₖ sin θₖ)² of chart k, κ = wc = w cos q of its
+    local angles given (local weights w, wₖ last), level c, on the branch
+    sign(sin θₖ) = ``branch``: aₖ cos θₖ = −C, C = Σ κ_α − c.  D <= 0: the point is outside
+    the chart (|C| >= aₖ), and sin θₖ is returned as 0."""
     C = 0.0
     for a in range(d):
-        C += w[a] * np.cos(q[a])
+        C += wc[a]
     C -= c
     D = w[d] * w[d] - C * C
     return -C / w[d], np.copysign(np.sqrt(max(D, 0.0)) / w[d], branch), D
+
+
+@njit(cache=True, inline="always")
+def eliminated_angle(q, d, w, c, branch):
+    """`eliminated_angle_sc` at local angles q (the first d entries)."""
+    wc = np.empty(d)
+    for a in range(d):
+        wc[a] = w[a] * np.cos(q[a])
+    return eliminated_angle_sc(wc, d, w, c, branch)

@@ -34,24 +34,32 @@ from numba import njit
 from .atlas import eliminated_component as _eliminated_at
 
 __all__ = ["metric", "metric_inverse", "christoffel", "riemann", "geodesic_acceleration",
-           "transport_rate", "curvature_operator", "eliminated_component", "chart_hessian",
+           "transport_rate", "geodesic_acceleration_sc", "transport_rate_sc", "curvature_operator", "eliminated_component", "chart_hessian",
            "gauss_sectional", "gauss_frame_curvature", "FUNCTIONS"]
 
 #: The functions shared with the generated modules (``charts.codegen.names.GENERATED_FUNCTIONS``).
 FUNCTIONS = ("metric", "metric_inverse", "christoffel", "riemann", "geodesic_acceleration",
-             "transport_rate", "curvature_operator", "eliminated_component")
+             "transport_rate", "curvature_operator", "eliminated_component",
+             "geodesic_acceleration_sc", "transport_rate_sc")
 
 
 @njit(cache=True, inline="always")
-def _chart_scalars(q, m, w, c, s):
-    """Fills s = σ = w sin q; returns (C, D, G) of chart coordinates q with local masses m,
-    local weights w and level c (see the module doc)."""
-    d = q.size
+def _weighted_sincos(q, w, s, k):
+    """Fills s = σ = w sin q and k = κ = w cos q (local weights w)."""
+    for a in range(q.size):
+        s[a] = w[a] * math.sin(q[a])
+        k[a] = w[a] * math.cos(q[a])
+
+
+@njit(cache=True, inline="always")
+def _chart_scalars_sc(s, k, m, w, c):
+    """(C, D, G) of the chart point with σ = s, κ = k, local masses m, local weights w and
+    level c (see the module doc)."""
+    d = s.size
     C = 0.0
     G = 0.0
     for a in range(d):
-        s[a] = w[a] * math.sin(q[a])
-        C += w[a] * math.cos(q[a])
+        C += k[a]
         G += s[a] * s[a] / m[a]
     C -= c
     sk2 = w[d] * w[d] - C * C
@@ -59,13 +67,22 @@ def _chart_scalars(q, m, w, c, s):
 
 
 @njit(cache=True, inline="always")
-def _hess(q, w, s, C, sk2, x, y):
-    """h(X, Y) = −Σᵢ aᵢ cos θᵢ Xᵢ Yᵢ of the ambient vectors of local components x, y."""
+def _chart_scalars(q, m, w, c, s):
+    """Fills s = σ = w sin q; returns (C, D, G) of chart coordinates q (`_chart_scalars_sc`)."""
+    k = np.empty(q.size)
+    _weighted_sincos(q, w, s, k)
+    return _chart_scalars_sc(s, k, m, w, c)
+
+
+@njit(cache=True, inline="always")
+def _hess(s, k, C, sk2, x, y):
+    """h(X, Y) = −Σᵢ aᵢ cos θᵢ Xᵢ Yᵢ of the ambient vectors of local components x, y
+    (σ = s, κ = k)."""
     acc = 0.0
     sx = 0.0
     sy = 0.0
-    for a in range(q.size):
-        acc += w[a] * math.cos(q[a]) * x[a] * y[a]
+    for a in range(s.size):
+        acc += k[a] * x[a] * y[a]
         sx += s[a] * x[a]
         sy += s[a] * y[a]
     return -(acc - C * sx * sy / sk2)
@@ -143,15 +160,31 @@ def riemann(q, m, w, c, out):
     return out
 
 
+@njit(cache=True, error_model="numpy")
+def transport_rate_sc(ws, wc, v, p, m, w, c, out):
+    """dp^α/dt = −Γ^α_βγ vᵝ pᵞ = (σ_α / (m_α G)) h(V, P), eq (16), with σ = ws = w sin q and
+    κ = wc = w cos q given; O(d), out shape (d,)."""
+    d = ws.size
+    C, sk2, G = _chart_scalars_sc(ws, wc, m, w, c)
+    f = _hess(ws, wc, C, sk2, v, p) / G
+    for a in range(d):
+        out[a] = f * ws[a] / m[a]
+    return out
+
+
+@njit(cache=True, error_model="numpy")
+def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
+    """dv^α/dt = −Γ^α_βγ vᵝ vᵞ, eq (14) (`transport_rate_sc` with p = v); out shape (d,)."""
+    return transport_rate_sc(ws, wc, v, v, m, a, c, out)
+
+
 @njit(cache=True)
 def transport_rate(q, v, p, m, w, c, out):
-    """dp^α/dt = −Γ^α_βγ vᵝ pᵞ = (σ_α / (m_α G)) h(V, P), eq (16); O(d), out shape (d,)."""
-    d = q.size
-    C, sk2, G = _chart_scalars(q, m, w, c, out)  # out holds σ until the last loop
-    f = _hess(q, w, out, C, sk2, v, p) / G
-    for a in range(d):
-        out[a] = f * out[a] / m[a]
-    return out
+    """`transport_rate_sc` at the local angles q."""
+    s = np.empty(q.size)
+    k = np.empty(q.size)
+    _weighted_sincos(q, w, s, k)
+    return transport_rate_sc(s, k, v, p, m, w, c, out)
 
 
 @njit(cache=True)
@@ -166,9 +199,11 @@ def curvature_operator(q, x, y, m, w, c, out):
     equation J'' + R(J, v) v = 0; O(d), out shape (d,)."""
     d = q.size
     s = np.empty(d)
-    C, sk2, G = _chart_scalars(q, m, w, c, s)
-    hyy = _hess(q, w, s, C, sk2, y, y)
-    hxy = _hess(q, w, s, C, sk2, x, y)
+    kk = np.empty(d)
+    _weighted_sincos(q, w, s, kk)
+    C, sk2, G = _chart_scalars_sc(s, kk, m, w, c)
+    hyy = _hess(s, kk, C, sk2, y, y)
+    hxy = _hess(s, kk, C, sk2, x, y)
     sx = 0.0
     sy = 0.0
     for a in range(d):
@@ -176,7 +211,7 @@ def curvature_operator(q, x, y, m, w, c, out):
         sy += s[a] * y[a]
     acc = 0.0
     for a in range(d):  # lowered: L_α = h_α(x) h(y,y) − h_α(y) h(x,y), h_α(x) = Σ_β h_αβ xᵝ
-        k = w[a] * math.cos(q[a])
+        k = kk[a]
         hx = -(k * x[a] - C * s[a] * sx / sk2)
         hy = -(k * y[a] - C * s[a] * sy / sk2)
         out[a] = (hx * hyy - hy * hxy) / G

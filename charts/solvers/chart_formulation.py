@@ -26,8 +26,9 @@ the switch happens at the step's end time and integration resumes from exactly t
 the same step-size controller state.  Every switch is logged as (t, from, to).
 
 Parameters: ``par = (N, local masses (N), local weights (N), level, masses (N), weights (N),
-offset of θₖ, τ, speed, project, cap fraction)`` (the first 2 + 2N are those of
-``charts.flows.chart.rates``), ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
+offset of θₖ, τ, speed, project, cap fraction, work area (3(N − 1)))`` (the first 2 + 2N and
+the work area are those of ``charts.flows.chart.rates``: the hooks below share its σ, κ of
+the point through ``point_sincos``), ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
 the multiple of 2π that keeps the reconstructed θₖ continuous with the ambient angle.
 """
 from __future__ import annotations
@@ -38,8 +39,8 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from ..flows.chart import chart_rates, structured_rates
-from ..geometry.atlas import ambient_index, eliminated_angle, eliminated_component, local_index
+from ..flows.chart import chart_rates, point_sincos, structured_rates, work_area
+from ..geometry.atlas import ambient_index, eliminated_angle_sc, eliminated_component_sc, local_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
 from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
@@ -91,10 +92,11 @@ def chart_condition_bound(n, tau, masses=None):
     return 1.0 + (n - 1) * m.max() / (tau * tau * m.min())
 
 
-@njit(cache=True)
-def _sin_k(y, par, n, branch):
-    """(cos θₖ, sin θₖ, D = (aₖ sin θₖ)²) of the chart state y (``eliminated_angle``)."""
-    return eliminated_angle(y, n - 1, par[1 + n:1 + 2 * n], par[1 + 2 * n], branch)
+@njit(cache=True, inline="always")
+def _sin_k(wc, par, n, branch):
+    """(cos θₖ, sin θₖ, D = (aₖ sin θₖ)²) of the chart point with κ = wc
+    (``eliminated_angle_sc``)."""
+    return eliminated_angle_sc(wc, n - 1, par[1 + n:1 + 2 * n], par[1 + 2 * n], branch)
 
 
 @njit(cache=True)
@@ -103,11 +105,12 @@ def _to_ambient_impl(y, par, ipar, row):
     d = n - 1
     nv = ipar[1]
     k = ipar[2]
-    ck, sk, _ = _sin_k(y, par, n, ipar[3])
+    ws, wc = point_sincos(y, par, d)
+    ck, sk, _ = _sin_k(wc, par, n, ipar[3])
     row[k] = math.atan2(sk, ck) + par[_b(n) + _OFF]
     w = par[1 + n:1 + 2 * n]
     for b in range(1 + nv):  # velocity and transported vectors
-        row[(1 + b) * n + k] = eliminated_component(y, y, (1 + b) * d, d, w, sk)
+        row[(1 + b) * n + k] = eliminated_component_sc(ws, y, (1 + b) * d, d, w, sk)
     for a in range(d):
         i = ambient_index(a, k)
         row[i] = y[a]
@@ -140,19 +143,22 @@ def enter_chart(row, n, nv, j, masses, weights, y, par, ipar):
             y[b * d + a] = row[b * n + i]
     par[n] = masses[j]
     par[2 * n] = weights[j]
+    for a in range(_b(n) + _CAP + 1, par.size):  # the work area: no point evaluated yet
+        par[a] = np.nan
 
 
 def _post(y, par, ipar, t, log):
     n = ipar[0]
     d = n - 1
     k = ipar[2]
-    _, sk, s2 = _sin_k(y, par, n, ipar[3])
+    ws, wc = point_sincos(y, par, d)
+    _, sk, s2 = _sin_k(wc, par, n, ipar[3])
     if not s2 > 0.0:  # the step ended outside the chart (|C| >= aₖ): no θₖ, no uₖ
         return DOMAIN
     w = par[1 + n:1 + 2 * n]
     code = POST_OK
     if par[_b(n) + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
-        E = par[n] * eliminated_component(y, y, d, d, w, sk) ** 2
+        E = par[n] * eliminated_component_sc(ws, y, d, d, w, sk) ** 2
         for a in range(d):
             E += par[1 + a] * y[d + a] ** 2
         f = par[_b(n) + _SPEED] / math.sqrt(E)
@@ -164,7 +170,7 @@ def _post(y, par, ipar, t, log):
     smax = -1.0
     gk = abs(w[d] * sk)
     for i in range(n):
-        s = gk if i == k else abs(w[local_index(i, k)] * math.sin(y[local_index(i, k)]))
+        s = gk if i == k else abs(ws[local_index(i, k)])
         if s > smax:
             smax = s
             j = i
@@ -187,14 +193,15 @@ def _post(y, par, ipar, t, log):
 def _cap(y, par, ipar):
     n = ipar[0]
     d = n - 1
-    _, sk, s2 = _sin_k(y, par, n, ipar[3])
+    ws, wc = point_sincos(y, par, d)
+    _, sk, s2 = _sin_k(wc, par, n, ipar[3])
     if s2 <= 0.0:
         return 0.0
     w = par[1 + n:1 + 2 * n]
     S = s2
-    U = eliminated_component(y, y, d, d, w, sk) ** 2
+    U = eliminated_component_sc(ws, y, d, d, w, sk) ** 2
     for a in range(d):
-        S += (w[a] * math.sin(y[a])) ** 2
+        S += ws[a] ** 2
         U += y[d + a] ** 2
     if U == 0.0:
         return np.inf
@@ -209,18 +216,21 @@ def chart_rhs(n: int, paper: bool = False):
     rates = chart_rates(n, paper)
     if rates is structured_rates:
         return _structured_rhs()
-    return njit(RHS_SIG)(rates)
+    return njit(RHS_SIG, error_model="numpy")(rates)
 
 
 @cache
 def _structured_rhs():
-    return njit(RHS_SIG, cache=True)(structured_rates)
+    return njit(RHS_SIG, cache=True, error_model="numpy")(structured_rates)
 
 
 @cache
 def _common_hooks():
-    return (njit(CAP_SIG, cache=True)(_cap), njit(POST_SIG, cache=True)(_post),
-            njit(OUT_SIG, cache=True)(_to_ambient))
+    # (numpy's error model: no zero-division branches, so no reference counting of the
+    # views; every divisor is checked nonzero first, or is a weight or a positive norm)
+    opts = dict(cache=True, error_model="numpy")
+    return (njit(CAP_SIG, **opts)(_cap), njit(POST_SIG, **opts)(_post),
+            njit(OUT_SIG, **opts)(_to_ambient))
 
 
 class ChartFlow(Formulation):
@@ -249,7 +259,7 @@ class ChartFlow(Formulation):
         row = np.concatenate([theta, u, P.ravel()])
         y = np.empty((2 + nv) * (n - 1))
         b = 2 + 4 * n
-        par = np.zeros(b + 5)
+        par = np.concatenate([np.zeros(b + 5), work_area(n)])
         par[0] = n
         par[1 + 2 * n] = sys.level
         par[2 + 2 * n:2 + 3 * n] = sys.masses

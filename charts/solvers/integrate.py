@@ -49,7 +49,11 @@ TOLERANCES = {
 
 _METHODS = {"rk4": D.METHOD_RK4, "dop853": D.METHOD_DOP853}
 _FORMULATIONS = {"ambient": AmbientFlow, "chart": ChartFlow}
+#: Rows of the every-step output buffer: at least this many, and up to a chunk (at most
+#: `_EVERY_STEP_BYTES`): each time it fills, the compiled loop returns to Python (≈ 0.1 ms of
+#: dispatch per call).
 _EVERY_STEP_BUFFER = 4096
+_EVERY_STEP_BYTES = 1 << 24
 _LOG_CAPACITY = 1024
 
 
@@ -259,18 +263,25 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         ist[D.I_IEVAL] = first
         T_out = np.zeros(te.size - first)
         Y_out = np.zeros((te.size - first, na))
-    else:
-        ts.append(np.array([0.0]))
-        rows.append(row0[None, :])
-        T_out = np.zeros(_EVERY_STEP_BUFFER)
-        Y_out = np.zeros((_EVERY_STEP_BUFFER, na))
+    else:  # the loop writes every step into the buffer after the t = 0 row
+        # (RK4: room for the whole run unless the cap shortens steps, up to _EVERY_STEP_BYTES)
+        expected = math.ceil(t_final / dt) + 2 if method == "rk4" else int(chunk_steps)
+        rows_out = max(_EVERY_STEP_BUFFER, min(expected, _EVERY_STEP_BYTES // (8 * na)))
+        T_out = np.empty(rows_out)
+        Y_out = np.empty((rows_out, na))
+        T_out[0] = 0.0
+        Y_out[0] = row0
+        ist[D.I_NOUT] = 1
     switches = list(form.initial_switches)
 
     def drain():
+        nonlocal T_out, Y_out
         nout = int(ist[D.I_NOUT])
-        if not use_eval and nout:
-            ts.append(T_out[:nout].copy())
-            rows.append(Y_out[:nout].copy())
+        if not use_eval and nout == T_out.size:  # full: keep it, the loop gets a fresh one
+            ts.append(T_out)
+            rows.append(Y_out)
+            T_out = np.empty_like(T_out)
+            Y_out = np.empty_like(Y_out)
             ist[D.I_NOUT] = 0
         switches.extend(form.drain_log(log, ipar))
         if dense:
@@ -278,25 +289,31 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
             ist[D.I_NSEG] = 0
 
     def result(status, s_end):
-        if use_eval:
-            nout = int(ist[D.I_NOUT])
-            ts.append(T_out[:nout])
-            rows.append(Y_out[:nout])
-        s = np.concatenate(ts)
-        Y = np.concatenate(rows, axis=0)
+        nout = int(ist[D.I_NOUT])
+        ts.append(T_out[:nout])
+        rows.append(Y_out[:nout])
+        if len(rows) == 1 and 2 * nout >= Y_out.shape[0]:  # one buffer, mostly used: no copy
+            s, Y = ts[0], rows[0]
+        else:
+            s = np.concatenate(ts)
+            Y = np.concatenate(rows, axis=0)
         sw = [(t0 + sign * w[0],) + tuple(w[1:]) for w in switches if w[0] <= s_end]
-        keep = s <= s_end
+        keep = slice(0, int(np.searchsorted(s, s_end, side="right")))  # s <= s_end (s increases)
         t = te_user[:s.size][keep] if use_eval else t0 + sign * s[keep]
         Y = Y[keep]
         if sol is not None:
             sol.close(s_end)
         if sign < 0:
             Y[:, n:2 * n] *= -1.0            # back from the forward run from (θ₀, −u₀)
+        # rows whose invariants the loop's monitor has not seen (in ``mon`` already): the
+        # input row and, with t_eval, every sample (not every sample is a step's end)
+        check = np.ones(Y.shape[0], bool) if use_eval else np.arange(Y.shape[0]) == 0
         if tracker is not None and tracker.stop is not None and not use_eval \
                 and not (s.size and s[keep][-1] == s_end):
             t = np.append(t, t0 + sign * s_end)  # the terminal event closes the output (SciPy)
             Y = np.concatenate([Y, sol.sample([s_end])])   # (sol's rows are in user time)
-        res = _make_result(system, t, Y, P.shape[0], mon, sw, ist, status, formulation,
+            check = np.append(check, True)
+        res = _make_result(system, t, Y, check, P.shape[0], mon, sw, ist, status, formulation,
                            method, dict(dt=dt, rtol=rtol_v, atol=atol_v, project=bool(project),
                                         tau=tau if formulation == "chart" else None,
                                         chunk_steps=int(chunk_steps), t_span=[t0, t1]))
@@ -330,16 +347,19 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
     return result(status_name, st[D.S_T])
 
 
-def _make_result(system, t, Y, k, mon, switches, ist, status, formulation, method, options):
+def _make_result(system, t, Y, check, k, mon, switches, ist, status, formulation, method, options):
+    """The result; the drift of the invariants is the max of the loop's monitor ``mon`` and
+    of the rows ``Y[check]`` that it has not seen (the same formula: ``invariants``)."""
     n = system.n
     theta = Y[:, :n]
     u = Y[:, n:2 * n]
     transported = Y[:, 2 * n:].reshape(-1, k, n) if k else None
-    F, G, E = invariants(theta, u, system.masses, system.weights, system.level)
+    F, G, E = invariants(theta[check], u[check], system.masses, system.weights, system.level)
+    e0 = float(system.energy(u[0])) if len(u) else 1.0
     drift = {
         "constraint": float(max(mon[0], np.max(np.abs(F), initial=0.0))),
         "tangency": float(max(mon[1], np.max(np.abs(G), initial=0.0))),
-        "energy": float(max(mon[2], np.max(np.abs(E - E[0]) / E[0], initial=0.0))),
+        "energy": float(max(mon[2], np.max(np.abs(E - e0) / e0, initial=0.0))),
     }
     if k:
         V = np.concatenate([u[:, None, :], transported], axis=1)  # (m, k+1, n)

@@ -21,6 +21,10 @@ requested times, invariant monitoring, counters, status codes).  The contract:
 
 All loop state lives in two small arrays so that a chunk can stop and resume exactly:
 ``st`` (floats, indices ``S_*``) and ``ist`` (ints, indices ``I_*``).
+
+numba's disk cache of :func:`drive` is keyed by this file's time stamp only, while the
+steppers of ``charts.solvers.rk`` are compiled into it: a change there reaches a cached
+``drive`` only with a change of this file (or a fresh cache).
 """
 from __future__ import annotations
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit, types
 
 from .dop853_coefficients import A, B, D, E3, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED
@@ -105,12 +106,15 @@ def rk4_step(f, y, h, par, K, ytmp, ynew):
     """One classical RK4 step of size ``h`` from ``y``, shape (n,), into ``ynew``.
 
     ``K`` : work array, shape (≥ 4, n), C-contiguous; ``ytmp`` : work array, shape (n,).
-    Returns the smallest health over the four stages."""
-    n = y.size
+    Returns the smallest health over the four stages.  Stage 0 is evaluated at y itself,
+    outside the stage loop, and the loop calls the branch-free `rk4_point`: a branch on the
+    stage in the loop kept an atomic reference-count pair per array and stage (`rk4_point`;
+    178 of the 209 ns of a step with a trivial right-hand side, N = 5)."""
+    n = np.uint64(y.size)
     Kf = K.reshape(K.size)
-    hmin = 1e300
-    for st in range(4):
-        rk4_stage_point(y, Kf, st, h, n, ytmp)
+    hmin = f(y, par, K[0])
+    for st in range(1, 4):
+        rk4_point(y, Kf, np.uint64(st - 1) * n, rk4_node(st) * h, n, ytmp)
         hmin = min(hmin, f(ytmp, par, K[st]))
     rk4_combine(y, Kf, h, n, ynew)
     return hmin

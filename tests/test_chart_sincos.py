@@ -1,0 +1,48 @@
+"""The chart right-hand side's shared σ = a sin q, κ = a cos q (charts.flows.chart): what
+`point_sincos` returns is libm's at the point, bit for bit, whether it evaluates them or reuses
+the last point's, and a right-hand side that reuses them equals one evaluated from a fresh
+work area."""
+import numpy as np
+from numba import njit
+
+from charts.flows.chart import chart_rates, local_parameters, point_sincos, work_area
+
+
+@njit
+def _point(y, par, d):
+    ws, wc = point_sincos(y, par, d)
+    return ws.copy(), wc.copy()
+
+
+def test_point_sincos_is_libm_at_every_point():
+    rng = np.random.default_rng(7)
+    for n in (3, 5, 8):
+        d = n - 1
+        par = local_parameters(rng.uniform(0.5, 2.0, n), rng.uniform(0.8, 1.3, n), 0.1, n - 1)
+        w = par[2 + d:2 + 2 * d]
+        for _ in range(20):
+            y = rng.uniform(-3.0, 3.0, 2 * d)
+            for _again in range(2):  # evaluated, then reused
+                ws, wc = _point(y, par, d)
+                assert np.array_equal(ws, w * np.sin(y[:d]))
+                assert np.array_equal(wc, w * np.cos(y[:d]))
+
+
+def test_right_hand_side_reusing_the_work_area_equals_a_fresh_one():
+    rng = np.random.default_rng(3)
+    for n, paper in ((5, True), (5, False), (8, False)):
+        d = n - 1
+        rhs = njit(chart_rates(n, paper))
+        par = local_parameters(np.ones(n), np.ones(n), 0.0, n - 1) if paper else \
+            local_parameters(rng.uniform(0.5, 2.0, n), rng.uniform(0.8, 1.3, n), 0.1, n - 1)
+        for _ in range(20):
+            y = np.concatenate([rng.uniform(1.0, 2.0, d) * rng.choice([-1, 1], d),
+                                rng.normal(size=2 * d)])
+            a = np.empty(y.size)
+            rhs(y, par, a)
+            ha = rhs(y, par, a)                     # the second time from the work area
+            fresh = par.copy()
+            fresh[-work_area(n).size:] = np.nan
+            b = np.empty(y.size)
+            hb = rhs(y, fresh, b)
+            assert ha == hb and np.array_equal(a, b)
