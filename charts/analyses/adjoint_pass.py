@@ -12,7 +12,8 @@ from numba import njit
 from ..flows.ambient import adjoint_factors, adjoint_rate, multiplier, sincos, state_rate
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point
-from ..solvers.status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, step_cap
+from ..solvers.status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, step_cap,
+                              sum_squares)
 from ..solvers.tangent import orthonormal_rows, orthonormalize, shift_sincos
 from .singular_values import smallest_singular_values
 
@@ -133,11 +134,8 @@ def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, 
         for jj in range(ck_every):
             # the forward kernel's step policy (charts.solvers.status): near an N = 4
             # singular point the step is cut into equal sub-steps within the cap
-            ss = 0.0
-            uu = 0.0
-            for i in range(n):
-                ss += s0[i] * s0[i]
-                uu += Zf[n + i] * Zf[n + i]
+            ss = sum_squares(s0, 0, n)
+            uu = sum_squares(Zf, n, n)
             # (the two exits, never taken after a forward pass that passed, also keep the
             # loop fast: without them Numba's code for this loop is twice as slow, measured)
             if not isfinite(ss + uu):

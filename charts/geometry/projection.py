@@ -20,7 +20,7 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import LANE_WIDTH
+from ..flows.ambient import LANE_WIDTH, sincos
 
 __all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
            "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of"]
@@ -183,9 +183,7 @@ def project_tangent(y, X, minv, a):
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
-    for j in range(n):
-        s[j] = a[j] * sin(y[j])
-        c[j] = a[j] * cos(y[j])
+    sincos(y, 0, n, a, s, c)
     project_tangent_sc(y, X, minv, s, c)
 
 
@@ -196,9 +194,7 @@ def project_tangent_euclidean(y, W, wts):
     n = y.size // 2
     s = np.empty(n)
     c = np.empty(n)
-    for i in range(n):
-        s[i] = wts[i] * sin(y[i])
-        c[i] = wts[i] * cos(y[i])
+    sincos(y, 0, n, wts, s, c)
     project_tangent_euclidean_sc(y, W, s, c, np.empty(2 * n), np.empty(2 * n))
 
 

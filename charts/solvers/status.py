@@ -20,7 +20,7 @@ from math import isfinite, sqrt
 
 from numba import njit
 
-__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "fixed_step_status", "RUNNING",
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
            "status_error", "StepSizeWarning", "check_step", "check_duration", "MAX_STEP_LENGTH",
@@ -48,6 +48,16 @@ def step_cap(S, U, fraction):
     if U == 0.0:
         return 1e300
     return fraction * sqrt(S / U)
+
+
+@njit(cache=True, inline="always")
+def sum_squares(x, o, n):
+    """Σ x[o + j]² over j < n: the policy's S = Σ (a sin θ)² (from the weighted sines) and
+    U = Σ u² (from the velocities), for the kernels that test the policy inline."""
+    acc = 0.0
+    for j in range(n):
+        acc += x[o + j] * x[o + j]
+    return acc
 
 
 @njit(cache=True, inline="always")
