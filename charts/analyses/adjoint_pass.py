@@ -9,12 +9,13 @@ from math import ceil, isfinite
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import adjoint_factors, adjoint_rate, multiplier, sincos, state_rate
+from ..flows.ambient import adjoint_factors, adjoint_rate, sincos
 from ..geometry.projection import project_tangent_euclidean_sc
-from ..solvers.rk import rk4_combine, rk4_node, rk4_point
+from ..solvers.rk import rk4_node, rk4_point
 from ..solvers.status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, step_cap,
                               sum_squares)
-from ..solvers.tangent import orthonormal_rows, orthonormalize, shift_sincos
+from ..solvers.tangent import (orthonormal_rows, orthonormalize, rk4_finish, shift_sincos,
+                               state_point_rate)
 from .singular_values import smallest_singular_values
 
 __all__ = ["adjoint_step", "backward_kernel"]
@@ -47,16 +48,11 @@ def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, h, n, R
             for j in range(n):
                 dl[j] = Zt[j] - th[j]
             shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
-        lam, B = multiplier(Zt, zero, n, minv, s, c)
-        iB = 1.0 / B if B > 0.0 else 0.0
-        state_rate(Zt, zero, n, minv, s, lam, K, o)
+        lam, iB = state_point_rate(Zt, n, minv, s, c, K, o)
         adjoint_factors(Zt, zero, n, minv, s, c, lam, iB, fa, fb, fp)
         for r in range(np.uint64(1), R):
             adjoint_rate(Zt, r * d, n, minv, s, fa, fb, fp, K, o + r * d)
-    rk4_combine(Zf, K, h, L, Zf)
-    for j in range(n):
-        dl[j] = Zf[j] - th[j]
-    shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
+    rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts)
 
 
 @njit(cache=True)

@@ -35,7 +35,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
+           "shift_sincos_lanes", "shifted", "state_point_rate", "rk4_finish", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -138,12 +138,28 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d
             for j in range(n):
                 dl[j] = a * K[op + j]
             shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
-        lam, B = multiplier(Zt, zero, n, minv, s, c)
-        iB = 1.0 / B if B > 0.0 else 0.0
-        state_rate(Zt, zero, n, minv, s, lam, K, o)
+        lam, iB = state_point_rate(Zt, n, minv, s, c, K, o)
         tangent_factors(Zt, zero, n, minv, s, c, lam, f, g, p, q)
         for r in range(np.uint64(1), R):
             tangent_rate(Zt, r * d, n, f, g, p, q, iB, K, o + r * d)
+    rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts)
+
+
+@njit(cache=True, inline="always")
+def state_point_rate(Zt, n, minv, s, c, K, o):
+    """Eq (8) at the stage point Zt (state first, sin/cos s, c) into K[o:o+2N]; returns
+    (Λ, 1/B) for the vectors' rates at the same point (the stage of both RK4 steps, the
+    tangent one here and the adjoint one of ``charts.analyses.adjoint_pass``)."""
+    zero = np.uint64(0)
+    lam, B = multiplier(Zt, zero, n, minv, s, c)
+    state_rate(Zt, zero, n, minv, s, lam, K, o)
+    return lam, (1.0 / B if B > 0.0 else 0.0)
+
+
+@njit(cache=True, inline="always")
+def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
+    """The end of an RK4 step of both steps: Zf from its stages K, and the weighted sin/cos
+    s0, c0 shifted from the step's start angles th to the new ones."""
     rk4_combine(Zf, K, h, L, Zf)
     for j in range(n):
         dl[j] = Zf[j] - th[j]
