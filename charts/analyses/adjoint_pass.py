@@ -4,7 +4,7 @@ integrated backward from each trajectory checkpoint jointly with m adjoint vecto
 the sines of the angles (the smallest singular values of W Vᵀ)."""
 from __future__ import annotations
 
-from math import ceil, isfinite
+from math import ceil
 
 import numpy as np
 from numba import njit
@@ -12,8 +12,7 @@ from numba import njit
 from ..flows.ambient import adjoint_factors, adjoint_rate, sincos
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.rk import rk4_node, rk4_point
-from ..solvers.status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, step_cap,
-                              sum_squares)
+from ..solvers.status import CAP_FRACTION, RUNNING, fixed_step_status, sum_squares
 from ..solvers.tangent import (orthonormal_rows, orthonormalize, rk4_finish, shift_sincos,
                                state_point_rate)
 from .singular_values import smallest_singular_values
@@ -130,16 +129,13 @@ def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, 
         for jj in range(ck_every):
             # the forward kernel's step policy (charts.solvers.status): near an N = 4
             # singular point the step is cut into equal sub-steps within the cap
-            ss = sum_squares(s0, 0, n)
-            uu = sum_squares(Zf, n, n)
-            # (the two exits, never taken after a forward pass that passed, also keep the
-            # loop fast: without them Numba's code for this loop is twice as slow, measured)
-            if not isfinite(ss + uu):
-                return NONFINITE, step
-            hc = step_cap(ss, uu, _CAP)
+            code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), dt,
+                                         _CAP)
+            # (the exits, never taken after a forward pass that passed, also keep the loop
+            # fast: without them Numba's code for this loop is twice as slow, measured)
+            if code != RUNNING:
+                return code, step
             if hc >= dt:
-                if ss < SINGULAR_S:
-                    return SINGULAR, step
                 _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt, nu, Ru,
                              du, Lu)
             else:
