@@ -28,7 +28,8 @@ from numba import njit
 
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
-from ..geometry.kernels import compiled, source
+from ..codegen.names import CHART_RATES
+from ..geometry.kernels import chart_module, source
 
 __all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
            "work_area", "WORK"]
@@ -109,15 +110,10 @@ def structured_rates(y, par, dy):
 def chart_rates(n: int, paper: bool = False):
     """The right-hand side ``rhs(y, par, dy) -> health`` of eqs (14) + (16) for N = ``n``
     (any chart and member: ``par`` selects them), to be compiled by the caller with its
-    signature: `structured_rates` unless N's kernels are generated (``paper``: the paper's
-    generated module, ``charts.geometry.kernels.geometry``)."""
+    signature: `structured_rates` unless N's kernels are generated, else the generated
+    module's ``chart_rates`` (`rates` bound to its kernels; ``paper``: the paper's module,
+    ``charts.geometry.kernels.chart_module``).  Both are module-level functions, so their
+    compilations are cached on disk, and `rates` inlines the kernels into them."""
     if source(n) == "structured":
         return structured_rates
-    kern = compiled(n, paper)
-    ga = kern.geodesic_acceleration_sc
-    tr = kern.transport_rate_sc
-
-    def rhs(y, par, dy):
-        return rates(y, par, dy, ga, tr)
-
-    return rhs
+    return getattr(chart_module(n, paper), CHART_RATES)

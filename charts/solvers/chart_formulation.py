@@ -210,13 +210,13 @@ def _cap(y, par, ipar):
 
 @cache
 def chart_rhs(n: int, paper: bool = False):
-    """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop: the
-    structured right-hand side once for every N (cached on disk), a generated one per N and
-    per module (``paper``: the paper's Σ cos θ = 0, else the family)."""
+    """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop and
+    cached on disk: the structured right-hand side once for every N, a generated one per N
+    and per module (``paper``: the paper's Σ cos θ = 0, else the family)."""
     rates = chart_rates(n, paper)
     if rates is structured_rates:
         return _structured_rhs()
-    return njit(RHS_SIG, error_model="numpy")(rates)
+    return njit(RHS_SIG, cache=True, error_model="numpy")(rates)
 
 
 @cache
