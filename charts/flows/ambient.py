@@ -49,7 +49,7 @@ __all__ = [
     "a_term", "b_term", "multiplier_of", "acceleration", "factor_f", "factor_g", "factor_p",
     "factor_q", "tangent_term",
     "tangent_acceleration", "multiplier_lanes", "state_rate_lanes", "tangent_factors_lanes",
-    "tangent_rate_lanes", "LANE_WIDTH", "sincos", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
+    "tangent_rate_lanes", "LANE_WIDTH", "sincos", "shifted", "SHIFT_MAX", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
     "factor_dlam", "adjoint_factors", "adjoint_rate", "state_stage", "stage_work", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
 ]
 
@@ -60,6 +60,29 @@ def sincos(y, o, n, a, s, c):
     for j in range(n):
         s[j] = a[j] * sin(y[o + j])
         c[j] = a[j] * cos(y[o + j])
+
+
+#: |δ| up to which sin/cos(θ + δ) (the RK4 stages 2–4 and the new θ of the tangent
+#: kernels, the stage points of the chart formulation) come from the
+#: angle-addition formula with the Taylor polynomials below instead of libm (beyond it:
+#: libm).  At |δ| = 0.05 the first omitted terms, δ¹¹/11! (relative to sin δ ≈ δ: 2.4e-21)
+#: and δ¹⁰/10! (2.7e-20), are far below an ulp, so the polynomials are exact to rounding; the
+#: shifts are |δ| ≤ dt·|u| ≈ 0.01 at unit speed and dt = 0.01.  (libm at every stage
+#: instead: 2× the cost per step, same exponents; docs/performance.md.)
+SHIFT_MAX = 0.05
+_S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
+_C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
+
+
+@njit(cache=True, inline="always")
+def shifted(sj, cj, d):
+    """(a sin, a cos) of θ₀ + δ from sj, cj = a sin θ₀, a cos θ₀ by the angle-addition
+    formula with the polynomials for |δ| ≤ `SHIFT_MAX` (linear in sj, cj: the weight a rides
+    along)."""
+    d2 = d * d
+    sd = d + d * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * _S[3])))
+    cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * _C[3])))
+    return sj + (sj * cm + cj * sd), cj + (cj * cm - sj * sd)
 
 
 # ------------------------------------------------------------------ the terms, per rotor

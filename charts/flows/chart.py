@@ -9,11 +9,12 @@ Chart k's state is y = (q, v, p¹, …, pᵏ), shape ((2 + k)·(N − 1),):
 Chart k is the canonical chart with θₖ moved last (``charts.geometry.atlas``), so one
 compiled function per N (per kernel source) serves every chart and every member of the family
 Σ aᵢ cos θᵢ = c: ``par`` begins with (N, local masses (N), local weights (N), level c) and ends
-with a work area of 3(N − 1) floats (`local_parameters`, `WORK`): the last point q whose
-σ = a sin q, κ = a cos q were evaluated, and those σ, κ.  `point_sincos` evaluates them once
-per point, and the kernels' ``_sc`` variants, the health test and the loop's hooks
-(``charts.solvers.chart_formulation``) share them (the same numbers as evaluating them in
-each: it only skips repeating libm calls).  The equations are written once, in `rates`, which
+with a work area of 6(N − 1) floats (`local_parameters`, `WORK`): the last point q whose
+σ = a sin q, κ = a cos q were evaluated and those σ, κ, and the same for the step's start
+point.  `point_sincos` evaluates them once per point (libm at a step's start, `start_sincos`;
+the angle-addition shift from there at the points inside the step), and the kernels' ``_sc``
+variants, the health test and the loop's hooks (``charts.solvers.chart_formulation``) share
+them.  The equations are written once, in `rates`, which
 takes the two kernel functions as arguments; the structured kernels need no N, so their
 right-hand side (`structured_rates`) is one function for every N, compiled once and cached on
 disk.
@@ -29,13 +30,15 @@ from numba import njit
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
 from ..codegen.names import CHART_RATES
+from .ambient import SHIFT_MAX, shifted
 from ..geometry.kernels import chart_module, source
 
 __all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
-           "work_area", "WORK"]
+           "start_sincos", "work_area", "WORK"]
 
-#: Floats per rotor (3 per local coordinate) of the work area at the end of ``par``.
-WORK = 3
+#: Floats per local coordinate of the work area at the end of ``par``: the last point q
+#: evaluated and its σ, κ, then the step's start point q₀ and its σ₀, κ₀ (`point_sincos`).
+WORK = 6
 
 
 def work_area(n: int) -> np.ndarray:
@@ -51,20 +54,55 @@ def local_parameters(masses, weights, level, k: int) -> np.ndarray:
 
 
 @njit(cache=True, inline="always")
-def point_sincos(y, par, d):
-    """(σ, κ) = (w sin q, w cos q) of the chart point q = y[:d], local weights w = par[2+d:],
-    as views of the work area at the end of ``par``: evaluated only when q is not the point
-    they were last evaluated at (after a chart switch, `work_area` resets it)."""
-    o = par.size - WORK * d
+def _same_point(y, par, o, d):
+    """True when q = y[:d] is the point stored at ``par[o:o + d]``."""
     same = True
     for a in range(d):
         same = same and par[o + a] == y[a]
-    if not same:
+    return same
+
+
+@njit(cache=True, inline="always")
+def point_sincos(y, par, d):
+    """(σ, κ) = (w sin q, w cos q) of the chart point q = y[:d], local weights w = par[2+d:],
+    as views of the work area at the end of ``par``, evaluated only when q is not the point
+    they were last evaluated at.  Inside a step (the RK4 stages, DOP853's stages and dense
+    samples) they are the step's start point's σ₀, κ₀ (`start_sincos`) shifted by
+    δ = q − q₀ with the angle-addition formula (``charts.flows.ambient.shifted``: exact to
+    rounding for |δ| ≤ `SHIFT_MAX`, libm beyond it), as the tangent kernel's stages are."""
+    o = par.size - WORK * d
+    if not _same_point(y, par, o, d):
+        b = o + 3 * d                      # the step's start point (NaN: none yet)
         for a in range(d):
             par[o + a] = y[a]
-            par[o + d + a] = par[2 + d + a] * math.sin(y[a])
-            par[o + 2 * d + a] = par[2 + d + a] * math.cos(y[a])
+            dl = y[a] - par[b + a]
+            if abs(dl) <= SHIFT_MAX:
+                par[o + d + a], par[o + 2 * d + a] = shifted(par[b + d + a], par[b + 2 * d + a], dl)
+            else:
+                par[o + d + a] = par[2 + d + a] * math.sin(y[a])
+                par[o + 2 * d + a] = par[2 + d + a] * math.cos(y[a])
     return par[o + d:o + 2 * d], par[o + 2 * d:o + 3 * d]
+
+
+@njit(cache=True, inline="always")
+def start_sincos(y, par, d):
+    """`point_sincos` at a step's start point q = y[:d] (the loop's ``cap`` and ``post``
+    hooks): libm, and q becomes the point that the step's later points shift from.  So the
+    σ, κ of every point depend only on the step it belongs to, not on earlier steps (a run
+    resumed at a step boundary continues bit for bit)."""
+    o = par.size - WORK * d
+    b = o + 3 * d
+    if not _same_point(y, par, b, d):
+        for a in range(d):
+            sa = par[2 + d + a] * math.sin(y[a])
+            ca = par[2 + d + a] * math.cos(y[a])
+            par[o + a] = y[a]
+            par[o + d + a] = sa
+            par[o + 2 * d + a] = ca
+            par[b + a] = y[a]
+            par[b + d + a] = sa
+            par[b + 2 * d + a] = ca
+    return point_sincos(y, par, d)
 
 
 @njit(cache=True, inline="always")

@@ -26,9 +26,9 @@ the switch happens at the step's end time and integration resumes from exactly t
 the same step-size controller state.  Every switch is logged as (t, from, to).
 
 Parameters: ``par = (N, local masses (N), local weights (N), level, masses (N), weights (N),
-offset of θₖ, τ, speed, project, cap fraction, work area (3(N − 1)))`` (the first 2 + 2N and
+offset of θₖ, τ, speed, project, cap fraction, work area (6(N − 1)))`` (the first 2 + 2N and
 the work area are those of ``charts.flows.chart.rates``: the hooks below share its σ, κ of
-the point through ``point_sincos``), ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
+the point through ``point_sincos`` and ``start_sincos``), ``ipar = (N, k vectors, chart, branch, switches logged)``.  ``offset`` is
 the multiple of 2π that keeps the reconstructed θₖ continuous with the ambient angle.
 """
 from __future__ import annotations
@@ -39,7 +39,7 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from ..flows.chart import chart_rates, point_sincos, structured_rates, work_area
+from ..flows.chart import chart_rates, point_sincos, start_sincos, structured_rates, work_area
 from ..geometry.atlas import ambient_index, eliminated_angle_sc, eliminated_component_sc, local_index
 from ..geometry.projection import rescale_speed
 from .rk import RHS_SIG
@@ -151,7 +151,7 @@ def _post(y, par, ipar, t, log):
     n = ipar[0]
     d = n - 1
     k = ipar[2]
-    ws, wc = point_sincos(y, par, d)
+    ws, wc = start_sincos(y, par, d)      # the next step's start
     _, sk, s2 = _sin_k(wc, par, n, ipar[3])
     if not s2 > 0.0:  # the step ended outside the chart (|C| >= aₖ): no θₖ, no uₖ
         return DOMAIN
@@ -193,7 +193,7 @@ def _post(y, par, ipar, t, log):
 def _cap(y, par, ipar):
     n = ipar[0]
     d = n - 1
-    ws, wc = point_sincos(y, par, d)
+    ws, wc = start_sincos(y, par, d)      # the step's start
     _, sk, s2 = _sin_k(wc, par, n, ipar[3])
     if s2 <= 0.0:
         return 0.0

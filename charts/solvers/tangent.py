@@ -25,8 +25,8 @@ from math import ceil, cos, gcd, isfinite, sin
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import (LANE_WIDTH, multiplier, sincos, stage_work, state_rate,
-                             tangent_factors, tangent_rate)
+from ..flows.ambient import (LANE_WIDTH, SHIFT_MAX, multiplier, shifted, sincos, stage_work,
+                             state_rate, tangent_factors, tangent_rate)
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
@@ -42,27 +42,7 @@ __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "or
 #: step, so every step would dominate for large k (N = 64, k = 62: 4.8× the cost per time unit).
 REORTH_TIME = 0.1
 
-#: |δ| up to which sin/cos(θ + δ) (RK4 stages 2–4, and the new θ from the old) come from the
-#: angle-addition formula with the Taylor polynomials below instead of libm (beyond it:
-#: libm).  At |δ| = 0.05 the first omitted terms, δ¹¹/11! (relative to sin δ ≈ δ: 2.4e-21)
-#: and δ¹⁰/10! (2.7e-20), are far below an ulp, so the polynomials are exact to rounding; the
-#: shifts are |δ| ≤ dt·|u| ≈ 0.01 at unit speed and dt = 0.01.  (libm at every stage
-#: instead: 2× the cost per step, same exponents; docs/performance.md.)
-SHIFT_MAX = 0.05
-_S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
-_C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
 _CAP = CAP_FRACTION["rk4"]
-
-
-@njit(cache=True, inline="always")
-def shifted(sj, cj, d):
-    """(a sin, a cos) of θ₀ + δ from sj, cj = a sin θ₀, a cos θ₀ by the angle-addition
-    formula with the polynomials for |δ| ≤ `SHIFT_MAX` (linear in sj, cj: the weight a rides
-    along)."""
-    d2 = d * d
-    sd = d + d * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * _S[3])))
-    cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * _C[3])))
-    return sj + (sj * cm + cj * sd), cj + (cj * cm - sj * sd)
 
 
 @njit(cache=True, inline="always")
