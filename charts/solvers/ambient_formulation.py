@@ -19,8 +19,8 @@ import numpy as np
 from numba import njit
 
 from ..flows.ambient import multiplier, sincos, state_rate, transport_rate
-from ..geometry.projection import project_state, project_velocity
-from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, Formulation
+from ..geometry.projection import invariants_of, project_state, project_velocity
+from .loop import CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, Formulation
 from .rk import RHS_SIG
 from .status import step_cap
 
@@ -97,10 +97,18 @@ def _to_ambient(y, par, ipar, row):
     return 0.0
 
 
+def _invariants(y, par, ipar, inv):
+    n = ipar[0]
+    inv[0], inv[1], inv[2] = invariants_of(y, n, par[1 + n:1 + 2 * n], par[5 * n + 4:6 * n + 4],
+                                           par[6 * n + 4])
+    return 0.0
+
+
 @cache
 def _hooks():
     return (njit(RHS_SIG, cache=True)(_rhs), njit(CAP_SIG, cache=True)(_cap),
-            njit(POST_SIG, cache=True)(_post), njit(OUT_SIG, cache=True)(_to_ambient))
+            njit(POST_SIG, cache=True)(_post), njit(OUT_SIG, cache=True)(_to_ambient),
+            njit(INV_SIG, cache=True)(_invariants))
 
 
 class AmbientFlow(Formulation):

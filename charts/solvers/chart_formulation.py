@@ -42,8 +42,8 @@ from numba import njit
 from ..flows.chart import chart_rates, point_sincos, start_sincos, structured_rates, work_area
 from ..geometry.atlas import ambient_index, eliminated_angle_sc, eliminated_component_sc, local_index
 from ..geometry.projection import rescale_speed
-from .rk import RHS_SIG
-from .loop import CAP_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from .rk import NO_REFCOUNT, RHS_SIG
+from .loop import CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
 from .status import CHART_MIN_RATIO, DOMAIN, DOMAIN_CAP_FRACTION, step_cap
 
 __all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
@@ -99,7 +99,7 @@ def _sin_k(wc, par, n, branch):
     return eliminated_angle_sc(wc, n - 1, par[1 + n:1 + 2 * n], par[1 + 2 * n], branch)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _to_ambient_impl(y, par, ipar, row):
     n = ipar[0]
     d = n - 1
@@ -208,6 +208,27 @@ def _cap(y, par, ipar):
     return min(step_cap(S, U, par[_b(n) + _CAP]), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
 
 
+def _invariants(y, par, ipar, inv):
+    """(F, G, E) of the ambient state of y from the point's σ, κ (no libm: the step's end is
+    the next step's start, `start_sincos`) and θₖ, uₖ as `_to_ambient_impl` reconstructs them
+    (F and G vanish by construction, to rounding; E is the one the chart does not keep)."""
+    n = ipar[0]
+    d = n - 1
+    ws, wc = point_sincos(y, par, d)
+    ck, sk, _ = _sin_k(wc, par, n, ipar[3])
+    w = par[1 + n:1 + 2 * n]
+    uk = eliminated_component_sc(ws, y, d, d, w, sk)
+    F = w[d] * ck - par[1 + 2 * n]
+    G = w[d] * sk * uk
+    E = 0.5 * par[n] * uk * uk
+    for a in range(d):
+        F += wc[a]
+        G += y[d + a] * ws[a]
+        E += 0.5 * par[1 + a] * y[d + a] * y[d + a]
+    inv[0], inv[1], inv[2] = F, G, E
+    return 0.0
+
+
 @cache
 def chart_rhs(n: int, paper: bool = False):
     """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop and
@@ -229,8 +250,10 @@ def _common_hooks():
     # (numpy's error model: no zero-division branches, so no reference counting of the
     # views; every divisor is checked nonzero first, or is a weight or a positive norm)
     opts = dict(cache=True, error_model="numpy")
-    return (njit(CAP_SIG, **opts)(_cap), njit(POST_SIG, **opts)(_post),
-            njit(OUT_SIG, **opts)(_to_ambient))
+    # (and, but for ``post``, which allocates at a switch, without reference counting)
+    fast = dict(opts, **NO_REFCOUNT)
+    return (njit(CAP_SIG, **fast)(_cap), njit(POST_SIG, **opts)(_post),
+            njit(OUT_SIG, **fast)(_to_ambient), njit(INV_SIG, **fast)(_invariants))
 
 
 class ChartFlow(Formulation):

@@ -234,7 +234,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         raise ValueError("tau and chart apply to formulation='chart'")
     form = form_cls(system, project=project, cap_fraction=CAP_FRACTION[method], **kw)
     y, par, ipar = form.initial(theta0, sign * u0, P)
-    rhs, cap, post, to_amb = form.hooks()
+    rhs, cap, post, to_amb, invariants = form.hooks()
     st, ist = D.new_state(_METHODS[method], t_final, dt, rtol_v, atol_v, float(system.energy(u0)),
                           TOLERANCES["singular_S"], use_eval, int(chunk_steps), dense)
     ny = y.size
@@ -243,10 +243,9 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
     F = np.zeros((7, ny))
     ytmp = np.zeros(ny)
     ynew = np.zeros(ny)
-    arow = np.zeros(na)
+    inv = np.zeros(3)
     log = np.zeros((_LOG_CAPACITY, 3))
     mon = np.zeros(3)
-    mpar = np.concatenate([system.masses, system.weights, [system.level]])
     seg_cap = min(int(chunk_steps), 4096) if dense else 1
     Seg = np.zeros((seg_cap, D.segment_layout(ny, par.size)[3]))
     ISeg = np.zeros((seg_cap, ipar.size), dtype=np.int64)
@@ -324,8 +323,8 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
 
     status_name = "finished"
     while True:
-        status = D.drive(rhs, cap, post, to_amb, y, par, ipar, st, ist, te, T_out, Y_out, log,
-                         mon, mpar, K, F, ytmp, ynew, arow, Seg, ISeg)
+        status = D.drive(rhs, cap, post, to_amb, invariants, y, par, ipar, st, ist, te, T_out,
+                         Y_out, log, mon, K, F, ytmp, ynew, inv, Seg, ISeg)
         drain()
         if status < 0:
             t_fail = t0 + sign * st[D.S_T]

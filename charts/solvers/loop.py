@@ -1,6 +1,6 @@
 """The integration loop shared by both formulations, compiled once and driven in chunks.
 
-A *formulation* (``charts.solvers.ambient_formulation``, ``charts.solvers.chart_formulation``) supplies four compiled
+A *formulation* (``charts.solvers.ambient_formulation``, ``charts.solvers.chart_formulation``) supplies five compiled
 hooks; the loop here supplies everything else (stepping, step-size control, output at the
 requested times, invariant monitoring, counters, status codes).  The contract:
 
@@ -18,6 +18,10 @@ requested times, invariant monitoring, counters, status codes).  The contract:
     (changed, and the log must be drained before continuing) or a negative status.
 ``to_ambient(y, par, ipar, row) -> 0.0``  (:data:`OUT_SIG`)
     Ambient representation ``row = (θ, u, p¹, …, pᵏ)``, shape ((2 + k)·n,), of ``y``.
+``invariants(y, par, ipar, inv) -> 0.0``  (:data:`INV_SIG`)
+    ``inv`` = (F, G, E) = (Σ aᵢ cos θᵢ − c, Σ uᵢ aᵢ sin θᵢ, ½ Σ mᵢ uᵢ²) of the ambient state
+    that ``y`` represents (eqs 9, 10 and the energy), from the sin/cos the formulation
+    already holds for ``y`` where it has them.
 
 All loop state lives in two small arrays so that a chunk can stop and resume exactly:
 ``st`` (floats, indices ``S_*``) and ``ist`` (ints, indices ``I_*``).
@@ -33,13 +37,12 @@ import math
 import numpy as np
 from numba import njit, types
 
-from ..geometry.projection import invariants_of
 from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FULL, RUNNING,
                      SINGULAR, UNDERFLOW)
-from .rk import (INTERPOLATOR_POWER, RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense, dop853_step,
-                 hermite_dense, initial_step, rk4_step, step_factor)
+from .rk import (INTERPOLATOR_POWER, NO_REFCOUNT, RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense,
+                 dop853_step, hermite_dense, initial_step, rk4_step, step_factor)
 
-__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "drive", "new_state", "monitor", "Formulation",
+__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "drive", "new_state", "monitor", "Formulation",
            "segment_layout", "dense_sample",
            "POST_OK", "POST_CHANGED", "POST_LOG_FULL", "METHOD_RK4", "METHOD_DOP853"]
 
@@ -52,6 +55,7 @@ _m = types.float64[:, ::1]
 CAP_SIG = _f8(_v, _v, _iv)
 POST_SIG = _i8(_v, _v, _iv, _f8, _m)
 OUT_SIG = _f8(_v, _v, _iv, _v)
+INV_SIG = _f8(_v, _v, _iv, _v)
 
 # float state
 S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
@@ -92,10 +96,10 @@ def segment_layout(ny: int, npar: int):
 
 
 @njit(cache=True)
-def monitor(row, n, mpar, e0, mon):
-    """Update ``mon`` = running max of |F|, |G|, |ΔE|/E₀ with the state ``row``; False if the
-    state is not finite.  ``mpar`` = (masses (N), weights (N), level)."""
-    F, G, E = invariants_of(row, n, mpar[:n], mpar[n:2 * n], mpar[2 * n])
+def monitor(inv, e0, mon):
+    """Update ``mon`` = running max of |F|, |G|, |ΔE|/E₀ with the invariants ``inv`` = (F, G,
+    E) of a state (the ``invariants`` hook); False if they are not finite."""
+    F, G, E = inv[0], inv[1], inv[2]
     dE = abs(E - e0) / e0
     if not (math.isfinite(F) and math.isfinite(G) and math.isfinite(E)):
         return False
@@ -124,8 +128,8 @@ def _record_segment(row, irow, t, h, y, F, par, ipar):
         irow[i] = ipar[i]
 
 
-def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_out, log, mon,
-           mpar, K, F, ytmp, ynew, arow, Seg, ISeg):
+def _drive(rhs, cap, post, to_ambient, invariants, y, par, ipar, st, ist, t_eval, T_out, Y_out,
+           log, mon, K, F, ytmp, ynew, inv, Seg, ISeg):
     """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
     accepted steps.  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
     times ``t_eval`` (if ``ist[I_USE_EVAL]``; ``Y_out`` then has a row for every one of
@@ -135,9 +139,8 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
     RK4 the cubic Hermite interpolant of the step's end values and slopes (one more
     right-hand-side evaluation a step); ``OUT_FULL`` when the buffer is full.
 
-    Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); arow (na,);
+    Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); inv (3,);
     mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
-    n = (mpar.size - 1) // 2
     ny = y.size
     method = ist[I_METHOD]
     use_eval = ist[I_USE_EVAL] != 0
@@ -266,23 +269,19 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
         if code != POST_OK:
             ist[I_FRESH] = 1
         # samples at the end of the step (after projection / chart switch); the invariants
-        # are monitored on the ambient state of the step's end, the last such sample if any
-        last = -1
+        # are monitored on the state of the step's end
         if use_eval:
             while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] <= t:
                 to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
                 T_out[ist[I_NOUT]] = t_eval[ist[I_IEVAL]]
-                last = ist[I_NOUT]
                 ist[I_NOUT] += 1
                 ist[I_IEVAL] += 1
         else:
             to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
             T_out[ist[I_NOUT]] = t
-            last = ist[I_NOUT]
             ist[I_NOUT] += 1
-        if last < 0:
-            to_ambient(y, par, ipar, arow)
-        if not monitor(arow if last < 0 else Y_out[last], n, mpar, st[S_E0], mon):
+        invariants(y, par, ipar, inv)
+        if not monitor(inv, st[S_E0], mon):
             status = NONFINITE
             break
         if code == POST_LOG_FULL:
@@ -296,26 +295,28 @@ def _drive(rhs, cap, post, to_ambient, y, par, ipar, st, ist, t_eval, T_out, Y_o
 _CAP_TYPE = types.FunctionType(CAP_SIG)
 _POST_TYPE = types.FunctionType(POST_SIG)
 _OUT_TYPE = types.FunctionType(OUT_SIG)
+_INV_TYPE = types.FunctionType(INV_SIG)
 _im = types.int64[:, ::1]
-DRIVE_SIG = _i8(RHS_TYPE, _CAP_TYPE, _POST_TYPE, _OUT_TYPE, _v, _v, _iv, _v, _iv, _v, _v, _m, _m,
-                _v, _v, _m, _m, _v, _v, _v, _m, _im)
+DRIVE_SIG = _i8(RHS_TYPE, _CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _v, _iv, _v, _v,
+                _m, _m, _v, _m, _m, _v, _v, _v, _m, _im)
 
 
 
 class _CompiledOnUse:
-    """``fn`` compiled with the signature ``sig`` on its first call (cached on disk)."""
+    """``fn`` compiled with the signature ``sig`` and numba ``options`` on its first call
+    (cached on disk)."""
 
-    def __init__(self, fn, sig):
-        self.fn, self.sig, self.compiled = fn, sig, None
+    def __init__(self, fn, sig, **options):
+        self.fn, self.sig, self.options, self.compiled = fn, sig, options, None
         self.__doc__ = f"Compiled :func:`{fn.__name__}` (compiled on first use, cached on disk)."
 
     def __call__(self, *args):
         if self.compiled is None:
-            self.compiled = njit(self.sig, cache=True)(self.fn)
+            self.compiled = njit(self.sig, cache=True, **self.options)(self.fn)
         return self.compiled(*args)
 
 
-drive = _CompiledOnUse(_drive, DRIVE_SIG)
+drive = _CompiledOnUse(_drive, DRIVE_SIG, **NO_REFCOUNT)
 
 
 def _dense_sample(to_ambient, Seg, ISeg, ny, idx, x, out):
@@ -349,8 +350,9 @@ dense_sample = _CompiledOnUse(_dense_sample, _i8(_OUT_TYPE, _m, _im, _i8, _iv, _
 class Formulation:
     """Base of the formulations driven by :func:`drive`.  A subclass supplies
 
-    * ``hooks()`` → ``(rhs, cap, post, to_ambient)``, compiled with :data:`charts.solvers.rk.RHS_SIG`,
-      :data:`CAP_SIG`, :data:`POST_SIG`, :data:`OUT_SIG` (see the module docstring);
+    * ``hooks()`` → ``(rhs, cap, post, to_ambient, invariants)``, compiled with
+      :data:`charts.solvers.rk.RHS_SIG`, :data:`CAP_SIG`, :data:`POST_SIG`, :data:`OUT_SIG`,
+      :data:`INV_SIG` (see the module docstring);
     * ``initial(theta, u, P)`` → ``(y, par, ipar)``: the formulation's state, float
       parameters and int parameters for the ambient start (θ, u, transported vectors P,
       shape (k, n)).

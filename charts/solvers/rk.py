@@ -23,10 +23,12 @@ import math
 
 import numpy as np
 from numba import njit, types
+from numba.core.cpu import CPUTargetOptions
 
 from .dop853_coefficients import A, B, D, E3, E5, INTERPOLATOR_POWER, N_STAGES, N_STAGES_EXTENDED
 
 __all__ = [
+    "NO_REFCOUNT",
     "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "stage_point",
     "rk4_sum", "rk4_stage_point",
     "rk4_combine",
@@ -38,6 +40,14 @@ __all__ = [
 RHS_SIG = types.float64(types.float64[::1], types.float64[::1], types.float64[::1])
 #: numba first-class function type of a right-hand side (lets drivers be cached).
 RHS_TYPE = types.FunctionType(RHS_SIG)
+
+#: numba options for a kernel compiled without the runtime's reference counting (numba's
+#: ``_nrt`` target option; none where a numba version lacks it): each array view and each
+#: call with arrays otherwise costs an atomic increment/decrement pair, ≈ 8 % of a chart
+#: RK4 step (docs/performance.md).  Only for kernels that neither allocate nor return an
+#: array (numba refuses to compile an allocation without it), whose arrays all belong to
+#: their caller.
+NO_REFCOUNT = {"_nrt": False} if hasattr(CPUTargetOptions, "_nrt") else {}
 
 #: Step-size controller constants, as in SciPy's ``rk.py``.
 SAFETY = 0.9
@@ -101,7 +111,7 @@ def rk4_stage_point(z, K, st, h, L, zt):
         rk4_point(z, K, (st - 1) * L, rk4_node(st) * h, L, zt)
 
 
-@njit(cache=True)
+@njit(cache=True, **NO_REFCOUNT)
 def rk4_step(f, y, h, par, K, ytmp, ynew):
     """One classical RK4 step of size ``h`` from ``y``, shape (n,), into ``ynew``.
 
