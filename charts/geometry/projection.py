@@ -23,7 +23,7 @@ from numba import njit
 from ..flows.ambient import LANE_WIDTH, sincos
 
 __all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
-           "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of"]
+           "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of", "invariant_terms"]
 
 
 @njit(cache=True, inline="always")
@@ -236,10 +236,18 @@ def invariants_of(row, n, masses, a, level):
     G = 0.0
     E = 0.0
     for i in range(n):
-        F += a[i] * cos(row[i])
-        G += row[n + i] * (a[i] * sin(row[i]))
-        E += 0.5 * masses[i] * row[n + i] * row[n + i]
+        f, g, e = invariant_terms(a[i] * sin(row[i]), a[i] * cos(row[i]), row[n + i], masses[i])
+        F += f
+        G += g
+        E += e
     return F, G, E
+
+
+@njit(cache=True, inline="always")
+def invariant_terms(s, c, u, m):
+    """Rotor i's terms of (F, G, E) (eqs 9, 10 and the energy): a cos θ, u a sin θ, ½ m u²,
+    from s, c = a sin θ, a cos θ, its velocity u and mass m."""
+    return c, u * s, 0.5 * m * u * u
 
 
 def invariants(theta, u, masses, weights=None, level=0.0):

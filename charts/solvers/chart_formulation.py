@@ -41,7 +41,7 @@ from numba import njit
 
 from ..flows.chart import chart_rates, point_sincos, start_sincos, structured_rates, work_area
 from ..geometry.atlas import ambient_index, eliminated_angle_sc, eliminated_component_sc, local_index
-from ..geometry.projection import rescale_speed
+from ..geometry.projection import invariant_terms, rescale_speed
 from .rk import NO_REFCOUNT, RHS_SIG
 from .loop import CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
 from .status import CHART_MIN_RATIO, DOMAIN, DOMAIN_CAP_FRACTION, step_cap
@@ -218,13 +218,13 @@ def _invariants(y, par, ipar, inv):
     ck, sk, _ = _sin_k(wc, par, n, ipar[3])
     w = par[1 + n:1 + 2 * n]
     uk = eliminated_component_sc(ws, y, d, d, w, sk)
-    F = w[d] * ck - par[1 + 2 * n]
-    G = w[d] * sk * uk
-    E = 0.5 * par[n] * uk * uk
+    F, G, E = invariant_terms(w[d] * sk, w[d] * ck, uk, par[n])
+    F -= par[1 + 2 * n]
     for a in range(d):
-        F += wc[a]
-        G += y[d + a] * ws[a]
-        E += 0.5 * par[1 + a] * y[d + a] * y[d + a]
+        f, g, e = invariant_terms(ws[a], wc[a], y[d + a], par[1 + a])
+        F += f
+        G += g
+        E += e
     inv[0], inv[1], inv[2] = F, G, E
     return 0.0
 
