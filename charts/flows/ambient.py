@@ -246,8 +246,9 @@ def state_rate_lanes(y, o, n, L, minv, s, lam, dy, do):
         for i in range(n):
             a = i * L + l0
             b = (n + i) * L + l0
-            for t in range(W):
+            for t in range(W):  # two blocks: one would not vectorise (module doc)
                 dy[do + a + t] = y[o + b + t]
+            for t in range(W):
                 dy[do + b + t] = acceleration(lam[l0 + t], s[a + t], minv[i])
 
 
@@ -289,6 +290,7 @@ def tangent_rate_lanes(x, o, n, L, f, g, p, q, iB, dlam, dx, do):
             b = (n + i) * L + l0
             for t in range(W):
                 dx[do + a + t] = x[o + b + t]
+            for t in range(W):
                 dx[do + b + t] = tangent_acceleration(dlam[l0 + t], f[a + t], g[a + t],
                                                       x[o + a + t])
 
