@@ -73,7 +73,9 @@ def aligned(size):
 @njit(cache=True)
 def lanes_in(Z, sc, wts):
     """The flat, padded, aligned copies of Z and sc (``charts.solvers.lanes.lanes_kernel``;
-    padding lanes: copies of lane 0) and the work arrays of its time loop."""
+    padding lanes: copies of lane 0) and the work arrays of its time loop (every one an
+    argument of the loop, hence ``noalias``: a work array the loop allocated itself may,
+    for LLVM, overlap the others, and its blocks stay scalar code)."""
     D, L = Z.shape
     n = wts.size
     W = int(LANE_WIDTH)
@@ -91,9 +93,11 @@ def lanes_in(Z, sc, wts):
     for j in range(n):
         for l in range(Lp):
             wl[j * Lp + l] = wts[j]
+    k = D // (2 * n) - 1
     work = (aligned(M), aligned(4 * M), aligned(nl), aligned(nl), aligned(nl), aligned(nl),
             aligned(nl), aligned(nl), aligned(nl), aligned(nl), aligned(Lp), aligned(Lp),
-            aligned(Lp), wl)
+            aligned(Lp), wl, aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp),
+            aligned(Lp), aligned(max(k, 1) * Lp))
     return Zp, s0, c0, work
 
 

@@ -136,7 +136,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     has its own compilation.  Every array argument distinct (``noalias``)."""
     n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
     k = len(k_tag)
-    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl = work
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = work
     L = status.size
     Lp = lam.size
     d = 2 * n
@@ -145,9 +145,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     M = D * Lp
     nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
     W = LANE_WIDTH
-    S, U = np.empty(Lp), np.empty(Lp)
     code = np.empty(Lp, dtype=np.int64)
-    cap = np.empty(Lp)
     # one lane in the one-trajectory layout (projections, eq 18, sub-steps)
     z = np.empty(D)
     zs0 = np.empty(n)
@@ -158,8 +156,6 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     th1 = np.empty(n)
     dl1 = np.empty(n)
     s1, c1, f1, g1, p1, q1 = stage_work(n)
-    v1, v2, v3 = np.empty(Lp), np.empty(Lp), np.empty(Lp)
-    nrm = np.empty(max(k, 1) * Lp)
     ku = np.uint64(k)
     sub = np.empty(L, dtype=np.int64)
     subcap = np.empty(L)
