@@ -96,7 +96,7 @@ def lanes_in(Z, sc, wts):
     k = D // (2 * n) - 1
     work = (aligned(M), aligned(4 * M), aligned(nl), aligned(nl), aligned(nl), aligned(nl),
             aligned(nl), aligned(nl), aligned(nl), aligned(nl), aligned(Lp), aligned(Lp),
-            aligned(Lp), wl, aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp),
+            aligned(max(k, 1) * Lp), wl, aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp),
             aligned(Lp), aligned(max(k, 1) * Lp))
     return Zp, s0, c0, work
 

@@ -62,13 +62,13 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
         for t in range(W):
             th[i0 + t] = Zf[i0 + t]
     dL = d * L
+    one = np.uint64(1)  # (R − 1 with a signed 1 would make the row index signed)
     h6 = RK4_WEIGHTS[0] * h
     # stage 0 at Zf, s0, c0 themselves (no copies)
     multiplier_lanes(Zf, z0, n, L, minv, s0, c0, lam, iB)
     state_rate_lanes(Zf, z0, n, L, minv, s0, lam, K, z0)
     tangent_factors_lanes(Zf, z0, n, L, minv, s0, c0, lam, f, g, p, q)
-    for r in range(np.uint64(1), R):
-        tangent_rate_lanes(Zf, r * dL, n, L, f, g, p, q, iB, dlam, K, r * dL)
+    tangent_rate_lanes(Zf, dL, R - one, n, L, f, g, p, q, iB, dlam, K, dL)
     for st in range(1, 4):
         o = np.uint64(st) * M
         a = rk4_node(st) * h
@@ -83,8 +83,7 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
         multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
         state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
         tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
-        for r in range(np.uint64(1), R):
-            tangent_rate_lanes(Zt, r * dL, n, L, f, g, p, q, iB, dlam, K, o + r * dL)
+        tangent_rate_lanes(Zt, dL, R - one, n, L, f, g, p, q, iB, dlam, K, o + dL)
     M2 = M + M
     M3 = M2 + M
     for i0 in range(z0, M, W):  # `rk4_combine`
