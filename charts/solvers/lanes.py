@@ -35,7 +35,7 @@ from numba import njit
 from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
 from ..geometry.projection import project_state, project_tangent_lanes
-from .lane_layout import LanesCompiler, gather, lanes_in, lanes_out, scatter
+from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
 from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, substeps
@@ -98,7 +98,7 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
 
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                  nsteps, reorth_every, w, restricted, project_every, logsum, events,
-                 event_logs):
+                 event_logs, arrays=None):
     """Advance the L lanes of Z, shape ((1 + k)·2N, L), by ``nsteps`` RK4 steps: lane l does
     what `tangent_kernel` does to the flat state Z[:, l] with ``sc[:, :, l]`` (sc: (2, N, L)),
     the shared step counter ``counter`` (1,), ``speed[l]`` and ``logsum[l]`` (logsum: (L, k));
@@ -113,10 +113,13 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     The steps run in `_lanes_run`, compiled for each N and k (their loops then have constant
     lengths, which LLVM unrolls), on copies of Z and sc with the lane count rounded up to a
     multiple of `LANE_WIDTH` (the extra lanes: copies of a running lane, never read back) and
-    every array distinct, as its ``noalias`` compilation requires."""
+    every array distinct, as its ``noalias`` compilation requires.  ``arrays``: those
+    copies and the loop's work arrays (`lane_arrays` of Z's shape and wts), kept by the
+    caller between calls (allocating them costs ~10 µs a call); None: allocated here."""
     n = int(wts.size)
     k = Z.shape[0] // (2 * n) - 1
-    Zp, s0, c0, work = lanes_in(Z, sc, wts)
+    Zp, s0, c0, work = lane_arrays(*Z.shape, wts) if arrays is None else arrays
+    lanes_in(Z, sc, Zp, s0, c0)
     running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
                          speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
                          events, event_logs, work, (0,) * n, (0,) * k)
@@ -326,6 +329,7 @@ class LaneFlows:
         self.status = np.full(L, RUNNING, dtype=np.int64)
         self.stopped = np.zeros(L, dtype=np.int64)
         self.frozen = np.zeros((self.Z.shape[0] + 2 * self.system.n, L))
+        self._arrays = None  # `lanes_kernel`'s arrays, allocated at the first advance
 
     @property
     def steps(self) -> int:
@@ -352,11 +356,13 @@ class LaneFlows:
         sys_ = self.system
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_LOGS
+        if self._arrays is None:
+            self._arrays = lane_arrays(*self.Z.shape, sys_.weights)
         return lanes_kernel(self.Z, self.sc, self.counter, self.status, self.stopped,
                             self.frozen, sys_.minv, sys_.masses, sys_.weights, sys_.level,
                             self.speed, self.dt, int(nsteps), self.reorth_every, self.w,
                             self.restricted, self.project_every, self.logsum, events,
-                            event_logs)
+                            event_logs, self._arrays)
 
     def error(self, l, where):
         """The exception `TangentFlow.advance` raises for the stopped lane l (``where`` names
