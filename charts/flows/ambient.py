@@ -273,26 +273,27 @@ def tangent_factors_lanes(y, o, n, L, minv, s, c, lam, f, g, p, q):
 @njit(cache=True, inline="always")
 def tangent_rate_lanes(x, o, k, n, L, f, g, p, q, iB, dlam, dx, do):
     """Eq (17) of the k tangent vectors of L lanes, row r at x[o + (r·2N + i)·L + l], into
-    dx[do + (r·2N + i)·L + l]; dlam, shape (k·L,), is work space.  The rows of a block in
-    one pass over the rotors (each factor loaded once per block, not once per row); per
-    row the operations of `tangent_rate` in its order."""
+    dx[do + (r·2N + i)·L + l]; dlam, shape (k·L,), is work space (row r of the block at
+    l0 at l0·k + r·`LANE_WIDTH`: constant offsets, which LLVM sees apart and keeps in
+    registers).  The rows of a block in one pass over the rotors (each factor loaded once
+    per block, not once per row); per row the operations of `tangent_rate` in its order."""
     W = LANE_WIDTH
     dL = (n + n) * L
     for l0 in range(L - L, L, W):
         for r in range(k):
             for t in range(W):
-                dlam[r * L + l0 + t] = 0.0
+                dlam[l0 * k + r * W + t] = 0.0
         for j in range(n):
             b = j * L + l0
             for r in range(k):
                 a = o + r * dL + (n + j) * L + l0
-                e = r * L + l0
+                e = l0 * k + r * W
                 for t in range(W):
                     dlam[e + t] += tangent_term(p[b + t], q[b + t], x[a + t],
                                                 x[o + r * dL + b + t])
         for r in range(k):
             for t in range(W):
-                dlam[r * L + l0 + t] *= iB[l0 + t]
+                dlam[l0 * k + r * W + t] *= iB[l0 + t]
         for i in range(n):
             a = i * L + l0
             b = (n + i) * L + l0
@@ -302,7 +303,7 @@ def tangent_rate_lanes(x, o, k, n, L, f, g, p, q, iB, dlam, dx, do):
                     dx[do + ro + a + t] = x[o + ro + b + t]
             for r in range(k):
                 ro = r * dL
-                e = r * L + l0
+                e = l0 * k + r * W
                 for t in range(W):
                     dx[do + ro + b + t] = tangent_acceleration(dlam[e + t], f[a + t], g[a + t],
                                                                x[o + ro + a + t])
