@@ -36,7 +36,11 @@ Lanes.  Eqs (8) and (17) are written once per rotor, as the scalar *terms* below
 (`multiplier` … `tangent_rate`) or for L independent trajectories at once (``*_lanes``:
 structure of arrays, element i of lane l at ``i·L + l``, the lane innermost so that the
 arithmetic vectorises across lanes).  Both loops do the same operations in the same order
-for each lane, so a lane gives the bits of the one-trajectory route.
+for each lane, so a lane gives the bits of the one-trajectory route.  A block writes one
+array at one offset: two interleaved streams of stores into the same array (the copy
+θ̇ = u and the acceleration of one rotor in one block) at a distance LLVM cannot bound
+keep its SLP vectoriser from packing either, and the block stays scalar code (measured:
+eqs (8) and (17) in 150 against 124 ns per lane-step of the whole lane kernel).
 """
 from __future__ import annotations
 
