@@ -2,9 +2,10 @@
 
 Layout: L trajectories as flat arrays, element i of lane l at ``i·Lp + l``, the lane count
 rounded up to a multiple Lp of `LANE_WIDTH` (padding lanes: copies of a running lane), each
-array starting on a cache line (`aligned`); `lanes_in` / `lanes_out` convert from / to the
-(R·d, L) and (2, N, L) arrays of `LaneFlows`, `gather` / `scatter` copy one lane to / from
-the one-trajectory layout.
+array starting on a cache line (`aligned`), allocated once with the work arrays of the loop
+(`lane_arrays`); `lanes_in` / `lanes_out` convert from / to the (R·d, L) and (2, N, L)
+arrays of `LaneFlows`, `gather` / `scatter` copy one lane to / from the one-trajectory
+layout.
 
 Compilation (`LanesCompiler`): the kernel's array arguments are marked ``noalias`` (so its
 callers must pass distinct arrays) and only LLVM's SLP vectoriser packs its loops (the
