@@ -2,9 +2,10 @@
 
 Layout: L trajectories as flat arrays, element i of lane l at ``i·Lp + l``, the lane count
 rounded up to a multiple Lp of `LANE_WIDTH` (padding lanes: copies of a running lane), each
-array starting on a cache line (`aligned`); `lanes_in` / `lanes_out` convert from / to the
-(R·d, L) and (2, N, L) arrays of `LaneFlows`, `gather` / `scatter` copy one lane to / from
-the one-trajectory layout.
+array starting on a cache line (`aligned`), allocated once with the work arrays of the loop
+(`lane_arrays`); `lanes_in` / `lanes_out` convert from / to the (R·d, L) and (2, N, L)
+arrays of `LaneFlows`, `gather` / `scatter` copy one lane to / from the one-trajectory
+layout.
 
 Compilation (`LanesCompiler`): the kernel's array arguments are marked ``noalias`` (so its
 callers must pass distinct arrays) and only LLVM's SLP vectoriser packs its loops (the
@@ -24,7 +25,7 @@ from numba.core.typed_passes import NativeLowering
 
 from ..flows.ambient import LANE_WIDTH
 
-__all__ = ["LanesCompiler", "aligned", "lanes_in", "lanes_out", "gather", "scatter"]
+__all__ = ["LanesCompiler", "aligned", "lane_arrays", "lanes_in", "lanes_out", "gather", "scatter"]
 
 
 @register_pass(mutates_CFG=False, analysis_only=False)
@@ -71,16 +72,36 @@ def aligned(size):
 
 
 @njit(cache=True)
-def lanes_in(Z, sc, wts):
-    """The flat, padded, aligned copies of Z and sc (``charts.solvers.lanes.lanes_kernel``;
-    padding lanes: copies of lane 0) and the work arrays of its time loop."""
-    D, L = Z.shape
+def lane_arrays(D, L, wts):
+    """The arrays of ``charts.solvers.lanes.lanes_kernel`` for L lanes of D-element stacked
+    states: flat, padded, aligned Zp, s0, c0 (filled by `lanes_in`) and the work arrays of
+    its time loop (every one an argument of the loop, hence ``noalias``: a work array the
+    loop allocated itself may, for LLVM, overlap the others, and its blocks stay scalar
+    code), the last of them the weights per lane."""
     n = wts.size
     W = int(LANE_WIDTH)
     Lp = (L + W - 1) // W * W
     M = D * Lp
     nl = n * Lp
-    Zp, s0, c0, wl = aligned(M), aligned(nl), aligned(nl), aligned(nl)
+    kL = max(D // (2 * n) - 1, 1) * Lp
+    wl = aligned(nl)
+    for j in range(n):
+        for l in range(Lp):
+            wl[j * Lp + l] = wts[j]
+    work = (aligned(M), aligned(4 * M), aligned(nl), aligned(nl), aligned(nl), aligned(nl),
+            aligned(nl), aligned(nl), aligned(nl), aligned(nl), aligned(Lp), aligned(Lp),
+            aligned(kL), wl, aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp), aligned(Lp),
+            aligned(Lp), aligned(kL))
+    return aligned(M), aligned(nl), aligned(nl), work
+
+
+@njit(cache=True)
+def lanes_in(Z, sc, Zp, s0, c0):
+    """Z and sc into the flat, padded lanes Zp, s0, c0 of `lane_arrays` (padding lanes:
+    copies of lane 0)."""
+    D, L = Z.shape
+    n = sc.shape[1]
+    Lp = Zp.size // D
     for l in range(Lp):
         src = l if l < L else 0
         for i in range(D):
@@ -88,13 +109,6 @@ def lanes_in(Z, sc, wts):
         for j in range(n):
             s0[j * Lp + l] = sc[0, j, src]
             c0[j * Lp + l] = sc[1, j, src]
-    for j in range(n):
-        for l in range(Lp):
-            wl[j * Lp + l] = wts[j]
-    work = (aligned(M), aligned(4 * M), aligned(nl), aligned(nl), aligned(nl), aligned(nl),
-            aligned(nl), aligned(nl), aligned(nl), aligned(nl), aligned(Lp), aligned(Lp),
-            aligned(Lp), wl)
-    return Zp, s0, c0, work
 
 
 @njit(cache=True)

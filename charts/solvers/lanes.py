@@ -35,7 +35,7 @@ from numba import njit
 from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
                              tangent_factors_lanes, tangent_rate_lanes)
 from ..geometry.projection import project_state, project_tangent_lanes
-from .lane_layout import LanesCompiler, gather, lanes_in, lanes_out, scatter
+from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
 from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, substeps
@@ -62,13 +62,13 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
         for t in range(W):
             th[i0 + t] = Zf[i0 + t]
     dL = d * L
+    one = np.uint64(1)  # (R − 1 with a signed 1 would make the row index signed)
     h6 = RK4_WEIGHTS[0] * h
     # stage 0 at Zf, s0, c0 themselves (no copies)
     multiplier_lanes(Zf, z0, n, L, minv, s0, c0, lam, iB)
     state_rate_lanes(Zf, z0, n, L, minv, s0, lam, K, z0)
     tangent_factors_lanes(Zf, z0, n, L, minv, s0, c0, lam, f, g, p, q)
-    for r in range(np.uint64(1), R):
-        tangent_rate_lanes(Zf, r * dL, n, L, f, g, p, q, iB, dlam, K, r * dL)
+    tangent_rate_lanes(Zf, dL, R - one, n, L, f, g, p, q, iB, dlam, K, dL)
     for st in range(1, 4):
         o = np.uint64(st) * M
         a = rk4_node(st) * h
@@ -83,8 +83,7 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
         multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
         state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
         tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
-        for r in range(np.uint64(1), R):
-            tangent_rate_lanes(Zt, r * dL, n, L, f, g, p, q, iB, dlam, K, o + r * dL)
+        tangent_rate_lanes(Zt, dL, R - one, n, L, f, g, p, q, iB, dlam, K, o + dL)
     M2 = M + M
     M3 = M2 + M
     for i0 in range(z0, M, W):  # `rk4_combine`
@@ -99,7 +98,7 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
 
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                  nsteps, reorth_every, w, restricted, project_every, logsum, events,
-                 event_logs):
+                 event_logs, arrays=None):
     """Advance the L lanes of Z, shape ((1 + k)·2N, L), by ``nsteps`` RK4 steps: lane l does
     what `tangent_kernel` does to the flat state Z[:, l] with ``sc[:, :, l]`` (sc: (2, N, L)),
     the shared step counter ``counter`` (1,), ``speed[l]`` and ``logsum[l]`` (logsum: (L, k));
@@ -114,10 +113,13 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     The steps run in `_lanes_run`, compiled for each N and k (their loops then have constant
     lengths, which LLVM unrolls), on copies of Z and sc with the lane count rounded up to a
     multiple of `LANE_WIDTH` (the extra lanes: copies of a running lane, never read back) and
-    every array distinct, as its ``noalias`` compilation requires."""
+    every array distinct, as its ``noalias`` compilation requires.  ``arrays``: those
+    copies and the loop's work arrays (`lane_arrays` of Z's shape and wts), kept by the
+    caller between calls (allocating them costs ~10 µs a call); None: allocated here."""
     n = int(wts.size)
     k = Z.shape[0] // (2 * n) - 1
-    Zp, s0, c0, work = lanes_in(Z, sc, wts)
+    Zp, s0, c0, work = lane_arrays(*Z.shape, wts) if arrays is None else arrays
+    lanes_in(Z, sc, Zp, s0, c0)
     running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
                          speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
                          events, event_logs, work, (0,) * n, (0,) * k)
@@ -136,7 +138,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     has its own compilation.  Every array argument distinct (``noalias``)."""
     n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
     k = len(k_tag)
-    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl = work
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = work
     L = status.size
     Lp = lam.size
     d = 2 * n
@@ -145,9 +147,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     M = D * Lp
     nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
     W = LANE_WIDTH
-    S, U = np.empty(Lp), np.empty(Lp)
     code = np.empty(Lp, dtype=np.int64)
-    cap = np.empty(Lp)
     # one lane in the one-trajectory layout (projections, eq 18, sub-steps)
     z = np.empty(D)
     zs0 = np.empty(n)
@@ -158,8 +158,6 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     th1 = np.empty(n)
     dl1 = np.empty(n)
     s1, c1, f1, g1, p1, q1 = stage_work(n)
-    v1, v2, v3 = np.empty(Lp), np.empty(Lp), np.empty(Lp)
-    nrm = np.empty(max(k, 1) * Lp)
     ku = np.uint64(k)
     sub = np.empty(L, dtype=np.int64)
     subcap = np.empty(L)
@@ -331,6 +329,7 @@ class LaneFlows:
         self.status = np.full(L, RUNNING, dtype=np.int64)
         self.stopped = np.zeros(L, dtype=np.int64)
         self.frozen = np.zeros((self.Z.shape[0] + 2 * self.system.n, L))
+        self._arrays = None  # `lanes_kernel`'s arrays, allocated at the first advance
 
     @property
     def steps(self) -> int:
@@ -357,11 +356,13 @@ class LaneFlows:
         sys_ = self.system
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_LOGS
+        if self._arrays is None:
+            self._arrays = lane_arrays(*self.Z.shape, sys_.weights)
         return lanes_kernel(self.Z, self.sc, self.counter, self.status, self.stopped,
                             self.frozen, sys_.minv, sys_.masses, sys_.weights, sys_.level,
                             self.speed, self.dt, int(nsteps), self.reorth_every, self.w,
                             self.restricted, self.project_every, self.logsum, events,
-                            event_logs)
+                            event_logs, self._arrays)
 
     def error(self, l, where):
         """The exception `TangentFlow.advance` raises for the stopped lane l (``where`` names

@@ -72,13 +72,13 @@ def shift_sincos(s0, c0, dl, theta, n, a, s, c):
 def shift_sincos_lanes(s0, c0, dl, theta, n, a, s, c):
     """`shift_sincos` of n elements in blocks of ``LANE_WIDTH`` (n a multiple of it)."""
     W = LANE_WIDTH
-    big = 0
+    big = False  # an or, not a count: a vector compare and a mask test per block
     for j0 in range(n - n, n, W):
         for t in range(W):
             s[j0 + t], c[j0 + t] = shifted(s0[j0 + t], c0[j0 + t], dl[j0 + t])
     for j0 in range(n - n, n, W):
         for t in range(W):
-            big += abs(dl[j0 + t]) > SHIFT_MAX
+            big |= abs(dl[j0 + t]) > SHIFT_MAX
     if big:
         _libm_beyond_shift(dl, theta, n, a, s, c)
 

@@ -70,8 +70,8 @@ def ensemble_rows(t_final=500.0, repeat=3, cases=((5, 16),), jitcode=True):
     bit between the two routes."""
     rows = []
     for n, members in cases:
-        _lanes(n, 2, 2 * REORTH * 2)         # compile / load both kernels first
-        _single(n, 1, 2 * REORTH * 2)
+        _lanes(n, members, 2 * REORTH * 2)   # compile / load both kernels first (with
+        _single(n, 1, 2 * REORTH * 2)        # `members`: fewer than MIN_LANES run single)
         cl, cs, same = [], [], True
         for _ in range(repeat):
             c, el = _lanes(n, members, t_final)
