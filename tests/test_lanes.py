@@ -49,7 +49,7 @@ def test_every_lane_equals_the_tangent_kernel_bit_for_bit(name):
     assert lanes.steps == 450
 
 
-@pytest.mark.parametrize("members", [3, MIN_LANES + 1])
+@pytest.mark.parametrize("members", [MIN_LANES - 1, MIN_LANES + 1])
 @pytest.mark.parametrize("name", ["N=3", "N=4 weights, level"])
 def test_ensemble_members_equal_lyapunov_spectrum(name, members):
     """Each member of `lyapunov_ensemble` is `lyapunov_spectrum` on its own random state and
@@ -108,7 +108,7 @@ def test_a_stopping_lane_is_frozen_and_leaves_the_others_alone():
     assert np.array_equal(lanes.Z[:, [1, 3]], frozen, equal_nan=True)
 
 
-@pytest.mark.parametrize("members", [3, MIN_LANES + 1])
+@pytest.mark.parametrize("members", [MIN_LANES - 1, MIN_LANES + 1])
 def test_ensemble_reports_the_member_that_stops(members):
     """`lyapunov_ensemble` raises the error `lyapunov_spectrum` raises for the member, naming
     its seed (here a system whose random states are replaced by the singular geodesic), in

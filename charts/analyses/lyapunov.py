@@ -344,10 +344,10 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
 #: Most trajectories one lane kernel advances together (larger ensembles: several blocks).
 LANE_BLOCK = 64
 #: Fewest trajectories worth one lane kernel: below, the members run one after the other in
-#: the one-trajectory kernel, which is faster there (the lanes are padded to blocks of 8;
-#: N = 5, paired: 0.6x the one-trajectory kernel's pace at 2 lanes, 0.9x at 3, 1.2x at 4,
-#: 2.3x at 8; docs/performance.md, "Ensembles in vector lanes").
-MIN_LANES = 4
+#: the one-trajectory kernel, which is as fast there (the lanes are padded to blocks of 8;
+#: N = 5, paired: 0.98x the one-trajectory kernel's pace at 2 lanes, 1.44x at 3, 1.83x at
+#: 4, 3.6x at 8; docs/performance.md, "Ensembles in vector lanes").
+MIN_LANES = 3
 
 
 def lyapunov_lanes(job, update=None):
