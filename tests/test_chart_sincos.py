@@ -16,12 +16,17 @@ def _point(y, par, d):
     return ws.copy(), wc.copy()
 
 
-def test_point_sincos_is_libm_at_every_point():
-    rng = np.random.default_rng(7)
+def _random_charts(rng):
+    """(d, par, local weights) of a chart of a random weighted member, N = 3, 5, 8."""
     for n in (3, 5, 8):
         d = n - 1
         par = local_parameters(rng.uniform(0.5, 2.0, n), rng.uniform(0.8, 1.3, n), 0.1, n - 1)
-        w = par[2 + d:2 + 2 * d]
+        yield d, par, par[2 + d:2 + 2 * d]
+
+
+def test_point_sincos_is_libm_at_every_point():
+    rng = np.random.default_rng(7)
+    for d, par, w in _random_charts(rng):
         for _ in range(20):
             y = rng.uniform(-3.0, 3.0, 2 * d)
             for _again in range(2):  # evaluated, then reused
@@ -41,10 +46,7 @@ def test_inside_a_step_the_start_is_shifted_to_rounding_and_only_the_start_matte
     measured ≤ 2 ulp); beyond it libm's bit for bit, coordinate by coordinate.  The values at a
     point inside the step do not depend on which steps came before."""
     rng = np.random.default_rng(11)
-    for n in (3, 5, 8):
-        d = n - 1
-        par = local_parameters(rng.uniform(0.5, 2.0, n), rng.uniform(0.8, 1.3, n), 0.1, n - 1)
-        w = par[2 + d:2 + 2 * d]
+    for d, par, w in _random_charts(rng):
         for _ in range(50):
             y0 = rng.uniform(-3.0, 3.0, 2 * d)
             ws, wc = _start(y0, par, d)

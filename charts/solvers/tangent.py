@@ -99,7 +99,14 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d
     stage in the loop (docs/performance.md).  For the same reason the two stage points are
     written out here and in the lane kernel's step (``charts.solvers.lanes``), not shared as
     inline functions: called from both branches they cost this kernel 40 % of its speed
-    (13 000 against 22 000 time units per CPU second, measured)."""
+    (13 000 against 22 000 time units per CPU second, measured).  Re-measured with the adjoint
+    step's copy (``charts.analyses.adjoint_pass``; `python scripts/bench_lane_counts.py
+    --lanes 16`, single-kernel column): the whole stage point as one inline function 621, the
+    stage-0 block alone 557, written out 348–355 ns per step.  The way to one home: the time
+    loop in a function of its own, its work arrays passed in, compiled without reference
+    counting (``charts.solvers.rk.NO_REFCOUNT``) ran the shared stage point at 348 ns per step
+    (measured); it needs every function the loop calls to allocate nothing first
+    (`project_state` does, and so does the backward pass's kernel around the adjoint step)."""
     for j in range(n):
         th[j] = Zf[j]
     zero = np.uint64(0)
