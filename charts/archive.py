@@ -40,8 +40,8 @@ KINDS = {
     "waveform": "charts.analyses.spectra:Waveform",
     "spectrum": "charts.analyses.spectra:PowerSpectrum",
     "ensemble": "charts.analyses.ensemble:EnsembleResult",
-    "scene": "charts.runs.archives:SceneResult",
-    "sweep": "charts.runs.archives:SweepTable",
+    "scene": "charts.runs.netcdf_results:SceneResult",
+    "sweep": "charts.runs.netcdf_results:SweepTable",
 }
 
 #: The NetCDF engine (NetCDF-4/HDF5: 64-bit integers, unicode strings, compression).

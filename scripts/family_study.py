@@ -31,7 +31,7 @@ from charts import RotorSystem, hyperbolicity_angles
 from charts.analyses.hyperbolicity import SMALL_ANGLE
 from charts.analyses.statistics import block_minima, pool_small_value_laws, small_value_law
 from charts.geometry.system import critical_levels
-from charts.runs.plotting import new_figure, save_png
+from charts.plotting.style import new_figure, save_png
 
 #: The points of the growing-sample runs: name -> (N, weights, level).
 GROWTH = {"n4-equal-c0": (4, [1, 1, 1, 1], 0.0),      # the paper's manifold (critical)

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from charts.runs.plotting import new_figure, save_png
+from charts.plotting.style import new_figure, save_png
 
 UNIT, PER_ROTOR = "1.0", "n ** 0.5"
 LABEL = {UNIT: "unit total speed", PER_ROTOR: "speed √N (energy ½ per rotor)"}

@@ -17,7 +17,7 @@ import sys
 import numpy as np
 
 from charts import RotorSystem, integrate
-from charts.runs.plotting import new_figure, save_png
+from charts.plotting.style import new_figure, save_png
 from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound
 
 TAUS = [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99]

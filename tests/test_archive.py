@@ -8,7 +8,7 @@ import pytest
 
 import charts
 from charts.archive import KINDS, load
-from charts.runs.archives import SceneResult, SweepTable
+from charts.runs.netcdf_results import SceneResult, SweepTable
 
 SYS4 = charts.RotorSystem(4)
 TH4, U4 = SYS4.random_state(0)

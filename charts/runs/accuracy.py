@@ -267,7 +267,7 @@ def table(study: dict) -> str:
 
 def figure(study: dict, path: Path) -> None:
     """Write :func:`draw_figure` to ``path`` (PNG, atomically)."""
-    from .plotting import save_png
+    from ..plotting.style import save_png
 
     save_png(draw_figure(study), path)
 
@@ -276,7 +276,7 @@ def draw_figure(study: dict):
     """The three work–precision panels of the study, a matplotlib Figure."""
     from matplotlib.ticker import FormatStrFormatter, LogLocator, MaxNLocator, NullFormatter
 
-    from .plotting import new_figure
+    from ..plotting.style import new_figure
 
     pts = study["points"]
     fig, axes = new_figure(1, 3, figsize=(15, 6.2))

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..plotting import CURVATURE_QUANTILES, plot_curvature
-from .plotting import new_figure, save_png
+from ..plotting.style import new_figure, save_png
 
 __all__ = ["figure2", "figure3", "figure4", "figure5"]
 

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..plotting import (CURVATURE_QUANTILES, TIME, plot_angles, plot_curvature, plot_drift,
                         plot_lyapunov, plot_spectrum)
-from .plotting import new_figure, png_bytes
+from ..plotting.style import new_figure, png_bytes
 
 __all__ = ["waveforms_png", "spectrum_png", "drift_png", "lyapunov_png", "angles_png", "clv_png",
            "curvature_png", "CURVATURE_QUANTILES"]

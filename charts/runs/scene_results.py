@@ -16,7 +16,7 @@ from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
 from ..analyses.spectra import power_spectrum
 from ..archive import require_xarray
 from . import scene_figures as figs
-from .archives import SCENE_NETCDF, SceneResult
+from .netcdf_results import SCENE_NETCDF, SceneResult
 from .io import atomic_write, json_default, npz_bytes, versions
 from .paper import PAPER_EXPONENTS
 from .recorders import invariants
