@@ -36,6 +36,7 @@ import shutil
 import tempfile
 from dataclasses import dataclass
 from math import isfinite
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -314,9 +315,61 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
         Parent folder of that temporary folder (default: the system's temporary folder).
     progress : bool or callable(t_done, t_total)
     """
-    n = system.n
-    D = clv_dimension(n, variant)
-    m = unstable_dimension(n, n_unstable)
+    cfg = _clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
+                        project_every, seed, max_memory)
+    theta0, u0 = start_state(system, theta0, u0)
+    # the kernel never re-orthonormalises (reorth_every beyond the run): `_factor` does, at
+    # the samples, with the kernel's Gram–Schmidt, keeping R
+    flow = TangentFlow(system, theta0, u0, cfg.D, dt=cfg.dt, inner="euclidean",
+                       restricted=variant == "restricted", reorth_every=cfg.n_steps + 1,
+                       project_every=cfg.project, seed=cfg.seed)
+    rep = progress_reporter(progress, cfg.n_steps * cfg.dt, f"CLV N={system.n} {variant}")
+    store = _Store((cfg.total, cfg.D, 2 * system.n), (cfg.total, cfg.D, cfg.D),
+                   (cfg.total, 2 * system.n),
+                   cfg.total * sample_bytes(system.n, variant) > cfg.max_memory, scratch)
+    try:
+        gs = _forward_pass(flow, system, cfg, store, rep,
+                           f"covariant_lyapunov_vectors (RK4, {variant})")
+        lost, phi, phi_v, states, vectors = _backward_pass(store, system.n, cfg, keep_vectors)
+    finally:
+        store.close()
+    rep.close()
+    S, tau = cfg.S, cfg.tau
+    t = (cfg.n_tr + np.arange(S) * cfg.sample) * cfg.dt
+    params = dict(n=system.n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, variant=variant, dt=cfg.dt, m=cfg.m, D=cfg.D,
+                  t_final=cfg.n_win * cfg.dt, t_transient=cfg.n_tr * cfg.dt, sample_every=tau,
+                  speed=flow.speed, project_every=cfg.project * cfg.dt or None, seed=cfg.seed,
+                  bytes_per_sample=sample_bytes(system.n, variant), stored_samples=cfg.total)
+    return CovariantResult(t, variant, phi, phi_v, -lost[1:S + 1] / tau, gs[1:S + 1], states,
+                           vectors, params)
+
+
+class _CLVSettings(NamedTuple):
+    """The checked settings of a CLV run, in steps: the transient ``n_tr``, the window
+    ``n_win``, steps per sample ``sample`` (τ = ``tau`` in time), projection ``project``;
+    ``S`` samples analysed, ``total`` stored (the backward transient's too), ``n_steps``
+    forward steps; D and m the dimensions of the tangent space and of E_u."""
+    D: int
+    m: int
+    dt: float
+    n_tr: int
+    n_win: int
+    sample: int
+    project: int
+    seed: int
+    max_memory: int
+    S: int
+    total: int
+    n_steps: int
+    tau: float
+
+
+def _clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
+                  project_every, seed, max_memory) -> _CLVSettings:
+    """`covariant_lyapunov_vectors`' arguments checked (ValueError naming the bad one)."""
+    D = clv_dimension(system.n, variant)
+    m = unstable_dimension(system.n, n_unstable)
     dt = positive_time("dt", dt)
     n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)
@@ -324,64 +377,57 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
     max_memory = positive_int("max_memory", max_memory, 0)
-    theta0, u0 = start_state(system, theta0, u0)
     S = samples_of(n_win, sample, t_final, sample_every)
-    n_back = max(1, -(-n_tr // sample))
-    total = S + n_back                                  # stored samples
+    total = S + max(1, -(-n_tr // sample))              # stored samples
     n_steps = n_tr + (total - 1) * sample               # the first one at the transient's end
-    d = 2 * n
-    tau = sample * dt
-    restricted = variant == "restricted"
-    # the kernel never re-orthonormalises (reorth_every beyond the run): `_factor` does, at
-    # the samples, with the kernel's Gram–Schmidt, keeping R
-    flow = TangentFlow(system, theta0, u0, D, dt=dt, inner="euclidean", restricted=restricted,
-                       reorth_every=n_steps + 1, project_every=project, seed=seed)
-    rep = progress_reporter(progress, n_steps * dt, f"CLV N={n} {variant}")
-    where = f"covariant_lyapunov_vectors (RK4, {variant})"
+    return _CLVSettings(D, m, dt, n_tr, n_win, sample, project, seed, max_memory, S, total,
+                        n_steps, sample * dt)
+
+
+def _forward_pass(flow, system, cfg, store, rep, where):
+    """The forward pass: the Gram–Schmidt factors Q_j, R_j and states y_j at every stored
+    sample into ``store``; returns the growth of each vector per sample, shape (total, D)."""
+    D, d, total, sample = cfg.D, 2 * system.n, cfg.total, cfg.sample
     Xraw = np.empty((D, d))
     logs = np.zeros(D)
-    store = _Store((total, D, d), (total, D, D), (total, d),
-                   total * sample_bytes(n, variant) > max_memory, scratch)
-    try:
-        gs = np.empty((total, D))
-        bq, br, by = np.empty((CHUNK, D, d)), np.empty((CHUNK, D, D)), np.empty((CHUNK, d))
-        for a in range(0, total, CHUNK):                  # forward: store Q_j, R_j, y_j
-            b = min(total, a + CHUNK)
-            status = _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by,
-                                      gs, logs)
-            if status != RUNNING:
-                raise status_error(status, flow.steps * dt, where)
-            rep.update(((n_tr if a == 0 else 0) + (b - a - (a == 0)) * sample) * dt)
-            store.Q[a:b], store.R[a:b], store.y[a:b] = bq[:b - a], br[:b - a], by[:b - a]
-        rng = np.random.default_rng([seed, 2])
-        C = np.triu(rng.uniform(0.5, 1.5, size=(D, D)))
-        C /= np.linalg.norm(C, axis=0)
-        lost = np.zeros((total, D))
-        phi, phi_v = np.empty(S), np.empty(S)
-        states = np.empty((S, d))
-        vectors = np.empty((S, D, d)) if keep_vectors else None
-        ist = D - (n - 2)                                  # the leading stable CLV
-        for b in range(total, 0, -CHUNK):                  # backward, last chunk first
-            a = max(0, b - CHUNK)
-            Cs = np.empty((b - a, D, D))
-            _backward(np.ascontiguousarray(store.R[a:b]), C, Cs, lost[a:b])
-            hi = min(b, S)
-            if a < hi:
-                Q = np.asarray(store.Q[a:hi])
-                V = np.einsum("kqi,kqx->kix", Cs[:hi - a], Q)       # rows: the CLVs
-                phi[a:hi] = _angle(Q[:, :m], V[:, m:])
-                phi_v[a:hi] = _angle(V[:, :1], V[:, ist:ist + 1])
-                states[a:hi] = store.y[a:hi]
-                if keep_vectors:
-                    vectors[a:hi] = V
-    finally:
-        store.close()
-    rep.close()
-    t = (n_tr + np.arange(S) * sample) * dt
-    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=system.level, variant=variant, dt=dt, m=m, D=D,
-                  t_final=n_win * dt, t_transient=n_tr * dt, sample_every=tau,
-                  speed=flow.speed, project_every=project * dt or None, seed=seed,
-                  bytes_per_sample=sample_bytes(n, variant), stored_samples=total)
-    return CovariantResult(t, variant, phi, phi_v, -lost[1:S + 1] / tau, gs[1:S + 1], states,
-                           vectors, params)
+    gs = np.empty((total, D))
+    bq, br, by = np.empty((CHUNK, D, d)), np.empty((CHUNK, D, D)), np.empty((CHUNK, d))
+    for a in range(0, total, CHUNK):
+        b = min(total, a + CHUNK)
+        status = _forward_samples(flow, system, cfg.n_tr, sample, a, b, cfg.tau, Xraw, bq, br,
+                                  by, gs, logs)
+        if status != RUNNING:
+            raise status_error(status, flow.steps * cfg.dt, where)
+        rep.update(((cfg.n_tr if a == 0 else 0) + (b - a - (a == 0)) * sample) * cfg.dt)
+        store.Q[a:b], store.R[a:b], store.y[a:b] = bq[:b - a], br[:b - a], by[:b - a]
+    return gs
+
+
+def _backward_pass(store, n, cfg, keep_vectors):
+    """Ginelli's backward iteration over the stored R_j, last chunk first, from a random
+    upper-triangular C: (the log growth lost per sample (total, D), the angle between E_u and
+    E_s, the angle between the leading unstable and stable CLVs (S,), the states (S, 2N),
+    the CLVs (S, D, 2N) or None)."""
+    D, S, m, total = cfg.D, cfg.S, cfg.m, cfg.total
+    rng = np.random.default_rng([cfg.seed, 2])
+    C = np.triu(rng.uniform(0.5, 1.5, size=(D, D)))
+    C /= np.linalg.norm(C, axis=0)
+    lost = np.zeros((total, D))
+    phi, phi_v = np.empty(S), np.empty(S)
+    states = np.empty((S, 2 * n))
+    vectors = np.empty((S, D, 2 * n)) if keep_vectors else None
+    ist = D - (n - 2)                                  # the leading stable CLV
+    for b in range(total, 0, -CHUNK):
+        a = max(0, b - CHUNK)
+        Cs = np.empty((b - a, D, D))
+        _backward(np.ascontiguousarray(store.R[a:b]), C, Cs, lost[a:b])
+        hi = min(b, S)
+        if a < hi:
+            Q = np.asarray(store.Q[a:hi])
+            V = np.einsum("kqi,kqx->kix", Cs[:hi - a], Q)       # rows: the CLVs
+            phi[a:hi] = _angle(Q[:, :m], V[:, m:])
+            phi_v[a:hi] = _angle(V[:, :1], V[:, ist:ist + 1])
+            states[a:hi] = store.y[a:hi]
+            if keep_vectors:
+                vectors[a:hi] = V
+    return lost, phi, phi_v, states, vectors
