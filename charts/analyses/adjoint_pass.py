@@ -11,47 +11,33 @@ from numba import njit
 
 from ..flows.ambient import adjoint_factors, adjoint_rate, sincos
 from ..geometry.projection import project_tangent_euclidean_sc
-from ..solvers.rk import rk4_node, rk4_point
 from ..solvers.status import CAP_FRACTION, RUNNING, fixed_step_status, sum_squares
-from ..solvers.tangent import (orthonormal_rows, orthonormalize, rk4_finish, shift_sincos,
-                               state_point_rate)
+from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step
 from .singular_values import smallest_singular_values
 
-__all__ = ["adjoint_step", "backward_kernel"]
+__all__ = ["adjoint_step", "backward_kernel", "adjoint_vectors_rate"]
 
 _CAP = CAP_FRACTION["rk4"]
 
 
 @njit(cache=True, inline="always")
+def adjoint_vectors_rate(Zt, n, minv, s, c, lam, iB, fa, fb, fp, _unused, K, o, R, d):
+    """ẇ = −J(x)ᵀ w for the R − 1 adjoint vectors after the state in Zt into K[o + d:], the
+    per-rotor factors (``charts.flows.ambient.adjoint_factors``) once for all of them (the
+    hook of ``charts.solvers.tangent.stacked_rk4_step``)."""
+    zero = np.uint64(0)
+    adjoint_factors(Zt, zero, n, minv, s, c, lam, iB, fa, fb, fp)
+    for r in range(np.uint64(1), R):
+        adjoint_rate(Zt, r * d, n, minv, s, fa, fb, fp, K, o + r * d)
+
+
+@njit(cache=True, inline="always")
 def _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, h, n, R, d, L):
     """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
-    and of the adjoint flow ẇ = −Jᵀw for the R − 1 vectors after it (flat, length L = R·d),
-    with the weighted sin/cos s0, c0 of the state's angles kept current by the tangent
-    kernel's angle shift (``charts.solvers.tangent.shift_sincos``); the per-rotor factors
-    of the adjoint (``charts.flows.ambient.adjoint_factors``) once per stage for all vectors.
-    n, R, d, L unsigned, stage 0 outside the branch-free stage point (see the tangent
-    kernel's step)."""
-    zero = np.uint64(0)
-    for j in range(n):
-        th[j] = Zf[j]
-    for st in range(4):
-        o = np.uint64(st) * L
-        if st == 0:
-            for i in range(L):
-                Zt[i] = Zf[i]
-            for j in range(n):
-                s[j] = s0[j]
-                c[j] = c0[j]
-        else:
-            rk4_point(Zf, K, o - L, rk4_node(st) * h, L, Zt)
-            for j in range(n):
-                dl[j] = Zt[j] - th[j]
-            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
-        lam, iB = state_point_rate(Zt, n, minv, s, c, K, o)
-        adjoint_factors(Zt, zero, n, minv, s, c, lam, iB, fa, fb, fp)
-        for r in range(np.uint64(1), R):
-            adjoint_rate(Zt, r * d, n, minv, s, fa, fb, fp, K, o + r * d)
-    rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts)
+    and of the adjoint flow ẇ = −Jᵀw for the R − 1 vectors after it: the one stacked step
+    (``charts.solvers.tangent.stacked_rk4_step``) with the adjoint's hook."""
+    stacked_rk4_step(Zf, Zt, K, th, dl, s, c, fa, fb, fp, fp, s0, c0, minv, wts, h, n, R, d, L,
+                     adjoint_vectors_rate)
 
 
 @njit(cache=True)

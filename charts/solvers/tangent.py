@@ -35,7 +35,8 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "state_point_rate", "rk4_finish", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
+           "shift_sincos_lanes", "shifted", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -84,32 +85,31 @@ def shift_sincos_lanes(s0, c0, dl, theta, n, a, s, c):
 
 
 @njit(cache=True, inline="always")
-def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L):
-    """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X] (flat,
-    length L = R·d), with the weighted sin/cos s0, c0 of y's angles updated (weights wts);
-    the rest is work space.
+def stacked_rk4_step(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, h, n, R, d, L,
+                     vectors_rate):
+    """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
+    and of a linear flow of the R − 1 vector rows after it (flat, length L = R·d): the one
+    RK4 step of every stacked flow.  The weighted sin/cos s0, c0 of the state's angles are
+    kept current (weights wts) by the angle shift from the step's start (`shift_sincos`);
+    w0…w3 and the rest are work space.
 
-    n, R, d, L are unsigned (``np.uint64``, from `tangent_kernel`), so every flat index here
-    and in the inlined equations is unsigned: Numba compiles a negative-index wraparound
+    ``vectors_rate(Zt, n, minv, s, c, lam, iB, w0, w1, w2, w3, K, o, R, d)`` is the
+    formulation's hook: the rates of the vector rows at the stage point Zt into K[o + d:],
+    from the state's multiplier Λ = lam and 1/B = iB (`tangent_vectors_rate`: eq 17;
+    ``charts.analyses.adjoint_pass.adjoint_vectors_rate``: ẇ = −Jᵀw).  It is a compile-time
+    argument, inlined: each kernel compiles the step with its own hook.
+
+    n, R, d, L are unsigned (``np.uint64``), so every flat index here and in the inlined
+    equations is unsigned: Numba compiles a negative-index wraparound
     (``i + (i >> 63 & len)``) into every signed array access whose sign LLVM cannot prove,
     i.e. every ``x[o + j]`` with a run-time offset o, which cost a quarter of the step.
-    Stage 0 is handled here, outside the branch-free `rk4_point`: an inlined function that
+    Stage 0 is handled outside the branch-free `rk4_point`: an inlined function that
     branches on the stage releases its arrays at different places in its two branches, and
     Numba's reference-count pruning then leaves an atomic incref/decref pair per array and
-    stage in the loop (docs/performance.md).  For the same reason the two stage points are
-    written out here and in the lane kernel's step (``charts.solvers.lanes``), not shared as
-    inline functions: called from both branches they cost this kernel 40 % of its speed
-    (13 000 against 22 000 time units per CPU second, measured).  Re-measured with the adjoint
-    step's copy (``charts.analyses.adjoint_pass``; `python scripts/bench_lane_counts.py
-    --lanes 16`, single-kernel column): the whole stage point as one inline function 621, the
-    stage-0 block alone 557, written out 348–355 ns per step.  The way to one home: the time
-    loop in a function of its own, its work arrays passed in, compiled without reference
-    counting (``charts.solvers.rk.NO_REFCOUNT``) ran the shared stage point at 348 ns per step
-    (measured); it needs every function the loop calls to allocate nothing first
-    (`project_state` does, and so does the backward pass's kernel around the adjoint step)."""
+    stage in the loop (docs/performance.md).  The lane kernel's step
+    (``charts.solvers.lanes``) is this step in the lanes' memory layout."""
     for j in range(n):
         th[j] = Zf[j]
-    zero = np.uint64(0)
     for st in range(4):
         o = np.uint64(st) * L           # offset of stage st in K
         if st == 0:
@@ -126,10 +126,26 @@ def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d
                 dl[j] = a * K[op + j]
             shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
         lam, iB = state_point_rate(Zt, n, minv, s, c, K, o)
-        tangent_factors(Zt, zero, n, minv, s, c, lam, f, g, p, q)
-        for r in range(np.uint64(1), R):
-            tangent_rate(Zt, r * d, n, f, g, p, q, iB, K, o + r * d)
+        vectors_rate(Zt, n, minv, s, c, lam, iB, w0, w1, w2, w3, K, o, R, d)
     rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts)
+
+
+@njit(cache=True, inline="always")
+def tangent_vectors_rate(Zt, n, minv, s, c, lam, iB, f, g, p, q, K, o, R, d):
+    """Eq (17) for the R − 1 tangent vectors after the state in Zt into K[o + d:], the
+    factors f, g, p, q computed once for all of them (the hook of `stacked_rk4_step`)."""
+    zero = np.uint64(0)
+    tangent_factors(Zt, zero, n, minv, s, c, lam, f, g, p, q)
+    for r in range(np.uint64(1), R):
+        tangent_rate(Zt, r * d, n, f, g, p, q, iB, K, o + r * d)
+
+
+@njit(cache=True, inline="always")
+def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L):
+    """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X]
+    (`stacked_rk4_step` with the tangent flow's hook)."""
+    stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L,
+                     tangent_vectors_rate)
 
 
 @njit(cache=True, inline="always")
