@@ -132,13 +132,22 @@ def main(argv=None) -> int:
     T = args.t or (500.0 if args.quick else 2000.0)
     rep = args.repeat or (3 if args.quick else 5)
     t_sp = args.scipy_t or (30.0 if args.quick else 150.0)
-    total = T + TRANSIENT
-    nsteps = total / DT
     print(f"date: {datetime.date.today().isoformat()}\nmachine: {machine()}")
     print("command: charts bench performance " + " ".join(sys.argv[1:] if argv is None else argv))
     print(f"task: N={N}, {K} exponents, unit speed, seed {SEED}, t={T:g} after a transient of "
           f"{TRANSIENT:g}; medians (min–max) of {rep}\n{load()}\n", flush=True)
 
+    kernel_section(T, rep, t_sp)
+    ens, pace, rep_time, preset, totals = target_sections(args, T, skip)
+    print("\n## targets\n" + format_targets(target_rows(ens, pace, rep_time, preset, totals)))
+    return 0
+
+
+def kernel_section(T, rep, t_sp):
+    """The Lyapunov kernel warm in this process against JiTCODE and SciPy, the
+    implementations taking turns: the table of CPU times and exponents, trajectory errors."""
+    total = T + TRANSIENT
+    nsteps = total / DT
     # -- warm, this process; the implementations take turns
     jit = jitcode_setup()
     ode = None if jit is None else jit[1]
@@ -205,7 +214,12 @@ def main(argv=None) -> int:
         print("SciPy not installed: no trajectory errors")
     print(load(), flush=True)
 
-    # -- the other targets, then the table they are judged by
+
+def target_sections(args, T, skip):
+    """The sections the targets are judged by (ensembles, analysis pace, scaling, cold start,
+    reproduce, all cores, code generation): (ensemble rows, pace rows, reproduce time,
+    preset, cold-start totals)."""
+    rep = args.repeat or (3 if args.quick else 5)
     ens = pace = totals = rep_time = None
     preset = "quick" if args.quick else "full"
     if "ensemble" not in skip:
@@ -230,8 +244,7 @@ def main(argv=None) -> int:
         secs, which = codegen_time()
         print(f"code generation {which} (charts.codegen.emit.module_source): {secs:.1f} s; "
               + load())
-    print("\n## targets\n" + format_targets(target_rows(ens, pace, rep_time, preset, totals)))
-    return 0
+    return ens, pace, rep_time, preset, totals
 
 
 def all_cores(T, rep):

@@ -20,7 +20,7 @@ from ...geometry.system import RotorSystem
 from ...solvers.rk import RHS_SIG
 from ...solvers.integrate import integrate
 from ...solvers.tangent import TangentFlow
-from ..plotting import new_figure, save_png
+from ...plotting.style import new_figure, save_png
 
 __all__ = ["measure", "fit_slope", "rhs_cost", "main", "DEFAULT_N"]
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..paper import PAPER_EXPONENTS
-from ..plotting import save_png
+from ...plotting.style import save_png
 
 __all__ = ["LINKAGE_AXES", "LINKAGE_FIGURE", "linkage_axis", "paper_limit_row",
            "plot_linkage_sweep"]

@@ -13,7 +13,7 @@ import numpy as np
 
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
-from ..plotting import new_figure, save_png
+from ...plotting.style import new_figure, save_png
 from .linkage import paper_limit_row, plot_linkage_sweep
 from .points import SweepPoint
 from .table import HEAD, TAIL, WEIGHT_VECTOR, csv_text, format_cell
