@@ -4,15 +4,14 @@ integrated backward from each trajectory checkpoint jointly with m adjoint vecto
 the sines of the angles (the smallest singular values of W Vᵀ)."""
 from __future__ import annotations
 
-from math import ceil
 
 import numpy as np
 from numba import njit
 
 from ..flows.ambient import adjoint_factors, adjoint_rate, sincos
 from ..geometry.projection import project_tangent_euclidean_sc
-from ..solvers.status import CAP_FRACTION, RUNNING, fixed_step_status, sum_squares
-from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step
+from ..solvers.status import CAP_FRACTION, RUNNING, SINGULAR, fixed_step_status, sum_squares
+from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step, stacked_substeps
 from .singular_values import smallest_singular_values
 
 __all__ = ["adjoint_step", "backward_kernel", "adjoint_vectors_rate"]
@@ -56,14 +55,11 @@ def adjoint_step(Z, minv, a, h):
 
 
 @njit(cache=True)
-def _adjoint_substeps(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, dt, hc, n, R, d,
-                      L):
-    """The backward step −dt as ⌈dt/hc⌉ equal `_adjoint_rk4` sub-steps (the forward kernel's
-    step policy near a singular point, ``charts.solvers.status``)."""
-    nsub = int(ceil(dt / hc))
-    for _ in range(nsub):
-        _adjoint_rk4(Zf, Zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt / nsub, n, R,
-                     d, L)
+def _adjoint_substeps(Zf, Zt, K, th, dl, s, c, fa, fb, fp, s0, c0, minv, wts, h, hc, n, R, d, L):
+    """The backward step h < 0 in sub-steps within the cap hc (the forward kernel's policy,
+    ``charts.solvers.tangent.stacked_substeps``)."""
+    return stacked_substeps(Zf, Zt, K, th, dl, s, c, fa, fb, fp, fp, s0, c0, minv, wts, h, hc, n,
+                            R, d, L, adjoint_vectors_rate)
 
 
 @njit(cache=True)
@@ -124,9 +120,9 @@ def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, 
             if hc >= dt:
                 _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt, nu, Ru,
                              du, Lu)
-            else:
-                _adjoint_substeps(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, dt, hc,
-                                  nu, Ru, du, Lu)
+            elif not _adjoint_substeps(Zf, zt, K, th, dl, s, c, fa, fb, fp, s0, c0, minv, wts,
+                                       -dt, hc, nu, Ru, du, Lu):
+                return SINGULAR, step
             step -= 1
             to_reorth -= 1
             if to_reorth == 0:

@@ -36,7 +36,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
            "shift_sincos_lanes", "shifted", "state_point_rate", "rk4_finish", "stacked_rk4_step",
-           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
+           "tangent_vectors_rate", "reorth_steps", "substeps", "stacked_substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -169,16 +169,29 @@ def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
     shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
 
 
-@njit(cache=True)
-def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
-    """The step dt as ⌈dt/hc⌉ equal `_rk4_step` sub-steps (kept out of the kernel's loop, which
-    it would slow down by a third); False if a sub-step starts at a singular point."""
-    nsub = int(ceil(dt / hc))
+@njit(cache=True, inline="always")
+def stacked_substeps(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, h, hc, n, R, d,
+                     L, vectors_rate):
+    """The step h (h < 0: backward) as ⌈|h|/hc⌉ equal `stacked_rk4_step` sub-steps, the
+    singular-point policy of ``charts.solvers.status``; False if a sub-step starts at a
+    singular point.  Inlined into one small compiled function per flow (`substeps`, the
+    backward pass's), which the kernels call: out of their loops, which it would slow down by
+    a third, and with the hook a compile-time constant (a hook passed on at run time would
+    keep numba from caching the caller)."""
+    nsub = int(ceil(abs(h) / hc))
     for sub in range(nsub):
         if sum_squares(s0, 0, n) < SINGULAR_S:
             return False
-        _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt / nsub, n, R, d, L)
+        stacked_rk4_step(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, h / nsub, n,
+                         R, d, L, vectors_rate)
     return True
+
+
+@njit(cache=True)
+def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
+    """The tangent flow's step dt in sub-steps within the cap hc (`stacked_substeps`)."""
+    return stacked_substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R,
+                            d, L, tangent_vectors_rate)
 
 
 @njit(cache=True, inline="always")
