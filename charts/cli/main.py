@@ -43,8 +43,8 @@ def _checkout_root() -> Path | None:
 
 
 def bundled_scenes() -> dict[str, Path]:
-    """Name -> path of every scene shipped in ``charts/scenes``."""
-    return bundled_files("charts.scenes")
+    """Name -> path of every scene shipped in ``charts/data/scenes``."""
+    return bundled_files("charts.data.scenes")
 
 
 def resolve_scene(arg: str) -> Path:

@@ -1,4 +1,4 @@
-"""Data files shipped inside the package (``charts/scenes``, ``charts/sweeps``): listed by
+"""Data files shipped inside the package (``charts/data/scenes``, ``charts/data/sweeps``): listed by
 name, and named on the command line either by path or by that name."""
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ __all__ = ["bundled_files", "path_or_bundled"]
 
 def bundled_files(package: str, suffix: str = ".toml") -> dict[str, Path]:
     """Name (the file name without ``suffix``) -> path of every ``*suffix`` file in the
-    package folder ``package`` (e.g. ``"charts.scenes"``), sorted by name."""
+    package folder ``package`` (e.g. ``"charts.data.scenes"``), sorted by name."""
     folder = resources.files(package)
     return {p.name[: -len(suffix)]: Path(str(p))
             for p in sorted(folder.iterdir(), key=lambda p: p.name) if p.name.endswith(suffix)}

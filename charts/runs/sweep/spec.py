@@ -53,8 +53,8 @@ class Sweep:
 
 
 def bundled_sweeps() -> dict[str, Path]:
-    """Name -> path of every sweep shipped in ``charts/sweeps``."""
-    return bundled_files("charts.sweeps")
+    """Name -> path of every sweep shipped in ``charts/data/sweeps``."""
+    return bundled_files("charts.data.sweeps")
 
 
 def resolve_sweep(arg: str) -> Path:
