@@ -29,8 +29,8 @@ from numba import njit
 
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
-from .ambient import SHIFT_MAX, shifted
 from ..geometry.kernels import chart_module, module_digest, source
+from ..geometry.primitives import SHIFT_MAX, shifted
 
 __all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
            "start_sincos", "work_area", "WORK"]
@@ -67,7 +67,7 @@ def point_sincos(y, par, d):
     as views of the work area at the end of ``par``, evaluated only when q is not the point
     they were last evaluated at.  Inside a step (the RK4 stages, DOP853's stages and dense
     samples) they are the step's start point's σ₀, κ₀ (`start_sincos`) shifted by
-    δ = q − q₀ with the angle-addition formula (``charts.flows.ambient.shifted``: exact to
+    δ = q − q₀ with the angle-addition formula (``charts.geometry.primitives.shifted``: exact to
     rounding for |δ| ≤ `SHIFT_MAX`, libm beyond it), as the tangent kernel's stages are."""
     o = par.size - WORK * d
     if not _same_point(y, par, o, d):
