@@ -69,8 +69,9 @@ def imports(module: str, path: Path, known) -> list[tuple[str, int]]:
             out += [(alias.name, node.lineno) for alias in node.names]
         elif isinstance(node, ast.ImportFrom):
             if node.level:
-                base = package.split(".")
-                base = ".".join(base[:len(base) - node.level + 1] + ([node.module] if node.module else []))
+                parts = package.split(".")
+                parts = parts[:len(parts) - node.level + 1] + ([node.module] if node.module else [])
+                base = ".".join(parts)
             else:
                 base = node.module
             for alias in node.names:
@@ -111,7 +112,8 @@ def test_the_emitter_writes_modules_that_import_math_only():
 
     for paper in (False, True):
         tree = ast.parse(module_source(3, paper))
-        names = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
+        names = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import)
+                 for alias in node.names}
         names |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
         assert names == {"math"}
 

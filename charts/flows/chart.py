@@ -67,8 +67,8 @@ def point_sincos(y, par, d):
     as views of the work area at the end of ``par``, evaluated only when q is not the point
     they were last evaluated at.  Inside a step (the RK4 stages, DOP853's stages and dense
     samples) they are the step's start point's σ₀, κ₀ (`start_sincos`) shifted by
-    δ = q − q₀ with the angle-addition formula (``charts.geometry.primitives.shifted``: exact to
-    rounding for |δ| ≤ `SHIFT_MAX`, libm beyond it), as the tangent kernel's stages are."""
+    δ = q − q₀ with the angle-addition formula (``charts.geometry.primitives.shifted``: exact
+    to rounding for |δ| ≤ `SHIFT_MAX`, libm beyond it), as the tangent kernel's stages are."""
     o = par.size - WORK * d
     if not _same_point(y, par, o, d):
         b = o + 3 * d                      # the step's start point (NaN: none yet)

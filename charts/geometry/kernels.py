@@ -6,10 +6,11 @@ before code generation), shipped for N = 3..6, or for 7 <= N <= ``MAX_N`` derive
 through ``charts.codegen.cache``.  ``compiled(n, paper)`` returns the same functions compiled
 with ``numba.njit(cache=True)``.  The generated modules import nothing but ``math``: the
 loader registers their kernels (``KERNEL_FUNCTIONS``) with numba, so that compiled code (the
-other generated functions, ``charts.flows.chart``) can call them.  ``geometry(n, weights, level)`` is what the library uses: the
-compiled generated functions for the shipped N (``GENERATED_N``; the paper's module for
-weights all 1 and level 0, so the paper's numbers keep their bits), the structured ones
-(``charts.geometry.structured``, one compilation for every N and every member) otherwise.
+other generated functions, ``charts.flows.chart``) can call them.
+``geometry(n, weights, level)`` is what the library uses: the compiled generated functions
+for the shipped N (``GENERATED_N``; the paper's module for weights all 1 and level 0, so the
+paper's numbers keep their bits), the structured ones (``charts.geometry.structured``, one
+compilation for every N and every member) otherwise.
 All take the same arguments, ``(q, ..., m, a, c, out)`` with local masses m and weights a
 and the level c, and agree to rounding (tests/test_structured.py).
 """
