@@ -11,6 +11,8 @@ on-demand cache) does.
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -116,6 +118,21 @@ def test_the_emitter_writes_modules_that_import_math_only():
                  for alias in node.names}
         names |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
         assert names == {"math"}
+
+
+def test_the_chart_right_hand_side_bound_by_hand_stays_cached_on_disk():
+    """Binding a generated module's kernels in ``charts.flows.chart`` keeps numba's on-disk
+    cache: a second process loads the compiled right-hand side without compiling it."""
+    code = ("from charts.compilation import compile_timer\n"
+            "from charts.solvers.chart_formulation import chart_rhs\n"
+            "spent = []\n"
+            "with compile_timer(spent.append):\n"
+            "    chart_rhs(3, True)\n"
+            "print(sum(spent))\n")
+    runs = [subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+            for _ in range(2)]
+    assert all(r.returncode == 0 for r in runs), runs[-1].stderr
+    assert float(runs[1].stdout) == 0.0
 
 
 @pytest.mark.parametrize("source, expect", [
