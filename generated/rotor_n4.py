@@ -8,10 +8,6 @@ Index conventions: see charts/codegen/symbolic.py.
 """
 import math
 
-from numba.extending import register_jitable
-
-from charts.flows.chart import rates
-
 N = 4
 DIM = 3
 
@@ -314,7 +310,6 @@ def riemann(q, m, a, c, out):
     return out
 
 
-@register_jitable(inline="always")
 def geodesic_acceleration_sc(ws, wc, v, m, a, c, out):
     """dv^a/dt = -Gamma^a_bc v^b v^c, eq (14). ws, wc = a*sin(q), a*cos(q), shape (3,)."""
     x0 = 1/m[0]
@@ -368,7 +363,6 @@ def geodesic_acceleration(q, v, m, a, c, out):
     return geodesic_acceleration_sc((a[0]*math.sin(q[0]), a[1]*math.sin(q[1]), a[2]*math.sin(q[2])), (a[0]*math.cos(q[0]), a[1]*math.cos(q[1]), a[2]*math.cos(q[2])), v, m, a, c, out)
 
 
-@register_jitable(inline="always")
 def transport_rate_sc(ws, wc, v, p, m, a, c, out):
     """dp^a/dt = -Gamma^a_bc v^b p^c, eq (16). ws, wc = a*sin(q), a*cos(q), shape (3,)."""
     x0 = 1/m[0]
@@ -480,9 +474,3 @@ def eliminated_component(q, x, a, sin_k):
     ws1 = a[1]*math.sin(q[1])
     ws2 = a[2]*math.sin(q[2])
     return (-x[0]*ws0 - x[1]*ws1 - x[2]*ws2)/(a[3]*sin_k)
-
-
-def chart_rates(y, par, dy):
-    """Eqs (14) + (16) at the chart state y into dy: charts.flows.chart.rates with this
-    module's kernels (a module-level function, so that numba caches it on disk)."""
-    return rates(y, par, dy, geodesic_acceleration_sc, transport_rate_sc)

@@ -1,6 +1,6 @@
 """Names shared by the code generator and the loaders of generated code (no heavy imports)."""
 
-__all__ = ["SHIPPED_N", "GENERATED_FUNCTIONS", "CHART_RATES", "module_name"]
+__all__ = ["SHIPPED_N", "GENERATED_FUNCTIONS", "module_name"]
 
 #: N for which ``generated/rotor_n{N}.py`` and ``rotor_n{N}_paper.py`` are committed.
 SHIPPED_N = (3, 4, 5, 6)
@@ -13,10 +13,6 @@ GENERATED_FUNCTIONS = (
     # the two above with σ = a sin q, κ = a cos q given (shared by the chart right-hand side)
     "geodesic_acceleration_sc", "transport_rate_sc",
 )
-
-#: The chart right-hand side every generated module defines: ``charts.flows.chart.rates`` bound
-#: to the module's two kernels above (compiled by ``charts.solvers.chart_formulation``).
-CHART_RATES = "chart_rates"
 
 
 def module_name(n: int, paper: bool = False) -> str:

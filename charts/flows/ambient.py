@@ -2,7 +2,7 @@
 F = Σ aᵢ cos θᵢ − c = 0 (weights a, level c): the only place they are written.
 
 State y = (θ₀…θ_{N−1}, u₀…u_{N−1}), shape (2N,).  With the *weighted* sᵢ = aᵢ sin θᵢ,
-cᵢ = aᵢ cos θᵢ (−∇F and −diag Hess F; `sincos`):
+cᵢ = aᵢ cos θᵢ (−∇F and −diag Hess F; `sincos`, ``charts.geometry.primitives``):
 
     θ̇ᵢ = uᵢ,   u̇ᵢ = −Λ sᵢ / mᵢ,   Λ = Σ u_j² c_j / B,   B = Σ s_j² / m_j          (eq 8)
 
@@ -44,10 +44,10 @@ eqs (8) and (17) in 150 against 124 ns per lane-step of the whole lane kernel).
 """
 from __future__ import annotations
 
-from math import cos, sin
-
 import numpy as np
 from numba import njit
+
+from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos  # noqa: F401 - re-exported
 
 __all__ = [
     "a_term", "b_term", "multiplier_of", "acceleration", "factor_f", "factor_g", "factor_p",
@@ -56,37 +56,6 @@ __all__ = [
     "tangent_rate_lanes", "LANE_WIDTH", "sincos", "shifted", "SHIFT_MAX", "multiplier", "state_rate", "tangent_factors", "tangent_rate", "transport_rate",
     "factor_dlam", "adjoint_factors", "adjoint_rate", "state_stage", "stage_work", "flow_rhs", "flow_tangent_rhs", "adjoint_rhs", "transport_rhs",
 ]
-
-
-@njit(cache=True, inline="always")
-def sincos(y, o, n, a, s, c):
-    """s, c = a sin θ, a cos θ of the angles y[o:o+n] (a = weights)."""
-    for j in range(n):
-        s[j] = a[j] * sin(y[o + j])
-        c[j] = a[j] * cos(y[o + j])
-
-
-#: |δ| up to which sin/cos(θ + δ) (the RK4 stages 2–4 and the new θ of the tangent
-#: kernels, the stage points of the chart formulation) come from the
-#: angle-addition formula with the Taylor polynomials below instead of libm (beyond it:
-#: libm).  At |δ| = 0.05 the first omitted terms, δ¹¹/11! (relative to sin δ ≈ δ: 2.4e-21)
-#: and δ¹⁰/10! (2.7e-20), are far below an ulp, so the polynomials are exact to rounding; the
-#: shifts are |δ| ≤ dt·|u| ≈ 0.01 at unit speed and dt = 0.01.  (libm at every stage
-#: instead: 2× the cost per step, same exponents; docs/performance.md.)
-SHIFT_MAX = 0.05
-_S = (-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0)
-_C = (-0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0)
-
-
-@njit(cache=True, inline="always")
-def shifted(sj, cj, d):
-    """(a sin, a cos) of θ₀ + δ from sj, cj = a sin θ₀, a cos θ₀ by the angle-addition
-    formula with the polynomials for |δ| ≤ `SHIFT_MAX` (linear in sj, cj: the weight a rides
-    along)."""
-    d2 = d * d
-    sd = d + d * d2 * (_S[0] + d2 * (_S[1] + d2 * (_S[2] + d2 * _S[3])))
-    cm = d2 * (_C[0] + d2 * (_C[1] + d2 * (_C[2] + d2 * _C[3])))
-    return sj + (sj * cm + cj * sd), cj + (cj * cm - sj * sd)
 
 
 # ------------------------------------------------------------------ the terms, per rotor
@@ -240,12 +209,6 @@ def adjoint_rate(x, o, n, minv, s, fa, fb, fp, dx, do):
 
 
 # ------------------------------------------------------------------ L trajectories (lanes)
-#: Lanes per block of the lane loops: every lane count L passed to the ``*_lanes`` loops is a
-#: multiple of it, so each block is a loop of constant length that LLVM unrolls and packs
-#: into vector instructions (8 doubles: one AVX-512 register), with no remainder.
-LANE_WIDTH = np.uint64(8)
-
-
 @njit(cache=True, inline="always")
 def multiplier_lanes(y, o, n, L, minv, s, c, lam, iB):
     """Eq (8)'s (Λ, 1/B) of the L states y[o + i·L + l] (i < 2N) into lam, iB, shape (L,);

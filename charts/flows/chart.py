@@ -29,9 +29,8 @@ from numba import njit
 
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
-from ..codegen.names import CHART_RATES
-from .ambient import SHIFT_MAX, shifted
-from ..geometry.kernels import chart_module, source
+from ..geometry.kernels import chart_module, module_digest, source
+from ..geometry.primitives import SHIFT_MAX, shifted
 
 __all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
            "start_sincos", "work_area", "WORK"]
@@ -68,8 +67,8 @@ def point_sincos(y, par, d):
     as views of the work area at the end of ``par``, evaluated only when q is not the point
     they were last evaluated at.  Inside a step (the RK4 stages, DOP853's stages and dense
     samples) they are the step's start point's σ₀, κ₀ (`start_sincos`) shifted by
-    δ = q − q₀ with the angle-addition formula (``charts.flows.ambient.shifted``: exact to
-    rounding for |δ| ≤ `SHIFT_MAX`, libm beyond it), as the tangent kernel's stages are."""
+    δ = q − q₀ with the angle-addition formula (``charts.geometry.primitives.shifted``: exact
+    to rounding for |δ| ≤ `SHIFT_MAX`, libm beyond it), as the tangent kernel's stages are."""
     o = par.size - WORK * d
     if not _same_point(y, par, o, d):
         b = o + 3 * d                      # the step's start point (NaN: none yet)
@@ -144,14 +143,28 @@ def structured_rates(y, par, dy):
     return rates(y, par, dy, structured.geodesic_acceleration_sc, structured.transport_rate_sc)
 
 
+def _bound_rates(ga, tr, digest):
+    """`rates` bound to a generated module's kernels ``ga``, ``tr`` (the caller's signature).
+    numba caches a closure on disk under a key that hashes its cells: the kernels (by module
+    and name) and ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``),
+    so a regenerated module is compiled afresh and each module has its own entry."""
+
+    def generated_rates(y, par, dy):
+        digest  # noqa: B018 - a cell of the closure, so a part of numba's cache key
+        return rates(y, par, dy, ga, tr)
+
+    return generated_rates
+
+
 @cache
 def chart_rates(n: int, paper: bool = False):
     """The right-hand side ``rhs(y, par, dy) -> health`` of eqs (14) + (16) for N = ``n``
     (any chart and member: ``par`` selects them), to be compiled by the caller with its
-    signature: `structured_rates` unless N's kernels are generated, else the generated
-    module's ``chart_rates`` (`rates` bound to its kernels; ``paper``: the paper's module,
-    ``charts.geometry.kernels.chart_module``).  Both are module-level functions, so their
-    compilations are cached on disk, and `rates` inlines the kernels into them."""
+    signature: `structured_rates` unless N's kernels are generated, else `rates` bound to the
+    kernels of the generated module (``paper``: the paper's module,
+    ``charts.geometry.kernels.chart_module``).  Both compilations are cached on disk, and
+    `rates` inlines the kernels into them."""
     if source(n) == "structured":
         return structured_rates
-    return getattr(chart_module(n, paper), CHART_RATES)
+    mod = chart_module(n, paper)
+    return _bound_rates(mod.geodesic_acceleration_sc, mod.transport_rate_sc, module_digest(mod))

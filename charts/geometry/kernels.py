@@ -4,15 +4,19 @@
 Σ aᵢ cos θᵢ = c; with ``paper``, ``rotor_n{n}_paper``, its member a = 1, c = 0 specialised
 before code generation), shipped for N = 3..6, or for 7 <= N <= ``MAX_N`` derives it on demand
 through ``charts.codegen.cache``.  ``compiled(n, paper)`` returns the same functions compiled
-with ``numba.njit(cache=True)``.  ``geometry(n, weights, level)`` is what the library uses: the
-compiled generated functions for the shipped N (``GENERATED_N``; the paper's module for
-weights all 1 and level 0, so the paper's numbers keep their bits), the structured ones
-(``charts.geometry.structured``, one compilation for every N and every member) otherwise.
+with ``numba.njit(cache=True)``.  The generated modules import nothing but ``math``: the
+loader registers their kernels (``KERNEL_FUNCTIONS``) with numba, so that compiled code (the
+other generated functions, ``charts.flows.chart``) can call them.
+``geometry(n, weights, level)`` is what the library uses: the compiled generated functions
+for the shipped N (``GENERATED_N``; the paper's module for weights all 1 and level 0, so the
+paper's numbers keep their bits), the structured ones (``charts.geometry.structured``, one
+compilation for every N and every member) otherwise.
 All take the same arguments, ``(q, ..., m, a, c, out)`` with local masses m and weights a
 and the level c, and agree to rounding (tests/test_structured.py).
 """
 from __future__ import annotations
 
+import hashlib
 import importlib
 import numbers
 from functools import cache
@@ -20,10 +24,12 @@ from types import SimpleNamespace
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 
 from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 
-__all__ = ["chart_module", "compiled", "geometry", "source", "is_paper", "GENERATED_N", "MAX_N"]
+__all__ = ["chart_module", "module_digest", "compiled", "geometry", "source", "is_paper",
+           "GENERATED_N", "MAX_N"]
 
 #: Largest N whose generated module can be derived on demand (tests compare it with the
 #: structured kernels; ``RotorSystem`` no longer needs it).
@@ -47,14 +53,26 @@ def is_paper(weights=None, level=0.0) -> bool:
 @cache
 def chart_module(n: int, paper: bool = False):
     """The generated module for N rotors (canonical chart eliminating θ_{N−1}): the family,
-    or with ``paper`` its member a = 1, c = 0."""
+    or with ``paper`` its member a = 1, c = 0; its kernels registered with numba."""
     if n in SHIPPED_N:
-        return importlib.import_module(f"charts.generated.{module_name(n, bool(paper))}")
-    if not 3 <= n <= MAX_N:
-        raise ValueError(f"N={n} is not supported: generated geometry exists for 3 <= N <= {MAX_N}")
-    from ..codegen.cache import load_or_generate
+        mod = importlib.import_module(f"charts.generated.{module_name(n, bool(paper))}")
+    elif 3 <= n <= MAX_N:
+        from ..codegen.cache import load_or_generate
 
-    return load_or_generate(n, bool(paper))
+        mod = load_or_generate(n, bool(paper))
+    else:
+        raise ValueError(f"N={n} is not supported: generated geometry exists for 3 <= N <= {MAX_N}")
+    for name in KERNEL_FUNCTIONS:
+        # inlined where called, as the hand-written kernels are (inline="always")
+        register_jitable(inline="always")(getattr(mod, name))
+    return mod
+
+
+def module_digest(mod) -> str:
+    """SHA-256 of a generated module's source file: what its compiled callers' on-disk caches
+    are keyed by (``charts.flows.chart.chart_rates``)."""
+    with open(mod.__file__, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
 
 
 #: Generated functions called inside numba kernels (``charts.flows.chart``): always compiled.

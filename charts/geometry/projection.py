@@ -10,7 +10,7 @@ perturbations
 
 (dimension 2N − 2) is invariant under eq (17); the tangent-vector projections map onto it.
 Arguments named ``s``, ``c`` are the weighted sin/cos a sin θ, a cos θ
-(``charts.flows.ambient.sincos``); with a = 1 every product by aᵢ is exact, so the paper's
+(``charts.geometry.primitives.sincos``); with a = 1 every product by aᵢ is exact, so the paper's
 case gives the same bits as before the weights existed.
 """
 from __future__ import annotations
@@ -20,7 +20,7 @@ from math import cos, sin, sqrt
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import LANE_WIDTH, sincos
+from .primitives import LANE_WIDTH, sincos
 
 __all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
            "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of", "invariant_terms"]

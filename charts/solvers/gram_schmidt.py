@@ -10,7 +10,7 @@ from math import log, sqrt
 
 from numba import njit
 
-from ..flows.ambient import LANE_WIDTH
+from ..geometry.primitives import LANE_WIDTH
 
 __all__ = ["inner_term", "orthonormalize", "orthonormal_rows", "orthonormalize_lanes"]
 

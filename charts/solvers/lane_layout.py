@@ -23,7 +23,7 @@ from numba.core.compiler import CompilerBase, DefaultPassBuilder
 from numba.core.compiler_machinery import register_pass
 from numba.core.typed_passes import NativeLowering
 
-from ..flows.ambient import LANE_WIDTH
+from ..geometry.primitives import LANE_WIDTH
 
 __all__ = ["LanesCompiler", "aligned", "lane_arrays", "lanes_in", "lanes_out", "gather", "scatter"]
 
