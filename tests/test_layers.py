@@ -31,7 +31,7 @@ LAYERS = (
     ("plotting",),                          # figures; the results' plot() import it lazily
     ("solvers",),                           # steppers, the loop, formulations, integrate
     ("analyses",),                          # Lyapunov, curvature, CLVs, spectra, ...
-    ("runs", "scenes", "sweeps"),           # scenes, sweeps, benchmarks (and their files)
+    ("runs", "data"),                       # scenes, sweeps, benchmarks; the bundled TOML files
     ("cli",),                               # the ``charts`` command
     ("__init__",),                          # the public surface, charts/__init__.py
 )

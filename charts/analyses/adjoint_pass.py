@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import adjoint_factors, adjoint_rate, sincos
+from ..flows.ambient import adjoint_factors, adjoint_rate
+from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.status import CAP_FRACTION, RUNNING, SINGULAR, fixed_step_status, sum_squares
 from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step, stacked_substeps

@@ -34,8 +34,9 @@ from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
-from ..flows.ambient import (flow_rhs, multiplier, sincos, state_rate, state_stage,
-                             tangent_factors, tangent_rate, transport_rate)
+from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
+                             tangent_rate, transport_rate)
+from ..geometry.primitives import sincos
 from ..geometry.checks import finite_array
 from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point

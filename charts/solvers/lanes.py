@@ -32,8 +32,9 @@ from math import isfinite, log
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import (LANE_WIDTH, multiplier_lanes, sincos, stage_work, state_rate_lanes,
-                             tangent_factors_lanes, tangent_rate_lanes)
+from ..flows.ambient import (multiplier_lanes, stage_work, state_rate_lanes, tangent_factors_lanes,
+                             tangent_rate_lanes)
+from ..geometry.primitives import LANE_WIDTH, sincos
 from ..geometry.projection import project_state, project_tangent_lanes
 from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point

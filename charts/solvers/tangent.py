@@ -25,8 +25,8 @@ from math import ceil, cos, gcd, isfinite, sin
 import numpy as np
 from numba import njit
 
-from ..flows.ambient import (LANE_WIDTH, SHIFT_MAX, multiplier, shifted, sincos, stage_work,
-                             state_rate, tangent_factors, tangent_rate)
+from ..flows.ambient import multiplier, stage_work, state_rate, tangent_factors, tangent_rate
+from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
 from ..geometry.projection import project_state, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
