@@ -131,16 +131,16 @@ def test_reproduce_reuses_finished_pieces_and_only_those(tmp_path, capsys):
     pieces = tmp_path / "pieces"
     pieces.mkdir()
     first = rp._run_all(cfg, 1, True, pieces)
-    files = sorted(pieces.glob("*.pkl"))
+    files = sorted(pieces.glob("*.npz"))
     assert len(files) == len(first) == 15
     for f in files[::3]:                        # as if interrupted before these finished
         f.unlink()
-    (pieces / "lyap-n3-0.pkl").unlink(missing_ok=True)
-    stamp = {f.name: f.stat().st_mtime_ns for f in pieces.glob("*.pkl")}
+    (pieces / "lyap-n3-0.npz").unlink(missing_ok=True)
+    stamp = {f.name: f.stat().st_mtime_ns for f in pieces.glob("*.npz")}
     capsys.readouterr()
     second = rp._run_all(cfg, 1, False, pieces)
     assert f"reusing {len(stamp)} of 15 finished pieces" in capsys.readouterr().err
-    assert {f.name: f.stat().st_mtime_ns for f in pieces.glob("*.pkl")
+    assert {f.name: f.stat().st_mtime_ns for f in pieces.glob("*.npz")
             if f.name in stamp} == stamp          # reused pieces were not rewritten
     for key, res in first.items():              # recomputed or reused: the same numbers
         if key[0] == "clv":                     # nested per variant; its own tests compare it
@@ -211,10 +211,10 @@ def test_reproduce_interrupted_by_ctrl_c_says_what_it_kept(tmp_path):
     proc = subprocess.Popen(CHARTS + ["reproduce", "--quick", "--workers", "2", "-o", str(out),
                                       "--quiet"], stderr=subprocess.PIPE, text=True,
                             start_new_session=True)
-    _wait_for(lambda: (out / "pieces").is_dir() and any((out / "pieces").glob("*.pkl")), proc)
+    _wait_for(lambda: (out / "pieces").is_dir() and any((out / "pieces").glob("*.npz")), proc)
     os.killpg(proc.pid, signal.SIGINT)
     _, err = proc.communicate(timeout=WAIT_S)
-    kept = len(list((out / "pieces").glob("*.pkl")))
+    kept = len(list((out / "pieces").glob("*.npz")))
     assert proc.returncode == 130, err
     from charts.runs import reproduce as rp
     total = len(rp._tasks(rp.PRESETS["quick"]))  # 21: the Lyapunov members of an N are one piece

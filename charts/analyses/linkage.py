@@ -37,17 +37,19 @@ CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
 
 def gauss_curvature(system, q, X, Y):
     """Sectional curvature of the plane (X, Y) ⊂ T_q M (tangent vectors, shape (7,)) by the
-    Gauss equation (module doc); X, Y need not be orthonormal."""
+    Gauss equation (module doc); X, Y need not be orthonormal.  q, X and Y are checked
+    (shape (7,), finite) before the compiled acceleration reads them."""
+    from ..geometry.linkage import _vector
+
+    q, X, Y = _vector("q", q), _vector("X", X), _vector("Y", Y)
     par = system.par
     w = system.mass
 
     def acc(z):
         a = np.empty(NQ)
-        acceleration(np.asarray(q, dtype=float), np.asarray(z, dtype=float), par, a)
+        acceleration(q, z, par, a)
         return a
 
-    X = np.asarray(X, dtype=float)
-    Y = np.asarray(Y, dtype=float)
     aX, aY = acc(X), acc(Y)
     IIxy = (acc(X + Y) - acc(X - Y)) / 4.0
     ip = lambda a, b: float(np.sum(w * a * b))

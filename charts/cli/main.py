@@ -84,10 +84,9 @@ def _cmd_run(args) -> int:
                      "continue an interrupted run there, or choose another output folder")
     try:
         scene = load_scene(path)
-        if args.force:
-            (out / "checkpoint.npz").unlink(missing_ok=True)   # start over, as asked
-            (out / "result.json").unlink(missing_ok=True)
-        result = run_scene(scene, args.output, resume=args.resume, quiet=args.quiet)
+        # --force: the old outputs are removed by run_scene once it holds the folder's lock
+        result = run_scene(scene, args.output, resume=args.resume, quiet=args.quiet,
+                           force=args.force)
     except SceneError as exc:
         return _fail(str(exc))
     except RunError as exc:
@@ -275,7 +274,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--resume", action="store_true",
                    help="continue an interrupted run from DIR/checkpoint.npz")
     p.add_argument("--force", action="store_true",
-                   help="write into DIR even if it is not empty (its results are replaced)")
+                   help="start over in DIR even if it is not empty: once DIR's lock is held, the "
+                   "files of the earlier run there (results, checkpoint, figures) are removed; "
+                   "other files are kept")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
     p.set_defaults(func=_cmd_run)
 

@@ -36,7 +36,8 @@ from .system import RotorSystem
 
 __all__ = ["LinkageSystem", "NQ", "NC", "gen_constraints", "gen_jacobian", "gen_hessian_vector",
            "gen_third_form", "lu_factor", "lu_solve", "project_configuration",
-           "project_velocity_linkage", "kkt_matrix", "project_state_linkage", "project_tangent_linkage"]
+           "project_velocity_linkage", "kkt_matrix", "project_state_linkage", "project_tangent_linkage", "PROJ_OK", "PROJ_SHAPE",
+           "PROJ_SINGULAR", "PROJ_ZERO_SPEED"]
 
 _gen = importlib.import_module("charts.generated.linkage")
 NQ = _gen.NQ
@@ -49,13 +50,32 @@ gen_third_form = njit(cache=True)(_gen.third_form)
 
 #: |F| and |J v| above which a state is refused as off the manifold.
 TOL = 1e-8
+#: Length of ``par`` = (ε, ρ, R, m_d, I_d) that the kernels read.
+NPAR = 5
+#: J Jᵀ is taken as singular (the four constraints dependent, M not a manifold there) where
+#: the smallest singular value of J is below this fraction of the largest.
+RANK_TOL = 1e-12
+
+#: Statuses of the compiled projections: done; arrays of the wrong shape (nothing written);
+#: J Jᵀ singular (the constraints lose rank); a speed asked of a velocity without energy.
+PROJ_OK = 0
+PROJ_SHAPE = -1
+PROJ_SINGULAR = -2
+PROJ_ZERO_SPEED = -3
 
 
 @njit(cache=True)
 def lu_factor(A, piv):
     """LU factorisation with partial pivoting of the square A, in place; ``piv`` (n,) int.
-    Returns the smallest |pivot| (0 for a singular matrix)."""
+    Returns the smallest |pivot|: 0 for a singular matrix, a non-finite pivot, or arrays of
+    shapes that do not fit (A not square, ``piv`` shorter than n).  ``piv`` is always filled
+    with rows in range (the identity past a zero pivot), so `lu_solve` never indexes outside
+    the arrays even when called after a failed factorisation."""
     n = A.shape[0]
+    if A.shape[1] != n or piv.shape[0] < n:
+        return 0.0
+    for k in range(n):
+        piv[k] = k
     pmin = 1e300
     for k in range(n):
         p = k
@@ -66,9 +86,9 @@ def lu_factor(A, piv):
         if p != k:
             for j in range(n):
                 A[k, j], A[p, j] = A[p, j], A[k, j]
-        pmin = min(pmin, abs(A[k, k]))
-        if A[k, k] == 0.0:
+        if not (abs(A[k, k]) > 0.0 and abs(A[k, k]) < np.inf):
             return 0.0
+        pmin = min(pmin, abs(A[k, k]))
         for i in range(k + 1, n):
             A[i, k] /= A[k, k]
             for j in range(k + 1, n):
@@ -78,8 +98,15 @@ def lu_factor(A, piv):
 
 @njit(cache=True)
 def lu_solve(A, piv, b):
-    """Solve with the factors of `lu_factor`; b (n,) is overwritten by the solution."""
+    """Solve with the factors of `lu_factor`; b (n,) is overwritten by the solution.
+    Returns True; False (b untouched) where the shapes do not fit, a pivot row is out of
+    range or a diagonal entry is zero (factors of a singular matrix)."""
     n = A.shape[0]
+    if A.shape[1] != n or piv.shape[0] < n or b.shape[0] != n:
+        return False
+    for k in range(n):
+        if piv[k] < k or piv[k] >= n or A[k, k] == 0.0:
+            return False
     for k in range(n):
         p = piv[k]
         if p != k:
@@ -91,6 +118,7 @@ def lu_solve(A, piv, b):
         for j in range(i + 1, n):
             b[i] -= A[i, j] * b[j]
         b[i] /= A[i, i]
+    return True
 
 
 @njit(cache=True)
@@ -107,19 +135,25 @@ def _gram(J, G, piv):
 
 @njit(cache=True)
 def _remove(J, G, piv, r, x):
-    """x −= Jᵀ (J Jᵀ)⁻¹ r: the minimum-norm correction that changes J x by −r."""
-    lu_solve(G, piv, r)
+    """x −= Jᵀ (J Jᵀ)⁻¹ r: the minimum-norm correction that changes J x by −r.  Returns
+    False (x untouched) where the factors of J Jᵀ are those of a singular matrix."""
+    if not lu_solve(G, piv, r):
+        return False
     for j in range(NQ):
         acc = 0.0
         for i in range(NC):
             acc += J[i, j] * r[i]
         x[j] -= acc
+    return True
 
 
 @njit(cache=True)
 def project_configuration(q, par, iterations):
     """Newton steps q −= Jᵀ(JJᵀ)⁻¹F onto F = 0, in place (stop once max|F| < 1e-15).
-    Returns the final max|F|."""
+    Returns the final max|F|; inf (q as reached) where q or par is too short or J Jᵀ is
+    singular at an iterate (the constraints lose rank there)."""
+    if q.shape[0] < NQ or par.shape[0] < NPAR:
+        return np.inf
     F = np.empty(NC)
     J = np.empty((NC, NQ))
     G = np.empty((NC, NC))
@@ -131,8 +165,8 @@ def project_configuration(q, par, iterations):
         if res < 1e-15:
             break
         gen_jacobian(q, par, J)
-        _gram(J, G, piv)
-        _remove(J, G, piv, F, q)
+        if _gram(J, G, piv) == 0.0 or not _remove(J, G, piv, F, q):
+            return np.inf
     gen_constraints(q, par, F)
     return np.max(np.abs(F))
 
@@ -159,7 +193,11 @@ def project_velocity_linkage(q, v, par):
     """v ← the tangent vector (J v = 0) nearest v in the kinetic metric, in place: the KKT
     solve [[M, Jᵀ], [J, 0]] (v', μ) = (M v, 0).  For a massless disk the θ-part is projected
     Σ dθ²-orthogonally and the disk's velocity follows from it.  Where the KKT matrix is
-    singular (degenerate metric) the Euclidean projection v −= Jᵀ(JJᵀ)⁻¹ J v is used."""
+    singular (degenerate metric) the Euclidean projection v −= Jᵀ(JJᵀ)⁻¹ J v is used.
+    Returns `PROJ_OK`; `PROJ_SHAPE` (nothing done) for arrays too short, `PROJ_SINGULAR`
+    (v untouched) where J Jᵀ is singular too."""
+    if q.shape[0] < NQ or v.shape[0] < NQ or par.shape[0] < NPAR:
+        return PROJ_SHAPE
     J = np.empty((NC, NQ))
     gen_jacobian(q, par, J)
     K = np.empty((NQ + NC, NQ + NC))
@@ -169,14 +207,15 @@ def project_velocity_linkage(q, v, par):
         b = np.zeros(NQ + NC)
         for j in range(NQ):
             b[j] = _kinetic_mass(par, j) * v[j]
-        lu_solve(K, piv, b)
-        v[:] = b[:NQ]
-        return
+        if lu_solve(K, piv, b):
+            v[:NQ] = b[:NQ]
+            return PROJ_OK
     G = np.empty((NC, NC))
     pg = np.empty(NC, dtype=np.int64)
-    _gram(J, G, pg)
-    r = J @ v
-    _remove(J, G, pg, r, v)
+    if _gram(J, G, pg) == 0.0:
+        return PROJ_SINGULAR
+    r = J @ v[:NQ]
+    return PROJ_OK if _remove(J, G, pg, r, v) else PROJ_SINGULAR
 
 
 @njit(cache=True, inline="always")
@@ -189,32 +228,52 @@ def _kinetic_mass(par, j):
 def project_state_linkage(y, par, mass, speed):
     """Put y = (q, v) back on F = 0 (3 Newton steps), J v = 0 (`project_velocity_linkage`;
     par = (ε, ρ, R, m_d, I_d)) and, if ``speed`` > 0,
-    vᵀ M v = speed² (`charts.geometry.projection.rescale_speed`), in place."""
+    vᵀ M v = speed² (`charts.geometry.projection.rescale_speed`), in place.  Returns
+    `PROJ_OK`; `PROJ_SHAPE` (y untouched) for y, par or mass too short; `PROJ_SINGULAR`
+    where J Jᵀ is singular (the constraints lose rank); `PROJ_ZERO_SPEED` (v left as
+    projected) where a speed is asked of a velocity without kinetic energy."""
+    if y.shape[0] < 2 * NQ or par.shape[0] < NPAR or mass.shape[0] < NQ:
+        return PROJ_SHAPE
     q = y[:NQ]
-    v = y[NQ:]
-    project_configuration(q, par, 3)
-    project_velocity_linkage(q, v, par)
+    v = y[NQ:2 * NQ]
+    if not project_configuration(q, par, 3) < np.inf:
+        return PROJ_SINGULAR
+    status = project_velocity_linkage(q, v, par)
+    if status != PROJ_OK:
+        return status
     if speed > 0.0:
+        E = 0.0
+        for j in range(NQ):
+            E += mass[j] * v[j] * v[j]
+        if not E > 0.0:
+            return PROJ_ZERO_SPEED
         rescale_speed(y, NQ, NQ, mass, speed)
+    return PROJ_OK
 
 
 @njit(cache=True)
 def project_tangent_linkage(y, X, par):
-    """Project each row (δq, δv) of X, shape (k, 14), onto T_r at y (module doc)."""
+    """Project each row (δq, δv) of X, shape (k, 14), onto T_r at y (module doc).  Returns
+    `PROJ_OK`; `PROJ_SHAPE` (X untouched) for y shorter than 14, rows of X not of length 14
+    or par too short; `PROJ_SINGULAR` (X untouched) where J Jᵀ is singular at y."""
+    if y.shape[0] < 2 * NQ or X.shape[1] != 2 * NQ or par.shape[0] < NPAR:
+        return PROJ_SHAPE
     q = y[:NQ]
-    v = y[NQ:]
+    v = y[NQ:2 * NQ]
     J = np.empty((NC, NQ))
     G = np.empty((NC, NC))
     H = np.empty((NC, NQ))
     piv = np.empty(NC, dtype=np.int64)
     gen_jacobian(q, par, J)
-    _gram(J, G, piv)
+    if _gram(J, G, piv) == 0.0:
+        return PROJ_SINGULAR
     for r in range(X.shape[0]):
         dq = X[r, :NQ]
         dv = X[r, NQ:]
         _remove(J, G, piv, J @ dq, dq)
         gen_hessian_vector(q, dq, par, H)
         _remove(J, G, piv, J @ dv + H @ v, dv)
+    return PROJ_OK
 
 
 class LinkageSystem:
@@ -251,10 +310,28 @@ class LinkageSystem:
 
     # ------------------------------------------------------------------ evaluation
     def constraints(self, q):
-        return gen_constraints(np.asarray(q, dtype=float), self.par, np.empty(NC))
+        """F(q), shape (4,); q is checked (shape (7,), finite) before the compiled kernel."""
+        return gen_constraints(_vector("q", q), self.par, np.empty(NC))
 
     def jacobian(self, q):
-        return gen_jacobian(np.asarray(q, dtype=float), self.par, np.empty((NC, NQ)))
+        """J = ∂F/∂q, shape (4, 7); q is checked (shape (7,), finite) first."""
+        return gen_jacobian(_vector("q", q), self.par, np.empty((NC, NQ)))
+
+    def constraint_rank_margin(self, q) -> float:
+        """Smallest over largest singular value of J at q (0 where the four constraints are
+        dependent: J Jᵀ is singular and no projection onto M is defined there)."""
+        s = np.linalg.svd(self.jacobian(q), compute_uv=False)
+        return float(s[-1] / s[0]) if s[0] > 0 else 0.0
+
+    def _check_rank(self, name, q, what):
+        margin = self.constraint_rank_margin(q)
+        if not margin > RANK_TOL:
+            raise ValueError(
+                f"{name} = {np.array2string(np.asarray(q), precision=4)} is a singular "
+                f"configuration of the linkage: the constraints' Jacobian J has dependent rows "
+                f"there (smallest/largest singular value {margin:.1e} <= {RANK_TOL:g}), so "
+                f"{what}; start from another point, e.g. LinkageSystem.random_state or "
+                "from_rotor_state")
 
     def disk_margin(self, q) -> float:
         """Smallest singular value of C = ∂F/∂(x, y, α) with the α column divided by ρ
@@ -279,23 +356,42 @@ class LinkageSystem:
         if Jv > TOL * max(1.0, np.max(np.abs(v))):
             raise ValueError(f"v is not tangent to the manifold (max|J v| = {Jv:.2e}); "
                              "use LinkageSystem.project(q, v)")
+        self._check_rank("q", q, "the linkage has no tangent space there to move in")
         return q, v
 
     # ------------------------------------------------------------------ states
     def project(self, q, v, speed=None):
-        """(q, v) moved onto F = 0 and J v = 0 (and to ``speed`` if given): new arrays."""
+        """(q, v) moved onto F = 0 and J v = 0 (and to kinetic ``speed`` if given): new
+        arrays.  ValueError naming the argument for q or v not of shape (7,) or not finite,
+        ``speed`` not a finite number >= 0, a singular configuration q (J Jᵀ singular: the
+        Newton step is undefined), a q the Newton steps do not bring onto M, and a speed asked
+        of a velocity without a tangent component."""
         y = np.concatenate([_vector("q", q), _vector("v", v)])
+        if speed is not None:
+            speed = _nonnegative("speed", speed)
+        self._check_rank("q", y[:NQ], "the Newton step onto the manifold is undefined")
         res = project_configuration(y[:NQ], self.par, 50)
         if not res < 1e-13:
             raise ValueError(f"could not put q on the manifold (max|F| = {res:.1e} after 50 "
                              "Newton steps); start nearer, e.g. from_rotor_state")
-        project_state_linkage(y, self.par, self.mass, 0.0 if speed is None else float(speed))
+        status = project_state_linkage(y, self.par, self.mass, 0.0 if speed is None else speed)
+        if status == PROJ_SINGULAR:
+            self._check_rank("q", y[:NQ], "the tangent space is undefined")
+            raise ValueError("q was projected onto a point where J Jᵀ is numerically singular; "
+                             "start from another point, e.g. LinkageSystem.random_state")
+        if status == PROJ_ZERO_SPEED:
+            raise ValueError(f"v has no component tangent to the manifold at q, so it cannot be "
+                             f"given the speed {speed:g}; pass a velocity with a tangent part "
+                             "(e.g. from random_state) or speed=None")
+        if status != PROJ_OK:
+            raise ValueError(f"the projection of (q, v) failed (status {status}); check that q "
+                             "and v have shape (7,)")
         return y[:NQ].copy(), y[NQ:].copy()
 
     def first_order_disk(self, theta, branch=1):
         """(x, y, α) of the Appendix's first-order solution for the angles theta: x = ε(c₂ −
         c₀)/2, y = ε(c₁ − c₃)/2, cos α = ε(c₁ + c₃)/(2ρ), sign of sin α = ``branch``."""
-        c = np.cos(np.asarray(theta, dtype=float))
+        c = np.cos(_vector("theta", theta, 4))
         ca = np.clip(self.eps * (c[1] + c[3]) / (2.0 * self.rho), -1.0, 1.0)
         return np.array([self.eps * (c[2] - c[0]) / 2, self.eps * (c[1] - c[3]) / 2,
                          math.copysign(math.acos(ca), branch)])
@@ -303,8 +399,8 @@ class LinkageSystem:
     def from_rotor_state(self, theta, u, branch=1):
         """The linkage state nearest a state (θ, u) of Σ cos θ = 0: the first-order disk, then
         projected onto the invariants with θ-speed |u| (the ε → 0 comparison)."""
-        theta = np.asarray(theta, dtype=float)
-        u = np.asarray(u, dtype=float)
+        theta = _vector("theta", theta, 4)
+        u = _vector("u", u, 4)
         q = np.concatenate([theta, self.first_order_disk(theta, branch)])
         return self.project(q, np.concatenate([u, np.zeros(3)]),
                             speed=float(np.linalg.norm(u)) if self.massless_disk else None)
@@ -334,10 +430,21 @@ def _nonnegative(name, x) -> float:
     return float(x)
 
 
-def _vector(name, x):
-    a = np.array(x, dtype=float)
-    if a.shape != (NQ,):
-        raise ValueError(f"{name} must have shape ({NQ},) = (θ₀…θ₃, x, y, α), got {a.shape}")
+def _vector(name, x, n=NQ):
+    """A float copy of x, shape (n,) (the linkage's q or v for n = 7, rotor angles or
+    velocities for n = 4), finite; ValueError naming ``name`` otherwise.  Every compiled
+    kernel reached from the methods above gets arrays checked here first."""
+    what = "(θ₀…θ₃, x, y, α)" if n == NQ else "(θ₀…θ₃)"
+    try:
+        if np.iscomplexobj(x):
+            raise TypeError("complex values")
+        a = np.array(x, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} must be an array of {n} real numbers {what}, got "
+                         f"{type(x).__name__} ({exc})") from None
+    if a.shape != (n,):
+        raise ValueError(f"{name} must have shape ({n},) = {what}, got {a.shape}")
     if not np.all(np.isfinite(a)):
-        raise ValueError(f"{name} has non-finite entries")
+        raise ValueError(f"{name} has non-finite entries: {np.array2string(a, precision=4)}; "
+                         "pass finite numbers")
     return a

@@ -242,7 +242,7 @@ class RotorSystem:
     def to_chart(self, theta, u, chart):
         """Local coordinates and velocity components of (theta, u) in ``chart``."""
         k, idx, q, _, _ = self._chart(theta, chart)
-        return q, np.asarray(u, dtype=float)[idx]
+        return q, finite_array("u", u, shape=(self.n,))[idx]
 
     def from_chart(self, q, v, chart, branch):
         """Ambient (theta, u) from local (q, v) of ``chart`` on sign branch ``branch`` = ±1."""

@@ -10,7 +10,10 @@ the writer's pid, host, process start time and command.  A second writer refuses
 those details.  A lock left by a process that no longer runs (killed with SIGKILL, say) is
 recognised on the same host — its pid is gone, or belongs to a process started at another
 time — and taken over with a message; a lock from another host is never broken silently
-(the message says which file to delete).
+(the message says which file to delete).  Neither is anything at the lock's path that
+charts did not write — a folder, or a file whose pid is not a process id: the refusal says
+what it is and what to remove.  Whatever a command deletes or overwrites in its folder, it
+deletes only after it holds the lock (``charts run --force``: ``charts.runs.runner``).
 """
 from __future__ import annotations
 
@@ -104,6 +107,13 @@ def _start_time(pid: int) -> str | None:
     return stat.rsplit(")", 1)[1].split()[19]
 
 
+def _pid(value) -> int | None:
+    """``value`` as a process id (an int 1 … 2²² as charts writes it), else None."""
+    if isinstance(value, bool) or not isinstance(value, int) or not 0 < value < 2 ** 22:
+        return None
+    return value
+
+
 def _alive(pid: int) -> bool:
     try:
         os.kill(pid, 0)
@@ -126,6 +136,7 @@ class OutputLock:
 
     def acquire(self) -> "OutputLock":
         for _ in range(3):
+            self._refuse_foreign()
             try:
                 fd = os.open(self.path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
             except FileExistsError:
@@ -142,12 +153,29 @@ class OutputLock:
         raise OutputError(self._refusal())
 
     def _holder(self) -> dict | None:
+        """The lock's content: {} if it vanished, None if empty, torn or not a JSON object."""
         try:
-            return json.loads(self.path.read_text())
+            h = json.loads(self.path.read_text())
         except FileNotFoundError:
             return {}
         except (OSError, ValueError):
             return None
+        return h if isinstance(h, dict) and h else None
+
+    def _refuse_foreign(self) -> None:
+        """OutputError (one line) for something at the lock's path that no charts process
+        wrote: a folder or other non-file, or a lock whose pid is not a process id."""
+        if self.path.is_symlink() or (self.path.exists() and not self.path.is_file()):
+            kind = "a folder" if self.path.is_dir() else "not a regular file"
+            raise OutputError(f"-o {self.path.parent}: {self.path} is {kind}, not a charts lock "
+                              "file; remove it if no charts process is writing into this "
+                              "folder, then run again")
+        h = self._holder()
+        if h and _pid(h.get("pid")) is None:
+            raise OutputError(f"-o {self.path.parent}: the lock file {self.path} holds "
+                              f"pid {h.get('pid')!r}, not a process id, so charts cannot tell "
+                              "whether its writer still runs; delete it if no charts process is "
+                              "writing into this folder, then run again")
 
     def _stale(self) -> bool:
         """Whether the existing lock belongs to no running process (then it is removed)."""
@@ -164,7 +192,9 @@ class OutputLock:
             reason = "an empty lock file"
         elif h.get("host") != self.me["host"]:
             return False
-        elif _alive(int(h["pid"])) and _start_time(int(h["pid"])) in (None, h.get("start")):
+        elif _pid(h.get("pid")) is None:               # not a process id: never broken
+            return False
+        elif _alive(_pid(h["pid"])) and _start_time(_pid(h["pid"])) in (None, h.get("start")):
             return False
         else:
             reason = f"pid {h['pid']} ({h.get('command', '?')}) is no longer running"

@@ -9,8 +9,9 @@ error bars beside the paper's), ``fig2.png`` … ``fig5.png`` (the paper's panel
 the hyperbolicity test by a second route (covariant Lyapunov vectors on the trajectories of
 the angle test, ``charts.runs.reproduce_clv``: ``clv.png``, ``ftle.png``).
 Independent trajectories run in parallel processes (all cores by default).  Each finished
-trajectory is kept in ``DIR/pieces/`` as it finishes: a reproduction interrupted (Ctrl-C,
-exit 130) and run again with the same command computes only the missing pieces.
+trajectory is kept in ``DIR/pieces/`` as it finishes (``.npz`` with JSON metadata, never
+pickle: ``charts.runs.pieces``): a reproduction interrupted (Ctrl-C, exit 130) and run again
+with the same command computes only the missing pieces.
 
 Presets (unit speed, equal masses, RK4 dt = 0.01 everywhere):
 
@@ -28,7 +29,6 @@ from __future__ import annotations
 
 import json
 import os
-import pickle
 import platform
 import sys
 import time
@@ -40,6 +40,7 @@ import numpy as np
 from ..analyses.statistics import standard_error
 from .io import atomic_text, atomic_write
 from .outdir import OutputLock, prepare_output
+from .pieces import kept_pieces, load_piece, save_piece
 from . import reproduce_clv
 from .paper import PAPER_EXPONENTS
 from .cli_parser import OneLineParser, positive_count
@@ -170,30 +171,6 @@ def _quiet_interrupt():
     signal.signal(signal.SIGINT, lambda *_: os._exit(EXIT_INTERRUPTED))
 
 
-def _piece_path(folder, key):
-    return Path(folder) / f"{key[0]}-n{key[1]}-{key[2]}.pkl"
-
-
-def save_piece(folder, key, args, result: dict) -> None:
-    """Keep one task's result (nested dicts of arrays and numbers, pickled: the folder is
-    the user's own output) with the arguments that produced it."""
-    atomic_write(_piece_path(folder, key), pickle.dumps({"args": json.dumps(list(args)),
-                                                         "result": result}))
-
-
-def load_piece(folder, key, args):
-    """The kept result of task ``key`` if it was computed with ``args``; None otherwise
-    (missing, another preset, or unreadable: then it is computed again)."""
-    path = _piece_path(folder, key)
-    if not path.exists():
-        return None
-    try:
-        piece = pickle.loads(path.read_bytes())
-        return piece["result"] if piece["args"] == json.dumps(list(args)) else None
-    except Exception:                   # noqa: BLE001 - a torn or foreign file: recompute
-        return None
-
-
 def _lyapunov_table(results, cfg):
     rows = {}
     for n in NS:
@@ -279,7 +256,7 @@ def main(argv=None):
         try:
             return _reproduce(out, pieces, preset, cfg, workers, args.quiet)
         except KeyboardInterrupt:
-            kept = len(list(pieces.glob("*.pkl")))
+            kept = len(kept_pieces(pieces))
             print(f"\ninterrupted: {kept} of {len(_tasks(cfg))} pieces kept in {pieces}; run "
                   f"the same command again to continue:\n  charts reproduce --{preset} "
                   f"-o {out}", file=sys.stderr)

@@ -15,6 +15,13 @@ same chunks, a resumed run gives bit-identical numbers.
 Outputs (each written to a temporary file, then ``os.replace``): ``result.json``,
 ``arrays.npz``, one PNG per effect with a picture.
 
+Starting over (``force=True``, ``charts run --force``).  Only once the folder's lock is held
+(a run refused because another process holds it deletes nothing), and only after the scene's
+run is set up, the files an earlier run wrote are removed (:func:`clear_run_outputs`): those
+its ``result.json`` lists and every name a scene run can write (:data:`RUN_FILES`,
+:data:`SCENE_FIGURES`), so no figure of the old scene stays beside the new results; the
+user's other files in the folder are left alone.
+
 The parts: :mod:`~charts.runs.plan` (what runs), :mod:`~charts.runs.run_state` (the
 checkpointed state), :mod:`~charts.runs.engines` (the integration of a chunk),
 :mod:`~charts.runs.recorders` (what is recorded along the way),
@@ -32,6 +39,7 @@ import numpy as np
 from ..compilation import NOTE_SECONDS, compile_timer
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
+from .netcdf_results import SCENE_NETCDF
 from .outdir import OutputLock, prepare_output
 from .paper import PAPER_EXPONENTS
 from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
@@ -42,11 +50,45 @@ from .scene_linkage import is_linkage
 from .scene import Scene
 from .scene_results import FTLE_STATS, finalize, write_result
 
-__all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "PAPER_EXPONENTS"]
+__all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "PAPER_EXPONENTS",
+           "clear_run_outputs", "RUN_FILES", "SCENE_FIGURES"]
+
+#: The files of a scene run besides its figures (``charts.runs.scene_results``).
+RUN_FILES = ("result.json", CHECKPOINT, "arrays.npz", SCENE_NETCDF)
+#: Every figure a scene run can write (``charts.runs.scene_results``; a test keeps the two
+#: lists in step).
+SCENE_FIGURES = ("waveforms.png", "spectrum.png", "drift.png", "lyapunov.png", "angles.png",
+                 "clv.png", "curvature.png")
+
+
+def clear_run_outputs(outdir, lock) -> list:
+    """Remove what earlier scene runs wrote into ``outdir``: the files its ``result.json``
+    lists (plain names in the folder) and `RUN_FILES` and `SCENE_FIGURES`, ``result.json``
+    last.  Only while ``lock`` (the folder's `OutputLock`) is held: RuntimeError otherwise.
+    Returns the names removed."""
+    outdir = Path(outdir)
+    if not (lock.held and lock.path.parent == outdir):
+        raise RuntimeError(f"clear_run_outputs: the lock of {outdir} is not held")
+    names = set(RUN_FILES) | set(SCENE_FIGURES)
+    try:
+        listed = json.loads((outdir / "result.json").read_text()).get("files", [])
+    except (OSError, ValueError, AttributeError):
+        listed = []
+    for name in listed if isinstance(listed, list) else []:
+        if isinstance(name, str) and name == Path(name).name and name not in ("", ".", ".."):
+            names.add(name)
+    names.discard(lock.path.name)
+    removed = []
+    for name in sorted(names - {"result.json"}) + ["result.json"]:
+        path = outdir / name
+        if path.is_file() or path.is_symlink():
+            path.unlink()
+            removed.append(name)
+    return removed
 
 
 def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False,
-              on_chunk=None) -> dict:
+              on_chunk=None, force: bool = False) -> dict:
     """Run ``scene`` into ``outdir``; return the result dict (also in result.json).
 
     ``on_chunk(index, n_chunks)`` is called after each checkpoint (tests use it to simulate
@@ -54,10 +96,16 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     status "interrupted" and re-raises ``KeyboardInterrupt``.  ``outdir`` is checked before
     any work (:func:`~charts.runs.outdir.prepare_output`) and locked while the run writes
     into it: a second run into the same folder refuses (:class:`~charts.runs.outdir.OutputLock`).
+    ``force=True`` starts over: once the lock is held and the run is set up, the outputs of
+    an earlier run there are removed (:func:`clear_run_outputs`; module doc).
     """
+    if force and resume:
+        raise RunError("force=True and resume=True exclude each other (force starts over)")
     outdir = prepare_output(outdir)
-    with OutputLock(outdir, f"charts run {scene.name}"):
-        run = SceneRun(scene, outdir, resume)
+    with OutputLock(outdir, f"charts run {scene.name}") as lock:
+        run = SceneRun(scene, outdir, resume, force=force)
+        if force:
+            clear_run_outputs(outdir, lock)
         bar = run.progress_bar(quiet)
         status, failure = "complete", None
         try:
@@ -76,7 +124,7 @@ class SceneRun:
     state, the chunk ends, the recorders and the checkpoint.  `run_scene` drives one;
     ``charts.runs.seed_lanes`` drives several in the lanes of one kernel."""
 
-    def __init__(self, scene: Scene, outdir: Path, resume: bool):
+    def __init__(self, scene: Scene, outdir: Path, resume: bool, *, force: bool = False):
         self.scene, self.outdir = scene, outdir
         system = scene_system(scene)
         self.plan = plan = plan_scene(scene)
@@ -93,7 +141,7 @@ class SceneRun:
                                    "different scene (the scene file changed); run without "
                                    "--resume")
                 st.load_arrays(a)
-        elif self.ck.exists() or (outdir / "result.json").exists():
+        elif not force and (self.ck.exists() or (outdir / "result.json").exists()):
             if _read_status(outdir) == "interrupted":
                 raise RunError(f"{outdir} holds an interrupted run: continue it with --resume, "
                                "or choose another output folder")

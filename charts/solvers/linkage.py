@@ -18,15 +18,19 @@ import numpy as np
 from numba import njit, types
 
 from ..flows.linkage import NY, linkage_rates
-from ..geometry.linkage import project_state_linkage, project_tangent_linkage
+from ..geometry.linkage import PROJ_OK, project_state_linkage, project_tangent_linkage
 from .rk import RHS_SIG, RHS_TYPE, rk4_step
 from .status import NONFINITE, RUNNING, IntegrationError
 from .tangent import StackedFlow, orthonormalize
 
-__all__ = ["LinkageFlow", "linkage_rhs", "linkage_kernel", "DegenerateMetricError", "DEGENERATE", "GRAM_MIN"]
+__all__ = ["LinkageFlow", "linkage_rhs", "linkage_kernel", "DegenerateMetricError", "DEGENERATE",
+           "DEPENDENT", "GRAM_MIN"]
 
 #: Status: the KKT matrix became singular (massless disk where C = ∂F/∂(x, y, α) loses rank).
 DEGENERATE = -10
+#: Status: a projection met J Jᵀ singular (the four constraints dependent at the state), so
+#: it could not project; the kernel stops before using its factors.
+DEPENDENT = -11
 #: Smallest health det(C̃ᵀC̃) of `linkage_rhs` (``charts.flows.linkage.disk_gram``) accepted in a
 #: step with a massless disk (typical values on the default linkage ρ = 2ε: 7·10² for ε ≤ 0.2).
 GRAM_MIN = 1e-12
@@ -72,9 +76,11 @@ def _kernel(f, Z, par, mass, speed, dt, nsteps, counter, reorth_every, project_e
         counter[0] += 1
         i = counter[0]
         if project_every > 0 and i % project_every == 0:
-            project_state_linkage(y, par, mass, speed)
+            if project_state_linkage(y, par, mass, speed) != PROJ_OK:
+                return DEPENDENT, it + 1
         if R > 1 and i % reorth_every == 0:
-            project_tangent_linkage(y, X, par)
+            if project_tangent_linkage(y, X, par) != PROJ_OK:
+                return DEPENDENT, it + 1
             orthonormalize(X, w, logsum)
             if not np.isfinite(logsum[R - 2]):
                 return NONFINITE, it + 1
@@ -124,7 +130,10 @@ class LinkageFlow(StackedFlow):
         self.Z[0] = np.concatenate([q, v])
         if k:
             X = np.random.default_rng(seed).normal(size=(k, NY))
-            project_tangent_linkage(self.Z[0], X, self.par)
+            if project_tangent_linkage(self.Z[0], X, self.par) != PROJ_OK:
+                raise ValueError("q is a singular configuration of the linkage (J Jᵀ singular: "
+                                 "no tangent space to start the vectors in); check the state "
+                                 "with LinkageSystem.check_state")
             orthonormalize(X, self.w, np.zeros(k))
             self.Z[1:] = X
         self.counter = np.zeros(1, dtype=np.int64)
@@ -157,6 +166,11 @@ class LinkageFlow(StackedFlow):
                 f"while the rotors stand still: ∂F/∂(x, y, α) lost rank, det(C̃ᵀC̃) < "
                 f"{GRAM_MIN:g}). Give the disk inertia: LinkageSystem(..., disk_mass=1e-2, "
                 "disk_inertia=1e-3), or use rho > eps (docs/linkage.md).")
+        if status == DEPENDENT:
+            raise IntegrationError(
+                f"{where}: the linkage's constraints became dependent at t = {t:.17g} (J Jᵀ "
+                "singular: the state cannot be projected back onto the manifold). Start from "
+                "another state or reduce dt.")
         if status != RUNNING:
             raise IntegrationError(f"{where}: the state became non-finite at t = {t:.17g}; "
                                    "reduce dt.")
