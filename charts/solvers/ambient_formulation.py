@@ -7,9 +7,22 @@ are first integrals; with ``project=True`` the state is put back on all three af
 step (``charts.geometry.projection.project_state``) and each pʲ is made tangent again.  The
 loop monitors all three at every step.
 
+RK4 steps as the tangent kernel's step (``charts.solvers.tangent``; :func:`_step`, from the
+same stage point, sin/cos shift, state rate and step end): the stage sin/cos are the step
+start's shifted by δ = cᵢ·h·K (no libm inside a step), the start's own are carried from step
+to step and recomputed (libm) only after a projection.  So ``integrate(...,
+formulation="ambient", method="rk4")`` and ``TangentFlow(..., k=0)`` give the same bits
+(projection: ``project=True`` is the tangent kernel's ``project_every`` = 1 step, ``False``
+its 0) wherever the step cap (``charts.solvers.status``) does not bind; where it binds, near
+a singular point, the loop caps each step from its own start while the tangent kernel cuts
+dt into equal sub-steps (through Σ sin²θ ≈ 2e-6: 1.1e-7 against 5.0e-5 from DOP853 at
+rtol 1e-13, docs/integrators.md).  DOP853 evaluates libm at every stage (:func:`_rhs`).
+
 Parameters: ``par = (N, 1/m (N), m (N), speed, project, cap fraction, work (3N), weights a
-(N), level c)`` — the work area holds a sin θ, a cos θ and a sin θ/m of the point being
-evaluated, so that no hook allocates; ``ipar = (N, k)``.  The constraint is Σ a cos θ = c.
+(N), level c, step area (9N))`` — the work area holds a sin θ, a cos θ and a sin θ/m of the
+point being evaluated, the step area the step start's a sin θ, a cos θ (s₀, c₀: carried),
+the step's work and the state last projected, so that no hook allocates; ``ipar = (N, k)``.
+The constraint is Σ a cos θ = c.
 """
 from __future__ import annotations
 
@@ -20,9 +33,15 @@ from numba import njit
 
 from ..flows.ambient import multiplier, sincos, state_rate, transport_rate
 from ..geometry.projection import invariants_of, project_state, project_velocity
-from .loop import CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, Formulation
-from .rk import RHS_SIG
-from .status import step_cap
+from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, STEP_SIG,
+                   Formulation)
+from .rk import NO_REFCOUNT, RHS_SIG, rk4_node, rk4_point
+from .status import step_cap, sum_squares
+from .tangent import rk4_finish, shift_sincos, state_point_rate
+
+#: Landing steps within this relative distance of dt are the grid's step dt (the loop's time
+#: is a sum of steps, so the last step to an output time on the grid is dt up to rounding).
+LANDING_RTOL = 1e-9
 
 __all__ = ["AmbientFlow"]
 
@@ -61,6 +80,69 @@ def _rhs(y, par, dy):
     return S
 
 
+@njit(cache=True, inline="always")
+def _rk4_step(Zf, Zt, K, th, dl, s, c, f, s0, c0, minv, wts, h, n, R, L):
+    """One RK4 step of size h, in place, of eq (8) for the state Zf[:2N] and of eq (19) for
+    the R transported vectors (each N long) after it (flat, length L): the tangent kernel's
+    step (``charts.solvers.tangent._rk4_step``) stage for stage — its stage points
+    (`rk4_point`), sin/cos shifts from the step's start s0, c0 (`shift_sincos`), state rates
+    (`state_point_rate`) and step end (`rk4_finish`), eq (19) in place of eq (17) for the
+    vectors.  n, R, L unsigned (``np.uint64``) as there; K flat, stage j at offset j·L.
+    Returns the smallest S = Σ s² of the four stage points (the loop's health)."""
+    hmin = np.inf
+    for j in range(n):
+        th[j] = Zf[j]
+    for st in range(4):
+        o = np.uint64(st) * L           # offset of stage st in K
+        if st == 0:
+            for i in range(L):
+                Zt[i] = Zf[i]
+            for j in range(n):
+                s[j] = s0[j]
+                c[j] = c0[j]
+        else:
+            a = rk4_node(st) * h
+            op = o - L                  # the previous stage
+            rk4_point(Zf, K, op, a, L, Zt)
+            for j in range(n):
+                dl[j] = a * K[op + j]
+            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
+        lam, iB = state_point_rate(Zt, n, minv, s, c, K, o)
+        hmin = min(hmin, sum_squares(s, 0, n))
+        if R > 0:
+            for j in range(n):
+                f[j] = s[j] * minv[j]
+            for r in range(R):
+                oo = n + n + r * n
+                transport_rate(Zt, oo, n, Zt, 0, f, c, iB, K, o + oo)
+    rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts)
+    return hmin
+
+
+def _step(rhs, y, h, dt, par, K, ytmp, ynew):
+    """The RK4 step hook: `_rk4_step` of eqs (8) + (19) from y into ynew, s₀, c₀ in the step
+    area advancing with it; returns the smallest S = Σ (a sin θ)² of its stages (rhs
+    unused).  A landing step within rounding of dt is dt (`LANDING_RTOL`)."""
+    n = int(par[0])
+    a = 6 * n + 5                              # the step area
+    if abs(h - dt) <= LANDING_RTOL * dt:
+        h = dt
+    for i in range(y.size):
+        ynew[i] = y[i]
+    return _rk4_step(ynew, ytmp, K.reshape(K.size), par[a + 2 * n:a + 3 * n],
+                     par[a + 3 * n:a + 4 * n], par[a + 4 * n:a + 5 * n],
+                     par[a + 5 * n:a + 6 * n], par[a + 6 * n:a + 7 * n], par[a:a + n],
+                     par[a + n:a + 2 * n], par[1:1 + n], par[5 * n + 4:6 * n + 4], h,
+                     np.uint64(n), np.uint64((y.size - 2 * n) // n), np.uint64(y.size))
+
+
+def _rk4_cap(y, par, ipar):
+    """RK4's step cap (``status.step_cap``) from the carried s₀ of the step area (no libm)."""
+    n = ipar[0]
+    a = 6 * n + 5
+    return step_cap(sum_squares(par, a, n), sum_squares(y, n, n), par[2 * n + 3])
+
+
 def _cap(y, par, ipar):
     n = ipar[0]
     S = 0.0
@@ -83,16 +165,28 @@ def _project(y, par, ipar):
 
 
 def _post(y, par, ipar, t, log):
-    if par[2 * ipar[0] + 2] == 0.0:
+    n = ipar[0]
+    if par[2 * n + 2] == 0.0:
         return POST_OK
     _project(y, par, ipar)
+    w, a = 2 * n + 4, 6 * n + 5   # the projected point's libm sin/cos become the next s₀, c₀
+    for j in range(2 * n):
+        par[a + j] = par[w + j]
+    for j in range(2 * n):        # and the projected state is remembered (`_to_ambient`)
+        par[a + 7 * n + j] = y[j]
     return POST_CHANGED
 
 
 def _to_ambient(y, par, ipar, row):
+    n = ipar[0]
     for i in range(y.size):
         row[i] = y[i]
-    if par[2 * ipar[0] + 2] != 0.0:  # samples from the dense output are projected as well
+    if par[2 * n + 2] == 0.0:
+        return 0.0
+    same = True                   # the state that `_post` projected last is output as is
+    for j in range(2 * n):
+        same = same and y[j] == par[6 * n + 5 + 7 * n + j]
+    if not same:                  # samples inside a step are projected as well
         _project(row, par, ipar)
     return 0.0
 
@@ -111,13 +205,25 @@ def _hooks():
             njit(INV_SIG, cache=True)(_invariants))
 
 
+@cache
+def _rk4_hooks():
+    """RK4's own: the cap from the carried s₀ and the step hook (the tangent kernel's step)."""
+    return (njit(CAP_SIG, cache=True, error_model="numpy", **NO_REFCOUNT)(_rk4_cap),
+            njit(STEP_SIG, cache=True, error_model="numpy", **NO_REFCOUNT)(_step))
+
+
 class AmbientFlow(Formulation):
     """Eq (8) + eq (19) in ambient angles; optional projection onto the invariants."""
 
     name = "ambient"
 
-    def hooks(self):
-        return _hooks()
+    def hooks(self, method):
+        rhs, cap, post, out, inv = _hooks()
+        if method == "rk4":
+            cap, step = _rk4_hooks()
+        else:
+            step = None
+        return rhs, cap, post, out, inv, step
 
     def initial(self, theta, u, P):
         n = self.n
@@ -126,6 +232,8 @@ class AmbientFlow(Formulation):
         speed = float(sys.speed(u))
         par = np.concatenate([[n], sys.minv, sys.masses,
                               [speed, float(self.project), self.cap_fraction], np.zeros(3 * n),
-                              sys.weights, [sys.level]])
+                              sys.weights, [sys.level], sys.weights * np.sin(theta),
+                              sys.weights * np.cos(theta), np.zeros(5 * n),
+                              np.full(2 * n, np.nan)])
         ipar = np.array([n, P.shape[0]], dtype=np.int64)
         return y, par, ipar

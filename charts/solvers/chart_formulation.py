@@ -44,7 +44,8 @@ from ..flows.chart import chart_rates, point_sincos, start_sincos, structured_ra
 from ..geometry.atlas import ambient_index, best_sine, eliminated_angle_sc, eliminated_component_sc
 from ..geometry.projection import invariant_terms, rescale_speed
 from .rk import NO_REFCOUNT, RHS_SIG
-from .loop import CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG,
+                   Formulation)
 from .status import CHART_MIN_RATIO, DOMAIN, DOMAIN_CAP_FRACTION, step_cap
 
 __all__ = ["ChartFlow", "leave_chart", "switch_rule", "should_leave", "DEFAULT_TAU", "chart_condition_bound"]
@@ -276,8 +277,8 @@ class ChartFlow(Formulation):
             raise ValueError(f"chart must be None or an integer in 0..{self.n - 1}, got {chart!r}")
         self.chart = chart
 
-    def hooks(self):
-        return (chart_rhs(self.n, self.system.is_paper_family),) + _common_hooks()
+    def hooks(self, method):
+        return (chart_rhs(self.n, self.system.is_paper_family),) + _common_hooks() + (None,)
 
     def initial(self, theta, u, P):
         n = self.n
