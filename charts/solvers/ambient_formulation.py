@@ -223,7 +223,7 @@ class AmbientFlow(Formulation):
             cap, step = _rk4_hooks()
         else:
             step = None
-        return rhs, cap, post, out, inv, step
+        return rhs, step, cap, post, out, inv
 
     def initial(self, theta, u, P):
         n = self.n

@@ -278,7 +278,7 @@ class ChartFlow(Formulation):
         self.chart = chart
 
     def hooks(self, method):
-        return (chart_rhs(self.n, self.system.is_paper_family),) + _common_hooks() + (None,)
+        return (chart_rhs(self.n, self.system.is_paper_family), None) + _common_hooks()
 
     def initial(self, theta, u, P):
         n = self.n

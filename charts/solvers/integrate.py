@@ -234,7 +234,7 @@ def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, for
         raise ValueError("tau and chart apply to formulation='chart'")
     form = form_cls(system, project=project, cap_fraction=CAP_FRACTION[method], **kw)
     y, par, ipar = form.initial(theta0, sign * u0, P)
-    rhs, cap, post, to_amb, invariants, step = form.hooks(method)
+    rhs, step, cap, post, to_amb, invariants = form.hooks(method)
     st, ist = D.new_state(_METHODS[method], t_final, dt, rtol_v, atol_v, float(system.energy(u0)),
                           TOLERANCES["singular_S"], use_eval, int(chunk_steps), dense)
     ny = y.size

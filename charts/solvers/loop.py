@@ -378,10 +378,11 @@ dense_sample = _CompiledOnUse(_dense_sample, _i8(_OUT_TYPE, _m, _im, _i8, _iv, _
 class Formulation:
     """Base of the formulations driven by :func:`drive`.  A subclass supplies
 
-    * ``hooks(method)`` → ``(rhs, cap, post, to_ambient, invariants, step)`` for ``method``
-      ("rk4" or "dop853"), compiled with :data:`charts.solvers.rk.RHS_SIG`, :data:`CAP_SIG`,
-      :data:`POST_SIG`, :data:`OUT_SIG`, :data:`INV_SIG`, :data:`STEP_SIG` (see the module
-      docstring; ``step`` is only called by RK4, and may be None: the generic step);
+    * ``hooks(method)`` → ``(rhs, step, cap, post, to_ambient, invariants)`` (the order of
+      :data:`drive`'s arguments) for ``method`` ("rk4" or "dop853"), compiled with
+      :data:`charts.solvers.rk.RHS_SIG`, :data:`STEP_SIG`, :data:`CAP_SIG`, :data:`POST_SIG`,
+      :data:`OUT_SIG`, :data:`INV_SIG` (see the module docstring; ``step`` is only called by
+      RK4, and may be None: the generic step);
     * ``initial(theta, u, P)`` → ``(y, par, ipar)``: the formulation's state, float
       parameters and int parameters for the ambient start (θ, u, transported vectors P,
       shape (k, n)).
