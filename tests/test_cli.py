@@ -121,6 +121,7 @@ LONG = """name = "long"
 n = 3
 [run]
 t_final = 20000.0
+t_transient = 0.0        # the first checkpoint is then after 500 time units of the run
 sample_dt = 1.0
 checkpoint_every = 500.0
 [effects.lyapunov]

@@ -23,6 +23,7 @@ from charts.analyses.curvature import curvature_along_trajectory
 from charts.analyses.hyperbolicity import hyperbolicity_angles
 from charts.flows.ambient import flow_rhs, flow_tangent_rhs
 from charts.geometry.system import CriticalLevelWarning, critical_levels
+from charts.solvers.tangent import TangentFlow
 
 from scenarios import TOL
 
@@ -89,8 +90,13 @@ def test_points_and_tangents_of_a_weighted_system():
 #: ``/tmp/family_ref.py`` run with that checkout first on PYTHONPATH); the new code must give
 #: the same bits (multiplying by aᵢ = 1.0 and adding c = 0.0 are exact).
 REF_LYAP = ['0x1.5645fb90101d0p-2', '0x1.c2f0404255f90p-3', '0x1.03969b8daf95ep-3']
-REF_TRAJ = ['-0x1.9820f9a4bda95p+0', '-0x1.955000e29579cp+1', '0x1.f264a721fdcb1p-2',
-            '-0x1.6da993ae514bfp+2', '-0x1.2cd044f737802p+1']
+#: The ambient RK4 trajectory since it takes the tangent kernel's step (stage sin/cos shifted
+#: from the step's start; tests/test_ambient_tangent_identity.py): the code before weights
+#: gave REF_TRAJ_LIBM (libm at every stage), 3.7e-14 away after 500 projected steps.
+REF_TRAJ = ['-0x1.9820f9a4bda4dp+0', '-0x1.955000e29577ep+1', '0x1.f264a721fddf6p-2',
+            '-0x1.6da993ae51495p+2', '-0x1.2cd044f7377d9p+1']
+REF_TRAJ_LIBM = ['-0x1.9820f9a4bda95p+0', '-0x1.955000e29579cp+1', '0x1.f264a721fdcb1p-2',
+                 '-0x1.6da993ae514bfp+2', '-0x1.2cd044f737802p+1']
 #: Route (a) since it shares the first stage of its ±Δt steps and shifts sin/cos between
 #: stages (libm before: the sum differs by 6.6e-14 relative, each K by ≤ 4.4e-12).
 REF_CURV = ('-0x1.0d47cbd01bbadp+3', '-0x1.0d40590dd10dep+3')
@@ -108,6 +114,11 @@ def test_paper_case_is_bit_for_bit_the_code_before_weights(weights):
     assert _h(r.exponents) == REF_LYAP
     res = integrate(s, th, u, 5.0, formulation="ambient", method="rk4", dt=0.01, project=True)
     assert _h(res.theta[-1]) == REF_TRAJ
+    flow = TangentFlow(s, th, u, 0, dt=0.01, project_every=1)   # the same step, bit for bit
+    flow.advance(500)
+    assert _h(flow.y[:5]) == REF_TRAJ
+    libm = np.array([float.fromhex(x) for x in REF_TRAJ_LIBM])
+    assert np.max(np.abs(res.theta[-1] - libm)) < 5e-14      # the change of route: 3.7e-14
     s4 = RotorSystem(4)
     th4, u4 = s4.random_state(seed=2)
     c = curvature_along_trajectory(s4, th4, u4, 2.0, t_transient=1.0)

@@ -182,6 +182,38 @@ def test_reference_page_documents_every_key():
             assert re.search(rf"`{key}`", text), f"[effects.{effect}] {key} missing"
 
 
+def test_reference_page_gives_the_schemas_defaults():
+    """The default column of every key table in docs/scenes.md shows the schema's default as
+    a scene gets it (an API default resolved from the signature, and that function named)."""
+    from charts.runs.scene_schema import API, FromAPI
+
+    def fmt(v):
+        if isinstance(v, bool):
+            return f"`{str(v).lower()}`"
+        return f'`"{v}"`' if isinstance(v, str) else f"`{v!r}`"
+
+    section, seen = None, 0
+    for line in DOCS.read_text().splitlines():
+        m = re.match(r"^#+ \[(.+)\]$", line)
+        if m:
+            section = m.group(1)
+        m = re.match(r"^\| `(\w+)` \|[^|]*\| ([^|]*) \|", line)
+        if not (m and section):
+            continue
+        table = EFFECTS[section[8:]] if section.startswith("effects.") else SCHEMA.get(section)
+        if table is None or m.group(1) not in table:
+            continue
+        key, cell = table[m.group(1)], m.group(2)
+        if key.required:
+            assert cell == "**required**", line
+        elif key.value is not None:
+            assert cell.startswith(fmt(key.value)), (line, fmt(key.value))
+            if isinstance(key.default, FromAPI):
+                assert f"`{API[key.default.effect].split(':')[1]}`" in cell, line
+        seen += 1
+    assert seen == sum(len(t) for t in SCHEMA.values()) + sum(len(t) for t in EFFECTS.values())
+
+
 def test_every_key_level_problem_is_reported_at_once():
     """Unknown keys, wrong types and bad values in several sections and effects come back
     together in one SceneError (one line, counted), not one per run of the command."""

@@ -15,7 +15,7 @@ from numba import njit
 
 __all__ = ["chart_coordinates", "local_masses", "local_weights", "ambient_index", "local_index",
            "eliminated_component", "eliminated_angle", "eliminated_component_sc",
-           "eliminated_angle_sc"]
+           "eliminated_angle_sc", "best_sine", "best_charts"]
 
 
 def chart_coordinates(n: int, k: int) -> list[int]:
@@ -43,6 +43,33 @@ def ambient_index(a, k):
 def local_index(i, k):
     """Local coordinate of ambient index i ≠ k in chart k (the inverse of `ambient_index`)."""
     return i if i < k else i - 1
+
+
+@njit(cache=True, inline="always")
+def best_sine(s_local, s_k, k):
+    """(j, |s_j|): the ambient index j of the largest |aᵢ sin θᵢ| (ties: the lowest index)
+    and that value, from the local values ``s_local`` of chart k (shape (N − 1,), local order)
+    and the eliminated rotor's ``s_k``; signs are ignored.  The one argmax of the atlas:
+    `best_charts`, ``RotorSystem.best_chart`` and the switching rule
+    (``charts.solvers.chart_formulation.switch_rule``) all call it."""
+    j = -1
+    smax = -1.0
+    for i in range(s_local.size + 1):
+        s = abs(s_k) if i == k else abs(s_local[local_index(i, k)])
+        if s > smax:
+            smax = s
+            j = i
+    return j, smax
+
+
+@njit(cache=True)
+def best_charts(s):
+    """`best_sine` of each row of ``s`` = |aᵢ sin θᵢ|, shape (M, N) (ambient order, read as
+    chart 0: s_k = s[:, 0]): the best conditioned chart of each point, shape (M,), int64."""
+    out = np.empty(s.shape[0], dtype=np.int64)
+    for r in range(s.shape[0]):
+        out[r] = best_sine(s[r, 1:], s[r, 0], 0)[0]
+    return out
 
 
 @njit(cache=True, inline="always")

@@ -21,7 +21,7 @@ import warnings
 
 import numpy as np
 
-from .atlas import chart_coordinates, eliminated_angle, local_masses, local_weights
+from .atlas import best_charts, chart_coordinates, eliminated_angle, local_masses, local_weights
 from .checks import finite_array, integer, number
 from .kernels import geometry
 from .projection import project_constraint, tangent_part
@@ -215,9 +215,11 @@ class RotorSystem:
     def best_chart(self, theta):
         """The chart with the largest |aₖ sin θₖ| (the best conditioned metric; |sin θₖ| for
         the paper's weights; ties: the lowest index) at theta (N,), an int; or at each of the
-        points theta (..., N), an int array."""
-        k = np.argmax(np.abs(self.weights * np.sin(theta)), axis=-1)
-        return int(k) if np.ndim(k) == 0 else k
+        points theta (..., N), an int array: the switching rule's argmax
+        (``charts.geometry.atlas.best_sine``)."""
+        s = np.abs(self.weights * np.sin(np.asarray(theta, dtype=float)))
+        k = best_charts(np.ascontiguousarray(s.reshape(-1, self.n))).reshape(s.shape[:-1])
+        return int(k) if k.ndim == 0 else k
 
     def _chart(self, theta, chart):
         """(k, local indices, q, local masses, local weights) of ``chart`` at theta."""

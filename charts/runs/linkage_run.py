@@ -63,7 +63,7 @@ def linkage_angles_pass(st) -> None:
     sc = st.scene
     dt = sc.integrator["dt"]
     res = linkage_angles(st.system, st.y0[:NQ], st.y0[NQ:], sc.run["t_final"], dt=dt,
-                         t_transient=sc.run["t_transient"],
+                         t_transient=sc.effects["angles"]["t_transient"],
                          sample_every=sc.effects["angles"]["sample_every"],
                          project_every=st.flow.project_every * dt or None,
                          seed=sc.initial["seed"] or 0)

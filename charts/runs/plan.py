@@ -92,7 +92,8 @@ def linkage_angles_plan(scene) -> dict:
     """The angles pass of `linkage_angles`: forward t_transient + t_final + t_transient,
     backward t_final + t_transient, two vectors each, re-orthonormalised every step."""
     dt = scene.integrator["dt"]
-    n_tr, total = ticks(scene.run["t_transient"], dt), ticks(scene.run["t_final"], dt)
+    n_tr = ticks(scene.effects["angles"]["t_transient"], dt)
+    total = ticks(scene.run["t_final"], dt)
     steps = (2 * n_tr + total) + (n_tr + total)
     return {"forward_vectors": 2, "adjoint_vectors": 2, "steps": steps,
             "rhs_evaluations": 4 * steps, "stored_trajectory_checkpoints": 0,
@@ -140,7 +141,7 @@ def plan_scene(scene: Scene) -> Plan:
         a = eff["angles"]
         dt = integ["dt"]
         m = a["n_vectors"]
-        n_tr = ticks(run["t_transient"], dt)
+        n_tr = ticks(a["t_transient"], dt)
         ce = ANGLES_CHECKPOINT_STEPS
         nseg = -(-(2 * n_tr + ticks(run["t_final"], dt)) // ce)
         plan.adjoint_vectors = m
@@ -155,7 +156,7 @@ def plan_scene(scene: Scene) -> Plan:
         dt = integ["dt"]
         variants = ["full", "restricted"] if c["variant"] == "both" else [c["variant"]]
         sample = ticks(c["sample_every"], dt)
-        n_tr = ticks(run["t_transient"], dt)
+        n_tr = ticks(c["t_transient"], dt)
         stored = ticks(run["t_final"], c["sample_every"]) + max(1, -(-n_tr // sample))
         plan.clv = {"variants": variants,
                     "vectors": {v: clv_dimension(n, v) for v in variants},

@@ -267,7 +267,7 @@ def _angles_pass(st: RunState):
     dt = sc.integrator["dt"]
     n = sys_.n
     res = hyperbolicity_angles(sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
-                               n_unstable=a["n_vectors"], t_transient=sc.run["t_transient"],
+                               n_unstable=a["n_vectors"], t_transient=a["t_transient"],
                                sample_every=a["sample_every"],
                                checkpoint_every=ANGLES_CHECKPOINT_STEPS * dt,
                                project_every=st.flow.project_every * dt or None,
@@ -296,7 +296,7 @@ def _clv_pass(st: RunState):
             continue
         r = covariant_lyapunov_vectors(
             sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], variant=variant, dt=dt,
-            n_unstable=c["n_vectors"], t_transient=sc.run["t_transient"],
+            n_unstable=c["n_vectors"], t_transient=c["t_transient"],
             sample_every=c["sample_every"], project_every=st.flow.project_every * dt or None,
             seed=sc.initial["seed"] or 0)
         cols += [r.phi, r.phi_vectors]

@@ -34,7 +34,7 @@ from .scene_checks import (Problems, multiple_of, section_values, table_values, 
                            where)
 from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
                             system_kind_problems)
-from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError
+from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError, api_default
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
            "scene_to_dict"]
@@ -133,7 +133,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                 raise SceneError(f"{where(source, 'integrator', key)} = {raw_int[key]!r} is not "
                                  "allowed with method = 'rk4' (fixed step: set dt, or use "
                                  "method = 'dop853')")
-        integ["dt"] = integ["dt"] if integ["dt"] is not None else 0.01
+        integ["dt"] = integ["dt"] if integ["dt"] is not None else api_default("lyapunov", "dt")
         try:                # the API's step-size policy (status.check_step): the rotors' cap
             if not linkage:
                 check_step(integ["dt"], system["speed"], n)
@@ -146,6 +146,8 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                              "method = 'rk4')")
         integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
         # atol: None = integrate's default, rtol·min(1, speed)
+
+    _transients(linkage, run, "t_transient" in raw_run, effects)
 
     # -- run: times on the grids ---------------------------------------------------------------
     grid = integ["dt"] if method == "rk4" else None
@@ -174,6 +176,26 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
 
     return Scene(name=name, description=top["description"], system=system, initial=initial,
                  integrator=integ, run=run, effects=effects, source=source)
+
+
+def _transients(linkage, run, written, effects):
+    """Fill in the transients left out: each pass gets the default of the API call it
+    mirrors (``scene_schema.API``); a written ``[run] t_transient`` is every pass's."""
+    passes = {"angles": "linkage_angles" if linkage else "angles", "clv": "clv"}
+    for name, api in passes.items():
+        if name in effects and effects[name]["t_transient"] is None:
+            effects[name]["t_transient"] = (run["t_transient"] if written
+                                            else api_default(api, "t_transient"))
+    if written:
+        return
+    main = [e for e in ("lyapunov", "curvature") if e in effects]
+    if main:
+        run["t_transient"] = api_default("linkage" if linkage else main[0], "t_transient")
+    elif any(e not in passes for e in effects):    # waveforms, spectrum, drift, switches
+        run["t_transient"] = api_default("waveforms", "t_transient")
+    else:                                          # only the passes: the first one's
+        run["t_transient"] = next((effects[e]["t_transient"] for e in passes if e in effects),
+                                  0.0)
 
 
 def _check_rotors(source, system, raw_sys, initial, raw_init):
@@ -334,6 +356,9 @@ def _check_effects(source, n, integ, run, effects):
                              "positive exponents)")
         multiple_of(source, sect(name), "sample_every", a["sample_every"], integ["dt"],
                   "[integrator] dt")
+        if a["t_transient"] > 0:
+            multiple_of(source, sect(name), "t_transient", a["t_transient"], integ["dt"],
+                        "[integrator] dt")
     if "clv" in effects:
         c = effects["clv"]
         multiple_of(source, "run", "t_final", run["t_final"], c["sample_every"],

@@ -126,7 +126,7 @@ def table_values(source, raw, section, schema, problems, allowed=None):
             problems.messages.append(str(unknown_key(source, section, key, allowed)))
     out = {}
     for key, spec in schema.items():
-        out[key] = spec.default
+        out[key] = spec.value
         if key in raw:
             with problems.check():
                 out[key] = coerce(source, section, key, spec, raw[key])

@@ -110,7 +110,8 @@ def check_linkage_effects(source, run, effects, raw_eff) -> None:
                              f"{a['n_vectors']!r} is not allowed with kind = 'linkage': the "
                              "linkage's test follows 2 vectors (its 2 positive exponents)")
         from .scene_checks import multiple_of
-        for key in ("t_final", "t_transient"):
-            if run[key] > 0:
-                multiple_of(source, "run", key, run[key], a["sample_every"],
+        for sec, key, value in (("run", "t_final", run["t_final"]),
+                                ("effects.angles", "t_transient", a["t_transient"])):
+            if value > 0:
+                multiple_of(source, sec, key, value, a["sample_every"],
                             "[effects.angles] sample_every")

@@ -1,13 +1,59 @@
 """The scene schema: every key of a scene file, its type, default, allowed values and the
-help text that ``docs/scenes.md`` documents (the tests check the page against it)."""
+help text that ``docs/scenes.md`` documents (the tests check the page against it).
+
+A key that a scene forwards to an API call takes that call's default (:class:`FromAPI`: read
+from the function's signature, never copied here), so a scene that leaves it out and the API
+call that leaves it out compute the same numbers.  :data:`API` names the call each effect
+mirrors."""
 from __future__ import annotations
 
+import importlib
+import inspect
 from dataclasses import dataclass
+from functools import cache
 from typing import Any, Callable
 
 from ..analyses.arguments import GRID_RTOL
 
-__all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL"]
+__all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL",
+           "API", "FromAPI", "api_default"]
+
+#: The API call each effect mirrors (``module:function``); ``linkage`` and
+#: ``linkage_angles``: the main pass and the angles pass of a linkage scene.
+API = {
+    "lyapunov": "charts.analyses.lyapunov:lyapunov_spectrum",
+    "curvature": "charts.analyses.curvature:curvature_along_trajectory",
+    "angles": "charts.analyses.hyperbolicity:hyperbolicity_angles",
+    "clv": "charts.analyses.covariant:covariant_lyapunov_vectors",
+    "waveforms": "charts.analyses.spectra:waveform",
+    "linkage": "charts.analyses.linkage:linkage_run",
+    "linkage_angles": "charts.analyses.linkage_angles:linkage_angles",
+}
+
+
+@cache
+def api_default(function: str, parameter: str):
+    """The default of ``parameter`` in the signature of ``function`` (``module:name``, or a
+    key of :data:`API`)."""
+    module, name = API.get(function, function).split(":")
+    sig = inspect.signature(getattr(importlib.import_module(module), name))
+    return sig.parameters[parameter].default
+
+
+@dataclass(frozen=True)
+class FromAPI:
+    """A scene default that is the API's own: ``parameter``'s default in the signature of
+    the call that :data:`API` names for ``effect``."""
+    effect: str
+    parameter: str
+
+    @property
+    def value(self):
+        return api_default(self.effect, self.parameter)
+
+    def __str__(self):
+        return f"{API[self.effect].split(':')[1]}'s {self.parameter} ({self.value!r})"
+
 
 
 class SceneError(ValueError):
@@ -25,6 +71,11 @@ class Key:
     choices: tuple = ()
     check: Callable[[Any], str | None] | None = None
     required: bool = False
+
+    @property
+    def value(self):
+        """The default a scene gets (a :class:`FromAPI` read from the API's signature)."""
+        return self.default.value if isinstance(self.default, FromAPI) else self.default
 
 
 def _gt(lo):
@@ -97,7 +148,8 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "method": Key("str", "rk4", "\"rk4\": classical fixed-step Runge–Kutta (the paper's); "
                       "\"dop853\": adaptive embedded 8(5,3) with rtol/atol.",
                       choices=("rk4", "dop853")),
-        "dt": Key("float", None, "RK4 step (default 0.01, the paper's). rk4 only.", check=_gt(0)),
+        "dt": Key("float", None, "RK4 step (default: the analyses' dt, 0.01, the paper's). "
+                  "rk4 only.", check=_gt(0)),
         "rtol": Key("float", None, "Relative tolerance (default 1e-10). dop853 only.",
                     check=_between(1e-15, 1e-1)),
         "atol": Key("float", None, "Absolute tolerance (default rtol·min(1, speed), as "
@@ -105,7 +157,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
                     check=_between(1e-18, 1e-1)),
         "project": Key("bool", False, "Project back onto the invariants after every step "
                        "(overrides project_every)."),
-        "project_every": Key("float", 1.0, "Time between projections of the state onto the "
+        "project_every": Key("float", FromAPI("lyapunov", "project_every"), "Time between projections of the state onto the "
                              "invariants (constraint, tangency, energy) for ambient RK4, as "
                              "project_every of the analyses; 0 = never. A multiple of dt.",
                              check=_ge(0)),
@@ -113,8 +165,12 @@ SCHEMA: dict[str, dict[str, Key]] = {
     "run": {
         "t_final": Key("float", None, "Simulated time after the transient.", check=_gt(0),
                        required=True),
-        "t_transient": Key("float", 0.0, "Time integrated first and discarded (also settles "
-                           "the Lyapunov vectors).", check=_ge(0)),
+        "t_transient": Key("float", None, "Time integrated first and discarded (also settles "
+                           "the Lyapunov vectors). Default: the API's default of the call the "
+                           "main pass mirrors: lyapunov_spectrum's with lyapunov, else "
+                           "curvature_along_trajectory's with curvature (linkage: "
+                           "linkage_run's), else waveform's; with only angles or clv, "
+                           "that pass's. Written, it is every pass's transient.", check=_ge(0)),
         "sample_dt": Key("float", None, "Interval between stored samples (default: dt for "
                          "rk4, 0.01 for dop853); a multiple of dt for rk4.", check=_gt(0)),
         "checkpoint_every": Key("float", None, "Simulated time between checkpoints / progress "
@@ -140,11 +196,11 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "n_exponents": Key("int", None, "Number of exponents (default N−2, the positive "
                            "ones; at most N−1 with the θ product, 2N−2 with the full one).",
                            check=_ge(1)),
-        "inner_product": Key("str", "theta", "\"theta\": the paper's θ-only product (sec. 2); "
+        "inner_product": Key("str", FromAPI("lyapunov", "inner"), "\"theta\": the paper's θ-only product (sec. 2); "
                              "\"full\": all 2N components.", choices=("theta", "full")),
-        "n_batches": Key("int", 20, "Batches for the batch-means standard error.",
+        "n_batches": Key("int", FromAPI("lyapunov", "n_batches"), "Batches for the batch-means standard error.",
                          check=_ge(2)),
-        "reorth_every": Key("float", 0.1, "Time between re-orthonormalisations (eq 18); a "
+        "reorth_every": Key("float", FromAPI("lyapunov", "reorth_every"), "Time between re-orthonormalisations (eq 18); a "
                             "multiple of dt that divides t_final.", check=_gt(0)),
     },
     "curvature": {
@@ -154,7 +210,7 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "n_directions": Key("int", None, "Diagonal elements K_ii (planes velocity × i-th "
                             "Lyapunov vector) to record (default N−2, at most N−2).",
                             check=_ge(1)),
-        "sample_every": Key("float", 0.1, "Simulated time between curvature samples; a "
+        "sample_every": Key("float", FromAPI("curvature", "sample_every"), "Simulated time between curvature samples; a "
                             "multiple of dt.", check=_gt(0)),
     },
     "angles": {
@@ -164,8 +220,11 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2, at "
                          "most N−2).",
                          check=_ge(1)),
-        "sample_every": Key("float", 0.1, "Simulated time between angle samples; a multiple "
-                            "of dt.", check=_gt(0)),
+        "sample_every": Key("float", FromAPI("angles", "sample_every"), "Simulated time "
+                            "between angle samples; a multiple of dt.", check=_gt(0)),
+        "t_transient": Key("float", None, "Transient of the angles pass (default: [run] "
+                           "t_transient where written, else hyperbolicity_angles's; "
+                           "linkage: linkage_angles's); a multiple of dt.", check=_ge(0)),
     },
     "clv": {
         "variant": Key("str", "both", "Covariant Lyapunov vectors (Ginelli's method) in "
@@ -174,13 +233,16 @@ EFFECTS: dict[str, dict[str, Key]] = {
                        choices=("full", "restricted", "both")),
         "n_vectors": Key("int", None, "Dimension m of the expanding subspace (default N−2, at "
                          "most N−2).", check=_ge(1)),
-        "sample_every": Key("float", 0.1, "Simulated time between samples, which are also the "
+        "sample_every": Key("float", FromAPI("clv", "sample_every"), "Simulated time between samples, which are also the "
                             "re-orthonormalisations giving the R factors; a multiple of dt.",
                             check=_gt(0)),
         "windows": Key("floats", None, "Window lengths of the finite-time exponents and of the "
                        "domination test (default [1.0, 10.0]); multiples of sample_every.",
                        check=lambda v: None if v and all(x > 0 for x in v)
                        else "a non-empty list of numbers, each > 0"),
+        "t_transient": Key("float", None, "Transient of the CLV pass (default: [run] "
+                           "t_transient where written, else covariant_lyapunov_vectors's); "
+                           "a multiple of dt.", check=_ge(0)),
     },
     "switches": {},
     "drift": {

@@ -13,7 +13,8 @@ the local masses are ``(m without mₖ, mₖ)``).
 On the family Σ aᵢ cos θᵢ = c every |sin θᵢ| below is the weighted |aᵢ sin θᵢ| (the
 components of ∇F; the paper's a = 1 gives the same numbers).
 
-Switching (:func:`leave_chart`): after every accepted step the chart is left when
+Switching (:func:`switch_rule`, one home with ``RotorSystem.best_chart``'s argmax;
+:func:`leave_chart` on ambient values): after every accepted step the chart is left when
 |sin θₖ| < τ · maxᵢ |sin θᵢ| for the chart with the largest |sin θᵢ| (ties: lowest index).
 The new chart has ratio 1 ≥ τ, so the rule cannot flip back at once (hysteresis by
 construction); the metric condition number in chart k is 1 + Σ_{α≠k} m_k sin²θ_α /
@@ -40,13 +41,14 @@ import numpy as np
 from numba import njit
 
 from ..flows.chart import chart_rates, point_sincos, start_sincos, structured_rates, work_area
-from ..geometry.atlas import ambient_index, eliminated_angle_sc, eliminated_component_sc, local_index
+from ..geometry.atlas import ambient_index, best_sine, eliminated_angle_sc, eliminated_component_sc
 from ..geometry.projection import invariant_terms, rescale_speed
 from .rk import NO_REFCOUNT, RHS_SIG
-from .loop import CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG, Formulation
+from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_LOG_FULL, POST_OK, POST_SIG,
+                   Formulation)
 from .status import CHART_MIN_RATIO, DOMAIN, DOMAIN_CAP_FRACTION, step_cap
 
-__all__ = ["ChartFlow", "leave_chart", "DEFAULT_TAU", "chart_condition_bound"]
+__all__ = ["ChartFlow", "leave_chart", "switch_rule", "should_leave", "DEFAULT_TAU", "chart_condition_bound"]
 
 #: Default switching threshold τ (docs/integrators.md, "Switching threshold"): τ ≥ 0.9 keeps
 #: cond(g) ≤ 6 and the chart within a few times the ambient error; 0.9, 0.95 and 0.99 are
@@ -69,19 +71,30 @@ def should_leave(sin_k_abs, sin_max, tau):
     return sin_k_abs < tau * sin_max
 
 
+@njit(cache=True, inline="always")
+def switch_rule(s_local, s_k, k, tau):
+    """The switching rule, the one that runs (``_post``) and the one tested: (j, smax), j the
+    chart to switch to from chart ``k`` or −1 to stay, smax = maxᵢ |aᵢ sin θᵢ|.
+
+    ``s_local`` : aᵢ sin θᵢ of the local coordinates of chart k (local order), shape (N − 1,);
+    ``s_k`` : aₖ sin θₖ of the eliminated rotor (signs are ignored).  Leave when
+    :func:`should_leave` for the argmax ``charts.geometry.atlas.best_sine`` (lowest index on
+    ties).  Pure: allocates nothing."""
+    j, smax = best_sine(s_local, s_k, k)
+    if should_leave(abs(s_k), smax, tau):
+        return j, smax
+    return -1, smax
+
+
 @njit(cache=True)
 def leave_chart(sin_abs, k, tau):
-    """The chart to switch to from chart ``k``, or −1 to stay.
-
-    ``sin_abs`` : |aᵢ sin θᵢ| (weights a; the paper's |sin θᵢ|), shape (N,).  Leave when :func:`should_leave`, for the argmax
-    of ``sin_abs`` (lowest index on ties).  Pure function of its arguments."""
-    j = 0
-    for i in range(1, sin_abs.size):
-        if sin_abs[i] > sin_abs[j]:
-            j = i
-    if should_leave(sin_abs[k], sin_abs[j], tau):
-        return j
-    return -1
+    """The chart to switch to from chart ``k``, or −1 to stay: :func:`switch_rule` on the
+    ambient ``sin_abs`` = |aᵢ sin θᵢ| (weights a; the paper's |sin θᵢ|), shape (N,)."""
+    n = sin_abs.size
+    s_local = np.empty(n - 1)
+    for a in range(n - 1):
+        s_local[a] = sin_abs[ambient_index(a, k)]
+    return switch_rule(s_local, sin_abs[k], k, tau)[0]
 
 
 def chart_condition_bound(n, tau, masses=None):
@@ -165,17 +178,10 @@ def _post(y, par, ipar, t, log):
         for a in range(d):
             y[d + a] *= f
         code = POST_CHANGED
-    # argmax of |aᵢ sin θᵢ| over the ambient angles, ties to the lowest index (as leave_chart)
-    j = -1
-    smax = -1.0
-    gk = abs(w[d] * sk)
-    for i in range(n):
-        s = gk if i == k else abs(ws[local_index(i, k)])
-        if s > smax:
-            smax = s
-            j = i
-    if not should_leave(gk, smax, par[_b(n) + _TAU]):
-        if gk < CHART_MIN_RATIO * smax:  # kept (no switch) up to its edge: stop
+    gk = w[d] * sk
+    j, smax = switch_rule(ws, gk, k, par[_b(n) + _TAU])
+    if j < 0:
+        if abs(gk) < CHART_MIN_RATIO * smax:  # kept (no switch) up to its edge: stop
             return DOMAIN
         return code
     nv = ipar[1]
@@ -271,8 +277,8 @@ class ChartFlow(Formulation):
             raise ValueError(f"chart must be None or an integer in 0..{self.n - 1}, got {chart!r}")
         self.chart = chart
 
-    def hooks(self):
-        return (chart_rhs(self.n, self.system.is_paper_family),) + _common_hooks()
+    def hooks(self, method):
+        return (chart_rhs(self.n, self.system.is_paper_family), None) + _common_hooks()
 
     def initial(self, theta, u, P):
         n = self.n

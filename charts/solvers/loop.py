@@ -1,13 +1,19 @@
 """The integration loop shared by both formulations, compiled once and driven in chunks.
 
-A *formulation* (``charts.solvers.ambient_formulation``, ``charts.solvers.chart_formulation``) supplies five compiled
-hooks; the loop here supplies everything else (stepping, step-size control, output at the
+A *formulation* (``charts.solvers.ambient_formulation``, ``charts.solvers.chart_formulation``) supplies six compiled
+hooks; the loop here supplies everything else (time, step-size control, output at the
 requested times, invariant monitoring, counters, status codes).  The contract:
 
 ``rhs(y, par, dy) -> health``  (:data:`charts.solvers.rk.RHS_SIG`)
     Time derivative of the formulation's state ``y``, shape (ny,).  ``health`` is
     S = Σᵢ sin²θᵢ at the point (S → 0 only at the N = 4 singular points), or a negative
     number if ``y`` is outside the domain of the formulation's coordinates.
+``step(rhs, y, h, dt, par, K, ytmp, ynew) -> health``  (:data:`STEP_SIG`), or None
+    One RK4 step of size ``h`` (``dt``: the nominal step; h differs from it when the step
+    lands on an output time) from ``y`` into ``ynew`` (``y`` unchanged; ``K`` (16, ny),
+    ``ytmp`` (ny,) work), returning the smallest health it saw.  None: the generic step,
+    `charts.solvers.rk.rk4_step` of ``rhs``, compiled into the loop (:data:`drive`); a
+    formulation may supply its own (the ambient one: the tangent kernel's step, bit for bit).
 ``cap(y, par, ipar) -> hmax``  (:data:`CAP_SIG`)
     Largest step the formulation accepts from ``y`` (resolution of the geometry near
     singular points and chart boundaries; see ``charts.solvers.status``).
@@ -42,7 +48,7 @@ from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FU
 from .rk import (INTERPOLATOR_POWER, NO_REFCOUNT, RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense,
                  dop853_step, hermite_dense, initial_step, rk4_step, step_factor)
 
-__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "drive", "new_state", "monitor", "Formulation",
+__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "STEP_SIG", "drive", "new_state", "monitor", "Formulation",
            "segment_layout", "dense_sample",
            "POST_OK", "POST_CHANGED", "POST_LOG_FULL", "METHOD_RK4", "METHOD_DOP853"]
 
@@ -56,6 +62,7 @@ CAP_SIG = _f8(_v, _v, _iv)
 POST_SIG = _i8(_v, _v, _iv, _f8, _m)
 OUT_SIG = _f8(_v, _v, _iv, _v)
 INV_SIG = _f8(_v, _v, _iv, _v)
+STEP_SIG = _f8(RHS_TYPE, _v, _f8, _f8, _v, _m, _v, _v)
 
 # float state
 S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
@@ -128,8 +135,8 @@ def _record_segment(row, irow, t, h, y, F, par, ipar):
         irow[i] = ipar[i]
 
 
-def _drive(rhs, cap, post, to_ambient, invariants, y, par, ipar, st, ist, t_eval, T_out, Y_out,
-           log, mon, K, F, ytmp, ynew, inv, Seg, ISeg):
+def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, t_eval, T_out,
+           Y_out, log, mon, K, F, ytmp, ynew, inv, Seg, ISeg):
     """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
     accepted steps.  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
     times ``t_eval`` (if ``ist[I_USE_EVAL]``; ``Y_out`` then has a row for every one of
@@ -181,7 +188,10 @@ def _drive(rhs, cap, post, to_ambient, invariants, y, par, ipar, st, ist, t_eval
                 t_new = t_next
             else:
                 t_new = t + h
-            hs = rk4_step(rhs, y, h, par, K, ytmp, ynew)
+            if step is None:  # (pruned at compile time: two specialisations, `drive`)
+                hs = rk4_step(rhs, y, h, par, K, ytmp, ynew)
+            else:
+                hs = step(rhs, y, h, st[S_DT], par, K, ytmp, ynew)
             ist[I_NRHS] += 4
             if hs < 0.0:
                 status = DOMAIN
@@ -292,13 +302,17 @@ def _drive(rhs, cap, post, to_ambient, invariants, y, par, ipar, st, ist, t_eval
     return status
 
 
+_STEP_TYPE = types.FunctionType(STEP_SIG)
 _CAP_TYPE = types.FunctionType(CAP_SIG)
 _POST_TYPE = types.FunctionType(POST_SIG)
 _OUT_TYPE = types.FunctionType(OUT_SIG)
 _INV_TYPE = types.FunctionType(INV_SIG)
 _im = types.int64[:, ::1]
-DRIVE_SIG = _i8(RHS_TYPE, _CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _v, _iv, _v, _v,
-                _m, _m, _v, _m, _m, _v, _v, _v, _m, _im)
+_DRIVE_ARGS = (_CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _v, _iv, _v, _v,
+               _m, _m, _v, _m, _m, _v, _v, _v, _m, _im)
+DRIVE_SIG = _i8(RHS_TYPE, _STEP_TYPE, *_DRIVE_ARGS)
+#: `drive` for a formulation whose step is the generic one (step None)
+DRIVE_GENERIC_SIG = _i8(RHS_TYPE, types.none, *_DRIVE_ARGS)
 
 
 
@@ -316,7 +330,21 @@ class _CompiledOnUse:
         return self.compiled(*args)
 
 
-drive = _CompiledOnUse(_drive, DRIVE_SIG, **NO_REFCOUNT)
+class _Drive:
+    """`_drive` compiled on first use (cached on disk) in two specialisations: with the
+    formulation's ``step`` hook, and for ``step`` None with the generic `rk4_step` compiled
+    in (through a hook it costs a chart RK4 step 3 %, N = 5)."""
+
+    def __init__(self):
+        self.own = _CompiledOnUse(_drive, DRIVE_SIG, **NO_REFCOUNT)
+        self.generic = _CompiledOnUse(_drive, DRIVE_GENERIC_SIG, **NO_REFCOUNT)
+        self.__doc__ = self.own.__doc__
+
+    def __call__(self, rhs, step, *args):
+        return (self.generic if step is None else self.own)(rhs, step, *args)
+
+
+drive = _Drive()
 
 
 def _dense_sample(to_ambient, Seg, ISeg, ny, idx, x, out):
@@ -350,9 +378,11 @@ dense_sample = _CompiledOnUse(_dense_sample, _i8(_OUT_TYPE, _m, _im, _i8, _iv, _
 class Formulation:
     """Base of the formulations driven by :func:`drive`.  A subclass supplies
 
-    * ``hooks()`` → ``(rhs, cap, post, to_ambient, invariants)``, compiled with
-      :data:`charts.solvers.rk.RHS_SIG`, :data:`CAP_SIG`, :data:`POST_SIG`, :data:`OUT_SIG`,
-      :data:`INV_SIG` (see the module docstring);
+    * ``hooks(method)`` → ``(rhs, step, cap, post, to_ambient, invariants)`` (the order of
+      :data:`drive`'s arguments) for ``method`` ("rk4" or "dop853"), compiled with
+      :data:`charts.solvers.rk.RHS_SIG`, :data:`STEP_SIG`, :data:`CAP_SIG`, :data:`POST_SIG`,
+      :data:`OUT_SIG`, :data:`INV_SIG` (see the module docstring; ``step`` is only called by
+      RK4, and may be None: the generic step);
     * ``initial(theta, u, P)`` → ``(y, par, ipar)``: the formulation's state, float
       parameters and int parameters for the ambient start (θ, u, transported vectors P,
       shape (k, n)).
@@ -370,7 +400,7 @@ class Formulation:
         self.project = bool(project)
         self.cap_fraction = float(cap_fraction)
 
-    def hooks(self):  # pragma: no cover - contract
+    def hooks(self, method):  # pragma: no cover - contract
         raise NotImplementedError
 
     def initial(self, theta, u, P):  # pragma: no cover - contract

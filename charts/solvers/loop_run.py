@@ -97,7 +97,7 @@ class LoopRun:
         self.form = _FORMULATION_CLASSES[args.formulation](
             system, project=args.project, cap_fraction=CAP_FRACTION[args.method], **kw)
         self.y, self.par, self.ipar = self.form.initial(args.theta0, args.sign * args.u0, args.P)
-        self.hooks = self.form.hooks()
+        self.hooks = self.form.hooks(args.method)   # (rhs, step, cap, post, to_ambient, invariants)
         self.st, self.ist = D.new_state(_METHOD_CODES[args.method], args.t_final, args.dt,
                                         args.rtol, args.atol, float(system.energy(args.u0)),
                                         TOLERANCES["singular_S"], args.use_eval,
@@ -116,7 +116,7 @@ class LoopRun:
         self.Seg = np.zeros((seg_cap, D.segment_layout(ny, self.par.size)[3]))
         self.ISeg = np.zeros((seg_cap, self.ipar.size), dtype=np.int64)
         self.s_eval = args.s_eval
-        self.sol = (DenseSolution(self.hooks[3], ny, self.par.size, n, na, args.t0, args.sign)
+        self.sol = (DenseSolution(self.hooks[4], ny, self.par.size, n, na, args.t0, args.sign)
                     if args.record_segments else None)
         self.samples = SampleBuffer(args, self.ist, na)
         self.switches = list(self.form.initial_switches)

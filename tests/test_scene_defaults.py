@@ -1,0 +1,103 @@
+"""A scene's defaults are the API's: every key a scene forwards to an API call takes that
+call's default from its signature, so a scene that writes nothing and the API call that
+writes nothing compute the same numbers, bit for bit."""
+import inspect
+
+import numpy as np
+import pytest
+
+from charts import (RotorSystem, covariant_lyapunov_vectors, curvature_along_trajectory,
+                    hyperbolicity_angles, lyapunov_spectrum, waveform)
+from charts.analyses.linkage import linkage_run
+from charts.analyses.linkage_angles import linkage_angles
+from charts.runs.runner import run_scene
+from charts.runs.scene import parse_scene
+from charts.runs.scene_schema import API, EFFECTS, SCHEMA, FromAPI
+
+
+def default(fn, name):
+    return inspect.signature(fn).parameters[name].default
+
+
+#: (section, key) of the scene → (API function, parameter) it forwards to.
+FORWARDED = {
+    ("integrator", "project_every"): [(f, "project_every") for f in (
+        lyapunov_spectrum, curvature_along_trajectory, hyperbolicity_angles,
+        covariant_lyapunov_vectors, waveform, linkage_run, linkage_angles)],
+    ("effects.lyapunov", "n_batches"): [(lyapunov_spectrum, "n_batches"), (linkage_run, "n_batches")],
+    ("effects.lyapunov", "reorth_every"): [(lyapunov_spectrum, "reorth_every"),
+                                           (linkage_run, "reorth_every")],
+    ("effects.lyapunov", "inner_product"): [(lyapunov_spectrum, "inner")],
+    ("effects.curvature", "sample_every"): [(curvature_along_trajectory, "sample_every")],
+    ("effects.angles", "sample_every"): [(hyperbolicity_angles, "sample_every"),
+                                         (linkage_angles, "sample_every")],
+    ("effects.clv", "sample_every"): [(covariant_lyapunov_vectors, "sample_every")],
+}
+
+
+def _key(section, key):
+    table = EFFECTS[section.split(".")[1]] if section.startswith("effects.") else SCHEMA[section]
+    return table[key]
+
+
+@pytest.mark.parametrize("where", sorted(FORWARDED))
+def test_schema_defaults_are_the_apis(where):
+    k = _key(*where)
+    assert isinstance(k.default, FromAPI)           # read from the signature, not copied
+    for fn, name in FORWARDED[where]:
+        assert k.value == default(fn, name), (where, fn.__name__)
+
+
+def test_every_api_default_in_the_schema_resolves():
+    for table in list(SCHEMA.values()) + list(EFFECTS.values()):
+        for k in table.values():
+            if isinstance(k.default, FromAPI):
+                fn = API[k.default.effect].split(":")[1]
+                assert fn in str(k.default) and k.value is not inspect.Parameter.empty
+
+
+def _resolved(effects, **run):
+    return parse_scene({"system": {"n": 4}, "run": {"t_final": 10.0, **run}, "effects": effects})
+
+
+def test_parsed_defaults_are_the_apis():
+    sc = _resolved({"lyapunov": {}, "angles": {}, "clv": {}})
+    assert sc.run["t_transient"] == default(lyapunov_spectrum, "t_transient")
+    assert sc.integrator["dt"] == default(lyapunov_spectrum, "dt") == default(hyperbolicity_angles, "dt")
+    assert sc.effects["angles"]["t_transient"] == default(hyperbolicity_angles, "t_transient")
+    assert sc.effects["clv"]["t_transient"] == default(covariant_lyapunov_vectors, "t_transient")
+    # the main pass of lyapunov and curvature together: the two APIs agree
+    assert default(lyapunov_spectrum, "t_transient") == default(curvature_along_trajectory,
+                                                                 "t_transient")
+    assert _resolved({"curvature": {}}).run["t_transient"] == default(curvature_along_trajectory,
+                                                                      "t_transient")
+    assert _resolved({"waveforms": {}}).run["t_transient"] == default(waveform, "t_transient")
+    assert _resolved({"angles": {}}).run["t_transient"] == default(hyperbolicity_angles,
+                                                                   "t_transient")
+    # written once, it is every pass's transient
+    sc = _resolved({"lyapunov": {}, "angles": {}}, t_transient=3.0)
+    assert sc.run["t_transient"] == sc.effects["angles"]["t_transient"] == 3.0
+
+
+def test_lyapunov_scene_with_nothing_written_is_the_api_call(tmp_path):
+    sc = parse_scene({"system": {"n": 3, "masses": [1.0, 1.5, 0.8]}, "run": {"t_final": 60.0},
+                      "effects": {"lyapunov": {}}})
+    res = run_scene(sc, tmp_path / "ly", quiet=True)["results"]["lyapunov"]
+    system = RotorSystem(3, [1.0, 1.5, 0.8])
+    theta0, u0 = system.random_state(seed=0)
+    api = lyapunov_spectrum(system, theta0, u0, 60.0)
+    assert res["exponents"] == api.exponents.tolist()
+    assert res["stderr"] == api.stderr.tolist()
+
+
+def test_angles_scene_with_nothing_written_is_the_api_call(tmp_path):
+    sc = parse_scene({"system": {"n": 3}, "initial": {"seed": 2}, "run": {"t_final": 5.0},
+                      "effects": {"angles": {}}})
+    run_scene(sc, tmp_path / "an", quiet=True)
+    system = RotorSystem(3)
+    theta0, u0 = system.random_state(seed=2)
+    api = hyperbolicity_angles(system, theta0, u0, 5.0, seed=2)
+    with np.load(tmp_path / "an" / "arrays.npz") as a:
+        assert np.array_equal(a["angles_t"], api.t)
+        assert np.array_equal(a["angles_full"], api.phi_full, equal_nan=True)
+        assert np.array_equal(a["angles_restricted"], api.phi_restricted, equal_nan=True)
