@@ -18,11 +18,11 @@ a singular point, the loop caps each step from its own start while the tangent k
 dt into equal sub-steps (through Σ sin²θ ≈ 2e-6: 1.1e-7 against 5.0e-5 from DOP853 at
 rtol 1e-13, docs/integrators.md).  DOP853 evaluates libm at every stage (:func:`_rhs`).
 
-Parameters: ``par = (N, 1/m (N), m (N), speed, project, cap fraction, work (3N), weights a
-(N), level c, step area (9N))`` — the work area holds a sin θ, a cos θ and a sin θ/m of the
-point being evaluated, the step area the step start's a sin θ, a cos θ (s₀, c₀: carried),
-the step's work and the state last projected, so that no hook allocates; ``ipar = (N, k)``.
-The constraint is Σ a cos θ = c.
+Parameters: ``par``, the fields of `PAR` (``charts.solvers.packed``): N, 1/m, m, the speed,
+the project flag, the cap fraction, the point's work (a sin θ, a cos θ, a sin θ/m of the point
+being evaluated), the weights a, the level c, and the step's: the start's a sin θ, a cos θ
+(s₀, c₀: carried), its work and the state last projected, so that no hook allocates;
+``ipar = (N, k)``.  The constraint is Σ a cos θ = c.
 """
 from __future__ import annotations
 
@@ -37,24 +37,36 @@ from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, S
                    Formulation)
 from .rk import NO_REFCOUNT, RHS_SIG
 from .status import step_cap, sum_squares
+from .packed import layout, pack, value, view
 from .tangent import stacked_rk4_step
 
 #: Landing steps within this relative distance of dt are the grid's step dt (the loop's time
 #: is a sum of steps, so the last step to an output time on the grid is dt up to rounding).
 LANDING_RTOL = 1e-9
 
-__all__ = ["AmbientFlow"]
+__all__ = ["AmbientFlow", "PAR"]
+
+#: The layout of ``par`` (``charts.solvers.packed.layout``: name, length a·N + b).
+PAR = layout(("n", 0, 1), ("minv", 1, 0), ("masses", 1, 0), ("speed", 0, 1), ("project", 0, 1),
+             ("cap", 0, 1), ("point_s", 1, 0), ("point_c", 1, 0), ("point_f", 1, 0),
+             ("weights", 1, 0), ("level", 0, 1), ("s0", 1, 0), ("c0", 1, 0), ("th", 1, 0),
+             ("dl", 1, 0), ("s", 1, 0), ("c", 1, 0), ("f", 1, 0), ("projected", 2, 0))
+_N, _MINV, _MASSES, _SPEED, _PROJECT, _CAP = (PAR[k] for k in ("n", "minv", "masses", "speed",
+                                                               "project", "cap"))
+_PS, _PC, _PF, _WTS, _LEVEL = (PAR[k] for k in ("point_s", "point_c", "point_f", "weights",
+                                                "level"))
+_S0, _C0, _TH, _DL, _SS, _SC, _SF, _PROJECTED = (PAR[k] for k in ("s0", "c0", "th", "dl", "s",
+                                                                  "c", "f", "projected"))
 
 
 @njit(cache=True, inline="always")
 def _point(y, par, n):
-    """Views of the work area: (1/m, a sin θ, a cos θ, a sin θ/m) with sin/cos of y filled in."""
-    w = 2 * n + 4
-    minv = par[1:1 + n]
-    s = par[w:w + n]
-    c = par[w + n:w + 2 * n]
-    f = par[w + 2 * n:w + 3 * n]
-    sincos(y, 0, n, par[w + 3 * n:w + 4 * n], s, c)
+    """Views of the point's work: (1/m, a sin θ, a cos θ, a sin θ/m) with sin/cos of y filled in."""
+    minv = view(par, n, _MINV)
+    s = view(par, n, _PS)
+    c = view(par, n, _PC)
+    f = view(par, n, _PF)
+    sincos(y, 0, n, view(par, n, _WTS), s, c)
     for j in range(n):
         f[j] = s[j] * minv[j]
     return minv, s, c, f
@@ -62,7 +74,7 @@ def _point(y, par, n):
 
 def _rhs(y, par, dy):
     """Eq (8) and eq (19); returns S = Σ a² sin²θ (0 at a singular point: dy is then 0)."""
-    n = int(par[0])
+    n = int(value(par, 0, _N))   # (N comes first: its offset is 0)
     nv = (y.size - 2 * n) // n
     minv, s, c, f = _point(y, par, n)
     lam, B = multiplier(y, 0, n, minv, s, c)
@@ -98,17 +110,16 @@ def _step(rhs, y, h, dt, par, K, ytmp, ynew):
     """The RK4 step hook: `_rk4_step` of eqs (8) + (19) from y into ynew, s₀, c₀ in the step
     area advancing with it; returns the smallest S = Σ (a sin θ)² of its stages (rhs
     unused).  A landing step within rounding of dt is dt (`LANDING_RTOL`)."""
-    n = int(par[0])
-    a = 6 * n + 5                              # the step area
+    n = int(value(par, 0, _N))   # (N comes first: its offset is 0)
     if abs(h - dt) <= LANDING_RTOL * dt:
         h = dt
     for i in range(y.size):
         ynew[i] = y[i]
-    f = par[a + 6 * n:a + 7 * n]
-    return stacked_rk4_step(ynew, ytmp, K.reshape(K.size), par[a + 2 * n:a + 3 * n],
-                            par[a + 3 * n:a + 4 * n], par[a + 4 * n:a + 5 * n],
-                            par[a + 5 * n:a + 6 * n], f, f, f, f, par[a:a + n],
-                            par[a + n:a + 2 * n], par[1:1 + n], par[5 * n + 4:6 * n + 4], h,
+    f = view(par, n, _SF)
+    return stacked_rk4_step(ynew, ytmp, K.reshape(K.size), view(par, n, _TH),
+                            view(par, n, _DL), view(par, n, _SS), view(par, n, _SC), f, f, f, f,
+                            view(par, n, _S0), view(par, n, _C0), view(par, n, _MINV),
+                            view(par, n, _WTS), h,
                             np.uint64(n), np.uint64((y.size - 2 * n) // n), np.uint64(n),
                             np.uint64(y.size), transport_vectors_rate)
 
@@ -116,26 +127,27 @@ def _step(rhs, y, h, dt, par, K, ytmp, ynew):
 def _rk4_cap(y, par, ipar):
     """RK4's step cap (``status.step_cap``) from the carried s₀ of the step area (no libm)."""
     n = ipar[0]
-    a = 6 * n + 5
-    return step_cap(sum_squares(par, a, n), sum_squares(y, n, n), par[2 * n + 3])
+    return step_cap(sum_squares(view(par, n, _S0), 0, n), sum_squares(y, n, n),
+                    value(par, n, _CAP))
 
 
 def _cap(y, par, ipar):
     n = ipar[0]
+    a = view(par, n, _WTS)
     S = 0.0
     U = 0.0
     for j in range(n):
-        S += (par[5 * n + 4 + j] * np.sin(y[j])) ** 2
+        S += (a[j] * np.sin(y[j])) ** 2
         U += y[n + j] ** 2
-    return step_cap(S, U, par[2 * n + 3])
+    return step_cap(S, U, value(par, n, _CAP))
 
 
 @njit(cache=True)
 def _project(y, par, ipar):
     """Project (θ, u) onto the invariants and each p onto the tangent space, in place."""
     n = ipar[0]
-    project_state(y[:2 * n], par[1 + n:1 + 2 * n], par[5 * n + 4:6 * n + 4], par[6 * n + 4],
-                  par[2 * n + 1])
+    project_state(y[:2 * n], view(par, n, _MASSES), view(par, n, _WTS), value(par, n, _LEVEL),
+                  value(par, n, _SPEED))
     minv, s, c, f = _point(y, par, n)
     for r in range(ipar[1]):
         project_velocity(y, (2 + r) * n, n, s, minv)
@@ -143,14 +155,16 @@ def _project(y, par, ipar):
 
 def _post(y, par, ipar, t, log):
     n = ipar[0]
-    if par[2 * n + 2] == 0.0:
+    if value(par, n, _PROJECT) == 0.0:
         return POST_OK
     _project(y, par, ipar)
-    w, a = 2 * n + 4, 6 * n + 5   # the projected point's libm sin/cos become the next s₀, c₀
-    for j in range(2 * n):
-        par[a + j] = par[w + j]
+    s0, c0, ps, pc = view(par, n, _S0), view(par, n, _C0), view(par, n, _PS), view(par, n, _PC)
+    for j in range(n):            # the projected point's libm sin/cos become the next s₀, c₀
+        s0[j] = ps[j]
+        c0[j] = pc[j]
+    last = view(par, n, _PROJECTED)
     for j in range(2 * n):        # and the projected state is remembered (`_to_ambient`)
-        par[a + 7 * n + j] = y[j]
+        last[j] = y[j]
     return POST_CHANGED
 
 
@@ -158,11 +172,12 @@ def _to_ambient(y, par, ipar, row):
     n = ipar[0]
     for i in range(y.size):
         row[i] = y[i]
-    if par[2 * n + 2] == 0.0:
+    if value(par, n, _PROJECT) == 0.0:
         return 0.0
     same = True                   # the state that `_post` projected last is output as is
+    last = view(par, n, _PROJECTED)
     for j in range(2 * n):
-        same = same and y[j] == par[6 * n + 5 + 7 * n + j]
+        same = same and y[j] == last[j]
     if not same:                  # samples inside a step are projected as well
         _project(row, par, ipar)
     return 0.0
@@ -170,8 +185,8 @@ def _to_ambient(y, par, ipar, row):
 
 def _invariants(y, par, ipar, inv):
     n = ipar[0]
-    inv[0], inv[1], inv[2] = invariants_of(y, n, par[1 + n:1 + 2 * n], par[5 * n + 4:6 * n + 4],
-                                           par[6 * n + 4])
+    inv[0], inv[1], inv[2] = invariants_of(y, n, view(par, n, _MASSES), view(par, n, _WTS),
+                                           value(par, n, _LEVEL))
     return 0.0
 
 
@@ -207,10 +222,9 @@ class AmbientFlow(Formulation):
         sys = self.system
         y = np.concatenate([theta, u, P.ravel()])
         speed = float(sys.speed(u))
-        par = np.concatenate([[n], sys.minv, sys.masses,
-                              [speed, float(self.project), self.cap_fraction], np.zeros(3 * n),
-                              sys.weights, [sys.level], sys.weights * np.sin(theta),
-                              sys.weights * np.cos(theta), np.zeros(5 * n),
-                              np.full(2 * n, np.nan)])
+        par = pack(PAR, n, n=n, minv=sys.minv, masses=sys.masses, speed=speed,
+                   project=float(self.project), cap=self.cap_fraction, weights=sys.weights,
+                   level=sys.level, s0=sys.weights * np.sin(theta),
+                   c0=sys.weights * np.cos(theta), projected=np.nan)
         ipar = np.array([n, P.shape[0]], dtype=np.int64)
         return y, par, ipar
