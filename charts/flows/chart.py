@@ -31,13 +31,20 @@ from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
 from ..geometry.kernels import chart_module, module_digest, source
 from ..geometry.primitives import SHIFT_MAX, shifted
+from ..packed import layout, value, view
 
 __all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
-           "start_sincos", "work_area", "WORK"]
+           "start_sincos", "work_area", "WORK", "HEAD"]
 
 #: Floats per local coordinate of the work area at the end of ``par``: the last point q
 #: evaluated and its σ, κ, then the step's start point q₀ and its σ₀, κ₀ (`point_sincos`).
 WORK = 6
+#: The head of ``par`` that `rates` reads (``charts.packed.layout``): N, the chart's local
+#: masses and weights (the eliminated rotor's last), the level; every ``par`` of a chart
+#: begins with it (`local_parameters`, ``charts.solvers.chart_formulation.PAR``) and ends with
+#: the work area.
+HEAD = layout(("n", 0, 1), ("masses", 1, 0), ("weights", 1, 0), ("level", 0, 1))
+_N, _MASSES, _WEIGHTS, _LEVEL = (HEAD[k] for k in ("n", "masses", "weights", "level"))
 
 
 def work_area(n: int) -> np.ndarray:
@@ -111,12 +118,12 @@ def rates(y, par, dy, ga, tr):
     ``par[1:1+N]``, ``par[1+N:1+2N]``, level ``par[1+2N]``, N = ``par[0]`` (σ, κ from
     `point_sincos`).  Returns S = Σ aᵢ² sin²θᵢ (as the ambient formulation), or −1 outside
     the chart (|C| >= aₖ, ``charts.geometry.atlas.eliminated_angle_sc``)."""
-    n = int(par[0])
+    n = int(value(par, 0, _N))   # (N comes first: its offset is 0)
     d = n - 1
     nv = (y.size - 2 * d) // d
-    m = par[1:1 + n]
-    w = par[1 + n:1 + 2 * n]
-    c = par[1 + 2 * n]
+    m = view(par, n, _MASSES)
+    w = view(par, n, _WEIGHTS)
+    c = value(par, n, _LEVEL)
     ws, wc = point_sincos(y, par, d)
     _, _, s2 = eliminated_angle_sc(wc, d, w, c, 1.0)
     health = -1.0

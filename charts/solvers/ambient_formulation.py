@@ -37,7 +37,7 @@ from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, S
                    Formulation)
 from .rk import NO_REFCOUNT, RHS_SIG
 from .status import step_cap, sum_squares
-from .packed import layout, pack, value, view
+from ..packed import layout, pack, value, view
 from .tangent import stacked_rk4_step
 
 #: Landing steps within this relative distance of dt are the grid's step dt (the loop's time
@@ -57,6 +57,8 @@ _PS, _PC, _PF, _WTS, _LEVEL = (PAR[k] for k in ("point_s", "point_c", "point_f",
                                                 "level"))
 _S0, _C0, _TH, _DL, _SS, _SC, _SF, _PROJECTED = (PAR[k] for k in ("s0", "c0", "th", "dl", "s",
                                                                   "c", "f", "projected"))
+#: ``ipar``: N and the number of transported vectors.
+I_N, I_VECTORS = range(2)
 
 
 @njit(cache=True, inline="always")
@@ -126,13 +128,13 @@ def _step(rhs, y, h, dt, par, K, ytmp, ynew):
 
 def _rk4_cap(y, par, ipar):
     """RK4's step cap (``status.step_cap``) from the carried s₀ of the step area (no libm)."""
-    n = ipar[0]
+    n = ipar[I_N]
     return step_cap(sum_squares(view(par, n, _S0), 0, n), sum_squares(y, n, n),
                     value(par, n, _CAP))
 
 
 def _cap(y, par, ipar):
-    n = ipar[0]
+    n = ipar[I_N]
     a = view(par, n, _WTS)
     S = 0.0
     U = 0.0
@@ -145,16 +147,16 @@ def _cap(y, par, ipar):
 @njit(cache=True)
 def _project(y, par, ipar):
     """Project (θ, u) onto the invariants and each p onto the tangent space, in place."""
-    n = ipar[0]
+    n = ipar[I_N]
     project_state(y[:2 * n], view(par, n, _MASSES), view(par, n, _WTS), value(par, n, _LEVEL),
                   value(par, n, _SPEED))
     minv, s, c, f = _point(y, par, n)
-    for r in range(ipar[1]):
+    for r in range(ipar[I_VECTORS]):
         project_velocity(y, (2 + r) * n, n, s, minv)
 
 
 def _post(y, par, ipar, t, log):
-    n = ipar[0]
+    n = ipar[I_N]
     if value(par, n, _PROJECT) == 0.0:
         return POST_OK
     _project(y, par, ipar)
@@ -169,7 +171,7 @@ def _post(y, par, ipar, t, log):
 
 
 def _to_ambient(y, par, ipar, row):
-    n = ipar[0]
+    n = ipar[I_N]
     for i in range(y.size):
         row[i] = y[i]
     if value(par, n, _PROJECT) == 0.0:
@@ -184,7 +186,7 @@ def _to_ambient(y, par, ipar, row):
 
 
 def _invariants(y, par, ipar, inv):
-    n = ipar[0]
+    n = ipar[I_N]
     inv[0], inv[1], inv[2] = invariants_of(y, n, view(par, n, _MASSES), view(par, n, _WTS),
                                            value(par, n, _LEVEL))
     return 0.0

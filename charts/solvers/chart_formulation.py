@@ -40,7 +40,8 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from ..flows.chart import chart_rates, point_sincos, start_sincos, structured_rates, work_area
+from ..flows.chart import WORK, chart_rates, point_sincos, start_sincos, structured_rates, work_area
+from ..packed import layout, pack, put, value, view
 from ..geometry.atlas import ambient_index, best_sine, eliminated_angle_sc, eliminated_component_sc
 from ..geometry.projection import invariant_terms, rescale_speed
 from .rk import NO_REFCOUNT, RHS_SIG
@@ -55,14 +56,19 @@ __all__ = ["ChartFlow", "leave_chart", "switch_rule", "should_leave", "DEFAULT_T
 #: equivalent within that sweep's scatter, and 0.9 leaves a 10 % hysteresis margin.
 DEFAULT_TAU = 0.9
 
-# par layout (N = par[0]): the scalars follow the 4N mass and weight entries, N and the level
-_OFF, _TAU, _SPEED, _PROJ, _CAP = range(5)
-
-
-@njit(cache=True, inline="always")
-def _b(n):
-    """Index of the first scalar (offset of θₖ) in par."""
-    return 2 + 4 * n
+#: The layout of ``par`` (``charts.packed.layout``): the head that ``charts.flows.chart.rates``
+#: reads (N, the chart's local masses and weights, the level), the system's masses and weights
+#: in ambient order, the offset of θₖ, τ, the speed, the project flag, the cap fraction and
+#: the work area of ``charts.flows.chart.point_sincos`` (6(N − 1), at the end).
+PAR = layout(("n", 0, 1), ("local_masses", 1, 0), ("local_weights", 1, 0), ("level", 0, 1),
+             ("masses", 1, 0), ("weights", 1, 0), ("offset", 0, 1), ("tau", 0, 1),
+             ("speed", 0, 1), ("project", 0, 1), ("cap", 0, 1), ("work", WORK, -WORK))
+_LM, _LW, _LEVEL, _MASSES, _WEIGHTS = (PAR[k] for k in ("local_masses", "local_weights", "level",
+                                                        "masses", "weights"))
+_OFFSET, _TAU, _SPEED, _PROJECT, _CAP, _WORK = (PAR[k] for k in ("offset", "tau", "speed",
+                                                                 "project", "cap", "work"))
+#: ``ipar``: N, the number of transported vectors, the chart, its branch, switches logged.
+I_N, I_VECTORS, I_CHART, I_BRANCH, I_LOGGED = range(5)
 
 
 @njit(cache=True)
@@ -109,19 +115,19 @@ def chart_condition_bound(n, tau, masses=None):
 def _sin_k(wc, par, n, branch):
     """(cos θₖ, sin θₖ, D = (aₖ sin θₖ)²) of the chart point with κ = wc
     (``eliminated_angle_sc``)."""
-    return eliminated_angle_sc(wc, n - 1, par[1 + n:1 + 2 * n], par[1 + 2 * n], branch)
+    return eliminated_angle_sc(wc, n - 1, view(par, n, _LW), value(par, n, _LEVEL), branch)
 
 
 @njit(cache=True, inline="always")
 def _to_ambient_impl(y, par, ipar, row):
-    n = ipar[0]
+    n = ipar[I_N]
     d = n - 1
-    nv = ipar[1]
-    k = ipar[2]
+    nv = ipar[I_VECTORS]
+    k = ipar[I_CHART]
     ws, wc = point_sincos(y, par, d)
-    ck, sk, _ = _sin_k(wc, par, n, ipar[3])
-    row[k] = math.atan2(sk, ck) + par[_b(n) + _OFF]
-    w = par[1 + n:1 + 2 * n]
+    ck, sk, _ = _sin_k(wc, par, n, ipar[I_BRANCH])
+    row[k] = math.atan2(sk, ck) + value(par, n, _OFFSET)
+    w = view(par, n, _LW)
     for b in range(1 + nv):  # velocity and transported vectors
         row[(1 + b) * n + k] = eliminated_component_sc(ws, y, (1 + b) * d, d, w, sk)
     for a in range(d):
@@ -129,8 +135,8 @@ def _to_ambient_impl(y, par, ipar, row):
         row[i] = y[a]
         for b in range(1 + nv):
             row[(1 + b) * n + i] = y[(1 + b) * d + a]
-    if par[_b(n) + _PROJ] != 0.0:  # samples from the dense output get the energy too
-        rescale_speed(row, n, n, par[2 + 2 * n:2 + 3 * n], par[_b(n) + _SPEED])
+    if value(par, n, _PROJECT) != 0.0:  # samples from the dense output get the energy too
+        rescale_speed(row, n, n, view(par, n, _MASSES), value(par, n, _SPEED))
     return 0.0
 
 
@@ -145,65 +151,68 @@ def enter_chart(row, n, nv, j, masses, weights, y, par, ipar):
     d = n - 1
     thj = row[j]
     sj = math.sin(thj)
-    ipar[2] = j
-    ipar[3] = 1 if sj >= 0.0 else -1
-    par[_b(n) + _OFF] = thj - math.atan2(sj, math.cos(thj))
+    ipar[I_CHART] = j
+    ipar[I_BRANCH] = 1 if sj >= 0.0 else -1
+    put(par, n, _OFFSET, thj - math.atan2(sj, math.cos(thj)))
+    lm, lw = view(par, n, _LM), view(par, n, _LW)
     for a in range(d):
         i = ambient_index(a, j)
-        par[1 + a] = masses[i]
-        par[1 + n + a] = weights[i]
+        lm[a] = masses[i]
+        lw[a] = weights[i]
         for b in range(2 + nv):
             y[b * d + a] = row[b * n + i]
-    par[n] = masses[j]
-    par[2 * n] = weights[j]
-    for a in range(_b(n) + _CAP + 1, par.size):  # the work area: no point evaluated yet
-        par[a] = np.nan
+    lm[d] = masses[j]
+    lw[d] = weights[j]
+    work = view(par, n, _WORK)
+    for a in range(work.size):  # the work area: no point evaluated yet
+        work[a] = np.nan
 
 
 def _post(y, par, ipar, t, log):
-    n = ipar[0]
+    n = ipar[I_N]
     d = n - 1
-    k = ipar[2]
+    k = ipar[I_CHART]
     ws, wc = start_sincos(y, par, d)      # the next step's start
-    _, sk, s2 = _sin_k(wc, par, n, ipar[3])
+    _, sk, s2 = _sin_k(wc, par, n, ipar[I_BRANCH])
     if not s2 > 0.0:  # the step ended outside the chart (|C| >= aₖ): no θₖ, no uₖ
         return DOMAIN
-    w = par[1 + n:1 + 2 * n]
+    w = view(par, n, _LW)
     code = POST_OK
-    if par[_b(n) + _PROJ] != 0.0:  # rescale v to the initial speed (energy)
-        E = par[n] * eliminated_component_sc(ws, y, d, d, w, sk) ** 2
+    if value(par, n, _PROJECT) != 0.0:  # rescale v to the initial speed (energy)
+        lm = view(par, n, _LM)
+        E = lm[d] * eliminated_component_sc(ws, y, d, d, w, sk) ** 2
         for a in range(d):
-            E += par[1 + a] * y[d + a] ** 2
-        f = par[_b(n) + _SPEED] / math.sqrt(E)
+            E += lm[a] * y[d + a] ** 2
+        f = value(par, n, _SPEED) / math.sqrt(E)
         for a in range(d):
             y[d + a] *= f
         code = POST_CHANGED
     gk = w[d] * sk
-    j, smax = switch_rule(ws, gk, k, par[_b(n) + _TAU])
+    j, smax = switch_rule(ws, gk, k, value(par, n, _TAU))
     if j < 0:
         if abs(gk) < CHART_MIN_RATIO * smax:  # kept (no switch) up to its edge: stop
             return DOMAIN
         return code
-    nv = ipar[1]
+    nv = ipar[I_VECTORS]
     row = np.empty((2 + nv) * n)  # allocation only at a switch, never per step
     _to_ambient_impl(y, par, ipar, row)
-    enter_chart(row, n, nv, j, par[2 + 2 * n:2 + 3 * n], par[2 + 3 * n:2 + 4 * n], y, par, ipar)
-    c = ipar[4]
+    enter_chart(row, n, nv, j, view(par, n, _MASSES), view(par, n, _WEIGHTS), y, par, ipar)
+    c = ipar[I_LOGGED]
     log[c, 0] = t
     log[c, 1] = k
     log[c, 2] = j
-    ipar[4] = c + 1
+    ipar[I_LOGGED] = c + 1
     return POST_LOG_FULL if c + 1 >= log.shape[0] else POST_CHANGED
 
 
 def _cap(y, par, ipar):
-    n = ipar[0]
+    n = ipar[I_N]
     d = n - 1
     ws, wc = start_sincos(y, par, d)      # the step's start
-    _, sk, s2 = _sin_k(wc, par, n, ipar[3])
+    _, sk, s2 = _sin_k(wc, par, n, ipar[I_BRANCH])
     if s2 <= 0.0:
         return 0.0
-    w = par[1 + n:1 + 2 * n]
+    w = view(par, n, _LW)
     S = s2
     U = eliminated_component_sc(ws, y, d, d, w, sk) ** 2
     for a in range(d):
@@ -211,23 +220,24 @@ def _cap(y, par, ipar):
         U += y[d + a] ** 2
     if U == 0.0:
         return np.inf
-    return min(step_cap(S, U, par[_b(n) + _CAP]), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
+    return min(step_cap(S, U, value(par, n, _CAP)), DOMAIN_CAP_FRACTION * abs(sk) / math.sqrt(U))
 
 
 def _invariants(y, par, ipar, inv):
     """(F, G, E) of the ambient state of y from the point's σ, κ (no libm: the step's end is
     the next step's start, `start_sincos`) and θₖ, uₖ as `_to_ambient_impl` reconstructs them
     (F and G vanish by construction, to rounding; E is the one the chart does not keep)."""
-    n = ipar[0]
+    n = ipar[I_N]
     d = n - 1
     ws, wc = point_sincos(y, par, d)
-    ck, sk, _ = _sin_k(wc, par, n, ipar[3])
-    w = par[1 + n:1 + 2 * n]
+    ck, sk, _ = _sin_k(wc, par, n, ipar[I_BRANCH])
+    w = view(par, n, _LW)
+    lm = view(par, n, _LM)
     uk = eliminated_component_sc(ws, y, d, d, w, sk)
-    F, G, E = invariant_terms(w[d] * sk, w[d] * ck, uk, par[n])
-    F -= par[1 + 2 * n]
+    F, G, E = invariant_terms(w[d] * sk, w[d] * ck, uk, lm[d])
+    F -= value(par, n, _LEVEL)
     for a in range(d):
-        f, g, e = invariant_terms(ws[a], wc[a], y[d + a], par[1 + a])
+        f, g, e = invariant_terms(ws[a], wc[a], y[d + a], lm[a])
         F += f
         G += g
         E += e
@@ -287,17 +297,10 @@ class ChartFlow(Formulation):
         nv = P.shape[0]
         row = np.concatenate([theta, u, P.ravel()])
         y = np.empty((2 + nv) * (n - 1))
-        b = 2 + 4 * n
-        par = np.concatenate([np.zeros(b + 5), work_area(n)])
-        par[0] = n
-        par[1 + 2 * n] = sys.level
-        par[2 + 2 * n:2 + 3 * n] = sys.masses
-        par[2 + 3 * n:2 + 4 * n] = sys.weights
-        par[b + _TAU] = self.tau
-        par[b + _SPEED] = float(sys.speed(u))
-        par[b + _PROJ] = float(self.project)
-        par[b + _CAP] = self.cap_fraction
-        ipar = np.array([n, nv, 0, 1, 0], dtype=np.int64)
+        par = pack(PAR, n, n=n, level=sys.level, masses=sys.masses, weights=sys.weights,
+                   tau=self.tau, speed=float(sys.speed(u)), project=float(self.project),
+                   cap=self.cap_fraction, work=work_area(n))
+        ipar = np.array([n, nv, 0, 1, 0], dtype=np.int64)   # I_N, I_VECTORS, I_CHART, I_BRANCH, I_LOGGED
         self.initial_switches = []
         j = leave_chart(np.abs(sys.weights * np.sin(theta)), k, self.tau)
         if j >= 0:  # a requested chart that the rule would leave: switch at t = 0
@@ -307,6 +310,6 @@ class ChartFlow(Formulation):
         return y, par, ipar
 
     def drain_log(self, log, ipar):
-        recs = [(float(log[i, 0]), int(log[i, 1]), int(log[i, 2])) for i in range(ipar[4])]
-        ipar[4] = 0
+        recs = [(float(log[i, 0]), int(log[i, 1]), int(log[i, 2])) for i in range(ipar[I_LOGGED])]
+        ipar[I_LOGGED] = 0
         return recs
