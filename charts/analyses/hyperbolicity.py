@@ -74,20 +74,23 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, 
     no_events = np.empty(0, dtype=np.int64)
     none = np.empty((0, 0))
     y = Z[:1]
+    # typed values, not literals: a literal argument (True, 0) would compile tangent_kernel
+    # once more, for that value (the signature of TangentFlow.advance is bool, int64)
+    yes, zero = bool(True), np.int64(0)
     for i in range(a, b):
         left = ce
         if counter[0] < vec_end:
             k = min(ce, vec_end - counter[0])
             status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
-                                       w, True, project, logsum, rec_start, rec_every, states,
+                                       w, yes, project, logsum, rec_start, rec_every, states,
                                        no_events, none)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
             status, _ = tangent_kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
-                                       reorth, w, True, project, logsum, 0, 0, none, no_events,
-                                       none)
+                                       reorth, w, yes, project, logsum, zero, zero, none,
+                                       no_events, none)
             if status != RUNNING:
                 return status
         ck[i + 1] = Z[0]
@@ -261,6 +264,7 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
     """`hyperbolicity_angles` on independent random states (seeds seed, seed+1, …) in
     parallel processes; returns an `EnsembleResult` (``concatenate("phi_restricted")`` joins
     the angles of all members for statistics)."""
+    short = (2 * kwargs.get("sample_every", 0.1), {"t_transient": 0.0})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
                         seed=seed, workers=workers, progress=progress,
-                        desc=f"angles N={system.n} ensemble", **kwargs)
+                        desc=f"angles N={system.n} ensemble", prime=short, **kwargs)
