@@ -235,7 +235,9 @@ def _cmd_warmup(args) -> int:
             print(f"{row['analysis']:>10}  N = {row['n']}: {row['compile']:6.1f} s compiling "
                   f"({row['cpu']:.1f} s CPU in all)", flush=True)
 
-    rows = warmup(args.n, args.analysis, report=report)
+    if args.workers is not None and args.workers < 1:
+        return _fail(f"--workers must be at least 1, got {args.workers}")
+    rows = warmup(args.n, args.analysis, report=report, workers=args.workers)
     if not args.quiet:
         print(f"charts: kernels ready ({sum(r['compile'] for r in rows):.1f} s); later processes "
               "load them from numba's cache")
@@ -301,13 +303,17 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("warmup", help="compile the kernels once after an install",
                        description="Call each analysis once for each N so that numba compiles "
-                       "and caches its kernels; the first real call then loads them in ~0.05 s "
-                       "instead of compiling for 10-15 s (docs/performance.md, Cold start). Run "
-                       "it after every install or upgrade.")
+                       "and caches its kernels, in parallel processes, each kernel compiled by "
+                       "one of them; the first real call then loads them in ~0.05 s instead of "
+                       "compiling (docs/performance.md, Cold start). Run it after every install "
+                       "or upgrade.")
     p.add_argument("--n", type=int, nargs="+", default=[3, 4, 5, 6], metavar="N",
                    help="rotor counts (default 3 4 5 6)")
     p.add_argument("--analysis", nargs="+", metavar="NAME",
-                   help="lyapunov, integrate, curvature, angles (default all)")
+                   help="lyapunov, lanes, integrate, integrate_ambient, curvature, angles, "
+                   "clv (default all)")
+    p.add_argument("--workers", type=int, default=None, metavar="W",
+                   help="parallel processes (default: one per core)")
     p.add_argument("--quiet", "-q", action="store_true", help="print nothing")
     p.set_defaults(func=_cmd_warmup)
 
