@@ -38,7 +38,7 @@ ANALYSES = {
                                   "t_transient=0.1)",
     "curvature_along_trajectory": "charts.curvature_along_trajectory(S, th, u, 0.2, "
                                   "t_transient=0.0)",
-    "integrate ambient": "charts.integrate(S, th, u, 0.1)",
+    "integrate ambient": "charts.integrate(S, th, u, 0.1, formulation='ambient')",
     "integrate chart": "charts.integrate(S, th, u, 0.1, formulation='chart')",
 }
 
