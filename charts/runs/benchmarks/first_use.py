@@ -38,8 +38,8 @@ ANALYSES = {
                                   "t_transient=0.1)",
     "curvature_along_trajectory": "charts.curvature_along_trajectory(S, th, u, 0.2, "
                                   "t_transient=0.0)",
-    "integrate ambient": "charts.integrate(S, th, u, 0.1, formulation='ambient')",
-    "integrate chart": "charts.integrate(S, th, u, 0.1, formulation='chart')",
+    "integrate_ambient": "charts.integrate(S, th, u, 0.1, formulation='ambient')",
+    "integrate_chart": "charts.integrate(S, th, u, 0.1, formulation='chart')",
 }
 
 #: One process: runs the calls named in argv[1] (JSON list of [name, code]) for each N in
