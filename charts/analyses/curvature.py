@@ -225,7 +225,6 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
     k = Z.shape[0] - 1
     logs = np.zeros(k)
     no_events = np.empty(0, dtype=np.int64)
-    yes = bool(True)  # not the literal True, which would compile tangent_kernel once more
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     work = curvature_work(n, k)
@@ -234,7 +233,7 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
     for a in range(0, S, _BLOCK):
         nb = min(_BLOCK, S - a)
         status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt,
-                                      nb * sample_steps, reorth, w, yes, project_every, logs,
+                                      nb * sample_steps, reorth, w, True, project_every, logs,
                                       counter[0] + sample_steps, sample_steps, buf, no_events,
                                       buf)
         if status != RUNNING:
