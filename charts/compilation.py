@@ -13,7 +13,7 @@ import sys
 import threading
 from contextlib import contextmanager
 
-__all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation"]
+__all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation", "announce", "timed_call"]
 
 #: compilations shorter than this pass without a word.
 NOTE_SECONDS = 1.0
@@ -36,6 +36,25 @@ def compile_timer(add):
         _depth.n = outer
 
 
+def announce(name, seconds, n=None, where="") -> None:
+    """The one-line notice on stderr, when ``seconds`` of compiling exceed `NOTE_SECONDS`."""
+    if seconds > NOTE_SECONDS:
+        what = f" for N = {n}" if isinstance(n, int) else ""
+        print(f"charts: {name} compiled its kernels{what}{where} in {seconds:.1f} s "
+              "(once: they are cached on disk for the next calls and processes; "
+              "`charts warmup` compiles them all after an install)",
+              file=sys.stderr, flush=True)
+
+
+def timed_call(fn, *args, **kwargs):
+    """(``fn(*args, **kwargs)``, seconds numba spent compiling in it); the entry points
+    called inside announce nothing (the caller decides, e.g. a pool's parent)."""
+    spent = [0.0]
+    with compile_timer(lambda s: spent.__setitem__(0, spent[0] + s)):
+        out = fn(*args, **kwargs)
+    return out, spent[0]
+
+
 def announces_compilation(fn):
     """Wrap a public entry point: when its call spent more than `NOTE_SECONDS` compiling,
     print one line on stderr saying so (nested entry points announce only the outermost)."""
@@ -49,12 +68,6 @@ def announces_compilation(fn):
             with compile_timer(lambda s: spent.__setitem__(0, spent[0] + s)):
                 return fn(*args, **kwargs)
         finally:
-            if spent[0] > NOTE_SECONDS:
-                n = getattr(args[0], "n", None) if args else None
-                what = f" for N = {n}" if isinstance(n, int) else ""
-                print(f"charts: {fn.__name__} compiled its kernels{what} in {spent[0]:.1f} s "
-                      "(once: they are cached on disk for the next calls and processes; "
-                      "`charts warmup` compiles them all after an install)",
-                      file=sys.stderr)
+            announce(fn.__name__, spent[0], getattr(args[0], "n", None) if args else None)
 
     return wrapper

@@ -79,3 +79,31 @@ def test_probe_times_a_real_first_call():
     # the tangent kernel was either compiled or loaded from the cache, and not both
     assert ("charts.solvers.tangent.tangent_kernel" in compiled) != (
         "charts.solvers.tangent.tangent_kernel" in got["loaded"])
+
+
+def test_warmup_stages_compile_each_shared_kernel_before_its_users():
+    """The tangent kernel's first user (lyapunov) comes before the analyses that call it;
+    clv after angles; further N of the chart-kernel analyses one stage after their first N;
+    the loads of N-generic kernels for further N last."""
+    plan = warm.stages([3, 4], list(warm.TASKS))
+    where = {task: i for i, stage in enumerate(plan) for task in stage}
+    assert sorted(where) == sorted((a, n) for a in warm.TASKS for n in (3, 4))
+    for user in ("angles", "curvature", "clv", "lanes"):
+        assert where[("lyapunov", 3)] < where[(user, 3)]
+    assert where[("angles", 3)] < where[("clv", 3)]
+    for name in warm.PER_N:
+        assert where[(name, 4)] == where[(name, 3)] + 1
+    assert where[("lyapunov", 4)] == where[("angles", 4)] == len(plan) - 1
+
+
+def test_warmup_runs_its_stages_in_a_pool(monkeypatch):
+    """With two workers the calls go through a process pool, stage after stage; the rows
+    come back in the order of N, then analyses."""
+    monkeypatch.setattr(warm, "TASKS", {"lyapunov": lambda S, th, u: None,
+                                        "integrate": lambda S, th, u: None})
+    seen = []
+    rows = warm.warmup((3, 4), ["lyapunov", "integrate"], report=seen.append, workers=2)
+    assert [(r["analysis"], r["n"]) for r in rows] == [
+        ("lyapunov", 3), ("integrate", 3), ("lyapunov", 4), ("integrate", 4)]
+    assert sorted(map(str, seen)) == sorted(map(str, rows))
+    assert all(r["compile"] == 0.0 and r["cpu"] >= 0.0 for r in rows)

@@ -29,3 +29,78 @@ def test_a_long_compilation_is_announced_once(monkeypatch, capsys):
     with compilation.compile_timer(seen.append):
         inner(Sys())
     assert capsys.readouterr().err == "" and sum(seen) > 0.0
+
+
+_TOY = '''
+from numba import njit
+
+@njit(cache=True)
+def kernel(x):
+    s = 0.0
+    for i in range(x):
+        s += i ** 0.5
+    return s
+
+def job(x):
+    return [kernel(x)]
+'''
+
+_POOL = '''
+import sys
+sys.path.insert(0, sys.argv[1])
+import toy
+from charts import compilation
+from charts.analyses.ensemble import map_jobs
+compilation.NOTE_SECONDS = 0.0
+prime = (toy.job, 3) if sys.argv[2] == "prime" else None
+print(map_jobs(toy.job, [5, 6, 7, 8], [1] * 4, 2, 1.0, False, "toy", prime=prime, name="toy"))
+'''
+
+
+def _pool_run(tmp_path, prime):
+    """The stderr of `map_jobs` with 2 workers over a fresh kernel, in a new process with an
+    empty numba cache."""
+    import os
+    import subprocess
+    import sys
+
+    (tmp_path / "toy.py").write_text(_TOY)
+    cache = tmp_path / f"numba-{prime}"
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache))
+    out = subprocess.run([sys.executable, "-c", _POOL, str(tmp_path), prime], env=env,
+                         capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == str([sum(i ** 0.5 for i in range(x)) for x in (5, 6, 7, 8)])
+    return [line for line in out.stderr.splitlines() if line.startswith("charts: ")]
+
+
+def test_a_pool_worker_announces_its_compilation_in_the_parent(tmp_path):
+    """Without priming, the workers compile, and the parent says so."""
+    notes = _pool_run(tmp_path, "none")
+    assert notes and all(n.startswith("charts: toy compiled its kernels in a worker process in ")
+                         for n in notes)
+
+
+def test_a_primed_pool_compiles_once_in_the_parent(tmp_path):
+    """With priming the parent compiles the kernel once (one notice) and no worker compiles
+    anything (a worker's compilation of any length would be announced: NOTE_SECONDS = 0)."""
+    notes = _pool_run(tmp_path, "prime")
+    assert len(notes) == 1 and notes[0].startswith("charts: toy compiled its kernels in ")
+
+
+def test_an_ensemble_on_an_empty_cache_announces_one_compilation(tmp_path):
+    """`lyapunov_ensemble` with 2 workers on an empty numba cache: one notice, from the
+    parent, which compiled the kernels before the workers started."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import charts; from charts import compilation; compilation.NOTE_SECONDS = 0.0; "
+            "S = charts.RotorSystem(3); "
+            "print(charts.lyapunov_ensemble(S, 4, 0.4, workers=2, t_transient=0.0, "
+            "n_batches=2).exponents)")
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"))
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                         check=True)
+    notes = [line for line in out.stderr.splitlines() if line.startswith("charts: ")]
+    assert len(notes) == 1, out.stderr
+    assert notes[0].startswith("charts: lyapunov_ensemble compiled its kernels for N = 3 in ")

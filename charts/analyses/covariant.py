@@ -117,6 +117,7 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
     rates in gs[j].  Returns the kernel's status (NONFINITE for a norm that is not finite)."""
     none = np.empty((0, 0))
     no_events = np.empty(0, dtype=np.int64)
+    zero = np.int64(0)  # not the literal 0, which would compile tangent_kernel once more
     D = Z.shape[0] - 1
     done = 0
     j = a
@@ -125,8 +126,8 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
         k = min(sample, n_tr - done) if transient else (sample if j > 0 else 0)
         if k > 0:
             status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k,
-                                       reorth_every, w, restricted, project_every, logsum, 0, 0,
-                                       none, no_events, none)
+                                       reorth_every, w, restricted, project_every, logsum,
+                                       zero, zero, none, no_events, none)
             if status != RUNNING:
                 return status
         if transient:

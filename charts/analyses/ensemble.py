@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..archive import Archivable, attributes, dataset, require_xarray
+from ..compilation import announce, timed_call
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
 from .statistics import standard_error
@@ -95,16 +96,22 @@ def _member(job):
 
 
 def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                 progress=False, desc="ensemble", **kwargs) -> EnsembleResult:
+                 progress=False, desc="ensemble", prime=None, **kwargs) -> EnsembleResult:
     """``fn(system, theta0, u0, t_final, seed=s, **kwargs)`` on ``n_trajectories`` random
     states of speed ``speed`` (seeds seed, seed+1, …), in ``workers`` processes (default:
     all cores; 1: in this process).  Members whose results have ``exponents`` give the
-    ensemble's mean and standard error."""
+    ensemble's mean and standard error.  ``prime``: (t_final, settings overriding kwargs) of
+    a short call that compiles the kernels in this process before the workers start
+    (`map_jobs`)."""
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     jobs = [(fn, system, seed + i, speed, t_final, kwargs)
             for i in range(n_trajectories)]
-    members = map_jobs(_member, jobs, [1] * len(jobs), workers, t_final, progress, desc)
+    first = None
+    if prime is not None:
+        first = (_member, (fn, system, seed, speed, prime[0], {**kwargs, **prime[1]}))
+    members = map_jobs(_member, jobs, [1] * len(jobs), workers, t_final, progress, desc,
+                       prime=first, name=fn.__name__, n=system.n)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
 
@@ -120,14 +127,37 @@ def ensemble_arguments(n_trajectories, t_final, speed, seed, workers, progress):
     return n_trajectories, seed, workers
 
 
-def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc):
+def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name=None, n=None):
     """The members of ``fn(job)`` for the jobs, in order (each returns a list of ``sizes[i]``
     members), in ``workers`` processes (default all cores; 1: in this process); progress in
-    simulated time (members done × t_final)."""
+    simulated time (members done × t_final).
+
+    With workers, the kernels are compiled once: ``prime`` = (function, job), a short call
+    that compiles them, runs here first, so that the workers load them from numba's disk
+    cache instead of each compiling them at once; what it or a worker compiled for longer
+    than ``charts.compilation.NOTE_SECONDS`` is announced here, on this process's stderr
+    (``name``, ``n``: the analysis and N the notice names)."""
     if workers == 1:
         return _collect(map(fn, jobs), sizes, t_final, progress, desc)
+    name = name or getattr(fn, "__name__", "ensemble")
+    if prime is not None:
+        announce(name, timed_call(*prime)[1], n)
     with ProcessPoolExecutor(max_workers=workers) as pool:
-        return _collect(pool.map(fn, jobs), sizes, t_final, progress, desc)
+        timed = pool.map(_timed_job, [(fn, job) for job in jobs])
+        return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
+
+
+def _timed_job(fn_job):
+    """In a worker: (``fn(job)``, seconds numba spent compiling in it)."""
+    fn, job = fn_job
+    return timed_call(fn, job)
+
+
+def _announced(timed, name, n):
+    """The results of (result, compile seconds) pairs, announcing a worker's long compilation."""
+    for result, seconds in timed:
+        announce(name, seconds, n, where=" in a worker process")
+        yield result
 
 
 def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleResult:

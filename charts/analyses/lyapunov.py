@@ -337,7 +337,11 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
         members = [m for job in jobs for m in lyapunov_lanes(job, rep.update)]
         rep.close()
     else:
-        members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), workers, t_final, progress, desc)
+        # the first block's route (lanes or one by one) over two re-orthonormalisations
+        short = replace(cfg, transient=0, total=2 * cfg.reorth, n_batches=2, record=cfg.reorth)
+        members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), workers, t_final, progress, desc,
+                           prime=(lyapunov_lanes, (system, short, jobs[0][2], speed)),
+                           name="lyapunov_ensemble", n=system.n)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
 

@@ -4,7 +4,7 @@
     charts scenes [NAME]                          list the bundled scenes, or print one
     charts reproduce ...                          the paper's figures and table
     charts generate [--check]                     regenerate generated/ (code generator)
-    charts bench accuracy | integrators | performance | compare | coldstart | ensemble   (benchmarks)
+    charts bench accuracy | integrators | performance | compare | coldstart | ensemble | first_use
     charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask
     charts warmup [--n N ...]                     compile the kernels once after an install
 
@@ -234,7 +234,9 @@ def _cmd_warmup(args) -> int:
             print(f"{row['analysis']:>10}  N = {row['n']}: {row['compile']:6.1f} s compiling "
                   f"({row['cpu']:.1f} s CPU in all)", flush=True)
 
-    rows = warmup(args.n, args.analysis, report=report)
+    if args.workers is not None and args.workers < 1:
+        return _fail(f"--workers must be at least 1, got {args.workers}")
+    rows = warmup(args.n, args.analysis, report=report, workers=args.workers)
     if not args.quiet:
         print(f"charts: kernels ready ({sum(r['compile'] for r in rows):.1f} s); later processes "
               "load them from numba's cache")
@@ -302,20 +304,25 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("warmup", help="compile the kernels once after an install",
                        description="Call each analysis once for each N so that numba compiles "
-                       "and caches its kernels; the first real call then loads them in ~0.05 s "
-                       "instead of compiling for 10-15 s (docs/performance.md, Cold start). Run "
-                       "it after every install or upgrade.")
+                       "and caches its kernels, in parallel processes, each kernel compiled by "
+                       "one of them; the first real call then loads them in ~0.05 s instead of "
+                       "compiling (docs/performance.md, Cold start). Run it after every install "
+                       "or upgrade.")
     p.add_argument("--n", type=int, nargs="+", default=[3, 4, 5, 6], metavar="N",
                    help="rotor counts (default 3 4 5 6)")
     p.add_argument("--analysis", nargs="+", metavar="NAME",
-                   help="lyapunov, integrate, curvature, angles (default all)")
+                   help="lyapunov, lanes, integrate, integrate_ambient, curvature, angles, "
+                   "clv (default all)")
+    p.add_argument("--workers", type=int, default=None, metavar="W",
+                   help="parallel processes (default: one per core)")
     p.add_argument("--quiet", "-q", action="store_true", help="print nothing")
     p.set_defaults(func=_cmd_warmup)
 
     p = sub.add_parser("bench", help="benchmarks: `accuracy` (work–precision), `integrators` "
                        "(against solve_ivp), `performance` (against JiTCODE and SciPy), "
                        "`compare` (installations against each other), `coldstart` (the first-ever call), "
-                       "`ensemble` (lanes against the one-trajectory kernel)",
+                       "`ensemble` (lanes against the one-trajectory kernel), `first_use` (each "
+                       "analysis's first call on an empty cache, warmup, reproduce --quick)",
                        description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
                        "diagrams and table (docs/accuracy.md). `charts bench integrators`: cost "
                        "per unit time against solve_ivp (docs/integrators.md). `charts bench "
@@ -325,10 +332,12 @@ def build_parser() -> argparse.ArgumentParser:
                        "checkouts, interleaved in one run. `charts bench coldstart`: where the "
                        "seconds of a fresh install's first call go (docs/performance.md). `charts "
                        "bench ensemble [--quick]`: ensembles in vector lanes against the "
-                       "one-trajectory kernel and JiTCODE. Each is a module of "
+                       "one-trajectory kernel and JiTCODE. `charts bench first_use`: CPU seconds "
+                       "of each public analysis's first call per N on an empty cache. Each is a "
+                       "module of "
                        "charts.runs.benchmarks: no source checkout needed.")
     p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare",
-                                    "coldstart", "ensemble"))
+                                    "coldstart", "ensemble", "first_use"))
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bars (accuracy)")
     p.add_argument("rest", nargs=argparse.REMAINDER,
                    help="options of the benchmark (e.g. `charts bench performance --help`)")

@@ -144,6 +144,8 @@ def _run_all(cfg, workers, quiet, pieces=None):
     from tqdm.auto import tqdm
     pool = ProcessPoolExecutor(max_workers=workers, initializer=_quiet_interrupt)
     try:
+        if len(results) < len(tasks):
+            _compile_first(pool, quiet)
         futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items() if key not in results}
         with tqdm(total=len(tasks), initial=len(results), desc="reproduce", disable=quiet) as bar:
             for fut in as_completed(futs):
@@ -159,6 +161,18 @@ def _run_all(cfg, workers, quiet, pieces=None):
         raise
     pool.shutdown()
     return results
+
+
+def _compile_first(pool, quiet):
+    """The kernels of every task, each compiled once by one worker (`charts warmup`'s
+    stages) before the tasks start, instead of by every worker at once on an empty cache;
+    with the cache filled, the workers load them here (what the tasks would do anyway)."""
+    from ..compilation import announce
+    from .warmup import warmup
+    spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "lanes", "angles", "clv",
+                                                  "curvature"], pool=pool))
+    if not quiet:
+        announce("reproduce", spent, where=" (in its workers, before the tasks)")
 
 
 PIECES = "pieces"
