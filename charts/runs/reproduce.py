@@ -33,12 +33,11 @@ import platform
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from pathlib import Path
 
 import numpy as np
 
 from ..analyses.statistics import standard_error
-from .io import atomic_text, atomic_write
+from .io import atomic_text
 from .outdir import OutputLock, prepare_output
 from .pieces import kept_pieces, load_piece, save_piece
 from . import reproduce_clv
