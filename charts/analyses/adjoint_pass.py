@@ -29,7 +29,6 @@ def adjoint_vectors_rate(Zt, n, minv, s, c, lam, iB, fa, fb, fp, _unused, K, o, 
     adjoint_factors(Zt, zero, n, minv, s, c, lam, iB, fa, fb, fp)
     for r in range(np.uint64(1), R):
         adjoint_rate(Zt, r * d, n, minv, s, fa, fb, fp, K, o + r * d)
-    return np.inf
 
 
 @njit(cache=True, inline="always")

@@ -50,13 +50,15 @@ __all__ = ["AmbientFlow", "PAR"]
 PAR = layout(("n", 0, 1), ("minv", 1, 0), ("masses", 1, 0), ("speed", 0, 1), ("project", 0, 1),
              ("cap", 0, 1), ("point_s", 1, 0), ("point_c", 1, 0), ("point_f", 1, 0),
              ("weights", 1, 0), ("level", 0, 1), ("s0", 1, 0), ("c0", 1, 0), ("th", 1, 0),
-             ("dl", 1, 0), ("s", 1, 0), ("c", 1, 0), ("f", 1, 0), ("projected", 2, 0))
+             ("dl", 1, 0), ("s", 1, 0), ("c", 1, 0), ("f", 1, 0), ("projected", 2, 0),
+             ("health", 0, 1))
 _N, _MINV, _MASSES, _SPEED, _PROJECT, _CAP = (PAR[k] for k in ("n", "minv", "masses", "speed",
                                                                "project", "cap"))
 _PS, _PC, _PF, _WTS, _LEVEL = (PAR[k] for k in ("point_s", "point_c", "point_f", "weights",
                                                 "level"))
 _S0, _C0, _TH, _DL, _SS, _SC, _SF, _PROJECTED = (PAR[k] for k in ("s0", "c0", "th", "dl", "s",
                                                                   "c", "f", "projected"))
+_HEALTH = PAR["health"]
 #: ``ipar``: N and the number of transported vectors.
 I_N, I_VECTORS = range(2)
 
@@ -95,39 +97,41 @@ def _rhs(y, par, dy):
 
 
 @njit(cache=True, inline="always")
-def transport_vectors_rate(Zt, n, minv, s, c, lam, iB, f, _w1, _w2, _w3, K, o, R, d):
+def transport_vectors_rate(Zt, n, minv, s, c, lam, iB, f, health, _w2, _w3, K, o, R, d):
     """Eq (19) for the R transported vectors (rows of d = N after the state's 2N) at the stage
-    point Zt into K[o:] (the hook of ``charts.solvers.tangent.stacked_rk4_step``); returns
-    the stage's S = Σ (a sin θ)² (the loop's health)."""
+    point Zt into K[o:] (the hook of ``charts.solvers.tangent.stacked_rk4_step``); health[0]
+    keeps the smallest S = Σ (a sin θ)² of the stages (the loop's health)."""
+    health[0] = min(health[0], sum_squares(s, 0, n))
     if R > 0:
         for j in range(n):
             f[j] = s[j] * minv[j]
         for r in range(R):
             oo = n + n + r * d
             transport_rate(Zt, oo, n, Zt, 0, f, c, iB, K, o + oo)
-    return sum_squares(s, 0, n)
 
 
 def _step(rhs, y, h, dt, par, K, ytmp, ynew):
-    """The RK4 step hook: `_rk4_step` of eqs (8) + (19) from y into ynew, s₀, c₀ in the step
-    area advancing with it; returns the smallest S = Σ (a sin θ)² of its stages (rhs
-    unused).  A landing step within rounding of dt is dt (`LANDING_RTOL`)."""
+    """The RK4 step hook: ``stacked_rk4_step`` of eqs (8) + (19) from y into ynew, s₀, c₀ in
+    the step's fields advancing with it; returns the smallest S = Σ (a sin θ)² of its stages
+    (rhs unused).  A landing step within rounding of dt is dt (`LANDING_RTOL`)."""
     n = int(value(par, 0, _N))   # (N comes first: its offset is 0)
     if abs(h - dt) <= LANDING_RTOL * dt:
         h = dt
     for i in range(y.size):
         ynew[i] = y[i]
     f = view(par, n, _SF)
-    return stacked_rk4_step(ynew, ytmp, K.reshape(K.size), view(par, n, _TH),
-                            view(par, n, _DL), view(par, n, _SS), view(par, n, _SC), f, f, f, f,
-                            view(par, n, _S0), view(par, n, _C0), view(par, n, _MINV),
-                            view(par, n, _WTS), h,
-                            np.uint64(n), np.uint64((y.size - 2 * n) // n), np.uint64(n),
-                            np.uint64(y.size), transport_vectors_rate)
+    health = view(par, n, _HEALTH)
+    health[0] = np.inf
+    stacked_rk4_step(ynew, ytmp, K.reshape(K.size), view(par, n, _TH), view(par, n, _DL),
+                     view(par, n, _SS), view(par, n, _SC), f, health, f, f, view(par, n, _S0),
+                     view(par, n, _C0), view(par, n, _MINV), view(par, n, _WTS), h,
+                     np.uint64(n), np.uint64((y.size - 2 * n) // n), np.uint64(n),
+                     np.uint64(y.size), transport_vectors_rate)
+    return health[0]
 
 
 def _rk4_cap(y, par, ipar):
-    """RK4's step cap (``status.step_cap``) from the carried s₀ of the step area (no libm)."""
+    """RK4's step cap (``status.step_cap``) from the carried s₀ (no libm)."""
     n = ipar[I_N]
     return step_cap(sum_squares(view(par, n, _S0), 0, n), sum_squares(y, n, n),
                     value(par, n, _CAP))
