@@ -11,8 +11,9 @@ from numba import njit
 from ..flows.ambient import adjoint_factors, adjoint_rate
 from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
-from ..solvers.status import CAP_FRACTION, RUNNING, SINGULAR, fixed_step_status, sum_squares
-from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step, stacked_substeps
+from ..solvers.status import (CAP_FRACTION, RUNNING, SINGULAR, SINGULAR_S, fixed_step_status,
+                              substep_count, sum_squares)
+from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step
 from .singular_values import smallest_singular_values
 
 __all__ = ["adjoint_step", "backward_kernel", "adjoint_vectors_rate"]
@@ -53,14 +54,6 @@ def adjoint_step(Z, minv, a, h):
     _adjoint_rk4(Z.reshape(L), np.empty(L), np.empty(4 * L), s0, c0, np.empty(n), np.empty(n),
                  np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), minv, a, h,
                  np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L))
-
-
-@njit(cache=True)
-def _adjoint_substeps(Zf, Zt, K, th, dl, s, c, fa, fb, fp, s0, c0, minv, wts, h, hc, n, R, d, L):
-    """The backward step h < 0 in sub-steps within the cap hc (the forward kernel's policy,
-    ``charts.solvers.tangent.stacked_substeps``)."""
-    return stacked_substeps(Zf, Zt, K, th, dl, s, c, fa, fb, fp, fp, s0, c0, minv, wts, h, hc, n,
-                            R, d, L, adjoint_vectors_rate)
 
 
 @njit(cache=True)
@@ -118,12 +111,15 @@ def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, 
             # fast: without them Numba's code for this loop is twice as slow, measured)
             if code != RUNNING:
                 return code, step
-            if hc >= dt:
-                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, -dt, nu, Ru,
+            # (the forward kernel's sub-steps: equal ones within the cap, each from a point
+            # that passes the singular-point test)
+            nsub = substep_count(dt, hc)
+            h = -dt / nsub
+            for sub in range(nsub):
+                if nsub > 1 and sum_squares(s0, 0, n) < SINGULAR_S:
+                    return SINGULAR, step
+                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, h, nu, Ru,
                              du, Lu)
-            elif not _adjoint_substeps(Zf, zt, K, th, dl, s, c, fa, fb, fp, s0, c0, minv, wts,
-                                       -dt, hc, nu, Ru, du, Lu):
-                return SINGULAR, step
             step -= 1
             to_reorth -= 1
             if to_reorth == 0:

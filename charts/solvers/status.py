@@ -16,11 +16,11 @@ kernel) keeps its grid: a capped step is cut into equal sub-steps.
 from __future__ import annotations
 
 import warnings
-from math import isfinite, sqrt
+from math import ceil, isfinite, sqrt
 
 from numba import njit
 
-__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "RUNNING",
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "substep_count", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
            "status_error", "StepSizeWarning", "check_step", "check_duration", "MAX_STEP_LENGTH",
@@ -72,6 +72,14 @@ def fixed_step_status(S, U, dt, fraction):
     if hc >= dt and S < SINGULAR_S:
         return SINGULAR, hc
     return RUNNING, hc
+
+
+@njit(cache=True, inline="always")
+def substep_count(dt, hc):
+    """The equal sub-steps a fixed step ``dt`` is cut into within the cap ``hc`` of
+    `fixed_step_status` (1: the step itself); each sub-step starts with the singular-point
+    test (Σ sin²θ < `SINGULAR_S`: stop)."""
+    return 1 if hc >= dt else int(ceil(dt / hc))
 
 
 #: Most steps one duration may hold (2⁴⁰ ≈ 1.1·10¹²: days of CPU time at the kernel's rate);

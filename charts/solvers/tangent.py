@@ -20,7 +20,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 """
 from __future__ import annotations
 
-from math import ceil, cos, gcd, isfinite, sin
+from math import cos, gcd, isfinite, sin
 
 import numpy as np
 from numba import njit
@@ -31,12 +31,12 @@ from ..geometry.projection import project_state, project_tangent, project_tangen
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error,
-                     fixed_step_status, sum_squares)
+                     fixed_step_status, substep_count, sum_squares)
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
            "shift_sincos_lanes", "shifted", "state_point_rate", "rk4_finish", "stacked_rk4_step",
-           "tangent_vectors_rate", "reorth_steps", "substeps", "stacked_substeps", "countdowns", "REORTH_TIME"]
+           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -174,29 +174,18 @@ def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
     shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
 
 
-@njit(cache=True, inline="always")
-def stacked_substeps(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, h, hc, n, R, d,
-                     L, vectors_rate):
-    """The step h (h < 0: backward) as ⌈|h|/hc⌉ equal `stacked_rk4_step` sub-steps, the
-    singular-point policy of ``charts.solvers.status``; False if a sub-step starts at a
-    singular point.  Inlined into one small compiled function per flow (`substeps`, the
-    backward pass's), which the kernels call: out of their loops, which it would slow down by
-    a third, and with the hook a compile-time constant (a hook passed on at run time would
-    keep numba from caching the caller)."""
-    nsub = int(ceil(abs(h) / hc))
+@njit(cache=True)
+def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
+    """The step dt of one lane of the lane kernel (``charts.solvers.lanes``, in the
+    one-trajectory layout) in `substep_count` equal `_rk4_step` sub-steps within the cap hc,
+    as `tangent_kernel` takes them; False if a sub-step starts at a singular point."""
+    nsub = substep_count(dt, hc)
+    h = dt / nsub
     for sub in range(nsub):
         if sum_squares(s0, 0, n) < SINGULAR_S:
             return False
-        stacked_rk4_step(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, h / nsub, n,
-                         R, d, L, vectors_rate)
+        _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L)
     return True
-
-
-@njit(cache=True)
-def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
-    """The tangent flow's step dt in sub-steps within the cap hc (`stacked_substeps`)."""
-    return stacked_substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R,
-                            d, L, tangent_vectors_rate)
 
 
 @njit(cache=True, inline="always")
@@ -263,12 +252,17 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
         code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), dt, _CAP)
         if code != RUNNING:
             return code, it
-        if hc >= dt:
-            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, nu, Ru, du, Lu)
-        else:  # near a singular point: equal sub-steps within the cap (module doc)
-            if not substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc,
-                             nu, Ru, du, Lu):
+        # near a singular point: equal sub-steps within the cap, each from a point that
+        # passes the singular-point test (the policy, charts.solvers.status); else one step.
+        # One inlined step in a loop: no second copy of it to compile (a separately compiled
+        # sub-step function cost every first call 3.7 s of compiling, the backward pass's
+        # another 3.8 s), and no slower (measured)
+        nsub = substep_count(dt, hc)
+        h = dt / nsub
+        for sub in range(nsub):
+            if nsub > 1 and sum_squares(s0, 0, n) < SINGULAR_S:
                 return SINGULAR, it
+            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du, Lu)
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
