@@ -104,7 +104,11 @@ class DenseSolution:
         return out
 
     def _rows(self, t):
-        t_arr = np.asarray(t, dtype=float)
+        raw = np.asarray(t)
+        if raw.dtype.kind not in "iuf" or raw.ndim > 1:
+            raise ValueError(f"t must be a real number or a 1-D array of real numbers, got "
+                             f"{type(t).__name__} of dtype {raw.dtype} and shape {raw.shape}")
+        t_arr = raw.astype(float)
         if not np.all(np.isfinite(t_arr)):
             raise ValueError("t must be finite")
         slack = 1e-12 * max(1.0, abs(self.t_min), abs(self.t_max))

@@ -71,8 +71,29 @@ class EventTracker:
         self.stop = None
 
     def _values(self, s, rows, k):
+        return np.array([self._value(k, self.t_of(si), row) for si, row in zip(s, rows)])
+
+    def _value(self, k, t, row):
+        """events[k](t, row), checked: one finite real number, else a ValueError naming the
+        event and the time (a NaN, None, a string, a complex number or an array would
+        otherwise lose zeros silently)."""
         fn = self.events[k][0]
-        return np.array([float(fn(self.t_of(si), row)) for si, row in zip(s, rows)])
+        v = fn(t, row)
+        a = np.asarray(v) if isinstance(v, (np.ndarray, np.generic)) else None
+        if a is not None and a.size == 1:
+            v = a.reshape(()).item() if a.dtype.kind in "iuf" else v
+        x = None
+        if not isinstance(v, (bool, np.bool_)) and isinstance(v, (int, float)):
+            try:
+                x = float(v)
+            except OverflowError:       # an int beyond a float's range
+                x = None
+        if x is None or not np.isfinite(x):
+            name = getattr(fn, "__name__", type(fn).__name__)
+            shown = repr(v) if len(repr(v)) <= 60 else repr(v)[:57] + "..."
+            raise ValueError(f"events[{k}] ({name}) returned {shown} at t = {t:.17g}; an event "
+                             "function must return one finite real number")
+        return x
 
     def scan(self):
         if self.stop is not None or not self.events:
@@ -104,7 +125,7 @@ class EventTracker:
                     from scipy.optimize import brentq  # here: scipy.optimize is half of `import charts`
 
                     def g(s, k=k):
-                        return float(self.events[k][0](self.t_of(s), self.sol.sample([s])[0]))
+                        return self._value(k, self.t_of(s), self.sol.sample([s])[0])
                     root = brentq(g, a, b, xtol=ROOT_XTOL, rtol=4 * np.finfo(float).eps)
                 hits.append((root, k))
         self._done = hi
