@@ -16,6 +16,7 @@ import time
 import pytest
 
 from charts.cli.main import main
+from cli_checks import one_line_error
 from charts.runs.outdir import LOCK, OutputError, OutputLock, prepare_output
 
 CHARTS = [sys.executable, "-m", "charts.cli.main"]
@@ -44,13 +45,6 @@ m = [1.0, 0.0]
 [sweep.masses]
 "1,1,1,1/m" = [1, 1, 1, "1/m"]
 """
-
-
-def _one_line_error(capsys, code, status):
-    err = capsys.readouterr().err.strip()
-    assert code == status, err
-    assert err.startswith("charts: error: ") and "\n" not in err and "Traceback" not in err
-    return err
 
 
 @pytest.fixture
@@ -93,7 +87,7 @@ BAD_USAGE = {
 def test_bad_usage_is_one_line_with_status_2(files, capsys, case):
     argv, message = BAD_USAGE[case]
     code = main([a.replace("{t}", str(files)) for a in argv])
-    assert message in _one_line_error(capsys, code, 2)
+    assert message in one_line_error(capsys, code, 2)
 
 
 def test_nothing_is_written_when_the_output_is_refused(files, capsys):
@@ -107,7 +101,7 @@ def test_unreachable_scheduler_fails_within_seconds_naming_the_address(files, ca
         port = s.getsockname()[1]
     addr = f"tcp://127.0.0.1:{port}"
     code = main(["sweep", str(files / "ok.toml"), "-o", str(files / "w"), "--scheduler", addr])
-    assert addr in _one_line_error(capsys, code, 2)
+    assert addr in one_line_error(capsys, code, 2)
 
 
 def test_an_unexpected_failure_is_one_line_status_1_and_debug_shows_the_traceback(
@@ -118,7 +112,7 @@ def test_an_unexpected_failure_is_one_line_status_1_and_debug_shows_the_tracebac
         raise RuntimeError("disk on fire")
     monkeypatch.setattr(runner, "run_scene", boom)
     argv = ["run", str(files / "tiny.toml"), "-o", str(files / "o")]
-    err = _one_line_error(capsys, main(argv), 1)
+    err = one_line_error(capsys, main(argv), 1)
     assert "RuntimeError: disk on fire" in err and "--debug" in err
     assert main(["--debug"] + argv) == 1
     assert "Traceback" in capsys.readouterr().err
@@ -142,7 +136,7 @@ def test_a_folder_held_by_a_live_process_is_refused_a_killed_ones_lock_is_taken_
         for argv in (["run", str(files / "tiny.toml"), "-o", str(out)],
                      ["sweep", str(files / "ok.toml"), "-o", str(out)],
                      ["reproduce", "-o", str(out)]):
-            err = _one_line_error(capsys, main(argv), 2)
+            err = one_line_error(capsys, main(argv), 2)
             assert "another process is writing" in err and f"pid {holder.pid}" in err
     finally:
         holder.send_signal(signal.SIGKILL)

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from charts.cli.main import main
+from cli_checks import one_line_error
 from charts.runs.outdir import LOCK, OutputError, OutputLock, prepare_output
 from charts.runs.runner import SCENE_FIGURES, clear_run_outputs
 
@@ -25,13 +26,6 @@ t_final = 2.0
 sample_dt = 0.5
 [effects.{effect}]
 {extra}"""
-
-
-def _one_line_error(capsys, code, status):
-    err = capsys.readouterr().err.strip()
-    assert code == status, err
-    assert err.startswith("charts: error: ") and "\n" not in err and "Traceback" not in err
-    return err
 
 
 @pytest.fixture
@@ -67,7 +61,7 @@ def test_a_refused_force_deletes_nothing(scenes, capsys):
         capsys.readouterr()
         for scene in ("a.toml", "b.toml"):          # the same scene and another one
             code = main(["run", str(scenes / scene), "-o", str(out), "--force", "--quiet"])
-            err = _one_line_error(capsys, code, 2)
+            err = one_line_error(capsys, code, 2)
             assert "another process is writing" in err and f"pid {holder.pid}" in err
             assert _snapshot(out) == before
     finally:
@@ -83,7 +77,7 @@ def test_a_lock_with_a_live_pid_refuses_force_and_deletes_nothing(scenes, capsys
     capsys.readouterr()
     with OutputLock(out, "test"):
         code = main(["run", str(scenes / "b.toml"), "-o", str(out), "--force", "--quiet"])
-        assert "another process is writing" in _one_line_error(capsys, code, 2)
+        assert "another process is writing" in one_line_error(capsys, code, 2)
         assert _snapshot(out) == before
 
 
@@ -153,7 +147,7 @@ def test_a_lock_charts_did_not_write_is_one_line_and_kept(scenes, capsys, conten
     (out / "result.json").write_text("{}")
     for argv in (["run", str(scenes / "a.toml"), "-o", str(out), "--force"],
                  ["reproduce", "-o", str(out)]):
-        err = _one_line_error(capsys, main(argv), 2)
+        err = one_line_error(capsys, main(argv), 2)
         assert all(w in err for w in words), err
         assert str(lock) in err
     with pytest.raises(OutputError):
