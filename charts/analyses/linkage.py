@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..flows.linkage import NY, acceleration
+from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from .arguments import positive_int, positive_time, progress_reporter, project_steps, steps_of
@@ -39,9 +40,7 @@ def gauss_curvature(system, q, X, Y):
     """Sectional curvature of the plane (X, Y) ⊂ T_q M (tangent vectors, shape (7,)) by the
     Gauss equation (module doc); X, Y need not be orthonormal.  q, X and Y are checked
     (shape (7,), finite) before the compiled acceleration reads them."""
-    from ..geometry.linkage import _vector
-
-    q, X, Y = _vector("q", q), _vector("X", X), _vector("Y", Y)
+    q, X, Y = (finite_array(name, a, (NQ,)) for name, a in (("q", q), ("X", X), ("Y", Y)))
     par = system.par
     w = system.mass
 

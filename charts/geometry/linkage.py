@@ -31,6 +31,7 @@ import math
 import numpy as np
 from numba import njit
 
+from .checks import finite_array
 from .projection import rescale_speed
 from .system import RotorSystem
 
@@ -311,11 +312,11 @@ class LinkageSystem:
     # ------------------------------------------------------------------ evaluation
     def constraints(self, q):
         """F(q), shape (4,); q is checked (shape (7,), finite) before the compiled kernel."""
-        return gen_constraints(_vector("q", q), self.par, np.empty(NC))
+        return gen_constraints(finite_array("q", q, (NQ,)), self.par, np.empty(NC))
 
     def jacobian(self, q):
         """J = ∂F/∂q, shape (4, 7); q is checked (shape (7,), finite) first."""
-        return gen_jacobian(_vector("q", q), self.par, np.empty((NC, NQ)))
+        return gen_jacobian(finite_array("q", q, (NQ,)), self.par, np.empty((NC, NQ)))
 
     def constraint_rank_margin(self, q) -> float:
         """Smallest over largest singular value of J at q (0 where the four constraints are
@@ -346,8 +347,8 @@ class LinkageSystem:
 
     def check_state(self, q, v):
         """Validated float copies of (q, v), shape (7,) each; ValueError off the manifold."""
-        q = _vector("q", q)
-        v = _vector("v", v)
+        q = finite_array("q", q, (NQ,)).copy()
+        v = finite_array("v", v, (NQ,)).copy()
         F = np.max(np.abs(self.constraints(q)))
         if F > TOL:
             raise ValueError(f"q is off the linkage's manifold (max|F| = {F:.2e} > {TOL:g}); "
@@ -366,7 +367,7 @@ class LinkageSystem:
         ``speed`` not a finite number >= 0, a singular configuration q (J Jᵀ singular: the
         Newton step is undefined), a q the Newton steps do not bring onto M, and a speed asked
         of a velocity without a tangent component."""
-        y = np.concatenate([_vector("q", q), _vector("v", v)])
+        y = np.concatenate([finite_array("q", q, (NQ,)), finite_array("v", v, (NQ,))])
         if speed is not None:
             speed = _nonnegative("speed", speed)
         self._check_rank("q", y[:NQ], "the Newton step onto the manifold is undefined")
@@ -391,7 +392,7 @@ class LinkageSystem:
     def first_order_disk(self, theta, branch=1):
         """(x, y, α) of the Appendix's first-order solution for the angles theta: x = ε(c₂ −
         c₀)/2, y = ε(c₁ − c₃)/2, cos α = ε(c₁ + c₃)/(2ρ), sign of sin α = ``branch``."""
-        c = np.cos(_vector("theta", theta, 4))
+        c = np.cos(finite_array("theta", theta, (4,)))
         ca = np.clip(self.eps * (c[1] + c[3]) / (2.0 * self.rho), -1.0, 1.0)
         return np.array([self.eps * (c[2] - c[0]) / 2, self.eps * (c[1] - c[3]) / 2,
                          math.copysign(math.acos(ca), branch)])
@@ -399,8 +400,8 @@ class LinkageSystem:
     def from_rotor_state(self, theta, u, branch=1):
         """The linkage state nearest a state (θ, u) of Σ cos θ = 0: the first-order disk, then
         projected onto the invariants with θ-speed |u| (the ε → 0 comparison)."""
-        theta = _vector("theta", theta, 4)
-        u = _vector("u", u, 4)
+        theta = finite_array("theta", theta, (4,))
+        u = finite_array("u", u, (4,))
         q = np.concatenate([theta, self.first_order_disk(theta, branch)])
         return self.project(q, np.concatenate([u, np.zeros(3)]),
                             speed=float(np.linalg.norm(u)) if self.massless_disk else None)
@@ -428,23 +429,3 @@ def _nonnegative(name, x) -> float:
     if not (math.isfinite(x) and x >= 0):
         raise ValueError(f"{name} must be a finite number >= 0, got {x!r}")
     return float(x)
-
-
-def _vector(name, x, n=NQ):
-    """A float copy of x, shape (n,) (the linkage's q or v for n = 7, rotor angles or
-    velocities for n = 4), finite; ValueError naming ``name`` otherwise.  Every compiled
-    kernel reached from the methods above gets arrays checked here first."""
-    what = "(θ₀…θ₃, x, y, α)" if n == NQ else "(θ₀…θ₃)"
-    try:
-        if np.iscomplexobj(x):
-            raise TypeError("complex values")
-        a = np.array(x, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be an array of {n} real numbers {what}, got "
-                         f"{type(x).__name__} ({exc})") from None
-    if a.shape != (n,):
-        raise ValueError(f"{name} must have shape ({n},) = {what}, got {a.shape}")
-    if not np.all(np.isfinite(a)):
-        raise ValueError(f"{name} has non-finite entries: {np.array2string(a, precision=4)}; "
-                         "pass finite numbers")
-    return a
