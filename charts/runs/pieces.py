@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .io import atomic_write
+from .io import atomic_write, npz_bytes
 
 __all__ = ["SUFFIX", "FORMAT", "piece_path", "save_piece", "load_piece", "kept_pieces",
            "encode_piece", "decode_piece", "PieceError"]
@@ -112,9 +112,7 @@ def encode_piece(key, args, result) -> bytes:
     tree = _encode(result, arrays)
     meta = json.dumps({"format": FORMAT, "key": _key_text(key), "args": _args_text(args),
                        "tree": tree})
-    buf = io.BytesIO()
-    np.savez(buf, allow_pickle=False, **{_META: np.array(meta)}, **arrays)
-    return buf.getvalue()
+    return npz_bytes({_META: np.array(meta), **arrays})     # (no object arrays: `_encode`)
 
 
 def decode_piece(data: bytes, key):

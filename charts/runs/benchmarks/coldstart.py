@@ -79,7 +79,10 @@ print(json.dumps({"marks": marks, "compiles": compiles, "loaded": loaded}))
 """
 
 
-def _env(cache_dir, path):
+def process_env(cache_dir, path):
+    """This process's environment with ``NUMBA_CACHE_DIR=cache_dir`` (None: numba's own) and,
+    with ``path``, charts imported from there (its generated modules stay the installed
+    ones: the editable install maps ``charts.generated``)."""
     env = dict(os.environ)
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = str(cache_dir)
@@ -92,7 +95,7 @@ def probe(cache_dir, path=None) -> dict:
     """Run `PROBE` in a new process with ``NUMBA_CACHE_DIR=cache_dir`` (None: numba's cache
     of this installation): {"phases": [(name, wall s, cpu s)], "compiles": [(depth, function,
     own cpu s, cpu s, wall s)], "loaded": [function loaded from the cache]}."""
-    out = subprocess.run([sys.executable, "-c", PROBE], env=_env(cache_dir, path),
+    out = subprocess.run([sys.executable, "-c", PROBE], env=process_env(cache_dir, path),
                          capture_output=True, text=True, check=True, cwd=cache_dir)
     data = json.loads(out.stdout.strip().splitlines()[-1])
     marks = data["marks"]
@@ -135,7 +138,7 @@ def coldstart_rows(repeat=2, path=None, progress=None) -> list[dict]:
     say = progress or (lambda msg: None)
     with tempfile.TemporaryDirectory(prefix="charts-coldstart-") as tmp:
         subprocess.run([sys.executable, "-c", "import charts; charts.lyapunov_spectrum"],
-                       env=_env(tmp, path), check=True, cwd=tmp)    # byte-code, not timed
+                       env=process_env(tmp, path), check=True, cwd=tmp)    # byte-code, not timed
         empty = []
         for i in range(repeat):
             cache = tempfile.mkdtemp(dir=tmp)

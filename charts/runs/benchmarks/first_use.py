@@ -24,8 +24,10 @@ import subprocess
 import sys
 import tempfile
 import time
+from contextlib import contextmanager
 
 from ..cli_parser import OneLineParser
+from .coldstart import process_env
 from .environment import load, machine
 
 __all__ = ["ANALYSES", "PROBE", "probe", "main"]
@@ -77,34 +79,38 @@ print(json.dumps(rows))
 """
 
 
-def _env(path):
-    env = dict(os.environ)
-    env["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="charts-first-use-numba-")
-    env["CHARTS_CACHE_DIR"] = tempfile.mkdtemp(prefix="charts-first-use-")
-    if path:
-        env["PYTHONPATH"] = os.pathsep.join([str(path), env.get("PYTHONPATH", "")]).rstrip(
-            os.pathsep)
-    return env
+@contextmanager
+def _fresh_env(path):
+    """The environment of a new process on an empty cache: new ``NUMBA_CACHE_DIR`` and
+    ``CHARTS_CACHE_DIR`` folders (removed afterwards) and, with ``path``, charts imported
+    from there (``coldstart``'s environment)."""
+    with tempfile.TemporaryDirectory(prefix="charts-first-use-") as tmp:
+        env = process_env(os.path.join(tmp, "numba"), path)
+        env["CHARTS_CACHE_DIR"] = os.path.join(tmp, "charts")
+        yield env
 
 
 def probe(names, ns, path=None) -> list[dict]:
     """`PROBE` in a new process on an empty cache: one dict per (N, analysis) call:
     {name, n, cpu, compiles: [[function, signature, own cpu s, depth]]}."""
     calls = [[k, ANALYSES[k]] for k in names]
-    out = subprocess.run([sys.executable, "-c", PROBE, json.dumps(calls), json.dumps(list(ns))],
-                         env=_env(path), capture_output=True, text=True, check=True)
+    with _fresh_env(path) as env:
+        out = subprocess.run([sys.executable, "-c", PROBE, json.dumps(calls),
+                              json.dumps(list(ns))], env=env, capture_output=True, text=True,
+                             check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def command(argv, path=None, cwd=None) -> tuple[float, float, int]:
     """(CPU s of the command and its children, wall s, exit status) of ``charts ARGV`` in a new
     process on an empty cache."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    w0 = time.perf_counter()
-    rc = subprocess.run([sys.executable, "-m", "charts.cli.main", *argv], env=_env(path),
-                        cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode
-    wall = time.perf_counter() - w0
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with _fresh_env(path) as env:
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        w0 = time.perf_counter()
+        rc = subprocess.run([sys.executable, "-m", "charts.cli.main", *argv], env=env, cwd=cwd,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode
+        wall = time.perf_counter() - w0
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return cpu, wall, rc
 
