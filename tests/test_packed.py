@@ -46,8 +46,7 @@ def test_compiled_views_read_and_write_the_packed_fields():
 @pytest.mark.parametrize("n", [3, 6])
 def test_a_chart_par_begins_with_the_head_the_equations_read_and_ends_with_the_work_area(n):
     for name in ("n", "masses", "weights", "level"):
-        assert CHART_PAR[{"n": "n", "masses": "local_masses", "weights": "local_weights",
-                          "level": "level"}[name]] == HEAD[name]
+        assert CHART_PAR[name] == HEAD[name]
     oa, ob, la, lb = CHART_PAR["work"]
     assert (oa + la) * n + ob + lb == size(CHART_PAR, n)     # the work area is last
     assert la * n + lb == WORK * (n - 1)

@@ -34,7 +34,7 @@ from ..geometry.primitives import SHIFT_MAX, shifted
 from ..packed import layout, value, view
 
 __all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
-           "start_sincos", "work_area", "WORK", "HEAD"]
+           "start_sincos", "work_area", "WORK", "HEAD", "HEAD_FIELDS"]
 
 #: Floats per local coordinate of the work area at the end of ``par``: the last point q
 #: evaluated and its σ, κ, then the step's start point q₀ and its σ₀, κ₀ (`point_sincos`).
@@ -43,7 +43,8 @@ WORK = 6
 #: masses and weights (the eliminated rotor's last), the level; every ``par`` of a chart
 #: begins with it (`local_parameters`, ``charts.solvers.chart_formulation.PAR``) and ends with
 #: the work area.
-HEAD = layout(("n", 0, 1), ("masses", 1, 0), ("weights", 1, 0), ("level", 0, 1))
+HEAD_FIELDS = (("n", 0, 1), ("masses", 1, 0), ("weights", 1, 0), ("level", 0, 1))
+HEAD = layout(*HEAD_FIELDS)
 _N, _MASSES, _WEIGHTS, _LEVEL = (HEAD[k] for k in ("n", "masses", "weights", "level"))
 
 

@@ -40,7 +40,7 @@ from functools import cache
 import numpy as np
 from numba import njit
 
-from ..flows.chart import WORK, chart_rates, point_sincos, start_sincos, structured_rates, work_area
+from ..flows.chart import HEAD_FIELDS, WORK, chart_rates, point_sincos, start_sincos, structured_rates, work_area
 from ..packed import layout, pack, put, value, view
 from ..geometry.atlas import ambient_index, best_sine, eliminated_angle_sc, eliminated_component_sc
 from ..geometry.projection import invariant_terms, rescale_speed
@@ -57,14 +57,15 @@ __all__ = ["ChartFlow", "leave_chart", "switch_rule", "should_leave", "DEFAULT_T
 DEFAULT_TAU = 0.9
 
 #: The layout of ``par`` (``charts.packed.layout``): the head that ``charts.flows.chart.rates``
-#: reads (N, the chart's local masses and weights, the level), the system's masses and weights
+#: reads (``HEAD_FIELDS``: N, the chart's local masses and weights, the level), the system's
+#: masses and weights
 #: in ambient order, the offset of θₖ, τ, the speed, the project flag, the cap fraction and
 #: the work area of ``charts.flows.chart.point_sincos`` (6(N − 1), at the end).
-PAR = layout(("n", 0, 1), ("local_masses", 1, 0), ("local_weights", 1, 0), ("level", 0, 1),
-             ("masses", 1, 0), ("weights", 1, 0), ("offset", 0, 1), ("tau", 0, 1),
-             ("speed", 0, 1), ("project", 0, 1), ("cap", 0, 1), ("work", WORK, -WORK))
-_LM, _LW, _LEVEL, _MASSES, _WEIGHTS = (PAR[k] for k in ("local_masses", "local_weights", "level",
-                                                        "masses", "weights"))
+PAR = layout(*HEAD_FIELDS, ("system_masses", 1, 0), ("system_weights", 1, 0), ("offset", 0, 1),
+             ("tau", 0, 1), ("speed", 0, 1), ("project", 0, 1), ("cap", 0, 1),
+             ("work", WORK, -WORK))
+_LM, _LW, _LEVEL, _MASSES, _WEIGHTS = (PAR[k] for k in ("masses", "weights", "level",
+                                                        "system_masses", "system_weights"))
 _OFFSET, _TAU, _SPEED, _PROJECT, _CAP, _WORK = (PAR[k] for k in ("offset", "tau", "speed",
                                                                  "project", "cap", "work"))
 #: ``ipar``: N, the number of transported vectors, the chart, its branch, switches logged.
@@ -297,9 +298,9 @@ class ChartFlow(Formulation):
         nv = P.shape[0]
         row = np.concatenate([theta, u, P.ravel()])
         y = np.empty((2 + nv) * (n - 1))
-        par = pack(PAR, n, n=n, level=sys.level, masses=sys.masses, weights=sys.weights,
-                   tau=self.tau, speed=float(sys.speed(u)), project=float(self.project),
-                   cap=self.cap_fraction, work=work_area(n))
+        par = pack(PAR, n, n=n, level=sys.level, system_masses=sys.masses,
+                   system_weights=sys.weights, tau=self.tau, speed=float(sys.speed(u)),
+                   project=float(self.project), cap=self.cap_fraction, work=work_area(n))
         ipar = np.array([n, nv, 0, 1, 0], dtype=np.int64)   # I_N, I_VECTORS, I_CHART, I_BRANCH, I_LOGGED
         self.initial_switches = []
         j = leave_chart(np.abs(sys.weights * np.sin(theta)), k, self.tau)
