@@ -58,3 +58,25 @@ def test_waveform_is_the_integrate_route():
                   t_eval=w.t)
     assert w.u.shape == (18, 3) and np.array_equal(w.u, r.u) and np.array_equal(w.theta, r.theta)
 
+
+
+def test_records_hold_the_state_the_vectors_and_the_kept_sines():
+    """The stacked loop's records: Z's first entries, then (where the record is wider than Z)
+    the weighted sin and cos of the state's angles as the loop keeps them — what the
+    backward pass of the angle test reads at its samples; bit for bit what the flow holds
+    after the recorded step, whatever the chunks."""
+    system = RotorSystem(4, masses=[1.0, 1.3, 0.8, 1.1])
+    theta, u = system.random_state(seed=2)
+    n, k = 4, 2
+    L = (1 + k) * 2 * n
+    f = TangentFlow(system, theta, u, k, dt=0.01, reorth_every=3, project_every=7)
+    states = np.full((5, L + 2 * n), np.nan)
+    short = np.full((5, 2 * n), np.nan)          # narrower than Z: the state alone
+    for row in range(5):
+        for chunk in (2, 3):                       # records every 5 steps, from step 5
+            f.advance(chunk, rec_start=5, rec_every=5, states=states)
+        assert np.array_equal(states[row, :L], f.Z.ravel())
+        assert np.array_equal(states[row, L:], f.sc.ravel())
+    g = TangentFlow(system, theta, u, k, dt=0.01, reorth_every=3, project_every=7)
+    g.advance(25, rec_start=5, rec_every=5, states=short)
+    assert np.array_equal(short, states[:, :2 * n])

@@ -92,8 +92,8 @@ def test_backward_pass_stops_at_a_nonfinite_state_like_the_forward_kernel():
     ck[3, 0] = np.nan                  # the state the pass starts from (segment 2's end)
     W = np.linalg.qr(np.random.default_rng(0).normal(size=(10, 3)))[0].T.copy()
     V = np.zeros((2, 40))
-    status, step = backward_kernel(ck, W, s.minv, s.weights, 0.01, 10, 5, 5, 5, V, np.ones(10),
-                                   np.zeros(3), np.empty(2), np.empty(2))
+    status, step = backward_kernel(ck, W, s.minv, s.masses, s.weights, s.level, 1.0, 0.01, 10,
+                                   5, 5, 5, V, np.ones(10), np.zeros(3), np.empty(2), np.empty(2))
     assert (status, step) == (NONFINITE, 30)
 
 

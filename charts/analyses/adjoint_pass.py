@@ -1,7 +1,9 @@
 """The backward pass of the angle test (section 4, ``charts.analyses.hyperbolicity``): eq (8)
 integrated backward from each trajectory checkpoint jointly with m adjoint vectors
-(ẇ = −J(x(t))ᵀ w), by RK4 with the forward kernel's step policy, and at the sample points
-the sines of the angles (the smallest singular values of W Vᵀ)."""
+(ẇ = −J(x(t))ᵀ w): a formulation of the stacked flows' one time loop
+(``charts.solvers.tangent.stacked_kernel``, the adjoint hook `adjoint_vectors_rate`, step −dt,
+the forward kernel's step policy), and at the sample points the sines of the angles (the
+smallest singular values of W Vᵀ)."""
 from __future__ import annotations
 
 
@@ -11,14 +13,11 @@ from numba import njit
 from ..flows.ambient import adjoint_factors, adjoint_rate
 from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
-from ..solvers.status import (CAP_FRACTION, RUNNING, SINGULAR, SINGULAR_S, fixed_step_status,
-                              substep_count, sum_squares)
-from ..solvers.tangent import orthonormal_rows, orthonormalize, stacked_rk4_step
+from ..solvers.status import RUNNING
+from ..solvers.tangent import orthonormal_rows, stacked_kernel, stacked_rk4_step
 from .singular_values import smallest_singular_values
 
-__all__ = ["adjoint_step", "backward_kernel", "adjoint_vectors_rate"]
-
-_CAP = CAP_FRACTION["rk4"]
+__all__ = ["adjoint_step", "backward_kernel", "adjoint_vectors_rate", "sample_sines"]
 
 
 @njit(cache=True, inline="always")
@@ -57,96 +56,86 @@ def adjoint_step(Z, minv, a, h):
 
 
 @njit(cache=True)
-def backward_kernel(ck, W, minv, wts, dt, ck_every, first_sample, sample_every, reorth, V, w,
-                    logs, sf, sr):
-    """Backward pass over the segments (last first) down to step ``first_sample``, W
-    re-orthonormalised at every step index that is a multiple of ``reorth`` (which divides
-    the sample steps, logs of the norms added to ``logs``); at the k-th sample step the
-    smallest singular values of W V_kᵀ into sf[k] (full) and of W_r V_kᵀ into sr[k]
-    (restricted), V_k the m forward vectors after the state in V[k] (the forward pass's
-    records, shape (S, (1 + m)·2N)).  Returns (status, step): RUNNING, or NONFINITE /
-    SINGULAR (the forward kernel's tests) at that step."""
+def sample_sines(rec, row, V, q, w, y, sc, Wr, ga, gb, M, sv):
+    """At one sample point: the smallest singular values of W Vᵀ into sv[0] (full) and of
+    W_r Vᵀ into sv[1] (restricted), W the rows after the state in rec[row] (the backward
+    pass's record: the state, the m rows, then the weighted sin and cos of the state's angles
+    as the pass kept them), W_r those rows projected Euclidean-orthogonally onto
+    T_r at the state and re-orthonormalised, V the m forward vectors after the state in
+    V[q] (the forward pass's record).  y (2N,), sc (2, N), Wr (m, 2N), ga, gb (2N,),
+    M (2, m, m): work space."""
+    kk, d = Wr.shape
+    n = d // 2
+    for i in range(d):
+        y[i] = rec[row, i]
+    for r in range(kk):
+        for i in range(d):
+            Wr[r, i] = rec[row, d + r * d + i]
+    o = (1 + kk) * d
+    for j in range(n):
+        sc[0, j] = rec[row, o + j]
+        sc[1, j] = rec[row, o + n + j]
+    project_tangent_euclidean_sc(y, Wr, sc[0], sc[1], ga, gb)
+    orthonormal_rows(Wr, w)
+    for r in range(kk):
+        for s_ in range(kk):
+            af = 0.0
+            ar = 0.0
+            for i in range(d):
+                af += rec[row, d + r * d + i] * V[q, d + s_ * d + i]
+                ar += Wr[r, i] * V[q, d + s_ * d + i]
+            M[0, r, s_] = af
+            M[1, r, s_] = ar
+    smallest_singular_values(M, sv)
+
+
+@njit(cache=True)
+def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_sample,
+                    sample_every, reorth, V, w, logs, sf, sr):
+    """Backward pass over the segments (last first) down to step ``first_sample``: each
+    segment from its checkpoint ck[seg + 1] by the stacked flows' one time loop
+    (``charts.solvers.tangent.stacked_kernel``, with the adjoint hook and step −dt; the state
+    is not projected), W re-orthonormalised at every step index that is a multiple of
+    ``reorth`` (which divides the segment and sample steps; logs of the norms added to
+    ``logs``) and recorded at the sample steps; at the k-th sample step the sines of
+    `sample_sines` into sf[k] (full) and sr[k] (restricted), V_k the forward pass's record
+    V[k] (shape (S, (1 + m)·2N)).  Returns (status, step): RUNNING, or NONFINITE / SINGULAR
+    (the forward kernel's tests) at that step."""
     d = ck.shape[1]
     n = d // 2
     kk = W.shape[0]
     Z = np.empty((1 + kk, d))
     Z[1:] = W
-    Wv = Z[1:]
-    y = Z[0]
-    L = (1 + kk) * d
-    Zf = Z.reshape(L)
-    nu, Ru, du, Lu = np.uint64(n), np.uint64(1 + kk), np.uint64(d), np.uint64(L)
-    zt = np.empty(L)
-    K = np.empty(4 * L)
-    s0 = np.empty(n)
-    c0 = np.empty(n)
-    th = np.empty(n)
-    dl = np.empty(n)
-    s = np.empty(n)
-    c = np.empty(n)
-    fa = np.empty(n)
-    fb = np.empty(n)
-    fp = np.empty(n)
+    sc = np.empty((2, n))
+    counter = np.zeros(1, dtype=np.int64)
+    rec = np.empty((ck_every // sample_every + 1, (1 + kk) * d + d))  # Z, then sin, cos
+    no_events = np.empty(0, dtype=np.int64)
+    none = np.empty((0, 0))
+    ys = np.empty(d)
+    scs = np.empty((2, n))
+    Wr = np.empty((kk, d))
     ga = np.empty(d)
     gb = np.empty(d)
     M = np.empty((2, kk, kk))
     sv = np.empty(2)
-    Wr = np.empty((kk, d))
-    nseg = ck.shape[0] - 1
     S = V.shape[0]
-    for seg in range(nseg - 1, first_sample // ck_every - 1, -1):
+    for seg in range(ck.shape[0] - 2, first_sample // ck_every - 1, -1):
         Z[0] = ck[seg + 1]
-        sincos(Zf, 0, n, wts, s0, c0)
-        step = (seg + 1) * ck_every
-        to_reorth = step % reorth or reorth  # steps to the next multiple of reorth
-        j = step - first_sample              # (> 0) and to the next sample, of index q − 1
-        q = -(-j // sample_every)
-        to_sample = j % sample_every or sample_every
-        for jj in range(ck_every):
-            # the forward kernel's step policy (charts.solvers.status): near an N = 4
-            # singular point the step is cut into equal sub-steps within the cap
-            code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), dt,
-                                         _CAP)
-            # (the exits, never taken after a forward pass that passed, also keep the loop
-            # fast: without them Numba's code for this loop is twice as slow, measured)
-            if code != RUNNING:
-                return code, step
-            # (the forward kernel's sub-steps: equal ones within the cap, each from a point
-            # that passes the singular-point test)
-            nsub = substep_count(dt, hc)
-            h = -dt / nsub
-            for sub in range(nsub):
-                if nsub > 1 and sum_squares(s0, 0, n) < SINGULAR_S:
-                    return SINGULAR, step
-                _adjoint_rk4(Zf, zt, K, s0, c0, th, dl, s, c, fa, fb, fp, minv, wts, h, nu, Ru,
-                             du, Lu)
-            step -= 1
-            to_reorth -= 1
-            if to_reorth == 0:
-                to_reorth = reorth
-                orthonormalize(Wv, w, logs)
-            to_sample -= 1
-            if to_sample == 0:
-                to_sample = sample_every
-                q -= 1
-                if q < S:
-                    for r in range(kk):
-                        for i in range(d):
-                            Wr[r, i] = Wv[r, i]
-                    project_tangent_euclidean_sc(y, Wr, s0, c0, ga, gb)
-                    orthonormal_rows(Wr, w)
-                    for r in range(kk):
-                        for s_ in range(kk):
-                            af = 0.0
-                            ar = 0.0
-                            for i in range(d):
-                                af += Wv[r, i] * V[q, d + s_ * d + i]
-                                ar += Wr[r, i] * V[q, d + s_ * d + i]
-                            M[0, r, s_] = af
-                            M[1, r, s_] = ar
-                    smallest_singular_values(M, sv)
-                    sf[q] = sv[0]
-                    sr[q] = sv[1]
-            if step == first_sample:
-                return RUNNING, step
+        sincos(ck[seg + 1], 0, n, wts, sc[0], sc[1])
+        top = (seg + 1) * ck_every
+        nsteps = top - max(seg * ck_every, first_sample)
+        counter[0] = 0                   # steps down from top (a multiple of reorth)
+        rec_start = (top - first_sample) % sample_every
+        status, done = stacked_kernel(Z, sc, counter, minv, masses, wts, level, speed, -dt,
+                                      nsteps, reorth, w, False, 0, logs, rec_start,
+                                      sample_every, rec, no_events, none, adjoint_vectors_rate)
+        if status != RUNNING:
+            return status, top - done
+        for i in range(rec_start if rec_start > 0 else sample_every, nsteps + 1, sample_every):
+            q = (top - i - first_sample) // sample_every
+            if q < S:
+                sample_sines(rec, (i - rec_start) // sample_every, V, q, w, ys, scs, Wr, ga,
+                             gb, M, sv)
+                sf[q] = sv[0]
+                sr[q] = sv[1]
     return RUNNING, first_sample

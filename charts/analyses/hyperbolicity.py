@@ -245,8 +245,9 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     sf = np.empty(S)
     sr = np.empty(S)
     blog = np.zeros(m)
-    status, step = backward_kernel(ck, W, system.minv, system.weights, dt, ce, n_tr, sample,
-                                   reorth, states, flow.w, blog, sf, sr)
+    status, step = backward_kernel(ck, W, system.minv, system.masses, system.weights,
+                                   system.level, flow.speed, dt, ce, n_tr, sample, reorth,
+                                   states, flow.w, blog, sf, sr)
     if status != RUNNING:
         raise status_error(status, step * dt, "hyperbolicity_angles (backward RK4)")
     rep.update(nsteps * dt)

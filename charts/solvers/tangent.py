@@ -35,7 +35,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "shift_sincos_lanes", "shifted", "stacked_kernel", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
@@ -201,25 +201,29 @@ def countdowns(i0, project_every, reorth_every, events):
     return to_proj, to_reorth, ev
 
 
-@njit(cache=True)
-def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+@njit(cache=True, inline="always")
+def stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                    restricted, project_every, logsum, rec_start, rec_every, states, events,
-                   event_logs):
-    """Advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eqs (8) + (17) on the
-    constraint Σ wtsᵢ cos θᵢ = level.
+                   event_logs, vectors_rate):
+    """The time loop of every stacked flow: advance Z = [y; X], shape (1 + k, 2N), by
+    ``nsteps`` RK4 steps of eq (8) and of the vectors' linear flow ``vectors_rate`` (the hook
+    of `stacked_rk4_step`: eq (17) in `tangent_kernel`, the adjoint flow in the backward pass
+    of ``charts.analyses.adjoint_pass``) on the constraint Σ wtsᵢ cos θᵢ = level; dt < 0
+    steps backward in time.
 
-    ``sc`` (2, N): a sin θ, a cos θ of y's angles (a = wts), kept current; ``counter`` (1,): global step count.
-    After global step i: project y onto the invariants (`project_state`) when
-    i % project_every == 0 (``project_every`` = 0: never); project X onto T_r (if
+    ``sc`` (2, N): a sin θ, a cos θ of y's angles (a = wts), kept current; ``counter`` (1,):
+    global step count.  After global step i: project y onto the invariants (`project_state`)
+    when i % project_every == 0 (``project_every`` = 0: never); project X onto T_r (if
     ``restricted``) and re-orthonormalise (eq 18, logs added to ``logsum``) when
     i % reorth_every == 0; when i ≥ rec_start and (i − rec_start) % rec_every == 0, store
-    the first ``states.shape[1]`` entries of Z (y, then the rows of X) in ``states[row]``,
+    the first ``states.shape[1]`` entries of Z (y, then the rows of X), then of sc (the
+    weighted sines, then cosines, as the loop keeps them) in ``states[row]``,
     row = (i − rec_start) // rec_every (if ``states`` has that row); when i = events[e] (a
     sorted array of global steps), store ``logsum`` in ``event_logs[e]``.
 
-    Steps follow the policy of ``charts.solvers.status``: a step longer than the cap near a
-    singular point is cut into equal sub-steps.  Returns (status, steps done): RUNNING, or
-    SINGULAR / NONFINITE with Z at the start of the failing step.
+    Steps follow the policy of ``charts.solvers.status`` (for |dt|): a step longer than the
+    cap near a singular point is cut into equal sub-steps.  Returns (status, steps done):
+    RUNNING, or SINGULAR / NONFINITE with Z at the start of the failing step.
 
     The time loop is one function on purpose: the equations are inlined, and an array-valued
     call or view inside the loop would cost reference-count updates per step (see
@@ -241,6 +245,8 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
     dl = np.empty(n)
     s, c, f, g, p, q = stage_work(n)
     nrec = states.shape[1]
+    nz = min(nrec, L)                   # the record: Z's first nz entries, then where
+    nsc = n if nrec > L else 0          # asked s0 and c0 (nsc each)
     # countdowns to the next projection / re-orthonormalisation / record, from the global
     # step counter (so that the phases do not depend on how the steps are chunked)
     i0 = counter[0]
@@ -248,8 +254,9 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
     to_rec = -1
     if rec_every > 0:
         to_rec = rec_start - i0 if i0 < rec_start else rec_every - (i0 - rec_start) % rec_every
+    adt = abs(dt)
     for it in range(nsteps):
-        code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), dt, _CAP)
+        code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), adt, _CAP)
         if code != RUNNING:
             return code, it
         # near a singular point: equal sub-steps within the cap, each from a point that
@@ -257,12 +264,13 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
         # One inlined step in a loop: no second copy of it to compile (a separately compiled
         # sub-step function cost every first call 3.7 s of compiling, the backward pass's
         # another 3.8 s), and no slower (measured)
-        nsub = substep_count(dt, hc)
+        nsub = substep_count(adt, hc)
         h = dt / nsub
         for sub in range(nsub):
             if nsub > 1 and sum_squares(s0, 0, n) < SINGULAR_S:
                 return SINGULAR, it
-            _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du, Lu)
+            stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du,
+                             Lu, vectors_rate)
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
@@ -287,9 +295,23 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
             to_rec = rec_every
             row = (counter[0] - rec_start) // rec_every
             if row < states.shape[0]:
-                for j in range(nrec):
+                for j in range(nz):
                     states[row, j] = Zf[j]
+                for j in range(nsc):          # then s0, c0 where asked
+                    states[row, nz + j] = s0[j]
+                    states[row, nz + n + j] = c0[j]
     return RUNNING, nsteps
+
+
+@njit(cache=True)
+def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                   restricted, project_every, logsum, rec_start, rec_every, states, events,
+                   event_logs):
+    """`stacked_kernel` of eqs (8) + (17): the state and its tangent vectors (hook
+    `tangent_vectors_rate`), the kernel of `TangentFlow` and of every forward analysis."""
+    return stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every,
+                          w, restricted, project_every, logsum, rec_start, rec_every, states,
+                          events, event_logs, tangent_vectors_rate)
 
 
 def reorth_steps(dt, *multiples) -> int:
