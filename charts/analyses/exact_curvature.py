@@ -23,18 +23,23 @@ def exact_curvature_matrix(system, theta, P):
     return exact_curvatures(system, np.asarray(theta, float)[None], np.asarray(P, float)[None])[0]
 
 
-def exact_curvatures(system, theta, P):
+def exact_curvatures(system, theta, P, route="chart"):
     """Route (b): K_ij = ⟨R(p_j, p_0)p_0, p_i⟩ for the M-orthonormal tangent frames P,
-    shape (S, k + 1, N) (row 0 = p_0), at the points theta, shape (S, N), from the generated
-    Riemann tensor in the best chart (``RotorSystem.best_chart``; with the weights and level
-    of the constraint), or by the Gauss equation (with the weighted normal) where N has no
-    generated kernels.  Compiled over all samples; returns shape (S, k, k)."""
+    shape (S, k + 1, N) (row 0 = p_0), at the points theta, shape (S, N).  ``route``:
+    ``"chart"`` the generated Riemann tensor in the best chart (``RotorSystem.best_chart``;
+    with the weights and level of the constraint), or the Gauss equation where N has no
+    generated kernels; ``"gauss"`` the Gauss equation in ambient form (with the weighted
+    normal, ``charts.geometry.structured``) for every N.  Compiled over all samples; returns
+    shape (S, k, k)."""
+    if route not in ("chart", "gauss"):
+        raise ValueError(f"route must be 'chart' (the generated Riemann tensor) or 'gauss' (the "
+                         f"Gauss equation), got {route!r}")
     theta = np.ascontiguousarray(theta, dtype=float)
     P = np.ascontiguousarray(P, dtype=float)
     S, r = P.shape[0], P.shape[1]
     K = np.empty((S, r - 1, r - 1))
     n = system.n
-    if source(n) == "structured":
+    if route == "gauss" or source(n) == "structured":
         _gauss_frames(theta, P, system.masses, system.weights, K)
         return K
     charts_ = np.asarray(system.best_chart(theta), dtype=np.int64).reshape(S)

@@ -16,7 +16,6 @@ chart's branch.
 """
 from __future__ import annotations
 
-import itertools
 import warnings
 
 import numpy as np
@@ -26,6 +25,7 @@ from .checks import finite_array, integer, number
 from .kernels import geometry
 from .projection import project_constraint, tangent_part
 from .structured import gauss_sectional
+from .topology import CRITICAL_RTOL, critical_points
 
 __all__ = ["RotorSystem", "TOL", "CriticalLevelWarning", "critical_levels"]
 
@@ -42,17 +42,13 @@ class CriticalLevelWarning(UserWarning):
     """The level is a critical value of F = Σ aᵢ cos θᵢ: the manifold has singular points."""
 
 
-#: |c − Σ ±aᵢ| below this (relative to Σ|aᵢ|) counts as the critical value itself.
-CRITICAL_RTOL = 1e-12
 #: Largest N whose 2ᴺ sign patterns are checked for criticality (2²⁰ ≈ 10⁶ sums).
 CRITICAL_MAX_N = 20
 
 
 def critical_levels(weights) -> np.ndarray:
     """The critical values Σ ±aᵢ of F = Σ aᵢ cos θᵢ (at θᵢ ∈ {0, π}), sorted, unique."""
-    a = np.asarray(weights, dtype=float)
-    signs = np.array(list(itertools.product((1.0, -1.0), repeat=a.size)))
-    return np.unique(signs @ a)
+    return np.unique(critical_points(weights)[0])
 
 
 def _check_family(n, weights, level):
