@@ -345,6 +345,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     from .sweep import add_parser as add_sweep_parser   # `charts sweep`
     add_sweep_parser(sub)
+    from .verdict import add_parser as add_verdict_parser   # `charts verdict`
+    add_verdict_parser(sub)
     return ap
 
 
