@@ -1,6 +1,8 @@
-"""The N = 3 surface's verdict from exact invariants: the Gauss–Bonnet theorem by both
-curvature routes, the leading exponent against the bracket of Katok's and Osserman–Sarnak's
-inequalities, and the certified sign of the curvature (docs/verdict.md; ``charts verdict``).
+"""The verdicts on hyperbolicity from exact invariants and certificates (docs/hyperbolicity.md;
+``charts verdict``): for N = 3 the Gauss–Bonnet theorem by both curvature routes, the leading
+exponent against the bracket of Katok's and Osserman–Sarnak's inequalities and the certified
+sign of the curvature; for N ≥ 4 the flat totally geodesic torus that rules out the Anosov
+property, with the monodromy of its closed geodesic.
 """
 from __future__ import annotations
 
@@ -9,10 +11,11 @@ import time
 import numpy as np
 
 from ..analyses.curvature_certificate import certify_curvature_sign
+from ..analyses.flat_tori import certify_flat_torus
 from ..analyses.lyapunov import lyapunov_spectrum
 from ..analyses.surface_integrals import surface_integrals
 
-__all__ = ["surface_verdict", "format_verdict"]
+__all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed"]
 
 
 def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict:
@@ -44,12 +47,59 @@ def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict
                 seconds=time.perf_counter() - t0)
 
 
+def torus_verdict(system) -> dict:
+    """The flat-torus certificate of ``system`` (N ≥ 4; ``charts.analyses.flat_tori``) as one
+    JSON-ready dict."""
+    t0 = time.perf_counter()
+    cert = certify_flat_torus(system).to_dict()
+    return dict(system=dict(n=system.n, masses=system.masses.tolist(),
+                            weights=system.weights.tolist(), level=float(system.level)),
+                torus=cert, seconds=time.perf_counter() - t0)
+
+
+def verdict_passed(rep: dict) -> bool:
+    """Every check of a report holds: Gauss–Bonnet to 1e-6 relative, no exponent outside
+    the bracket by over 3 standard errors, a curvature certificate that decided (N = 3); a
+    torus proof with every step true (N ≥ 4)."""
+    if "torus" in rep:
+        return all(s["holds"] for s in rep["torus"]["proof"])
+    chi = rep["routes"]["chart"]["euler_characteristic"]
+    scale = 2 * np.pi * max(abs(chi), 1)
+    return (all(abs(r["gauss_bonnet_error"]) <= 1e-6 * scale for r in rep["routes"].values())
+            and all(e["consistent"] for e in rep["exponents"])
+            and rep["certificate"]["verdict"] != "undecided")
+
+
 def _num(x, fmt=".6f"):
     return "—" if x is None else format(x, fmt)
 
 
+def _format_torus(rep: dict) -> str:
+    s, t = rep["system"], rep["torus"]
+    lines = [f"N = {s['n']}: masses {s['masses']}, weights {s['weights']}, level {s['level']:g}",
+             f"antipodal torus: {t['verdict']}"]
+    if t["pairs"]:
+        lines.append(f"  pairs (theta_j = theta_i + pi) {t['pairs']}, at pi/2: {t['lone']}; "
+                     f"a flat torus of dimension {t['dimension']}")
+    for step in t["proof"]:
+        lines.append(f"  [{'proved' if step['holds'] else 'FAILED'}] {step['statement']}")
+    m = t["monodromy"]
+    if m:
+        lines.append(f"  closed geodesic: period {m['period']:.6f}, {m['steps']} RK4 steps; stays "
+                     f"on the torus to {m['max_distance_from_torus']:.1e}, returns to "
+                     f"{m['return_error']:.1e}")
+        if "jordan_residual" in m:
+            lines.append(f"  monodromy: the in-torus Jacobi field t*w (linear growth) to "
+                         f"{m['jordan_residual']:.1e}; transverse exponents "
+                         + ", ".join(f"{x:+.4f}" for x in m["transverse_exponents"]))
+    lines.append(f"({rep['seconds']:.1f} s)")
+    return "\n".join(lines)
+
+
 def format_verdict(rep: dict) -> str:
-    """The report of `surface_verdict` as text."""
+    """A report of `surface_verdict` or `torus_verdict` as text."""
+    if "torus" in rep:
+        return _format_torus(rep)
     s = rep["system"]
     c = rep["routes"]["chart"]
     lines = [f"N = 3 surface: masses {s['masses']}, weights {s['weights']}, level {s['level']:g}",
