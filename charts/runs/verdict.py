@@ -117,7 +117,8 @@ def format_verdict(rep: dict) -> str:
     for e in rep["exponents"]:
         lines.append(f"  lambda1 (seed {e['seed']}, T = {e['t_final']:g}) = {e['lambda1']:.4f} "
                      f"± {e['stderr']:.4f}: "
-                     + ("inside the bracket by 3 standard errors" if e["resolved_inside"] else
+                     + ("no bracket (chi >= 0)" if lo is None and hi is None else
+                        "inside the bracket by 3 standard errors" if e["resolved_inside"] else
                         "consistent with the bracket (within 3 standard errors)"
                         if e["consistent"] else "VIOLATES the bracket by over 3 standard errors"))
     cert = rep["certificate"]
