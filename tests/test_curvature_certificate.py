@@ -82,10 +82,11 @@ def test_refusals():
 
 def test_verdict_command(tmp_path, capsys):
     out = tmp_path / "v.json"
-    rc = main(["verdict", "--grid", "128", "--t-final", "400", "--seeds", "3", "--json", str(out)])
+    rc = main(["verdict", "--n", "3", "--grid", "128", "--t-final", "400", "--seeds", "3",
+               "--json", str(out)])
     text = capsys.readouterr().out
     assert rc == 0, text
-    rep = json.loads(out.read_text())
+    [rep] = json.loads(out.read_text())
     assert rep["certificate"]["verdict"] == "nonpositive"
     assert rep["routes"]["chart"]["euler_characteristic"] == -4
     assert "Gauss-Bonnet, gauss route" in text and "K = 0 exactly at" in text
