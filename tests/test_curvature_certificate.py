@@ -90,5 +90,5 @@ def test_verdict_command(tmp_path, capsys):
     assert rep["certificate"]["verdict"] == "nonpositive"
     assert rep["routes"]["chart"]["euler_characteristic"] == -4
     assert "Gauss-Bonnet, gauss route" in text and "K = 0 exactly at" in text
-    assert main(["verdict", "--level", "1"]) == 2        # a critical level: one-line refusal
+    assert main(["verdict", "--n", "3", "--level", "1"]) == 2   # a critical level: one line
     assert "critical value" in capsys.readouterr().err
