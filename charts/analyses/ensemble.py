@@ -10,6 +10,7 @@ from ..archive import Archivable, attributes, dataset, require_xarray
 from ..compilation import announce, timed_call
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
+from .spectrum_quantities import kaplan_yorke_dimension, kolmogorov_sinai_entropy, with_error
 from .statistics import standard_error
 
 __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result"]
@@ -81,6 +82,32 @@ class EnsembleResult(Archivable):
         ex = ds["ensemble_exponents"].values if "ensemble_exponents" in ds else None
         se = ds["ensemble_stderr"].values if "ensemble_stderr" in ds else None
         return cls(members=members, exponents=ex, stderr=se, params=a["params"])
+
+    def _spectra(self):
+        """(mean spectrum, the members' spectra) of a Lyapunov ensemble."""
+        spectra = [getattr(m, "spectrum", None) for m in self.members]
+        if self.exponents is None or any(x is None for x in spectra):
+            raise ValueError("the entropy and the dimension need a Lyapunov ensemble whose "
+                             "members hold the whole relevant spectrum (n_exponents=None)")
+        rows = np.array(spectra)
+        return rows.mean(axis=0), rows
+
+    def kolmogorov_sinai_entropy(self):
+        """(h_KS, standard error): Pesin's sum of the positive exponents of the mean spectrum,
+        its error from the spread of the members (``charts.analyses.spectrum_quantities``)."""
+        return with_error(kolmogorov_sinai_entropy, *self._spectra())
+
+    def kaplan_yorke_dimension(self):
+        """(D_KY, standard error) of the mean spectrum, the error from the members."""
+        return with_error(kaplan_yorke_dimension, *self._spectra())
+
+    def plot_spectrum(self, ax=None, **kw):
+        """The mean exponents ± their standard error (the members' spread) against i/(N − 2)
+        (``charts.plotting.plot_lyapunov_spectrum``); ``(fig, ax)``."""
+        if self.exponents is None:
+            raise ValueError("plot_spectrum needs a Lyapunov ensemble")
+        from ..plotting import plot_lyapunov_spectrum
+        return plot_lyapunov_spectrum(self.exponents, self.stderr, self.params["n"], ax=ax, **kw)
 
     def __repr__(self):
         if self.exponents is None:

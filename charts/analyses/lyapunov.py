@@ -33,6 +33,8 @@ from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         start_state, steps_of)
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
+from .spectrum_quantities import (kaplan_yorke_dimension, kolmogorov_sinai_entropy,
+                                  reconstructed_spectra, with_error)
 from .statistics import batch_ends, batch_estimates
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
@@ -183,6 +185,33 @@ class LyapunovResult(Archivable):
         ``paper=[...]`` adds reference values)."""
         from ..plotting import plot_lyapunov
         return plot_lyapunov(self.history_t, self.history, self.exponents, self.stderr, ax=ax, **kw)
+
+    def plot_spectrum(self, ax=None, **kw):
+        """λᵢ ± standard error against i/(N − 2), so that spectra of several N share one axis
+        (``charts.plotting.plot_lyapunov_spectrum``); ``(fig, ax)``."""
+        from ..plotting import plot_lyapunov_spectrum
+        return plot_lyapunov_spectrum(self.exponents, self.stderr, self.params["n"], ax=ax, **kw)
+
+    def _spectra(self):
+        """(the spectrum, its batch estimates as spectra): what the entropy and the dimension
+        are computed from; ValueError where not every positive exponent was computed."""
+        if self.spectrum is None:
+            raise ValueError(f"this result holds {len(self.exponents)} exponents, not the whole "
+                             "relevant spectrum; compute n_exponents=None (the N-2 positive ones) "
+                             "or every exponent of the space")
+        k, total = len(self.exponents), len(self.spectrum)
+        rows = self.batches if k == total else reconstructed_spectra(self.batches, k, total)
+        return self.spectrum, rows
+
+    def kolmogorov_sinai_entropy(self):
+        """(h_KS, standard error): the sum of the positive exponents (Pesin's formula), its
+        error from the batches (``charts.analyses.spectrum_quantities``)."""
+        return with_error(kolmogorov_sinai_entropy, *self._spectra())
+
+    def kaplan_yorke_dimension(self):
+        """(D_KY, standard error) of the relevant spectrum (for a geodesic flow, whose
+        exponents sum to zero, the dimension of the whole space: a check)."""
+        return with_error(kaplan_yorke_dimension, *self._spectra())
 
     def __repr__(self):
         pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))

@@ -65,6 +65,24 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
     return fig, ax
 
 
+def plot_lyapunov_spectrum(exponents, stderr, n, *, ax=None, label=None, title=None):
+    """Exponents λᵢ ± ``stderr`` against i/(N − 2), i = 1…k (the positive half of a geodesic
+    flow's spectrum fills (0, 1]), so that spectra of several N can be drawn on one ``ax``
+    and compared; ``label`` defaults to "N = n"."""
+    lam = np.asarray(exponents, dtype=float)
+    x = np.arange(1, lam.size + 1) / max(n - 2, 1)
+    fig, ax = figure_axes(ax, figsize=(6.4, 4.4))
+    yerr = None if stderr is None else np.asarray(stderr, dtype=float)
+    ax.errorbar(x, lam, yerr=yerr, marker="o", ms=3.5, lw=1.0, capsize=3,
+                label=label or f"N = {n}")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel("i / (N − 2)")
+    ax.set_ylabel("λᵢ (1 / time unit)")
+    ax.set_title(title or "Lyapunov spectrum (positive half) ± standard error", fontsize=10)
+    ax.legend(fontsize=8, frameon=False)
+    return fig, ax
+
+
 def plot_curvature(samples, *, quantiles=CURVATURE_QUANTILES, axes=None, ax=None, title=None,
                    bins=60):
     """Histograms of sectional curvatures, one panel per direction: ``samples`` maps a route

@@ -1,0 +1,55 @@
+"""The quantities computed next from a Lyapunov spectrum: the Kolmogorov–Sinai entropy (Pesin's
+formula: the sum of the positive exponents, for the smooth invariant measure of a geodesic
+flow) and the Kaplan–Yorke dimension, with standard errors from the independent estimates
+behind a spectrum (the batches of one run, or the members of an ensemble).
+
+For a geodesic flow the spectrum comes in pairs ±λ with two zeros (the flow direction and the
+speed), so the exponents sum to zero and the Kaplan–Yorke dimension is that of the whole
+space the spectrum lives on (2N − 2 for the restricted tangent space): a check of the
+spectrum rather than a measure of an attractor.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .statistics import standard_error
+
+__all__ = ["kolmogorov_sinai_entropy", "kaplan_yorke_dimension", "with_error",
+           "reconstructed_spectra"]
+
+
+def kolmogorov_sinai_entropy(spectrum) -> float:
+    """Σ max(λᵢ, 0): the Kolmogorov–Sinai entropy by Pesin's formula (1/time)."""
+    lam = np.asarray(spectrum, dtype=float)
+    return float(lam[lam > 0].sum())
+
+
+def kaplan_yorke_dimension(spectrum) -> float:
+    """j + (λ₁ + … + λⱼ)/|λⱼ₊₁| with j the largest index whose partial sum is ≥ 0 (exponents
+    sorted decreasing); 0 if λ₁ < 0, the number of exponents if every partial sum is ≥ 0."""
+    lam = np.sort(np.asarray(spectrum, dtype=float))[::-1]
+    if lam.size == 0 or lam[0] < 0:
+        return 0.0
+    partial = np.cumsum(lam)
+    # partial sums that vanish to rounding count as ≥ 0 (a spectrum in ± pairs sums to 0)
+    tol = 1e-12 * np.abs(lam).sum()
+    j = int(np.nonzero(partial >= -tol)[0][-1]) + 1
+    if j == lam.size:
+        return float(j)
+    return float(j + partial[j - 1] / abs(lam[j]))
+
+
+def reconstructed_spectra(exponents, n_positive, total):
+    """Spectra of ``total`` exponents from rows of the ``n_positive`` leading (positive)
+    exponents of a geodesic flow: (λ…, zeros, −λ… reversed); rows (m, n_positive) → (m, total)."""
+    E = np.atleast_2d(np.asarray(exponents, dtype=float))[:, :n_positive]
+    zeros = np.zeros((E.shape[0], total - 2 * n_positive))
+    return np.hstack([E, zeros, -E[:, ::-1]])
+
+
+def with_error(quantity, spectrum, rows):
+    """(``quantity`` of ``spectrum``, its standard error from the independent estimates
+    ``rows`` of the spectrum: the batches of one run, or the members of an ensemble)."""
+    rows = np.atleast_2d(np.asarray(rows, dtype=float))
+    values = np.array([quantity(row) for row in rows])
+    return float(quantity(spectrum)), float(standard_error(values))

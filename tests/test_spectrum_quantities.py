@@ -1,0 +1,69 @@
+"""Kolmogorov–Sinai entropy and Kaplan–Yorke dimension against closed forms: a spectrum in ±
+pairs (a geodesic flow: the whole space), N = 3's single exponent, a dissipative textbook
+spectrum (Lorenz); their errors from the batches of a run and the members of an ensemble; the
+spectrum plot against i/(N − 2)."""
+import numpy as np
+import pytest
+
+import charts
+from charts.analyses.spectrum_quantities import (kaplan_yorke_dimension,
+                                                 kolmogorov_sinai_entropy,
+                                                 reconstructed_spectra)
+
+
+def test_closed_forms():
+    assert kolmogorov_sinai_entropy([0.5, 0.0, 0.0, -0.5]) == 0.5
+    assert kaplan_yorke_dimension([0.5, 0.0, 0.0, -0.5]) == 4.0
+    pairs = [0.3, 0.2, 0.1, 0.0, 0.0, -0.1, -0.2, -0.3]
+    assert kolmogorov_sinai_entropy(pairs) == pytest.approx(0.6)
+    assert kaplan_yorke_dimension(pairs) == 8.0
+    # Lorenz (σ = 10, ρ = 28, β = 8/3): D = 2 + 0.906 / 14.572
+    assert kaplan_yorke_dimension([0.906, 0.0, -14.572]) == pytest.approx(2 + 0.906 / 14.572)
+    assert kaplan_yorke_dimension([-0.1, -0.2]) == 0.0
+    assert kaplan_yorke_dimension([0.3, 0.1]) == 2.0
+    assert kaplan_yorke_dimension([-1.5, 1.0, 0.0]) == pytest.approx(2 + 1 / 1.5)  # sorted first
+    np.testing.assert_array_equal(reconstructed_spectra([[0.3, 0.1]], 2, 6),
+                                  [[0.3, 0.1, 0.0, 0.0, -0.1, -0.3]])
+
+
+def test_n3_single_exponent():
+    """N = 3: h_KS = λ₁ with λ₁'s own batch error, D_KY = 4 (the restricted space)."""
+    s = charts.RotorSystem(3)
+    r = charts.lyapunov_spectrum(s, *s.random_state(seed=2), 400.0)
+    h, se = r.kolmogorov_sinai_entropy()
+    assert h == pytest.approx(r.exponents[0], rel=1e-14)
+    assert se == pytest.approx(r.stderr[0], rel=1e-12)
+    assert r.kaplan_yorke_dimension() == (4.0, 0.0)
+
+
+def test_entropy_of_a_run_and_of_an_ensemble():
+    s = charts.RotorSystem(5)
+    r = charts.lyapunov_spectrum(s, *s.random_state(seed=1), 400.0)
+    h, se = r.kolmogorov_sinai_entropy()
+    assert h == pytest.approx(r.exponents.sum(), rel=1e-14) and 0 < se < 0.1 * h
+    assert r.kaplan_yorke_dimension()[0] == 8.0
+    e = charts.lyapunov_ensemble(s, 3, 200.0, workers=1)
+    per = np.array([m.exponents.sum() for m in e.members])
+    he, see = e.kolmogorov_sinai_entropy()
+    assert he == pytest.approx(per.mean(), rel=1e-12)
+    assert see == pytest.approx(per.std(ddof=1) / np.sqrt(3), rel=1e-12)
+
+
+def test_a_partial_spectrum_is_refused():
+    s = charts.RotorSystem(5)
+    r = charts.lyapunov_spectrum(s, *s.random_state(seed=1), 50.0, n_exponents=1)
+    with pytest.raises(ValueError, match="whole relevant spectrum"):
+        r.kolmogorov_sinai_entropy()
+
+
+def test_spectrum_plot_overlays_several_n():
+    fig = None
+    for n in (4, 6):
+        s = charts.RotorSystem(n)
+        r = charts.lyapunov_spectrum(s, *s.random_state(seed=1), 50.0, t_transient=0.0)
+        fig, ax = r.plot_spectrum(ax=None if fig is None else ax)
+    lines = ax.get_legend_handles_labels()[1]
+    assert lines == ["N = 4", "N = 6"]
+    x = ax.containers[1][0].get_xdata()             # the second errorbar: N = 6, i/(N−2)
+    np.testing.assert_allclose(x, [0.25, 0.5, 0.75, 1.0])
+    assert ax.get_xlabel() == "i / (N − 2)"
