@@ -101,3 +101,33 @@ def test_angles_scene_with_nothing_written_is_the_api_call(tmp_path):
         assert np.array_equal(a["angles_t"], api.t)
         assert np.array_equal(a["angles_full"], api.phi_full, equal_nan=True)
         assert np.array_equal(a["angles_restricted"], api.phi_restricted, equal_nan=True)
+
+
+def test_defaults_follow_dt_where_written_values_must_be_whole():
+    """A default left to the signature follows dt (the nearest whole number of steps, dividing
+    t_final where it must); the same value written by the caller is refused, as any duration
+    that is not a whole number of steps."""
+    system = RotorSystem(4)
+    theta0, u0 = system.random_state(seed=0)
+    r = lyapunov_spectrum(system, theta0, u0, 40.0, dt=0.04, t_transient=0.0)
+    assert r.params["reorth_every"] == pytest.approx(0.08)            # 2.5 steps → 2
+    with pytest.raises(ValueError, match="reorth_every=0.1 is not a whole number of steps"):
+        lyapunov_spectrum(system, theta0, u0, 40.0, dt=0.04, reorth_every=0.1)
+    a = hyperbolicity_angles(system, theta0, u0, 6.0, dt=0.04, t_transient=1.0)
+    assert a.params["sample_every"] == pytest.approx(0.08)
+    assert repr(default(lyapunov_spectrum, "reorth_every")) == "0.1"   # the signature reads plainly
+    # at the default dt nothing changes: 0.1 is 10 steps
+    assert lyapunov_spectrum(system, theta0, u0, 40.0, t_transient=0.0).params[
+        "reorth_every"] == 0.1
+
+
+def test_scene_that_only_sets_dt_is_the_api_call(tmp_path):
+    """dt = 0.04, nothing else written: the scene runs (it was refused: reorth_every = 0.1 is
+    not a multiple of dt) and gives the API's numbers bit for bit."""
+    sc = parse_scene({"system": {"n": 4}, "integrator": {"dt": 0.04}, "run": {"t_final": 40.0},
+                      "effects": {"lyapunov": {}}})
+    assert sc.effects["lyapunov"]["reorth_every"] == pytest.approx(0.08)
+    res = run_scene(sc, tmp_path / "ly", quiet=True)["results"]["lyapunov"]
+    system = RotorSystem(4)
+    api = lyapunov_spectrum(system, *system.random_state(seed=0), 40.0, dt=0.04)
+    assert res["exponents"] == api.exponents.tolist()

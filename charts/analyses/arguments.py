@@ -1,17 +1,31 @@
 """Argument checks shared by every analysis: one message style, one rule for time grids.
 
 Times are in time units of the flow everywhere.  A duration on the RK4 grid (``t_final``,
-``t_transient``, ``sample_every``, ...) must be a whole number of steps ``dt``: it is never
-rounded silently.
+``t_transient``, ``sample_every``, ...) that the caller writes must be a whole number of steps
+``dt``: it is never rounded silently.  A default the caller leaves (`Documented`: the
+signatures' ``reorth_every=0.1``, ``sample_every=0.1``, ``t_transient=50.0``, …) follows
+``dt`` instead: the nearest whole number of steps (at least one), and where it must divide
+another duration, the largest count at most that which does (docs/reliability.md).
 """
 from __future__ import annotations
 
 from ..geometry.checks import integer, number
 from ..solvers.progress import progress_reporter
 from ..solvers.status import MAX_STEPS, check_step
+from ..solvers.tangent import largest_divisor
 
 __all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
-           "project_steps", "samples_of", "start_state", "unstable_dimension"]
+           "project_steps", "samples_of", "start_state", "unstable_dimension", "Documented"]
+
+
+class Documented(float):
+    """A default duration as documented in a signature (``reorth_every=Documented(0.1)``
+    shows as 0.1): `steps_of` makes it follow ``dt`` where a value the caller writes would be
+    refused.  Any arithmetic on it gives a plain float."""
+    __slots__ = ()
+
+    def __repr__(self):
+        return repr(float(self))
 
 
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
@@ -35,12 +49,18 @@ def nonnegative_time(name, x) -> float:
     return x
 
 
-def steps_of(name, t, dt, *, allow_zero=False) -> int:
+def steps_of(name, t, dt, *, allow_zero=False, divides=0) -> int:
     """The number of steps ``dt`` in the duration ``t``; ValueError naming ``name`` if ``t``
     is not finite, negative (or zero unless ``allow_zero``), shorter than one step, more than
-    `MAX_STEPS` steps, or not a whole number of steps."""
+    `MAX_STEPS` steps, or not a whole number of steps.  A `Documented` default is not refused:
+    it gives the nearest whole number of steps (at least one if t > 0), and with ``divides``
+    (a step count) the largest count at most that which divides it."""
+    documented = isinstance(t, Documented)
     t = nonnegative_time(name, t) if allow_zero else positive_time(name, t)
     ratio = t / dt
+    if documented and ratio <= MAX_STEPS:
+        k = max(1, round(ratio)) if t > 0 else 0
+        return largest_divisor(int(divides), k) if divides and k else int(k)
     if ratio > MAX_STEPS:
         raise ValueError(f"{name}={t:g} is {ratio:.3g} steps of dt={dt:g}, more than "
                          f"{MAX_STEPS:.3g}; use a larger dt or a shorter {name}")

@@ -47,7 +47,7 @@ from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        samples_of, start_state, steps_of, unstable_dimension)
+                        samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .finite_time import domination, finite_time_statistics
 from .hyperbolicity import angle_statistics
 from .singular_values import smallest_singular_values
@@ -280,8 +280,9 @@ class CovariantResult(Archivable):
 
 @announces_compilation
 def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restricted", dt=0.01,
-                               n_unstable=None, t_transient=100.0, sample_every=0.1,
-                               project_every=1.0, seed=0, keep_vectors=False,
+                               n_unstable=None, t_transient=Documented(100.0),
+                               sample_every=Documented(0.1), project_every=Documented(1.0),
+                               seed=0, keep_vectors=False,
                                max_memory=MAX_MEMORY, scratch=None,
                                progress=False) -> CovariantResult:
     """CLVs by Ginelli's method along the trajectory from (theta0, u0), and the angles,
@@ -374,7 +375,7 @@ def _clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_
     dt = positive_time("dt", dt)
     n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)
-    sample = steps_of("sample_every", sample_every, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=n_win)
     project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
     max_memory = positive_int("max_memory", max_memory, 0)

@@ -44,7 +44,7 @@ from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
                                tangent_kernel)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        samples_of, start_state, steps_of)
+                        samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
@@ -312,8 +312,9 @@ class CurvatureResult(Archivable):
 
 
 @announces_compilation
-def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.1,
-                               t_transient=50.0, exact=True, project_every=1.0, seed=0,
+def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
+                               sample_every=Documented(0.1), t_transient=Documented(50.0),
+                               exact=True, project_every=Documented(1.0), seed=0,
                                progress=False) -> CurvatureResult:
     """Sectional curvatures K_ij along the trajectory from (theta0, u0), routes (a) and (b).
 
@@ -343,8 +344,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01, sample_e
     """
     n = system.n
     dt = positive_time("dt", dt)
-    sample = steps_of("sample_every", sample_every, dt)
     total = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=total)
     S = samples_of(total, sample, t_final, sample_every)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     project = project_steps(project_every, dt)

@@ -46,7 +46,7 @@ from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
 from .adjoint_pass import adjoint_step, backward_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        samples_of, start_state, steps_of, unstable_dimension)
+                        samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .ensemble import EnsembleResult, run_ensemble
 from .singular_values import smallest_singular_values
 from .statistics import small_value_law
@@ -171,8 +171,9 @@ def _sin_to_angle(sv):
 
 @announces_compilation
 def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=None,
-                         t_transient=100.0, sample_every=0.1, checkpoint_every=1.0,
-                         project_every=1.0, seed=0, progress=False) -> AngleResult:
+                         t_transient=Documented(100.0), sample_every=Documented(0.1),
+                         checkpoint_every=Documented(1.0), project_every=Documented(1.0),
+                         seed=0, progress=False) -> AngleResult:
     """Angles between the expanding subspace and the zero-and-contracting subspace along
     the trajectory from (theta0, u0), both variants (see module docstring).
 
@@ -208,7 +209,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     dt = positive_time("dt", dt)
     n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)
-    sample = steps_of("sample_every", sample_every, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=n_win)
     ce = steps_of("checkpoint_every", checkpoint_every, dt)
     project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)

@@ -21,6 +21,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field, replace
 from functools import partial
+from math import gcd
 
 import numpy as np
 
@@ -31,7 +32,7 @@ from ..geometry.projection import project_tangent
 from ..solvers.lanes import LaneFlows
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        start_state, steps_of)
+                        start_state, steps_of, Documented)
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
 from .spectrum_quantities import (kaplan_yorke_dimension, kolmogorov_sinai_entropy,
                                   reconstructed_spectra, with_error)
@@ -66,8 +67,9 @@ class LyapunovSettings:
 
 
 def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="theta",
-                      space="restricted", t_transient=50.0, n_batches=20, reorth_every=0.1,
-                      project_every=1.0, record_every=1.0, seed=0) -> LyapunovSettings:
+                      space="restricted", t_transient=Documented(50.0), n_batches=20,
+                      reorth_every=Documented(0.1), project_every=Documented(1.0),
+                      record_every=Documented(1.0), seed=0) -> LyapunovSettings:
     """Check the arguments of `lyapunov_spectrum` (ValueError naming the bad one)."""
     n = system.n
     dt = positive_time("dt", dt)
@@ -83,13 +85,19 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
         raise ValueError(f"n_exponents={k} is out of range 1..{kmax} for inner={inner!r}, "
                          f"space={space!r}; use inner='full' for more than N−1 exponents")
     n_batches = positive_int("n_batches", n_batches, 2)
-    reorth = steps_of("reorth_every", reorth_every, dt)
-    project = project_steps(project_every, dt)
+    total = steps_of("t_final", t_final, dt)
     record = steps_of("record_every", record_every, dt)
+    # a default reorth_every divides t_final (and a record_every that is written); a default
+    # record_every is then the nearest multiple of reorth
+    documented_record = isinstance(record_every, Documented)
+    reorth = steps_of("reorth_every", reorth_every, dt,
+                      divides=total if documented_record else gcd(total, record))
+    if documented_record:
+        record = max(1, round(record / reorth)) * reorth
+    project = project_steps(project_every, dt)
     if record % reorth:
         raise ValueError(f"record_every={record_every:g} must be a multiple of "
                          f"reorth_every={reorth_every:g}")
-    total = steps_of("t_final", t_final, dt)
     if total % reorth:
         raise ValueError(f"t_final={t_final:g} must be a multiple of reorth_every={reorth_every:g}")
     if total < n_batches * reorth:
@@ -220,8 +228,9 @@ class LyapunovResult(Archivable):
 
 @announces_compilation
 def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
-                      inner="theta", space="restricted", t_transient=50.0, n_batches=20,
-                      reorth_every=0.1, project_every=1.0, record_every=1.0, seed=0,
+                      inner="theta", space="restricted", t_transient=Documented(50.0),
+                      n_batches=20, reorth_every=Documented(0.1),
+                      project_every=Documented(1.0), record_every=Documented(1.0), seed=0,
                       progress=False) -> LyapunovResult:
     """Lyapunov exponents of eq (8) along the trajectory from (theta0, u0), eqs (17)-(18).
 

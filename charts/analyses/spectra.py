@@ -20,7 +20,7 @@ from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
 from ..archive import Archivable, attributes, dataset
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
-                        start_state, steps_of)
+                        start_state, steps_of, Documented)
 
 __all__ = ["Waveform", "PowerSpectrum", "waveform", "power_spectrum"]
 
@@ -94,14 +94,14 @@ class PowerSpectrum(Archivable, tuple):
 
 
 @announces_compilation
-def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=0.05, t_transient=0.0,
-             project_every=1.0, progress=False) -> Waveform:
+def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=Documented(0.05),
+             t_transient=0.0, project_every=Documented(1.0), progress=False) -> Waveform:
     """θ(t) and u(t) from (theta0, u0) every ``sample_every`` up to ``t_final`` after
     discarding ``t_transient`` (all times whole numbers of RK4 steps ``dt``); ``progress``:
     True or callable(t_done, t_total)."""
     dt = positive_time("dt", dt)
-    sample = steps_of("sample_every", sample_every, dt)
     total = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=total)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     project = project_steps(project_every, dt)
     S = samples_of(total, sample, t_final, sample_every)

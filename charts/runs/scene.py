@@ -29,6 +29,7 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
+from ..analyses.arguments import Documented, steps_of
 from ..solvers.status import check_step
 from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
                            where)
@@ -148,6 +149,8 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         # atol: None = integrate's default, rtol·min(1, speed)
 
     _transients(linkage, run, "t_transient" in raw_run, effects)
+    if method == "rk4":
+        _follow_dt(run, effects, integ["dt"])
 
     # -- run: times on the grids ---------------------------------------------------------------
     grid = integ["dt"] if method == "rk4" else None
@@ -176,6 +179,25 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
 
     return Scene(name=name, description=top["description"], system=system, initial=initial,
                  integrator=integ, run=run, effects=effects, source=source)
+
+
+#: Defaults that must divide t_final (the API's ``divides``): per effect table, the keys.
+_DIVIDE_T_FINAL = {"lyapunov": ("reorth_every",), "curvature": ("sample_every",),
+                   "clv": ("sample_every",), "angles": ("sample_every",)}
+
+
+def _follow_dt(run, effects, dt):
+    """Each duration the scene leaves to the API's default (a `Documented` value of its
+    signature) put on the step grid as the API puts it (``charts.analyses.arguments.
+    steps_of``): the nearest whole number of steps, dividing t_final where it must — so that
+    a scene that only sets dt runs where the API call does, with the same steps."""
+    total = int(round(run["t_final"] / dt)) if run["t_final"] else 0   # checked below
+    tables = [("run", run)] + list(effects.items())
+    for name, table in tables:
+        for key, value in table.items():
+            if isinstance(value, Documented):
+                divides = total if key in _DIVIDE_T_FINAL.get(name, ()) else 0
+                table[key] = steps_of(key, value, dt, allow_zero=True, divides=divides) * dt
 
 
 def _transients(linkage, run, written, effects):

@@ -36,7 +36,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
            "shift_sincos_lanes", "shifted", "stacked_kernel", "state_point_rate", "rk4_finish", "stacked_rk4_step",
-           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME"]
+           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -321,10 +321,14 @@ def reorth_steps(dt, *multiples) -> int:
     g = 0
     for m in multiples:
         g = gcd(g, int(m))
-    target = max(1, int(round(REORTH_TIME / dt)))
+    return largest_divisor(g, max(1, int(round(REORTH_TIME / dt))))
+
+
+def largest_divisor(g, limit) -> int:
+    """The largest count ≤ ``limit`` (≥ 1) that divides ``g`` (``limit`` itself for g = 0)."""
     if g == 0:
-        return target
-    return max(r for r in range(1, min(target, g) + 1) if g % r == 0)
+        return limit
+    return max(r for r in range(1, min(limit, g) + 1) if g % r == 0)
 
 
 def inner_weights(system, inner):
