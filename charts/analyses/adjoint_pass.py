@@ -105,7 +105,11 @@ def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_
     n = d // 2
     kk = W.shape[0]
     Z = np.empty((1 + kk, d))
-    Z[1:] = W
+    # copies by loops, not slices: a slice copy compiles numba's shape-mismatch message
+    # (string formatting, ~1 s of every first compile: docs/performance.md, First use)
+    for r in range(kk):
+        for i in range(d):
+            Z[1 + r, i] = W[r, i]
     sc = np.empty((2, n))
     counter = np.zeros(1, dtype=np.int64)
     rec = np.empty((ck_every // sample_every + 1, (1 + kk) * d + d))  # Z, then sin, cos
@@ -120,7 +124,8 @@ def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_
     sv = np.empty(2)
     S = V.shape[0]
     for seg in range(ck.shape[0] - 2, first_sample // ck_every - 1, -1):
-        Z[0] = ck[seg + 1]
+        for i in range(d):
+            Z[0, i] = ck[seg + 1, i]
         sincos(ck[seg + 1], 0, n, wts, sc[0], sc[1])
         top = (seg + 1) * ck_every
         nsteps = top - max(seg * ck_every, first_sample)

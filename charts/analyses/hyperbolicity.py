@@ -94,7 +94,8 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, 
                                        no_events, none)
             if status != RUNNING:
                 return status
-        ck[i + 1] = Z[0]
+        for j in range(Z.shape[1]):      # a loop, not a slice copy (adjoint_pass)
+            ck[i + 1, j] = Z[0, j]
     return RUNNING
 
 
