@@ -14,7 +14,10 @@ The contract of a result type (a class with ``Archivable`` among its bases):
 
 Attributes: numbers and strings are stored as they are; anything else (dicts, lists, None,
 booleans) as JSON text prefixed ``json:`` — exact for floats (shortest round-trip repr) and
-integers, so settings come back equal.
+integers, so settings come back equal.  For readers without this package every file also
+carries the CF global attributes (``Conventions``, ``title``, ``history``, ``source``,
+``references``) and the entries of its ``params`` and ``options`` as native attributes
+(``params_masses = [1.0, 2.0, 3.0]``, ``params_level = 0.0``, ...).
 """
 from __future__ import annotations
 
@@ -28,7 +31,7 @@ import numpy as np
 from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "attributes", "save", "load", "require_xarray",
-           "ENGINE"]
+           "ENGINE", "TITLES", "GLOBALS", "FLATTENED"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
@@ -85,11 +88,68 @@ def _decode(v):
     return v
 
 
+#: Titles of the files of each kind (CF ``title``).
+TITLES = {
+    "trajectory": "geodesic of the rotor constraint manifold (charts.integrate)",
+    "lyapunov": "Lyapunov spectrum (charts.lyapunov_spectrum)",
+    "curvature": "sectional curvatures along a trajectory (charts.curvature_along_trajectory)",
+    "angles": "angles between the expanding and the zero-and-contracting subspaces "
+              "(charts.hyperbolicity_angles)",
+    "covariant": "covariant Lyapunov vectors (charts.covariant_lyapunov_vectors)",
+    "waveform": "waveforms theta(t), u(t) (charts.waveform)",
+    "spectrum": "power spectrum (charts.power_spectrum)",
+    "ensemble": "ensemble of independent trajectories (charts ensembles)",
+    "scene": "scene results (charts run)",
+    "sweep": "sweep table (charts sweep)",
+}
+#: CF global attributes every file carries (not settings: `attributes` leaves them out).
+GLOBALS = ("Conventions", "title", "history", "source", "references", "institution")
+#: Settings dicts that are also written entry by entry as native NetCDF attributes
+#: (``params_masses = [1, 2, 3]``), for readers without this package; the JSON copy stays the
+#: exact one that ``load`` reads.
+FLATTENED = ("params", "options")
+REFERENCE = ("S. P. Kuznetsov, Chaos and hyperchaos of geodesic flows on curved manifolds "
+             "corresponding to mechanically coupled rotators")
+
+
+def _native(v):
+    """v as a native NetCDF attribute value (a number, a string, a 1-D numeric array), or None."""
+    if isinstance(v, (bool, np.bool_)) or v is None:
+        return None
+    if isinstance(v, (str, int, float, np.integer, np.floating)):
+        return v
+    if isinstance(v, (list, tuple, np.ndarray)):
+        a = np.asarray(v)
+        if a.ndim == 1 and a.size and a.dtype.kind in "if":
+            return a
+    return None
+
+
+def _global_attributes(kind: str) -> dict:
+    import datetime
+    import platform
+
+    from .version import __version__
+    versions = [f"charts {__version__}", f"python {platform.python_version()}",
+                f"numpy {np.__version__}"]
+    try:
+        import numba
+        versions.append(f"numba {numba.__version__}")
+    except ImportError:                      # pragma: no cover - numba is a dependency
+        pass
+    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+    return {"Conventions": "CF-1.10", "title": f"charts: {TITLES.get(kind, kind)}",
+            "history": f"{now}: written by charts {__version__}",
+            "source": ", ".join(versions), "references": REFERENCE}
+
+
 def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict | None = None):
-    """An ``xarray.Dataset`` stamped with ``charts_kind`` and ``charts_version``.
+    """An ``xarray.Dataset`` stamped with ``charts_kind`` and ``charts_version`` and the CF
+    global attributes (`GLOBALS`: conventions, title, history, source, references).
 
     ``data_vars`` and ``coords``: name → ``(dims, array, units)`` or
-    ``(dims, array, units, description)``; ``attrs``: settings (encoded as above)."""
+    ``(dims, array, units, description)``; ``attrs``: settings (encoded as above; the entries
+    of the `FLATTENED` dicts also as native attributes ``params_<key>``)."""
     xr = require_xarray()
     from .version import __version__
 
@@ -102,15 +162,31 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
 
     ds = xr.Dataset({k: var(v) for k, v in data_vars.items()},
                     coords={k: var(v) for k, v in (coords or {}).items()})
+    for dim, size in ds.sizes.items():          # every dimension labelled: an index where
+        if dim not in ds.coords:                   # the result has no coordinate of its own
+            ds = ds.assign_coords({dim: xr.Variable((dim,), np.arange(size, dtype=np.int64),
+                                                    {"units": "1", "long_name": f"{dim} index, from 0"})})
+    ds.attrs.update(_global_attributes(kind))
     ds.attrs.update({k: _encode(v) for k, v in (attrs or {}).items()})
+    for name in FLATTENED:
+        for key, value in ((attrs or {}).get(name) or {}).items():
+            native = _native(value)
+            if native is not None:
+                ds.attrs[f"{name}_{key}"] = native
     ds.attrs["charts_kind"] = kind
     ds.attrs["charts_version"] = __version__
     return ds
 
 
+def _setting(key) -> bool:
+    return not (key.startswith("charts_") or key in GLOBALS
+                or any(key.startswith(f"{name}_") for name in FLATTENED))
+
+
 def attributes(ds) -> dict:
-    """The dataset's attributes, decoded (without the ``charts_*`` stamps)."""
-    return {k: _decode(v) for k, v in ds.attrs.items() if not k.startswith("charts_")}
+    """The dataset's settings, decoded (without the ``charts_*`` stamps, the CF globals and
+    the native copies of the `FLATTENED` dicts)."""
+    return {k: _decode(v) for k, v in ds.attrs.items() if _setting(k)}
 
 
 def save(ds, path) -> Path:

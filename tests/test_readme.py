@@ -25,6 +25,9 @@ def test_readme_notebook_example_runs(tmp_path, monkeypatch):
     res = namespace["res"]
     assert len(res.t_events[0]) > 100 and res.sol(12.5).shape == (6,)
     assert (tmp_path / "lyap.nc").exists()
+    ds = namespace["ds"]                    # the file, read without charts
+    assert int(ds.attrs["params_n"]) == 4 and ds.attrs["Conventions"].startswith("CF-")
+    ds.close()
 
 
 def test_every_package_folder_is_installed():

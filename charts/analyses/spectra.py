@@ -11,7 +11,7 @@ spectral density per unit ω (its integral over ω ≥ 0 is the signal's varianc
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -27,11 +27,13 @@ __all__ = ["Waveform", "PowerSpectrum", "waveform", "power_spectrum"]
 
 @dataclass
 class Waveform(Archivable):
-    """Sampled trajectory: t (S,), theta (S, N), u (S, N); sample spacing ``dt_sample``."""
+    """Sampled trajectory: t (S,), theta (S, N), u (S, N); sample spacing ``dt_sample``;
+    ``params``: the system, the initial state and the settings of the call."""
     t: np.ndarray
     theta: np.ndarray
     u: np.ndarray
     dt_sample: float
+    params: dict = field(default_factory=dict)
 
     KIND = "waveform"
 
@@ -39,13 +41,15 @@ class Waveform(Archivable):
         return dataset(self.KIND, {"theta": (("t", "rotor"), self.theta, "rad"),
                                    "u": (("t", "rotor"), self.u, "rad / time")},
                        coords={"t": (("t",), self.t, "time"),
-                               "rotor": (("rotor",), np.arange(1, self.theta.shape[1] + 1), "1")},
-                       attrs={"dt_sample": self.dt_sample})
+                               "rotor": (("rotor",), np.arange(self.theta.shape[1]), "1",
+                                         "rotor index, from 0 as in scenes")},
+                       attrs={"dt_sample": self.dt_sample, "params": self.params})
 
     @classmethod
     def from_xarray(cls, ds):
-        return cls(ds["t"].values, ds["theta"].values, ds["u"].values,
-                   attributes(ds)["dt_sample"])
+        a = attributes(ds)
+        return cls(ds["t"].values, ds["theta"].values, ds["u"].values, a["dt_sample"],
+                   a.get("params", {}))
 
     def plot(self, ax=None, **kw):
         """θᵢ(t) wrapped to (−π, π]; ``(fig, ax)`` (``charts.plotting.plot_angles_time``)."""
@@ -121,7 +125,12 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=Documented(0.
     rep.close()
     t = np.arange(1, S + 1) * sample * dt
     n = system.n
-    return Waveform(t, out[:, :n], out[:, n:], sample * dt)
+    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=float(system.level), speed=flow.speed, dt=dt,
+                  theta0=np.asarray(theta0, float).tolist(), u0=np.asarray(u0, float).tolist(),
+                  t_final=total * dt, t_transient=transient * dt,
+                  project_every=project * dt or None)
+    return Waveform(t, out[:, :n], out[:, n:], sample * dt, params)
 
 
 def power_spectrum(signal, dt_sample, *, segment_time=200.0):

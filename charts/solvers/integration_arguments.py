@@ -86,11 +86,21 @@ class IntegrationArguments:
         """The user's time at integration time s."""
         return self.t0 + self.sign * s
 
+    def params(self) -> dict:
+        """The system and the initial state a result records (``IntegrationResult.params``):
+        with `options`, the whole call."""
+        sys_ = self.system
+        return dict(n=sys_.n, masses=sys_.masses.tolist(), weights=sys_.weights.tolist(),
+                    level=float(sys_.level), speed=float(self.speed),
+                    theta0=np.asarray(self.theta0, float).tolist(),
+                    u0=np.asarray(self.u0, float).tolist(), n_transported=int(self.P.shape[0]))
+
     def options(self) -> dict:
         """The settings a result records (``IntegrationResult.options``)."""
         return dict(dt=self.dt, rtol=self.rtol, atol=self.atol, project=self.project,
                     tau=self.tau if self.formulation == "chart" else None,
-                    chunk_steps=self.chunk_steps, t_span=[self.t0, self.t1])
+                    chunk_steps=self.chunk_steps, t_span=[self.t0, self.t1],
+                    output="t_eval" if self.use_eval else "steps")
 
 
 def check_arguments(system, theta0, u0, t_final, *, t_span, formulation, method, dt, rtol, atol,

@@ -38,7 +38,7 @@ def collect_result(args: IntegrationArguments, run: LoopRun, status: str, s_end:
     res = IntegrationResult(t=t, **_split_rows(Y, n, args.P.shape[0]), switches=switches,
                             drift=_drift(args.system, Y, check, args.P.shape[0], run.mon),
                             **run.counters(), status=status, formulation=args.formulation,
-                            method=args.method, options=args.options())
+                            method=args.method, options=args.options(), params=args.params())
     res.sol = run.sol if args.dense_output else None
     if tracker is not None:
         res.t_events, res.y_events = tracker.results()

@@ -41,6 +41,10 @@ class IntegrationResult(Archivable):
     t_events, y_events : list of ndarray, or None
         With ``events``: per event, the times (m,) and ambient states (m, (2 + k)·n) of its
         zeros, as in SciPy.
+    options, params : dict
+        The call's settings (step, tolerances, projection, span) and its system and initial
+        state (n, masses, weights, level, speed, theta0, u0): saved with the result, so a
+        file says what produced it.
     """
 
     t: np.ndarray
@@ -56,6 +60,7 @@ class IntegrationResult(Archivable):
     formulation: str
     method: str
     options: dict = field(default_factory=dict)
+    params: dict = field(default_factory=dict)
     sol: DenseSolution | None = None
     t_events: list | None = None
     y_events: list | None = None
@@ -78,17 +83,27 @@ class IntegrationResult(Archivable):
                                    "parallel-transported vectors, ambient components")
         attrs = dict(drift=self.drift, n_steps=self.n_steps, n_rejected=self.n_rejected,
                      n_rhs=self.n_rhs, status=self.status, formulation=self.formulation,
-                     method=self.method, options=self.options)
+                     method=self.method, options=self.options, params=self.params)
         if self.t_events is not None:
             ids = np.concatenate([np.full(len(te), i) for i, te in enumerate(self.t_events)])
             data["event_t"] = (("event",), np.concatenate(self.t_events), "time", "event time")
             data["event_index"] = (("event",), ids.astype(np.int64), "1", "index in events")
-            data["event_y"] = (("event", "state"), np.concatenate(self.y_events), "rad, rad / time",
-                               "ambient state [θ, u, p…] at the event")
+            Y = np.concatenate(self.y_events)
+            data["event_y"] = (("event", "state"), Y, "1",
+                               "ambient state [θ, u, p…] at the event: the units of each "
+                               "component are in state_units")
             attrs["n_events"] = len(self.t_events)
-        return dataset(self.KIND, data, coords={"t": (("t",), self.t, "time"),
-                                                "rotor": (("rotor",), np.arange(1, n + 1), "1")},
-                       attrs=attrs)
+        coords = {"t": (("t",), self.t, "time"),
+                  "rotor": (("rotor",), np.arange(n), "1", "rotor index, from 0 as in scenes")}
+        if self.t_events is not None:
+            k = Y.shape[1] // n - 2
+            coords["state"] = (("state",), [f"theta_{i}" for i in range(n)]
+                               + [f"u_{i}" for i in range(n)]
+                               + [f"p{r}_{i}" for r in range(k) for i in range(n)], "1",
+                               "component of the ambient state")
+            coords["state_units"] = (("state",), ["rad"] * n + ["rad / time"] * n
+                                     + ["rad"] * (k * n), "1", "units of each component")
+        return dataset(self.KIND, data, coords=coords, attrs=attrs)
 
     @classmethod
     def from_xarray(cls, ds):
@@ -99,7 +114,7 @@ class IntegrationResult(Archivable):
                   transported=ds["transported"].values if "transported" in ds else None,
                   switches=sw, drift=a["drift"], n_steps=a["n_steps"], n_rejected=a["n_rejected"],
                   n_rhs=a["n_rhs"], status=a["status"], formulation=a["formulation"],
-                  method=a["method"], options=a["options"])
+                  method=a["method"], options=a["options"], params=a.get("params", {}))
         if "n_events" in a:
             ids = ds["event_index"].values
             res.t_events = [ds["event_t"].values[ids == i] for i in range(a["n_events"])]

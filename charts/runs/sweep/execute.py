@@ -145,8 +145,11 @@ def dask_client(scheduler, workers):
     main = threading.current_thread() is threading.main_thread()
     old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
     try:
+        # the workers' own logs only when critical: an interrupted sweep's teardown made them
+        # print a semaphore release's traceback ("Is the connection unstable?") at ERROR;
+        # a point that fails reaches the table through its future, with the error's text
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=logging.ERROR)
+                               dashboard_address=None, silence_logs=logging.CRITICAL)
     finally:
         if main:
             signal.signal(signal.SIGINT, old)
