@@ -61,8 +61,10 @@ def test_critical_levels_warn_only_when_asked_for():
         RotorSystem(4, level=0.5)           # smooth
         RotorSystem(5, weights=np.ones(5))  # 0 is not critical for N = 5
         RotorSystem(4, weights=W4, level=L4)
+        RotorSystem(4, weights=[1, 1, 1, 1])    # the paper's manifold however written:
+        RotorSystem(4, weights=[2.0] * 4)       # the same system, the same (no) warning
     with pytest.warns(CriticalLevelWarning, match="critical value 0.0"):
-        RotorSystem(4, weights=[1, 1, 1, 1])
+        RotorSystem(4, weights=[1, 2, 1, 2])    # another manifold, critical at 0
     with pytest.warns(CriticalLevelWarning, match="critical value 2.0"):
         RotorSystem(4, level=2.0)
     with pytest.warns(CriticalLevelWarning, match="critical value"):

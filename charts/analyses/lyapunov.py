@@ -177,7 +177,8 @@ class LyapunovResult(Archivable):
             data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",
                                      "the relevant spectrum (reconstructed or computed)")
         return dataset(self.KIND, data, attrs={"params": self.params}, coords={
-            "exponent": (("exponent",), np.arange(1, k + 1), "1"),
+            "exponent": (("exponent",), np.arange(1, k + 1), "1",
+                         "i of λᵢ, from 1 as in the paper"),
             "history_t": (("record",), self.history_t, "time", "averaging time")})
 
     @classmethod

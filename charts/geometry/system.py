@@ -4,9 +4,10 @@ the paper's case is weights aᵢ = 1 and level c = 0).
 The level set of F = Σ aᵢ cos θᵢ is empty for |c| > Σ|aᵢ| and singular exactly at the critical
 values Σ ±aᵢ (a point with every sin θᵢ = 0 lies on it: a cone point when it is not an
 extremum).  Policy (docs/families.md): an empty level set is a ValueError; a critical level
-passed *explicitly* (``weights`` or ``level`` given) raises a ``CriticalLevelWarning`` naming
-the sign pattern; the default (equal weights, c = 0) is the paper's manifold and stays silent
-even where it is critical (N = 4, the cone points every N = 4 run meets).
+of any other manifold raises a ``CriticalLevelWarning`` naming the sign pattern; the paper's
+manifold (equal weights, c = 0), however it is written (the defaults, ``weights=[1, 1, 1, 1]``
+or ``[2, 2, 2, 2]``: the same level set), stays silent even where it is critical (N = 4, the
+cone points every N = 4 run meets).
 
 Points are ambient angle vectors ``theta``, shape (n,); tangent vectors are
 ambient velocity vectors ``u``, shape (n,), with Σ aᵢ uᵢ sin θᵢ = 0 (eq 10).
@@ -52,8 +53,8 @@ def critical_levels(weights) -> np.ndarray:
 
 
 def _check_family(n, weights, level):
-    """Validated (weights, level); ValueError for bad or empty, warning for explicit critical."""
-    explicit = weights is not None or level != 0.0
+    """Validated (weights, level); ValueError for bad or empty, warning for a critical level
+    of any manifold but the paper's."""
     a = np.ones(n) if weights is None else np.asarray(weights, dtype=float)
     if a.shape != (n,):
         raise ValueError(f"weights must have length n={n}, got shape {a.shape}")
@@ -69,7 +70,8 @@ def _check_family(n, weights, level):
         kind = "empty" if abs(level) > total * (1.0 + CRITICAL_RTOL) else "a single point"
         raise ValueError(f"level={level!r} leaves no manifold: the level set of sum(a cos theta) "
                          f"is {kind} for |level| >= sum(weights) = {total!r}")
-    if explicit and n <= CRITICAL_MAX_N:
+    papers = level == 0.0 and bool(np.all(a == a[0]))   # Σ a cos θ = 0, a equal: Σ cos θ = 0
+    if not papers and n <= CRITICAL_MAX_N:
         crit = critical_levels(a)
         hit = crit[np.abs(crit - level) <= CRITICAL_RTOL * total]
         if hit.size:
