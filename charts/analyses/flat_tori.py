@@ -103,8 +103,15 @@ def _symbolic_proof(system, pairs, lone, offset=sp.pi):
     values.update({g.a[q]: _exact(system.weights[q]) for q in range(n)})
     on_T = {g.theta[q]: theta[q] for q in range(n) if q != k}
 
+    probe = {x: sp.Rational(3 + 2 * i, 7) for i, x in enumerate(ts + ws)}
+
     def zero(expr):
-        return sp.simplify(g.explicit(expr).xreplace(values).subs(on_T)) == 0
+        """Whether expr vanishes identically on T: a nonzero value at a point of T disproves
+        it at once (exact rationals, 30 digits); else SymPy's simplification proves it."""
+        e = g.explicit(expr).xreplace(values).subs(on_T)
+        if abs(sp.N(e.xreplace(probe), 30)) > 1e-20:
+            return False
+        return sp.simplify(e) == 0
 
     a = [values[g.a[q]] for q in range(n)]
     steps = []
