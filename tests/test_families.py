@@ -39,12 +39,15 @@ def _h(xs):
 
 # ------------------------------------------------------------------------------ validation
 @pytest.mark.parametrize("kw, match", [
-    (dict(weights=[1.0, 1.0, 1.0]), "weights must have length"),
+    (dict(weights=[1.0, 1.0, 1.0]), r"weights must have shape \(4,\)"),
     (dict(weights=[1.0, 0.0, 1.0, 1.0]), "finite and positive"),
     (dict(weights=[1.0, -1.0, 1.0, 1.0]), "finite and positive"),
-    (dict(weights=[1.0, np.nan, 1.0, 1.0]), "finite and positive"),
-    (dict(level=np.inf), "level must be a finite number"),
-    (dict(level="0.5"), "level must be a finite number"),
+    (dict(weights=[1.0, np.nan, 1.0, 1.0]), "weights has non-finite entries"),
+    (dict(level=np.inf), "level must be finite"),
+    (dict(level="0.5"), "level must be a real number"),
+    (dict(level=10 ** 400), "level must be a finite number, got an integer of 401 digits"),
+    (dict(weights=[1.0, 1 + 2j, 1.0, 1.0]), "weights must be an array of real numbers"),
+    (dict(weights=["1", "1", "1", "1"]), "weights must be an array of real numbers"),
     (dict(level=4.5), "empty"),
     (dict(level=-4.0), "single point"),
 ])

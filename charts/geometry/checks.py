@@ -21,14 +21,30 @@ def _show(x) -> str:
 
 
 def number(name, x) -> float:
-    """``x`` as a finite float; ValueError naming ``name`` otherwise (bool and strings are
-    not numbers)."""
-    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise ValueError(f"{name} must be a number, got {_show(x)}")
-    x = float(x)
+    """``x`` as a finite float; ValueError naming ``name`` otherwise (bool, strings and
+    complex numbers are not numbers; an integer beyond a float's range is refused)."""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise ValueError(f"{name} must be a real number, got {_show(x)}")
+    try:
+        x = float(x)
+    except OverflowError:
+        raise ValueError(f"{name} must be a finite number, got an integer of {len(str(x))} "
+                         "digits (beyond a float's range)") from None
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {x!r}")
     return x
+
+
+def _entries_are_real_numbers(x) -> bool:
+    """Every leaf of nested lists/tuples is a real number (no bool, str, bytes, complex,
+    None): NumPy would turn ``[True, 1]`` into integers and ``['1', '2']`` into strings."""
+    if isinstance(x, (list, tuple)):
+        return all(_entries_are_real_numbers(e) for e in x)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind in "iuf" or (x.dtype.kind == "O" and all(
+            _entries_are_real_numbers(e) for e in x.ravel().tolist()))
+    return not isinstance(x, (bool, np.bool_)) and isinstance(
+        x, (int, float, np.integer, np.floating))
 
 
 def integer(name, x, minimum=None, maximum=None) -> int:
@@ -53,10 +69,12 @@ def finite_array(name, x, shape=None, ndim=None) -> np.ndarray:
     """``x`` as a float array of the given ``shape`` (a tuple; None entries are free) or
     ``ndim``, every entry finite; ValueError naming ``name`` otherwise."""
     try:
-        raw = np.asarray(x)
-        if raw.dtype.kind == "c":                 # never drop an imaginary part silently
+        # never drop an imaginary part, read a string or count a bool silently
+        if not _entries_are_real_numbers(x):
             raise TypeError
         a = np.asarray(x, dtype=float)
+    except OverflowError:
+        raise ValueError(f"{name} has an integer beyond a float's range") from None
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be an array of real numbers, got {_show(x)}") from None
     if ndim is not None and a.ndim != ndim:

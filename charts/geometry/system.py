@@ -34,6 +34,8 @@ __all__ = ["RotorSystem", "TOL", "CriticalLevelWarning", "critical_levels"]
 #: the integrators satisfy the constraint to ~1e-13; 1e-8 accepts user input rounded
 #: to ~8 digits and rejects anything visibly off the manifold.
 TOL = {"constraint": 1e-8, "tangency": 1e-8, "chart_domain": 1e-10}
+#: Most rotors a system may have (its arrays are O(N); the analyses plan their own memory).
+MAX_N = 1 << 20
 #: Largest number of entries of an array returned by ``christoffel`` / ``riemann`` (1 GiB of
 #: floats): the Riemann array of N = 64 has 63⁴ ≈ 1.6e7 entries, that of N = 256 4.2e9.
 MAX_ENTRIES = 2 ** 27
@@ -55,16 +57,11 @@ def critical_levels(weights) -> np.ndarray:
 def _check_family(n, weights, level):
     """Validated (weights, level); ValueError for bad or empty, warning for a critical level
     of any manifold but the paper's."""
-    a = np.ones(n) if weights is None else np.asarray(weights, dtype=float)
-    if a.shape != (n,):
-        raise ValueError(f"weights must have length n={n}, got shape {a.shape}")
-    if not np.all(np.isfinite(a)) or np.any(a <= 0):
+    a = np.ones(n) if weights is None else finite_array("weights", weights, shape=(n,))
+    if np.any(a <= 0):
         raise ValueError(f"weights must be finite and positive (a negative weight is the rotor "
                          f"turned by pi: theta -> theta + pi), got {a.tolist()}")
-    if isinstance(level, bool) or not isinstance(level, (int, float, np.integer, np.floating)) \
-            or not np.isfinite(level):
-        raise ValueError(f"level must be a finite number, got {level!r}")
-    level = float(level)
+    level = number("level", level)
     total = float(a.sum())
     if abs(level) >= total * (1.0 - CRITICAL_RTOL):
         kind = "empty" if abs(level) > total * (1.0 + CRITICAL_RTOL) else "a single point"
@@ -101,17 +98,13 @@ class RotorSystem:
         n = integer("n (the number of rotors)", n)      # 4.0 and np.int64(4) count; 3.5 no
         if n < 3:
             raise ValueError(f"n must be >= 3 (n=2 has no 1-dimensional smooth manifold), got n={n}")
+        if n > MAX_N:
+            raise ValueError(f"n must be at most {MAX_N} rotors, got n={n}")
         self.n = int(n)
-        if masses is None:
-            masses = np.ones(self.n)
-        try:
-            masses = np.asarray(masses, dtype=float)
-        except (TypeError, ValueError):
-            raise ValueError(f"masses must be {self.n} numbers, got {masses!r}") from None
-        if masses.shape != (self.n,):
-            raise ValueError(f"masses must have length n={self.n}, got shape {masses.shape}")
-        if not np.all(np.isfinite(masses)) or np.any(masses <= 0):
-            raise ValueError(f"masses must be finite and positive, got {masses.tolist()}")
+        masses = np.ones(self.n) if masses is None else finite_array("masses", masses,
+                                                                       shape=(self.n,))
+        if np.any(masses <= 0):
+            raise ValueError(f"masses must be positive, got {masses.tolist()}")
         self.masses = masses
         self.minv = 1.0 / masses
         self.weights, self.level = _check_family(self.n, weights, level)
