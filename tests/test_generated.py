@@ -264,10 +264,10 @@ def test_random_state_is_on_the_manifold(n):
 @pytest.mark.parametrize("args, match", [
     ((2,), "n must be >= 3"),
     ((3.5,), "integer"),
-    ((3, [1, 1]), "length n=3"),
+    ((3, [1, 1]), r"masses must have shape \(3,\)"),
     ((3, [1, 0, 1]), "positive"),
     ((3, [1, -2, 1]), "positive"),
-    ((3, [1, np.nan, 1]), "positive"),
+    ((3, [1, np.nan, 1]), "masses has non-finite entries"),
 ])
 def test_bad_system_arguments(args, match):
     with pytest.raises(ValueError, match=match):
