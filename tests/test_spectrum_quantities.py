@@ -67,3 +67,16 @@ def test_spectrum_plot_overlays_several_n():
     x = ax.containers[1][0].get_xdata()             # the second errorbar: N = 6, i/(N−2)
     np.testing.assert_allclose(x, [0.25, 0.5, 0.75, 1.0])
     assert ax.get_xlabel() == "i / (N − 2)"
+
+
+def test_convergence_plot_colours_stay_distinct_past_ten_exponents():
+    """N = 14 (12 exponents): every line its own colour, the title not one clipped line."""
+    from matplotlib.colors import to_rgba
+
+    from charts.plotting import plot_lyapunov
+    T = np.array([1.0, 10.0, 100.0])
+    H = np.tile(np.linspace(0.3, 0.01, 12), (3, 1))
+    fig, ax = plot_lyapunov(T, H, H[-1], np.full(12, 0.01))
+    colours = {to_rgba(line.get_color()) for line in ax.get_lines()}
+    assert len(colours) == 12
+    assert "\n" in ax.get_title()

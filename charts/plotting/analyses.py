@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import TIME, figure_axes, new_figure
+from .style import TIME, figure_axes, line_colors, new_figure
 
 __all__ = ["plot_lyapunov", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
            "CURVATURE_QUANTILES", "LOG_FLOOR"]
@@ -32,8 +32,9 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
     H = np.asarray(H, dtype=float).reshape(len(T), -1)
     fig, ax = figure_axes(ax, figsize=(7, 4.6))
     keep = T > 0
+    colors = line_colors(H.shape[1])
     for i in range(H.shape[1]):
-        color = f"C{i}"
+        color = colors[i]
         lam = exponents[i]
         se = None if stderr is None else stderr[i]
         if se is None:
@@ -60,8 +61,10 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
     how = "running estimates"
     if stderr is not None:
         how += "; band and bar: final estimate ± standard error"
-    ax.set_title(title or f"Lyapunov exponents ({how})", fontsize=10)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    # the title in two lines: one line of this length was clipped at the figure's edge
+    ax.set_title(title or f"Lyapunov exponents\n({how})", fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
+              ncol=1 if H.shape[1] <= 12 else 2)
     return fig, ax
 
 

@@ -49,6 +49,16 @@ def figure_axes(ax=None, **new_kw):
     return new_figure(**new_kw)
 
 
+def line_colors(k):
+    """``k`` distinct line colours: matplotlib's ten-colour cycle up to ten lines, beyond
+    that evenly spaced colours of the viridis map (the cycle would repeat its colours)."""
+    if k <= 10:
+        return [f"C{i}" for i in range(k)]
+    from matplotlib import colormaps
+    cmap = colormaps["viridis"]
+    return [cmap(x) for x in np.linspace(0.0, 0.92, k)]
+
+
 def wrap(theta):
     """Angles wrapped to (−π, π]."""
     return np.pi - np.mod(np.pi - np.asarray(theta, dtype=float), 2 * np.pi)
