@@ -57,11 +57,11 @@ def test_a_partial_spectrum_is_refused():
 
 
 def test_spectrum_plot_overlays_several_n():
-    fig = None
+    ax = None
     for n in (4, 6):
         s = charts.RotorSystem(n)
         r = charts.lyapunov_spectrum(s, *s.random_state(seed=1), 50.0, t_transient=0.0)
-        fig, ax = r.plot_spectrum(ax=None if fig is None else ax)
+        _, ax = r.plot_spectrum(ax=ax)
     lines = ax.get_legend_handles_labels()[1]
     assert lines == ["N = 4", "N = 6"]
     x = ax.containers[1][0].get_xdata()             # the second errorbar: N = 6, i/(N−2)
