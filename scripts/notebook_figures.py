@@ -34,9 +34,10 @@ def main():
     print(f"Poincaré section N = 3, t = 5000, rtol 1e-10: {len(pts)} crossings, {res.n_steps} steps, "
           f"{len(res.switches)} chart switches, {wall:.2f} s; max |sin θ₁| at the crossings "
           f"{np.abs(np.sin(pts[:, 0])).max():.1e}")
-    fig, ax = res.plot("poincare", coords=(1, 4), s=1.5)
-    ax.set_title(f"N = 3, Poincaré section sin θ₁ = 0 (upwards): {len(pts)} crossings, t = 5000",
-                 fontsize=9)
+    sheet = np.cos(pts[:, 0]) > 0             # sin θ₁ = 0 upwards: θ₁ ≡ 0 (u₁ > 0) or π (u₁ < 0)
+    fig, ax = res.plot("poincare", coords=(1, 4), s=1.5, select=lambda Y: np.cos(Y[:, 0]) > 0)
+    ax.set_title(f"N = 3, section θ₁ ≡ 0, u₁ > 0: {int(sheet.sum())} of {len(pts)}\n"
+                 "crossings of sin θ₁ = 0 upwards, t = 5000", fontsize=9)
     fig.set_size_inches(5.2, 4.6)
     save_png(fig, f"{OUT}/poincare_n3.png")
 
@@ -45,7 +46,8 @@ def main():
     short = charts.integrate(system, theta, u, 40.0, dense_output=True)
     short.plot("angles", ax=fig.add_subplot(gs[0, 0]))
     short.plot("surface", ax=fig.add_subplot(gs[0, 1], projection="3d"))
-    res.plot("poincare", ax=fig.add_subplot(gs[1, 0]), coords=(1, 4), s=1.0)
+    res.plot("poincare", ax=fig.add_subplot(gs[1, 0]), coords=(1, 4), s=1.0,
+             select=lambda Y: np.cos(Y[:, 0]) > 0)
     th4, u4 = charts.RotorSystem(4).random_state(seed=0)
     lyap = charts.lyapunov_spectrum(charts.RotorSystem(4), th4, u4, 2000.0)
     lyap.plot(ax=fig.add_subplot(gs[1, 1]), paper=[0.385, 0.230])

@@ -80,3 +80,18 @@ def test_convergence_plot_colours_stay_distinct_past_ten_exponents():
     colours = {to_rgba(line.get_color()) for line in ax.get_lines()}
     assert len(colours) == 12
     assert "\n" in ax.get_title()
+
+
+def test_poincare_select_keeps_one_sheet():
+    """sin θ₁ = 0 upwards holds on θ₁ ≡ 0 (u₁ > 0) and θ₁ ≡ π (u₁ < 0): ``select`` plots one."""
+    def section(t, y):
+        return np.sin(y[0])
+    section.direction = 1
+    s = charts.RotorSystem(3)
+    res = charts.integrate(s, *s.random_state(seed=3), 300.0, events=section)
+    Y = res.y_events[0]
+    both = (np.cos(Y[:, 0]) > 0).sum(), (np.cos(Y[:, 0]) < 0).sum()
+    assert min(both) > 0                                   # the event fires on both sheets
+    assert np.all(Y[np.cos(Y[:, 0]) > 0, 3] > 0) and np.all(Y[np.cos(Y[:, 0]) < 0, 3] < 0)
+    _, ax = res.plot("poincare", select=lambda Z: np.cos(Z[:, 0]) > 0)
+    assert len(ax.collections[0].get_offsets()) == both[0]

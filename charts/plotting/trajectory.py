@@ -79,13 +79,19 @@ def _state_label(i, n):
     return f"θ$_{i + 1}$ (rad)" if i < n else f"u$_{i - n + 1}$ (rad / time)"
 
 
-def plot_poincare(result, *, coords=(1, 4), event=0, ax=None, title=None, **scatter_kw):
+def plot_poincare(result, *, coords=(1, 4), event=0, select=None, ax=None, title=None,
+                  **scatter_kw):
     """The points of ``result.y_events[event]`` (an ``integrate`` run with ``events=``) in the
-    plane of two state components ``coords`` (indices into [θ, u]; angles wrapped)."""
+    plane of two state components ``coords`` (indices into [θ, u]; angles wrapped).
+    ``select``: a function of the event states (m, …) returning a boolean mask, to keep one
+    sheet of a section whose event function vanishes on several (sin θ₁ = 0 holds at θ₁ ≡ 0
+    and at θ₁ ≡ π: ``select=lambda Y: np.cos(Y[:, 0]) > 0`` keeps θ₁ ≡ 0)."""
     if result.y_events is None:
         raise ValueError("the result has no events: integrate with events=[...]")
     n = result.theta.shape[1]
     Y = result.y_events[event]
+    if select is not None:
+        Y = Y[np.asarray(select(Y), dtype=bool)]
     xy = [wrap(Y[:, c]) if c < n else Y[:, c] for c in coords]
     fig, ax = figure_axes(ax, figsize=(5, 4.6))
     kw = dict(s=4, color="k", lw=0)
