@@ -95,3 +95,18 @@ def test_poincare_select_keeps_one_sheet():
     assert np.all(Y[np.cos(Y[:, 0]) > 0, 3] > 0) and np.all(Y[np.cos(Y[:, 0]) < 0, 3] < 0)
     _, ax = res.plot("poincare", select=lambda Z: np.cos(Z[:, 0]) > 0)
     assert len(ax.collections[0].get_offsets()) == both[0]
+
+
+def test_angles_of_a_long_run_take_a_window_and_are_thinned():
+    from charts.plotting import plot_angles_time
+    t = np.linspace(0.0, 1000.0, 100001)
+    theta = np.stack([0.3 * t, -0.2 * t, 0.1 * t], axis=1)
+    _, ax = plot_angles_time(t, theta, switches=[(5.0, 0, 1), (500.0, 1, 2)])
+    assert max(len(line.get_xdata()) for line in ax.get_lines()) < 20000 * 1.1
+    assert "every 6th sample" in ax.get_title()
+    _, ax = plot_angles_time(t, theta, switches=[(5.0, 0, 1), (500.0, 1, 2)], window=(400, 600))
+    x = np.concatenate([np.asarray(line.get_xdata(), float) for line in ax.get_lines()[:3]])
+    assert np.nanmin(x) >= 400 and np.nanmax(x) <= 600
+    assert "1 chart switches" in ax.get_title()
+    with pytest.raises(ValueError, match="holds no sample"):
+        plot_angles_time(t, theta, window=(2000, 3000))

@@ -12,11 +12,29 @@ __all__ = ["plot_angles_time", "plot_surface", "plot_poincare", "animate_rotors"
            "plot_trajectory", "save_animation"]
 
 
-def plot_angles_time(t, theta, *, switches=(), ax=None, title=None):
+#: Most samples drawn per line by `plot_angles_time` (a longer series is thinned evenly).
+MAX_POINTS = 20000
+
+
+def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINTS, ax=None,
+                     title=None):
     """θᵢ(t) wrapped to (−π, π], one line per rotor; chart switches ``(t, from, to)`` as
-    thin vertical lines."""
+    thin vertical lines.  ``window`` = (t0, t1): only that span (the whole of a long run
+    smears into a block); at most ``max_points`` samples per line (every k-th: the title
+    says so)."""
     fig, ax = figure_axes(ax, figsize=(7.5, 3.6))
+    t = np.asarray(t, dtype=float)
     theta = np.asarray(theta)
+    if window is not None:
+        t0, t1 = (float(x) for x in window)
+        keep = (t >= t0) & (t <= t1)
+        if not keep.any():
+            raise ValueError(f"window={tuple(window)} holds no sample: the samples span "
+                             f"t = {t[0]:g} … {t[-1]:g}")
+        t, theta = t[keep], theta[keep]
+        switches = [sw for sw in switches if t0 <= sw[0] <= t1]
+    stride = max(1, -(-t.size // int(max_points)))
+    t, theta = t[::stride], theta[::stride]
     for i in range(theta.shape[1]):
         w, tt = broken_at_wraps([theta[:, i]], extra=[t])
         ax.plot(tt, w, lw=1.0, label=f"θ$_{i + 1}$")
@@ -27,7 +45,9 @@ def plot_angles_time(t, theta, *, switches=(), ax=None, title=None):
     ax.set_ylabel("θᵢ (rad, wrapped to (−π, π])")
     ax.set_ylim(-np.pi * 1.05, np.pi * 1.05)
     ax.set_yticks([-np.pi, -np.pi / 2, 0, np.pi / 2, np.pi], ["−π", "−π/2", "0", "π/2", "π"])
-    ax.set_title(title or f"angles against time ({len(switches)} chart switches)", fontsize=10)
+    every = f", every {stride}th sample" if stride > 1 else ""
+    ax.set_title(title or f"angles against time ({len(switches)} chart switches{every})",
+                 fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     return fig, ax
 

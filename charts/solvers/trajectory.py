@@ -123,7 +123,8 @@ class IntegrationResult(Archivable):
 
     def plot(self, kind="angles", **kw):
         """Figure of the trajectory: ``"angles"`` (θᵢ(t) wrapped to (−π, π] with the chart
-        switches marked), ``"surface"`` (N = 3: the path on Σ cos θ = 0 in 3D),
+        switches marked; ``window=(t0, t1)`` for a span of a long run, ``max_points`` per
+        line), ``"surface"`` (N = 3: the path on Σ cos θ = 0 in 3D),
         ``"poincare"`` (the states at an event of ``events=``, in the plane of two state
         components: ``coords=``, ``event=``, ``select=`` one sheet), or ``"animation"`` (the
         rotors; a ``matplotlib.animation.FuncAnimation``).  Returns ``(fig, ax)`` (the
