@@ -163,3 +163,12 @@ def test_plotting_never_touches_the_backend():
             "assert 'matplotlib.pyplot' not in sys.modules, 'pyplot imported'\n"
             "assert dict.__getitem__(matplotlib.rcParams, 'backend') == b\n")
     subprocess.run([sys.executable, "-c", code], check=True, timeout=300)
+
+
+def test_log_spaced_sweep_grids_get_a_log_axis():
+    """A geometric grid (0.25, 0.5, 1, 2: a span below a decade) is drawn on a log axis as a
+    wide one is; an even grid stays linear."""
+    from charts.runs.sweep.report import log_spaced
+    assert log_spaced([0.25, 0.5, 1.0, 2.0]) and log_spaced([1.0, 10.0]) and log_spaced([0.5, 1, 2])
+    assert not log_spaced([1.0, 2.0, 3.0, 4.0]) and not log_spaced([1.0, 1.5])
+    assert not log_spaced([-1.0, 1.0, 2.0]) and not log_spaced([2.0])

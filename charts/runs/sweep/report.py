@@ -213,10 +213,25 @@ def _curves(ax, rows, stat, x, groups, gkey, glabel, **style) -> None:
     _log_x(ax, [r[x] for r in rows])
 
 
+def log_spaced(xs) -> bool:
+    """Whether positive grid values are best drawn on a log axis: they span a decade or so,
+    or at least three distinct values are spaced evenly in log and not evenly (a geometric
+    grid such as 0.25, 0.5, 1, 2)."""
+    v = np.unique(np.asarray(xs, dtype=float))
+    if v.size < 2 or v[0] <= 0:
+        return False
+    if v[-1] / v[0] >= 8:
+        return True
+    if v.size < 3:
+        return False
+    steps, ratios = np.diff(v), np.diff(np.log(v))
+    return bool(np.ptp(ratios) <= 0.05 * ratios.mean() and np.ptp(steps) > 0.05 * steps.mean())
+
+
 def _log_x(ax, xs) -> None:
-    """Log x axis labelled at the data values when they span a decade or so."""
+    """Log x axis labelled at the data values where `log_spaced` says so."""
     from matplotlib.ticker import NullFormatter
-    if min(xs) > 0 and max(xs) / min(xs) >= 8:
+    if log_spaced(xs):
         ax.set_xscale("log")
         ticks = sorted(set(xs))
         ax.set_xticks(ticks, [f"{v:g}" for v in ticks], fontsize=7)
