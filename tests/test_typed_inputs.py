@@ -64,3 +64,19 @@ def test_a_system_takes_real_values_or_names_the_bad_argument(masses, weights, l
     else:
         assert s.masses.dtype == float and np.all(s.masses > 0) and np.all(s.weights > 0)
         assert isinstance(s.level, float)
+
+
+def test_work_that_cannot_fit_is_refused_before_it_starts(monkeypatch):
+    """A tangent flow plans its memory first: beyond the budget (half the machine's memory;
+    1 MiB here) the call is refused with the numbers and the remedy, before any allocation."""
+    import pytest
+
+    from charts.solvers import tangent
+    monkeypatch.setattr(tangent, "memory_budget", lambda: 1 << 20)
+    s = charts.RotorSystem(200)
+    th, u = s.random_state(seed=1)
+    with pytest.raises(ValueError, match=r"198 tangent vectors of N = 200 need .* GiB.*n_exponents"):
+        charts.lyapunov_spectrum(s, th, u, 1.0, t_transient=0.0)
+    r = charts.lyapunov_spectrum(s, th, u, 2.0, t_transient=0.0, n_exponents=3)   # 0.1 MiB
+    assert r.exponents.shape == (3,)
+    assert tangent.stacked_bytes(200, 198) == 7 * 199 * 400 * 8

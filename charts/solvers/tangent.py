@@ -20,6 +20,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 """
 from __future__ import annotations
 
+import os
 from math import cos, gcd, isfinite, sin
 
 import numpy as np
@@ -36,7 +37,8 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
            "shift_sincos_lanes", "shifted", "stacked_kernel", "state_point_rate", "rk4_finish", "stacked_rk4_step",
-           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor"]
+           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor", "check_memory",
+           "memory_budget", "stacked_bytes"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -347,6 +349,34 @@ _NO_ROWS = np.empty((0, 0))
 _NO_EVENTS = np.empty(0, dtype=np.int64)
 
 
+#: Floats per entry of the stacked state Z = [y; X] that a tangent flow holds at once: Z, the
+#: RK4 stage point and four stages, the initial random vectors.
+STACKED_COPIES = 7
+
+
+def stacked_bytes(n, k) -> int:
+    """Bytes a flow of a state and ``k`` tangent vectors of N = ``n`` rotors holds."""
+    return STACKED_COPIES * (1 + int(k)) * 2 * int(n) * 8
+
+
+def memory_budget() -> int:
+    """The bytes a single flow may take: half this machine's physical memory (64 GiB where
+    the platform does not say)."""
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2
+    except (AttributeError, ValueError, OSError):         # e.g. Windows
+        return 64 << 30
+
+
+def check_memory(need, what, remedy) -> None:
+    """ValueError, before anything is allocated, when ``need`` bytes exceed `memory_budget`:
+    the numbers and what to change."""
+    budget = memory_budget()
+    if need > budget:
+        raise ValueError(f"{what} need {need / 2**30:.1f} GiB, more than the {budget / 2**30:.1f} "
+                         f"GiB one run may take (half this machine's memory); {remedy}")
+
+
 class StackedFlow:
     """What every flow of a state and its tangent vectors stacked as ``Z`` = [y; ξ¹; …; ξᵏ]
     with a global step ``counter`` provides (`TangentFlow`, ``charts.solvers.linkage.LinkageFlow``):
@@ -388,6 +418,8 @@ class TangentFlow(StackedFlow):
     def __init__(self, system, theta, u, k, *, dt, inner="theta", restricted=True,
                  reorth_every=1, project_every=100, seed=0):
         n = system.n
+        check_memory(stacked_bytes(n, k), f"{k} tangent vectors of N = {n}",
+                     "compute fewer exponents (n_exponents) or fewer vectors")
         self.system = system
         self.dt = float(dt)
         self.w = inner_weights(system, inner)
