@@ -76,7 +76,7 @@ def test_work_that_cannot_fit_is_refused_before_it_starts(monkeypatch):
     s = charts.RotorSystem(200)
     th, u = s.random_state(seed=1)
     with pytest.raises(ValueError, match=r"198 tangent vectors of N = 200 need .* GiB.*n_exponents"):
-        charts.lyapunov_spectrum(s, th, u, 1.0, t_transient=0.0)
+        charts.lyapunov_spectrum(s, th, u, 2.0, t_transient=0.0)
     r = charts.lyapunov_spectrum(s, th, u, 2.0, t_transient=0.0, n_exponents=3)   # 0.1 MiB
     assert r.exponents.shape == (3,)
     assert tangent.stacked_bytes(200, 198) == 7 * 199 * 400 * 8
