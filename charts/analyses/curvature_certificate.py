@@ -51,9 +51,10 @@ COVER_RATIOS = (float(np.sqrt(2.0 / 3.0)), 0.9, 0.95, 0.99, 0.999)
 MIN_WIDTH = 1e-9
 
 
-def _rational(x) -> sp.Rational:
-    """The exact value of a float (its binary fraction), so the algebra is exact."""
-    return sp.Rational(float(x))
+def _interval(r):
+    """The interval enclosing the rational ``r`` (SymPy's, or a float's exact value)."""
+    r = r if isinstance(r, sp.Rational) else sp.Rational(float(r))
+    return iv.mpf(int(r.p)) / iv.mpf(int(r.q))
 
 
 def _system3(system):
@@ -75,9 +76,7 @@ def sign_polynomials(system, k):
     K = g.riemann[0][1][0][1] / (G[0][0] * G[1][1] - G[0][1] ** 2)
     names = {weighted_sincos(i)[0](g.theta[i]): sx, weighted_sincos(i)[1](g.theta[i]): x,
              weighted_sincos(j)[0](g.theta[j]): sy, weighted_sincos(j)[1](g.theta[j]): y}
-    values = {g.c: _rational(system.level)}
-    values.update({g.m[q]: _rational(system.masses[q]) for q in range(3)})
-    values.update({g.a[q]: _rational(system.weights[q]) for q in range(3)})
+    values = g.exact_values(system.masses, system.weights, system.level)
     num, den = sp.fraction(sp.together(K.xreplace(names)))
     a = [values[g.a[q]] for q in range(3)]
     D = a[k] ** 2 - (x + y - values[g.c]) ** 2
@@ -100,8 +99,7 @@ class _IntervalPolynomial:
     """A polynomial in (x, y) with rational coefficients, evaluated rigorously on intervals."""
 
     def __init__(self, poly: sp.Poly):
-        self.terms = [(ex, ey, iv.mpf(int(c.p)) / iv.mpf(int(c.q)))
-                      for (ex, ey), c in poly.terms()]
+        self.terms = [(ex, ey, _interval(c)) for (ex, ey), c in poly.terms()]
 
     def __call__(self, X, Y):
         acc = iv.mpf(0)
@@ -158,8 +156,8 @@ def _chart_run(system, k, r, max_boxes):
     P, Q, x, y = sign_polynomials(system, k)
     i, j = [q for q in range(3) if q != k]
     a = system.weights
-    ak = iv.mpf(_rational(a[k]).p) / iv.mpf(_rational(a[k]).q)
-    c = iv.mpf(_rational(system.level).p) / iv.mpf(_rational(system.level).q)
+    ak = _interval(a[k])
+    c = _interval(system.level)
     Pi, Qi = _IntervalPolynomial(P), _IntervalPolynomial(Q)
     dPx, dPy = _IntervalPolynomial(P.diff(x)), _IntervalPolynomial(P.diff(y))
     Hxx = _IntervalPolynomial(P.diff(x).diff(x))
@@ -225,8 +223,8 @@ def certify_curvature_sign(system, *, max_boxes=200_000):
     module doc; returns a `CurvatureCertificate`."""
     _system3(system)
     t0 = time.process_time()
-    a = [iv.mpf(_rational(w).p) / iv.mpf(_rational(w).q) for w in system.weights]
-    c = iv.mpf(_rational(system.level).p) / iv.mpf(_rational(system.level).q)
+    a = [_interval(w) for w in system.weights]
+    c = _interval(system.level)
     ratio, cover = None, None
     for ratio in COVER_RATIOS:
         cover = _cover_proof(a, c, ratio)

@@ -79,10 +79,6 @@ class FlatTorusCertificate:
         return asdict(self)
 
 
-def _exact(x):
-    return sp.Rational(float(x))
-
-
 def _symbolic_proof(system, pairs, lone, offset=sp.pi):
     """The steps of the module doc, exact, in the chart that eliminates a lone rotor (or the
     second rotor of the first pair); each (statement, holds).  ``offset``: θⱼ − θᵢ of each
@@ -98,9 +94,7 @@ def _symbolic_proof(system, pairs, lone, offset=sp.pi):
         vel[i] = vel[j] = ws[r]
     for q in lone:
         theta[q], vel[q] = sp.pi / 2, sp.Integer(0)
-    values = {g.c: _exact(system.level)}
-    values.update({g.m[q]: _exact(system.masses[q]) for q in range(n)})
-    values.update({g.a[q]: _exact(system.weights[q]) for q in range(n)})
+    values = g.exact_values(system.masses, system.weights, system.level)
     on_T = {g.theta[q]: theta[q] for q in range(n) if q != k}
 
     probe = {x: sp.Rational(3 + 2 * i, 7) for i, x in enumerate(ts + ws)}

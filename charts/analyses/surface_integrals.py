@@ -35,8 +35,11 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass
 
 import numpy as np
+from numba import njit
 
 from ..geometry.checks import integer
+from ..geometry.projection import tangent_part
+from ..solvers.gram_schmidt import orthonormal_rows
 from ..geometry.topology import euler_characteristic
 from .exact_curvature import exact_curvatures
 
@@ -89,22 +92,25 @@ def surface_nodes(system, n_grid=256):
 def tangent_frames(system, theta):
     """M-orthonormal frames (p₀, p₁) of the surface's tangent planes at theta (S, 3): the
     coordinate directions of the best chart there (``RotorSystem.best_chart``: the two angles
-    it keeps, far from the normal) projected M-orthogonally onto the plane
-    Σ aᵢ sin θᵢ vᵢ = 0 and Gram–Schmidt orthonormalised; shape (S, 2, 3)."""
-    m = system.masses
+    it keeps, far from the normal) projected M-orthogonally onto the tangent plane
+    (``charts.geometry.projection.tangent_part``) and orthonormalised
+    (``charts.solvers.gram_schmidt.orthonormal_rows``); shape (S, 2, 3)."""
+    theta = np.ascontiguousarray(theta, dtype=float)
     chart = np.asarray(system.best_chart(theta), dtype=np.int64).reshape(-1)
-    sig = system.weights * np.sin(theta)                       # the normal covector
-    nvec = sig / m                                             # its M-gradient
-    S = theta.shape[0]
-    P = np.zeros((S, 2, 3))
-    for r in range(2):
-        keep = np.array([[q for q in range(3) if q != k][r] for k in range(3)])[chart]
-        P[np.arange(S), r, keep] = 1.0
-        P[:, r] -= (np.sum(sig * P[:, r], axis=1) / np.sum(sig * nvec, axis=1))[:, None] * nvec
-    P[:, 0] /= np.sqrt(np.sum(m * P[:, 0] ** 2, axis=1))[:, None]
-    P[:, 1] -= np.sum(m * P[:, 0] * P[:, 1], axis=1)[:, None] * P[:, 0]
-    P[:, 1] /= np.sqrt(np.sum(m * P[:, 1] ** 2, axis=1))[:, None]
+    keep = np.array([[q for q in range(3) if q != k] for k in range(3)], dtype=np.int64)[chart]
+    P = np.empty((theta.shape[0], 2, 3))
+    _frames(theta, keep, system.minv, system.weights, system.masses, P)
     return P
+
+
+@njit(cache=True)
+def _frames(theta, keep, minv, a, m, P):
+    for i in range(theta.shape[0]):
+        for r in range(2):
+            e = np.zeros(3)
+            e[keep[i, r]] = 1.0
+            P[i, r] = tangent_part(theta[i], e, minv, a)
+        orthonormal_rows(P[i], m)
 
 
 @dataclass(frozen=True)

@@ -142,6 +142,14 @@ class ChartGeometry:
         out.update({a: 1 for a in self.a})
         return out
 
+    def exact_values(self, masses, weights, level) -> dict:
+        """The substitution of numbers for the symbols m, a, c: each float as the exact
+        rational it is (its binary fraction), so that the algebra after it stays exact."""
+        out = {self.c: sp.Rational(float(level))}
+        out.update({m: sp.Rational(float(x)) for m, x in zip(self.m, masses)})
+        out.update({a: sp.Rational(float(x)) for a, x in zip(self.a, weights)})
+        return out
+
     def paper(self, nested):
         """``nested`` specialised to the paper's Σ cos θ = 0 (a = 1, c = 0): the same
         expressions the derivation gave before weights and level existed (``emit`` writes
