@@ -29,8 +29,9 @@ from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.projection import project_tangent
+from ..solvers.device import DeviceFlows, resolve_device
 from ..solvers.lanes import LaneFlows
-from ..solvers.tangent import TangentFlow
+from ..solvers.tangent import TangentFlow, inner_weights
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         start_state, steps_of, Documented)
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
@@ -39,7 +40,7 @@ from .spectrum_quantities import (kaplan_yorke_dimension, kolmogorov_sinai_entro
 from .statistics import batch_ends, batch_estimates
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
-           "lyapunov_spectrum", "lyapunov_ensemble", "lyapunov_lanes", "lyapunov_schedule",
+           "lyapunov_spectrum", "lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states", "lyapunov_schedule",
            "lyapunov_result", "chunk_sizes", "averaging_logs", "LANE_BLOCK", "MIN_LANES",
            "reconstruct_spectrum",
            "identify_nonphysical", "exponents_from_marks"]
@@ -350,7 +351,7 @@ def lyapunov_result(system, cfg: LyapunovSettings, logs, speed) -> LyapunovResul
 
 
 def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                      progress=False, **kwargs) -> EnsembleResult:
+                      progress=False, device="cpu", **kwargs) -> EnsembleResult:
     """`lyapunov_spectrum` from ``n_trajectories`` independent random initial states of speed
     ``speed`` (seeds seed, seed+1, …; also the seeds of their tangent vectors; ``kwargs``:
     the settings of `lyapunov_spectrum`).
@@ -362,10 +363,24 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     (tests/test_lanes.py).  A member that stops (e.g. at a singular point) raises the error
     `lyapunov_spectrum` raises for it, naming its seed.  Returns an `EnsembleResult`:
     ``members``, and ``exponents`` / ``stderr``, the mean over the trajectories and its
-    standard error."""
+    standard error.
+
+    ``device="cuda"`` advances every member in its own GPU thread instead
+    (``charts.solvers.device``: the same loop and equations compiled for the GPU; the
+    members' bits differ from the CPU's by the GPU's fused multiply-adds and libm, see
+    there); ``"auto"``: the GPU when there is one.  ``workers`` then only builds the
+    members' initial states."""
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
+    device = resolve_device(device)
     cfg = lyapunov_settings(system, t_final, seed=seed, **kwargs)
+    if device == "cuda":
+        rep = progress_reporter(progress, n_trajectories * t_final,
+                                f"Lyapunov N={system.n} ensemble (GPU)")
+        members = lyapunov_device((system, cfg, list(range(seed, seed + n_trajectories)), speed),
+                                  rep.update, "cuda", workers or os.cpu_count() or 1)
+        rep.close()
+        return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
     cores = workers or os.cpu_count() or 1
     n_blocks = min(n_trajectories, max(cores, -(-n_trajectories // LANE_BLOCK)))
     cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
@@ -402,24 +417,60 @@ def lyapunov_lanes(job, update=None):
     cfgs = [replace(cfg, seed=s) for s in seeds]
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
              for s, c in zip(seeds, cfgs)]
-    where = [f"lyapunov_ensemble (ambient RK4, member seed={s})" for s in seeds]
     if len(seeds) < MIN_LANES:
         logs = []
-        for f, c, w in zip(flows, cfgs, where):
+        for f, c, s in zip(flows, cfgs, seeds):
+            w = _where(s)
             f.advance(cfg.transient, where=w)
             f.logsum[:] = 0.0
             logs.append(averaging_logs(f, c, partial(f.advance, where=w), update))
         return [lyapunov_result(system, c, lg, f.speed) for c, lg, f in zip(cfgs, logs, flows)]
-    lanes = LaneFlows(flows)
+    return _members_of(LaneFlows(flows), system, cfg, seeds, update)
 
+
+def lyapunov_device(job, update=None, backend="cuda", workers=1):
+    """`lyapunov_lanes` with every member in its own GPU thread (``backend="cuda"``) or the
+    same logic on the CPU (``"cpu"``), by ``charts.solvers.device.DeviceFlows``; the members'
+    initial states are built in ``workers`` processes (`member_states`)."""
+    system, cfg, seeds, speed = job
+    size = max(1, -(-len(seeds) // (4 * workers)))
+    jobs = [(system, cfg, seeds[i:i + size], speed) for i in range(0, len(seeds), size)]
+    parts = (map_jobs(member_states, jobs, [1] * len(jobs), workers, 0.0, False, "states")
+             if workers > 1 and len(jobs) > 1 else [member_states(j)[0] for j in jobs])
+    states = [np.concatenate(a) for a in zip(*parts)]
+    flows = DeviceFlows(system, states, dt=cfg.dt, w=inner_weights(system, cfg.inner),
+                        restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
+                        project_every=cfg.project, backend=backend)
+    return _members_of(flows, system, cfg, seeds, update)
+
+
+def member_states(job):
+    """[(Zs, scs, speeds)]: the stacked initial states (L, 1 + k, 2N), weighted sin/cos
+    (L, 2, N) and speeds (L,) of the seeds of ``job`` (as in `lyapunov_lanes`), in a list
+    of one (for ``map_jobs``)."""
+    system, cfg, seeds, speed = job
+    flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed),
+                           replace(cfg, seed=s)) for s in seeds]
+    return [(np.stack([f.Z for f in flows]), np.stack([f.sc for f in flows]),
+             np.array([f.speed for f in flows]))]
+
+
+def _where(seed):
+    return f"lyapunov_ensemble (ambient RK4, member seed={seed})"
+
+
+def _members_of(lanes, system, cfg, seeds, update):
+    """The members' `LyapunovResult` s of a run on ``lanes`` (`LaneFlows` or `DeviceFlows`,
+    none advanced): the transient, then `averaging_logs`; the first member that stopped
+    raises its error."""
     def advance(steps, **kw):
         lanes.advance(steps, **kw)
         for l in lanes.stopped_lanes()[:1]:
-            raise lanes.error(l, where[l])
+            raise lanes.error(l, _where(seeds[l]))
 
     advance(cfg.transient)
     lanes.logsum[...] = 0.0
     logs = averaging_logs(lanes, cfg, advance,
                           None if update is None else lambda t: update(len(seeds) * t))
-    return [lyapunov_result(system, c, logs[:, i], f.speed)
-            for i, (c, f) in enumerate(zip(cfgs, flows))]
+    return [lyapunov_result(system, replace(cfg, seed=s), logs[:, i], float(lanes.speed[i]))
+            for i, s in enumerate(seeds)]

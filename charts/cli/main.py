@@ -4,7 +4,7 @@
     charts scenes [NAME]                          list the bundled scenes, or print one
     charts reproduce ...                          the paper's figures and table
     charts generate [--check]                     regenerate generated/ (code generator)
-    charts bench accuracy | integrators | performance | compare | coldstart | ensemble | first_use
+    charts bench accuracy | integrators | performance | compare | coldstart | ensemble | first_use | gpu
     charts sweep SWEEP -o DIR [--scheduler ADDR]   a parameter sweep on Dask
     charts warmup [--n N ...]                     compile the kernels once after an install
 
@@ -322,7 +322,7 @@ def build_parser() -> argparse.ArgumentParser:
                        "(against solve_ivp), `performance` (against JiTCODE and SciPy), "
                        "`compare` (installations against each other), `coldstart` (the first-ever call), "
                        "`ensemble` (lanes against the one-trajectory kernel), `first_use` (each "
-                       "analysis's first call on an empty cache, warmup, reproduce --quick)",
+                       "analysis's first call on an empty cache, warmup, reproduce --quick), `gpu` (ensembles on a GPU)",
                        description="`charts bench accuracy [--quick] [-o DIR]`: work–precision "
                        "diagrams and table (docs/accuracy.md). `charts bench integrators`: cost "
                        "per unit time against solve_ivp (docs/integrators.md). `charts bench "
@@ -333,11 +333,13 @@ def build_parser() -> argparse.ArgumentParser:
                        "seconds of a fresh install's first call go (docs/performance.md). `charts "
                        "bench ensemble [--quick]`: ensembles in vector lanes against the "
                        "one-trajectory kernel and JiTCODE. `charts bench first_use`: CPU seconds "
-                       "of each public analysis's first call per N on an empty cache. Each is a "
+                       "of each public analysis's first call per N on an empty cache. `charts bench "
+                       "gpu [--quick] [--flops]`: Lyapunov ensembles on an NVIDIA GPU against the "
+                       "CPU lanes on every core (docs/gpu.md). Each is a "
                        "module of "
                        "charts.runs.benchmarks: no source checkout needed.")
     p.add_argument("what", choices=("accuracy", "integrators", "performance", "compare",
-                                    "coldstart", "ensemble", "first_use"))
+                                    "coldstart", "ensemble", "first_use", "gpu"))
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bars (accuracy)")
     p.add_argument("rest", nargs=argparse.REMAINDER,
                    help="options of the benchmark (e.g. `charts bench performance --help`)")

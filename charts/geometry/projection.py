@@ -22,7 +22,7 @@ from numba import njit
 
 from .primitives import LANE_WIDTH, sincos
 
-__all__ = ["project_state", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
+__all__ = ["project_state", "project_state_into", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
            "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of", "invariant_terms"]
 
 
@@ -79,9 +79,14 @@ def project_state(y, m, a, level, speed):
     """Project y = (θ, u) in place onto F = 0 (`project_constraint`, 3 Newton steps), G = 0
     (M-orthogonally) and, if ``speed`` > 0, Σ mᵢuᵢ² = speed² (`rescale_speed`)."""
     n = y.size // 2
+    project_state_into(y, m, a, level, speed, np.empty(n), np.empty(n))
+
+
+@njit(cache=True)
+def project_state_into(y, m, a, level, speed, s, minv):
+    """`project_state` with its work arrays s, minv (N each) given: allocates nothing."""
+    n = y.size // 2
     project_constraint(y, m, a, level, 3)
-    s = np.empty(n)
-    minv = np.empty(n)
     for j in range(n):
         s[j] = a[j] * sin(y[j])
         minv[j] = 1.0 / m[j]

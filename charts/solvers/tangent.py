@@ -28,7 +28,7 @@ from numba import njit
 
 from ..flows.ambient import multiplier, stage_work, state_rate, tangent_factors, tangent_rate
 from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
-from ..geometry.projection import project_state, project_tangent, project_tangent_sc
+from ..geometry.projection import project_state_into, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error,
@@ -36,7 +36,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "stacked_kernel", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "shift_sincos_lanes", "shifted", "stacked_kernel", "stacked_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes"]
 
@@ -235,19 +235,37 @@ def stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
     R, d = Z.shape
     n = d // 2
     L = R * d
+    Zt = np.empty(L)
+    K = np.empty(4 * L)
+    th = np.empty(n)
+    dl = np.empty(n)
+    s, c, f, g, p, q = stage_work(n)
+    return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                        restricted, project_every, logsum, rec_start, rec_every, states, events,
+                        event_logs, vectors_rate, (Zt, K, th, dl, s, c, f, g, p, q))
+
+
+@njit(cache=True, inline="always")
+def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                 restricted, project_every, logsum, rec_start, rec_every, states, events,
+                 event_logs, vectors_rate, work):
+    """The loop of `stacked_kernel` on the work arrays ``work`` = (Zt: (1 + k)·2N, K:
+    4·(1 + k)·2N, then th, dl, s, c, f, g, p, q: N each) given by the caller, allocating
+    nothing, so that it also compiles for a GPU thread whose work arrays are its local
+    memory (``charts.solvers.device``).  (A tuple: a call of more than 30 arguments compiles
+    to a call with ``*args``, which Numba cannot inline.)"""
+    Zt, K, th, dl, s, c, f, g, p, q = work
+    R, d = Z.shape
+    n = d // 2
+    L = R * d
     nu, Ru, du, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L)  # see _rk4_step
     Zf = Z.reshape(L)
     y_ = Z[0]
     X_ = Z[1:]
     s0 = sc[0]
     c0 = sc[1]
-    Zt = np.empty(L)
-    K = np.empty(4 * L)
-    th = np.empty(n)
-    dl = np.empty(n)
-    s, c, f, g, p, q = stage_work(n)
     nrec = states.shape[1]
-    nz = min(nrec, L)                   # the record: Z's first nz entries, then where
+    nz = nrec if nrec < L else L        # the record: Z's first nz entries, then where
     nsc = n if nrec > L else 0          # asked s0 and c0 (nsc each)
     # countdowns to the next projection / re-orthonormalisation / record, from the global
     # step counter (so that the phases do not depend on how the steps are chunked)
@@ -277,7 +295,7 @@ def stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
         to_proj -= 1
         if to_proj == 0:
             to_proj = project_every
-            project_state(y_, m, wts, level, speed)
+            project_state_into(y_, m, wts, level, speed, s, f)
             sincos(Zf, 0, n, wts, s0, c0)
         to_reorth -= 1
         if to_reorth == 0:
