@@ -206,10 +206,12 @@ class DeviceFlows:
         (L,), as `TangentFlow` holds them (`of_flows`), none advanced.
     dt, w, restricted, reorth_every, project_every
         The settings of `TangentFlow`, shared by all members.
+    threads : int, optional
+        Threads per CUDA block (default `THREADS_PER_BLOCK`).
     """
 
     def __init__(self, system, states, *, dt, w, restricted, reorth_every, project_every,
-                 backend="cuda"):
+                 backend="cuda", threads=None):
         Zs, scs, speeds = (np.ascontiguousarray(a, dtype=float) for a in states)
         L, R, d = Zs.shape
         if d != 2 * system.n or scs.shape != (L, 2, system.n) or speeds.shape != (L,):
@@ -219,6 +221,7 @@ class DeviceFlows:
         self.restricted, self.reorth_every = bool(restricted), int(reorth_every)
         self.project_every = int(project_every)
         self.backend = backend
+        self.threads = THREADS_PER_BLOCK if threads is None else int(threads)
         self.shape = (L, R, d)
         self.speed = speeds
         host = {"Zs": Zs.copy(), "scs": scs.copy(), "counters": np.zeros(L, dtype=np.int64),
@@ -285,8 +288,8 @@ class DeviceFlows:
             cuda = self._cuda
             dev["logsums"] = cuda.to_device(np.ascontiguousarray(self.logsum))
             d_events, d_logs = cuda.to_device(chunk), cuda.to_device(logs)
-            blocks = -(-L // THREADS_PER_BLOCK)
-            self._kernel[blocks, THREADS_PER_BLOCK](
+            blocks = -(-L // self.threads)
+            self._kernel[blocks, self.threads](
                 dev["Zs"], dev["scs"], dev["counters"], dev["status"], dev["stopped"],
                 dev["minv"], dev["m"], dev["wts"], float(sys_.level), dev["speeds"],
                 self.dt, nsteps, self.reorth_every, dev["w"], self.restricted, self.project_every,
