@@ -3,15 +3,12 @@ block, N = 5, k = 3 (the settings of `charts bench gpu`), and the CPU lanes on o
 
     python scripts/gpu_occupancy.py          # on a machine with an NVIDIA GPU
 """
-import statistics
-import sys
 import time
 import warnings
 
-import numpy as np
+
 
 from charts.geometry.system import RotorSystem
-from charts.analyses.lyapunov import lyapunov_settings
 from charts.runs.benchmarks.gpu import cpu_rate, device_flows
 from charts.solvers.device import DeviceFlows, cuda_kernel
 from charts.solvers.tangent import inner_weights
