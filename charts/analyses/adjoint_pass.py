@@ -1,7 +1,7 @@
 """The backward pass of the angle test (section 4, ``charts.analyses.hyperbolicity``): eq (8)
 integrated backward from each trajectory checkpoint jointly with m adjoint vectors
 (ẇ = −J(x(t))ᵀ w): a formulation of the stacked flows' one time loop
-(``charts.solvers.tangent.stacked_kernel``, the adjoint hook `adjoint_vectors_rate`, step −dt,
+(``charts.solvers.tangent.stacked_loop``, the adjoint hook `adjoint_vectors_rate`, step −dt,
 the forward kernel's step policy), and at the sample points the sines of the angles (the
 smallest singular values of W Vᵀ)."""
 from __future__ import annotations
@@ -14,10 +14,10 @@ from ..flows.ambient import adjoint_factors, adjoint_rate
 from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.status import RUNNING
-from ..solvers.tangent import orthonormal_rows, stacked_kernel, stacked_rk4_step
-from .singular_values import smallest_singular_values
+from ..solvers.tangent import orthonormal_rows, stacked_loop, stacked_rk4_step, stacked_work
+from .singular_values import smallest_singular_values_into
 
-__all__ = ["adjoint_step", "backward_kernel", "adjoint_vectors_rate", "sample_sines"]
+__all__ = ["adjoint_step", "backward_kernel", "backward_loop", "adjoint_vectors_rate", "sample_sines"]
 
 
 @njit(cache=True, inline="always")
@@ -56,14 +56,14 @@ def adjoint_step(Z, minv, a, h):
 
 
 @njit(cache=True)
-def sample_sines(rec, row, V, q, w, y, sc, Wr, ga, gb, M, sv):
+def sample_sines(rec, row, V, q, w, y, sc, Wr, ga, gb, M, sv, A):
     """At one sample point: the smallest singular values of W Vᵀ into sv[0] (full) and of
     W_r Vᵀ into sv[1] (restricted), W the rows after the state in rec[row] (the backward
     pass's record: the state, the m rows, then the weighted sin and cos of the state's angles
     as the pass kept them), W_r those rows projected Euclidean-orthogonally onto
     T_r at the state and re-orthonormalised, V the m forward vectors after the state in
     V[q] (the forward pass's record).  y (2N,), sc (2, N), Wr (m, 2N), ga, gb (2N,),
-    M (2, m, m): work space."""
+    M (2, m, m), A (m, m): work space."""
     kk, d = Wr.shape
     n = d // 2
     for i in range(d):
@@ -86,7 +86,7 @@ def sample_sines(rec, row, V, q, w, y, sc, Wr, ga, gb, M, sv):
                 ar += Wr[r, i] * V[q, d + s_ * d + i]
             M[0, r, s_] = af
             M[1, r, s_] = ar
-    smallest_singular_values(M, sv)
+    smallest_singular_values_into(M, sv, A)
 
 
 @njit(cache=True)
@@ -94,13 +94,13 @@ def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_
                     sample_every, reorth, V, w, logs, sf, sr):
     """Backward pass over the segments (last first) down to step ``first_sample``: each
     segment from its checkpoint ck[seg + 1] by the stacked flows' one time loop
-    (``charts.solvers.tangent.stacked_kernel``, with the adjoint hook and step −dt; the state
+    (``charts.solvers.tangent.stacked_loop``, with the adjoint hook and step −dt; the state
     is not projected), W re-orthonormalised at every step index that is a multiple of
     ``reorth`` (which divides the segment and sample steps; logs of the norms added to
     ``logs``) and recorded at the sample steps; at the k-th sample step the sines of
     `sample_sines` into sf[k] (full) and sr[k] (restricted), V_k the forward pass's record
     V[k] (shape (S, (1 + m)·2N)).  Returns (status, step): RUNNING, or NONFINITE / SINGULAR
-    (the forward kernel's tests) at that step."""
+    (the forward kernel's tests) at that step.  The work of `backward_loop`, allocated."""
     d = ck.shape[1]
     n = d // 2
     kk = W.shape[0]
@@ -110,37 +110,47 @@ def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_
     for r in range(kk):
         for i in range(d):
             Z[1 + r, i] = W[r, i]
-    sc = np.empty((2, n))
-    counter = np.zeros(1, dtype=np.int64)
     rec = np.empty((ck_every // sample_every + 1, (1 + kk) * d + d))  # Z, then sin, cos
-    no_events = np.empty(0, dtype=np.int64)
-    none = np.empty((0, 0))
-    ys = np.empty(d)
-    scs = np.empty((2, n))
-    Wr = np.empty((kk, d))
-    ga = np.empty(d)
-    gb = np.empty(d)
-    M = np.empty((2, kk, kk))
-    sv = np.empty(2)
+    samples = (np.empty(d), np.empty((2, n)), np.empty((kk, d)), np.empty(d), np.empty(d),
+               np.empty((2, kk, kk)), np.empty(2), np.empty((kk, kk)))
+    return backward_loop(ck, Z, np.empty((2, n)), np.zeros(1, dtype=np.int64), rec, minv,
+                         masses, wts, level, speed, dt, ck_every, first_sample, sample_every,
+                         reorth, V, w, logs, sf, sr, np.empty(0, dtype=np.int64),
+                         np.empty((0, 0)), stacked_work(1 + kk, d), samples)
+
+
+@njit(cache=True)
+def backward_loop(ck, Z, sc, counter, rec, minv, masses, wts, level, speed, dt, ck_every,
+                  first_sample, sample_every, reorth, V, w, logs, sf, sr, no_events, none, work,
+                  samples):
+    """`backward_kernel` on arrays given by the caller, allocating nothing (it also runs in
+    a GPU thread: ``charts.analyses.angle_blocks``): Z (1 + m, 2N) holds W in its rows
+    after the first; sc (2, N), counter (1,) and rec (segment samples + 1, (2 + m)·2N)
+    are work space, as are ``work`` (``charts.solvers.tangent.stacked_work``) and
+    ``samples`` (the work arrays of `sample_sines`); no_events (0,), none (0, 0)."""
+    d = ck.shape[1]
+    n = d // 2
+    ys, scs, Wr, ga, gb, M, sv, A = samples
     S = V.shape[0]
     for seg in range(ck.shape[0] - 2, first_sample // ck_every - 1, -1):
         for i in range(d):
             Z[0, i] = ck[seg + 1, i]
         sincos(ck[seg + 1], 0, n, wts, sc[0], sc[1])
         top = (seg + 1) * ck_every
-        nsteps = top - max(seg * ck_every, first_sample)
+        low = seg * ck_every
+        nsteps = top - (low if low > first_sample else first_sample)
         counter[0] = 0                   # steps down from top (a multiple of reorth)
         rec_start = (top - first_sample) % sample_every
-        status, done = stacked_kernel(Z, sc, counter, minv, masses, wts, level, speed, -dt,
-                                      nsteps, reorth, w, False, 0, logs, rec_start,
-                                      sample_every, rec, no_events, none, adjoint_vectors_rate)
+        status, done = stacked_loop(Z, sc, counter, minv, masses, wts, level, speed, -dt,
+                                    nsteps, reorth, w, False, 0, logs, rec_start, sample_every,
+                                    rec, no_events, none, adjoint_vectors_rate, work)
         if status != RUNNING:
             return status, top - done
         for i in range(rec_start if rec_start > 0 else sample_every, nsteps + 1, sample_every):
             q = (top - i - first_sample) // sample_every
             if q < S:
                 sample_sines(rec, (i - rec_start) // sample_every, V, q, w, ys, scs, Wr, ga,
-                             gb, M, sv)
+                             gb, M, sv, A)
                 sf[q] = sv[0]
                 sr[q] = sv[1]
     return RUNNING, first_sample

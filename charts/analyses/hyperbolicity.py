@@ -35,23 +35,28 @@ alone, same bits), W back to the window's start (the first transient is not retr
 """
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
+from ..solvers.device import resolve_device
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, stacked_work, tangent_loop
 from .adjoint_pass import adjoint_step, backward_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension, Documented)
-from .ensemble import EnsembleResult, run_ensemble
+from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble
 from .singular_values import smallest_singular_values
 from .statistics import small_value_law
 
-__all__ = ["AngleResult", "hyperbolicity_angles", "hyperbolicity_ensemble", "angle_statistics",
+__all__ = ["AngleResult", "AngleSettings", "angle_settings", "angle_flow", "angle_result",
+           "adjoint_start", "forward_segments", "hyperbolicity_angles", "hyperbolicity_ensemble",
+           "angle_statistics",
            "SMALL_ANGLE", "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
@@ -67,31 +72,44 @@ _SEGMENTS = 1000
 @njit(cache=True)
 def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
                     logsum, rec_start, rec_every, states, ck, a, b, vec_end):
-    """Forward segments a … b−1 of ``ce`` steps of the tangent kernel (restricted vectors,
+    """`forward_segments` with its work arrays allocated."""
+    return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
+                            project, logsum, rec_start, rec_every, states, ck, a, b, vec_end,
+                            np.empty(0, dtype=np.int64), np.empty((0, 0)),
+                            stacked_work(Z.shape[0], Z.shape[1]))
+
+
+@njit(cache=True)
+def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
+                     logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events, none,
+                     work):
+    """Forward segments a … b−1 of ``ce`` steps of the tangent loop (restricted vectors,
     samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
     global step ``vec_end`` the state alone (its bits do not depend on the vectors).
-    Returns the kernel's status."""
-    no_events = np.empty(0, dtype=np.int64)
-    none = np.empty((0, 0))
+    Returns the loop's status.  Allocates nothing (no_events (0,), none (0, 0), ``work``:
+    ``charts.solvers.tangent.stacked_work``): it also runs in a GPU thread
+    (``charts.analyses.angle_blocks``)."""
     y = Z[:1]
     # the literal True (restricted) in both calls, and typed zeros, not the literal 0, which
-    # compiled tangent_kernel a second time here; `bool(True)`, the signature of
+    # compiled the loop a second time here; `bool(True)`, the signature of
     # TangentFlow.advance, would share that one but ran the angle test ~1 % slower (measured)
     zero = np.int64(0)
     for i in range(a, b):
         left = ce
         if counter[0] < vec_end:
-            k = min(ce, vec_end - counter[0])
-            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
-                                       w, True, project, logsum, rec_start, rec_every, states,
-                                       no_events, none)
+            k = vec_end - counter[0]
+            if ce < k:
+                k = ce
+            status, _ = tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
+                                     w, True, project, logsum, rec_start, rec_every, states,
+                                     no_events, none, work)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
-            status, _ = tangent_kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
-                                       reorth, w, True, project, logsum, zero, zero, none,
-                                       no_events, none)
+            status, _ = tangent_loop(y, sc, counter, minv, m, wts, level, speed, dt, left,
+                                     reorth, w, True, project, logsum, zero, zero, none,
+                                     no_events, none, work)
             if status != RUNNING:
                 return status
         for j in range(Z.shape[1]):      # a loop, not a slice copy (adjoint_pass)
@@ -205,28 +223,19 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     -------
     AngleResult
     """
-    n = system.n
-    m = unstable_dimension(n, n_unstable)
-    dt = positive_time("dt", dt)
-    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
-    n_win = steps_of("t_final", t_final, dt)
-    sample = steps_of("sample_every", sample_every, dt, divides=n_win)
-    ce = steps_of("checkpoint_every", checkpoint_every, dt)
-    project = project_steps(project_every, dt)
-    seed = positive_int("seed", seed, 0)
+    cfg = angle_settings(system, t_final, dt=dt, n_unstable=n_unstable, t_transient=t_transient,
+                         sample_every=sample_every, checkpoint_every=checkpoint_every,
+                         project_every=project_every, seed=seed)
+    n, m, dt, n_tr, n_win, sample, ce = cfg.n, cfg.m, cfg.dt, cfg.n_tr, cfg.n_win, cfg.sample, cfg.ce
+    project, reorth, S = cfg.project, cfg.reorth, cfg.samples
     theta0, u0 = start_state(system, theta0, u0, dt)
-    S = samples_of(n_win, sample, t_final, sample_every)
-    if S < 1:
-        raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")
     need = S * m * 2 * n * 8
     if need > MAX_STORE:
         raise ValueError(f"storing {S} samples needs {need / 2**20:.0f} MB; increase sample_every "
                          f"or split t_final into several runs")
     nseg = -(-(2 * n_tr + n_win) // ce)
     nsteps = nseg * ce
-    reorth = reorth_steps(dt, sample, n_tr, ce)  # orthonormal at every sample and segment end
-    flow = TangentFlow(system, theta0, u0, m, dt=dt, inner="euclidean", restricted=True,
-                       reorth_every=reorth, project_every=project, seed=seed)
+    flow = angle_flow(system, theta0, u0, cfg)
     rep = progress_reporter(progress, 2 * nsteps * dt, f"angles N={n}")
     ck = np.empty((nseg + 1, 2 * n))
     ck[0] = flow.y
@@ -242,8 +251,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
         rep.update((b - a) * ce * dt)
-    W = np.random.default_rng([seed, 1]).normal(size=(m, 2 * n))
-    orthonormalize(W, flow.w, np.zeros(m))
+    W = adjoint_start(cfg, flow.w)
     sf = np.empty(S)
     sr = np.empty(S)
     blog = np.zeros(m)
@@ -254,20 +262,100 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         raise status_error(status, step * dt, "hyperbolicity_angles (backward RK4)")
     rep.update(nsteps * dt)
     rep.close()
-    t = (n_tr + np.arange(S) * sample) * dt
-    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=system.level, dt=dt, m=m, t_final=n_win * dt,
-                  t_transient=n_tr * dt, sample_every=sample * dt, speed=flow.speed,
-                  checkpoint_every=ce * dt, project_every=project * dt or None, seed=seed)
-    return AngleResult(t, _sin_to_angle(sf), _sin_to_angle(sr), flow.logsum / ((n_tr + n_win) * dt),
-                       blog / ((nsteps - n_tr) * dt), params)
+    return angle_result(system, cfg, sf, sr, flow.logsum, blog / ((nsteps - n_tr) * dt),
+                        flow.speed)
+
+
+@dataclass(frozen=True)
+class AngleSettings:
+    """Validated settings of one angle test; every count in RK4 steps of ``dt``."""
+    n: int
+    m: int
+    dt: float
+    n_tr: int
+    n_win: int
+    sample: int
+    ce: int
+    project: int
+    reorth: int
+    seed: int
+
+    @property
+    def samples(self) -> int:
+        return self.n_win // self.sample
+
+
+def angle_settings(system, t_final, *, dt=0.01, n_unstable=None, t_transient=Documented(100.0),
+                   sample_every=Documented(0.1), checkpoint_every=Documented(1.0),
+                   project_every=Documented(1.0), seed=0) -> AngleSettings:
+    """Check the arguments of `hyperbolicity_angles` (ValueError naming the bad one)."""
+    n = system.n
+    m = unstable_dimension(n, n_unstable)
+    dt = positive_time("dt", dt)
+    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    n_win = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=n_win)
+    ce = steps_of("checkpoint_every", checkpoint_every, dt)
+    project = project_steps(project_every, dt)
+    seed = positive_int("seed", seed, 0)
+    if samples_of(n_win, sample, t_final, sample_every) < 1:
+        raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")
+    reorth = reorth_steps(dt, sample, n_tr, ce)  # orthonormal at every sample and segment end
+    return AngleSettings(n, m, dt, n_tr, n_win, sample, ce, project, reorth, seed)
+
+
+def angle_flow(system, theta0, u0, cfg: AngleSettings) -> TangentFlow:
+    """The forward pass's flow from a validated state: m restricted tangent vectors,
+    Euclidean, seeded with ``cfg.seed``."""
+    return TangentFlow(system, theta0, u0, cfg.m, dt=cfg.dt, inner="euclidean", restricted=True,
+                       reorth_every=cfg.reorth, project_every=cfg.project, seed=cfg.seed)
+
+
+def adjoint_start(cfg: AngleSettings, w, block=None):
+    """The backward pass's initial vectors W (m, 2N), orthonormal in ``w``: from the stream
+    [seed, 1] (and the block number, for the later blocks of a windowed run)."""
+    key = [cfg.seed, 1] if block is None else [cfg.seed, 1, block]
+    W = np.random.default_rng(key).normal(size=(cfg.m, 2 * cfg.n))
+    orthonormalize(W, w, np.zeros(cfg.m))
+    return W
+
+
+def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_exponents, speed):
+    """The `AngleResult` of a run from the sines at its samples (full, restricted), the
+    forward pass's log-norm sums over [0, t_transient + t_final] and the adjoint's rates."""
+    dt = cfg.dt
+    t = (cfg.n_tr + np.arange(cfg.samples) * cfg.sample) * dt
+    params = dict(n=cfg.n, masses=system.masses.tolist(), weights=system.weights.tolist(),
+                  level=system.level, dt=dt, m=cfg.m, t_final=cfg.n_win * dt,
+                  t_transient=cfg.n_tr * dt, sample_every=cfg.sample * dt, speed=speed,
+                  checkpoint_every=cfg.ce * dt, project_every=cfg.project * dt or None,
+                  seed=cfg.seed)
+    return AngleResult(t, _sin_to_angle(sf), _sin_to_angle(sr),
+                       forward_logs / ((cfg.n_tr + cfg.n_win) * dt), adjoint_exponents, params)
 
 
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                           progress=False, **kwargs) -> EnsembleResult:
+                           progress=False, device="cpu", **kwargs) -> EnsembleResult:
     """`hyperbolicity_angles` on independent random states (seeds seed, seed+1, …) in
     parallel processes; returns an `EnsembleResult` (``concatenate("phi_restricted")`` joins
-    the angles of all members for statistics)."""
+    the angles of all members for statistics).
+
+    ``device="cuda"``: every member a GPU thread, the window in blocks sized to the GPU's
+    memory (``charts.analyses.angle_blocks``: the same passes; with one block each member
+    equals `hyperbolicity_angles`, with several the angles after the first block differ by
+    the adjoint vectors' convergence error, e^(−λ_m·t_transient)); t_transient must then be a
+    multiple of checkpoint_every.  ``"auto"``: the GPU when there is one."""
+    if resolve_device(device) == "cuda":
+        from .angle_blocks import angles_on_device
+        n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                           workers, progress)
+        cfg = angle_settings(system, t_final, seed=seed, **kwargs)
+        rep = progress_reporter(progress, n_trajectories * t_final,
+                                f"angles N={system.n} ensemble (GPU)")
+        members = angles_on_device(system, cfg, list(range(seed, seed + n_trajectories)), speed,
+                                   workers=workers or os.cpu_count() or 1, update=rep.update)
+        rep.close()
+        return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
     short = (2 * kwargs.get("sample_every", 0.1), {"t_transient": 0.0})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
                         seed=seed, workers=workers, progress=progress,

@@ -17,7 +17,7 @@ from math import copysign, sqrt
 import numpy as np
 from numba import njit
 
-__all__ = ["smallest_singular_values"]
+__all__ = ["smallest_singular_values", "smallest_singular_values_into"]
 
 #: the unit roundoff of float64: rows count as orthogonal below c·_EPS·|a||b|.
 _EPS = 2.0 ** -52
@@ -126,14 +126,23 @@ def smallest_singular_values(M, out):
     S, r, c = M.shape
     if r > c:
         raise ValueError("smallest_singular_values: M must have no more rows than columns")
-    A = np.empty((r, c))
+    smallest_singular_values_into(M, out, np.empty((r, c)))
+
+
+@njit(cache=True)
+def smallest_singular_values_into(M, out, A):
+    """`smallest_singular_values` with its work array A (r, c) given (r <= c, unchecked):
+    allocates nothing, so that it compiles for a GPU thread too."""
+    S, r, c = M.shape
     for q in range(S):
         if r == 3 and c == 3:
             sig = _smallest_3x3(M, q)
             if sig >= 0.0:
                 out[q] = sig
                 continue
-        A[:, :] = M[q]
+        for i in range(r):               # loops, not a slice copy (no allocation)
+            for x in range(c):
+                A[i, x] = M[q, i, x]
         for sweep in range(60):
             rotated = False
             for i in range(r - 1):
@@ -164,5 +173,7 @@ def smallest_singular_values(M, out):
             nrm = 0.0
             for x in range(c):
                 nrm += A[i, x] * A[i, x]
-            smin = min(smin, sqrt(nrm))
+            v = sqrt(nrm)
+            if v < smin:                 # min(smin, v), which the GPU target lacks
+                smin = v
         out[q] = smin

@@ -36,7 +36,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "stacked_kernel", "stacked_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes"]
 
@@ -203,10 +203,19 @@ def countdowns(i0, project_every, reorth_every, events):
     return to_proj, to_reorth, ev
 
 
+@njit(cache=True)
+def stacked_work(R, d):
+    """The work arrays of `stacked_loop` for R rows of d = 2N."""
+    n = d // 2
+    L = R * d
+    s, c, f, g, p, q = stage_work(n)
+    return (np.empty(L), np.empty(4 * L), np.empty(n), np.empty(n), s, c, f, g, p, q)
+
+
 @njit(cache=True, inline="always")
-def stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                   restricted, project_every, logsum, rec_start, rec_every, states, events,
-                   event_logs, vectors_rate):
+def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                 restricted, project_every, logsum, rec_start, rec_every, states, events,
+                 event_logs, vectors_rate, work):
     """The time loop of every stacked flow: advance Z = [y; X], shape (1 + k, 2N), by
     ``nsteps`` RK4 steps of eq (8) and of the vectors' linear flow ``vectors_rate`` (the hook
     of `stacked_rk4_step`: eq (17) in `tangent_kernel`, the adjoint flow in the backward pass
@@ -231,29 +240,13 @@ def stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
     call or view inside the loop would cost reference-count updates per step (see
     docs/performance.md).  Per stage, sin/cos come from the start of the step shifted by
     `shift_sincos`: one libm sin/cos pair per angle per projection, not four per step.
+
+    ``work`` = (Zt: (1 + k)·2N, K: 4·(1 + k)·2N, then th, dl, s, c, f, g, p, q: N each), the
+    work arrays (`stacked_work`), given by the caller: the loop allocates nothing, so that it
+    also compiles for a GPU thread whose work arrays are its local memory
+    (``charts.solvers.device``).  (A tuple: a call of more than 30 arguments compiles to a
+    call with ``*args``, which Numba cannot inline.)
     """
-    R, d = Z.shape
-    n = d // 2
-    L = R * d
-    Zt = np.empty(L)
-    K = np.empty(4 * L)
-    th = np.empty(n)
-    dl = np.empty(n)
-    s, c, f, g, p, q = stage_work(n)
-    return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                        restricted, project_every, logsum, rec_start, rec_every, states, events,
-                        event_logs, vectors_rate, (Zt, K, th, dl, s, c, f, g, p, q))
-
-
-@njit(cache=True, inline="always")
-def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                 restricted, project_every, logsum, rec_start, rec_every, states, events,
-                 event_logs, vectors_rate, work):
-    """The loop of `stacked_kernel` on the work arrays ``work`` = (Zt: (1 + k)·2N, K:
-    4·(1 + k)·2N, then th, dl, s, c, f, g, p, q: N each) given by the caller, allocating
-    nothing, so that it also compiles for a GPU thread whose work arrays are its local
-    memory (``charts.solvers.device``).  (A tuple: a call of more than 30 arguments compiles
-    to a call with ``*args``, which Numba cannot inline.)"""
     Zt, K, th, dl, s, c, f, g, p, q = work
     R, d = Z.shape
     n = d // 2
@@ -327,11 +320,22 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
 def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                    restricted, project_every, logsum, rec_start, rec_every, states, events,
                    event_logs):
-    """`stacked_kernel` of eqs (8) + (17): the state and its tangent vectors (hook
+    """`stacked_loop` of eqs (8) + (17): the state and its tangent vectors (hook
     `tangent_vectors_rate`), the kernel of `TangentFlow` and of every forward analysis."""
-    return stacked_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every,
-                          w, restricted, project_every, logsum, rec_start, rec_every, states,
-                          events, event_logs, tangent_vectors_rate)
+    return tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                        restricted, project_every, logsum, rec_start, rec_every, states, events,
+                        event_logs, stacked_work(Z.shape[0], Z.shape[1]))
+
+
+@njit(cache=True)
+def tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                 restricted, project_every, logsum, rec_start, rec_every, states, events,
+                 event_logs, work):
+    """`tangent_kernel` on the work arrays ``work`` (`stacked_work`), allocating nothing: the
+    forward pass of the angle test on a GPU thread (``charts.analyses.angle_blocks``)."""
+    return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                        restricted, project_every, logsum, rec_start, rec_every, states, events,
+                        event_logs, tangent_vectors_rate, work)
 
 
 def reorth_steps(dt, *multiples) -> int:
