@@ -143,3 +143,9 @@ def test_members_of_another_size_are_refused():
                     w=np.ones(6), restricted=True, reorth_every=10, project_every=100,
                     backend="cpu")
     assert issubclass(DeviceUnavailable, RuntimeError) and charts is not None
+
+
+def test_the_angle_rows_run_on_the_cpu_route():
+    from charts.runs.benchmarks.gpu import angle_rate
+    wall, window, integrated = angle_rate(3, 2, 2.0, 1.0, 1, backend="cpu")
+    assert wall > 0 and integrated > window > 0

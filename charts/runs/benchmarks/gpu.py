@@ -37,6 +37,7 @@ import warnings
 import numpy as np
 
 from ...analyses.ensemble import map_jobs
+from ...analyses.hyperbolicity import hyperbolicity_ensemble
 from ...analyses.lyapunov import lyapunov_ensemble, lyapunov_settings, member_states
 from ...geometry.system import RotorSystem
 from ...solvers.device import DeviceFlows, cuda_module
@@ -178,6 +179,8 @@ def main(argv=None) -> int:
                    help="count the FP64 operations per step with Nsight Compute (ncu)")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1,
                    help="CPU processes (default: all cores)")
+    p.add_argument("--only", choices=("lyapunov", "angles"),
+                   help="one part of the table (default: both)")
     p.add_argument("--probe", help=argparse.SUPPRESS)
     a = p.parse_args(argv)
     warnings.simplefilter("ignore")               # occupancy notes of numba-cuda
@@ -192,6 +195,67 @@ def main(argv=None) -> int:
     print(f"GPU: {name}, FP64 peak {peak / 1e12:.1f} TFLOP/s" if peak else f"GPU: {name}")
     print(f"CPU: {machine()}; {load()}; {w} workers", flush=True)
 
+    if a.only != "angles":
+        _lyapunov_part(a, rows, w, peak)
+    if a.only != "lyapunov":
+        _angle_part(a, w)
+    return 0
+
+
+def angle_rate(n, members, t_final, t_transient, workers, backend="cuda"):
+    """(wall s of `hyperbolicity_ensemble`, window time units per second, integrated time
+    units per second: both passes with their transients), its first call compiled before."""
+    S = RotorSystem(n)
+    kw = dict(t_transient=t_transient, device=backend, workers=workers)
+    hyperbolicity_ensemble(S, 2, 1.0, **kw)                     # compiles
+    t0 = time.perf_counter()
+    hyperbolicity_ensemble(S, members, t_final, **kw)
+    wall = time.perf_counter() - t0
+    integrated = members * (3 * t_transient + 2 * t_final)
+    return wall, members * t_final / wall, integrated / wall
+
+
+def angle_agreement(n, members, t_final, t_transient, workers):
+    """Per quantile q of φ (restricted): (q, GPU mean of the members' quantiles, CPU mean,
+    |difference| / combined standard error) for the same seeds on both devices."""
+    S = RotorSystem(n)
+    kw = dict(t_transient=t_transient, workers=workers)
+    gpu = hyperbolicity_ensemble(S, members, t_final, device="cuda", **kw)
+    cpu = hyperbolicity_ensemble(S, members, t_final, **kw)
+    out = []
+    for q in (0.01, 0.1, 0.5, 0.9):
+        G = np.array([np.quantile(m.phi_restricted, q) for m in gpu.members])
+        C = np.array([np.quantile(m.phi_restricted, q) for m in cpu.members])
+        se = np.hypot(G.std(ddof=1), C.std(ddof=1)) / np.sqrt(members)
+        out.append((q, G.mean(), C.mean(), abs(G.mean() - C.mean()) / se))
+    return out
+
+
+def _angle_part(a, w):
+    print("\n## Angle test (forward + backward + both angles), t_transient = 20")
+    print("| N | m | members | T | wall s | window tu/s | integrated tu/s |")
+    print("|---|---|---|---|---|---|---|")
+    rows = ((5, 4096, 100.0),) if a.quick else ((4, 16384, 200.0), (5, 16384, 200.0))
+    for n, members, T in rows:
+        try:
+            wall, win, integ = angle_rate(n, members, T, 20.0, w)
+            print(f"| {n} | {n - 2} | {members} | {T:g} | {wall:.2f} | {win:.3g} | {integ:.3g} |",
+                  flush=True)
+        except Exception as e:
+            print(f"| {n} | {n - 2} | {members} | {T:g} | failed: {type(e).__name__}: {e} |||",
+                  flush=True)
+    print("\n## Angle agreement, N = 5, 64 members, T = 200 (quantiles of φ restricted, "
+          "mean over the members)")
+    print("| quantile | GPU | CPU | |Δ| / s.e. |")
+    print("|---|---|---|---|")
+    try:
+        for q, g, c, z in angle_agreement(5, 64, 200.0, 20.0, w):
+            print(f"| {q:g} | {g:.5f} | {c:.5f} | {z:.2f} |", flush=True)
+    except Exception as e:
+        print(f"| failed: {type(e).__name__}: {e} ||||", flush=True)
+
+
+def _lyapunov_part(a, rows, w, peak):
     print("\n## Throughput (time units per second, all members together)")
     print("| N | k | members | T | states s | compile s | run s | GPU tu/s |")
     print("|---|---|---|---|---|---|---|---|")
@@ -242,7 +306,6 @@ def main(argv=None) -> int:
                 print(f"| {n} | {k} | {fl[(n, k)]:.0f} | {gf / 1e9:.0f} | {share} |", flush=True)
             else:
                 print(f"| {n} | {k} | n/a | n/a | n/a |")
-    return 0
 
 
 if __name__ == "__main__":
