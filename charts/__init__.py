@@ -30,6 +30,7 @@ _HOMES = {
     "ChartDomainError": ".solvers.status",
     "IntegrationError": ".solvers.status",
     "SingularPointError": ".solvers.status",
+    "DeviceUnavailable": ".solvers.device",
     "EnsembleResult": ".analyses.ensemble",
     "LyapunovResult": ".analyses.lyapunov",
     "lyapunov_ensemble": ".analyses.lyapunov",
