@@ -33,7 +33,7 @@ _HOMES = {
     "DeviceUnavailable": ".solvers.device",
     "EnsembleResult": ".analyses.ensemble",
     "LyapunovResult": ".analyses.lyapunov",
-    "lyapunov_ensemble": ".analyses.lyapunov",
+    "lyapunov_ensemble": ".analyses.lyapunov_members",
     "lyapunov_spectrum": ".analyses.lyapunov",
     "CurvatureResult": ".analyses.curvature",
     "curvature_along_trajectory": ".analyses.curvature",

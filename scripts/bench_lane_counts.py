@@ -1,5 +1,5 @@
 """The lane kernel against the one-trajectory kernel for small lane counts: where lanes start
-to pay (``charts.analyses.lyapunov.MIN_LANES``).
+to pay (``charts.analyses.lyapunov_members.MIN_LANES``).
 
     python scripts/bench_lane_counts.py              # N = 5, L = 2 3 4 5 6 8 16
     python scripts/bench_lane_counts.py --n 4 --lanes 3 4 8

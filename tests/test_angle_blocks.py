@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 
 import charts.analyses.angle_blocks as blocks
-from charts.analyses.angle_blocks import angles_on_device, block_bytes, block_plan
-from charts.analyses.hyperbolicity import angle_settings, hyperbolicity_angles, hyperbolicity_ensemble
+from charts.analyses.angle_blocks import block_bytes, block_plan
+from charts.analyses.forward_pass import angle_settings
+from charts.analyses.hyperbolicity import angle_members, hyperbolicity_angles, hyperbolicity_ensemble
 from charts.geometry.system import RotorSystem
 from charts.solvers.device import DeviceUnavailable, cuda_available
 
@@ -20,7 +21,7 @@ def test_one_block_equals_hyperbolicity_angles_bit_for_bit():
     angle variants, both passes' exponents, times and settings, to the bit."""
     kw = dict(t_transient=3.0, checkpoint_every=1.0)
     cfg = angle_settings(SYSTEM, 6.0, **kw)
-    got = angles_on_device(SYSTEM, cfg, [3, 4], 1.0, backend="cpu")
+    got = angle_members(SYSTEM, cfg, [3, 4], 1.0, backend="cpu")
     for g, s in zip(got, [3, 4]):
         r = hyperbolicity_angles(SYSTEM, *SYSTEM.random_state(seed=s), 6.0, seed=s, **kw)
         for a in ("t", "phi_full", "phi_restricted", "forward_exponents", "adjoint_exponents"):
@@ -34,8 +35,8 @@ def test_blocks_keep_the_forward_pass_and_converge_to_the_same_angles():
     transient: the restricted angles agree with one block to 2e-3 rad.  (The error falls as
     e^(−λ₂ t_transient), λ₂ ≈ 0.22 at N = 4: 1.5e-4 at 40; measured 2.6e-4.)"""
     cfg = angle_settings(SYSTEM, 10.0, t_transient=40.0)
-    one = angles_on_device(SYSTEM, cfg, [3], 1.0, backend="cpu")[0]
-    five = angles_on_device(SYSTEM, cfg, [3], 1.0, backend="cpu", block=200)[0]
+    one = angle_members(SYSTEM, cfg, [3], 1.0, backend="cpu")[0]
+    five = angle_members(SYSTEM, cfg, [3], 1.0, backend="cpu", block=200)[0]
     assert np.array_equal(one.forward_exponents, five.forward_exponents)
     assert np.array_equal(one.t, five.t)
     assert np.max(np.abs(one.phi_restricted - five.phi_restricted)) < 2e-3
@@ -62,10 +63,10 @@ def test_the_kernel_bodies_with_a_stand_in_for_cuda(monkeypatch):
 
     monkeypatch.setattr(blocks, "cuda", fake)
     cfg = angle_settings(SYSTEM, 4.0, t_transient=2.0)
-    twin = angles_on_device(SYSTEM, cfg, [5, 6], 1.0, backend="cpu")
+    twin = angle_members(SYSTEM, cfg, [5, 6], 1.0, backend="cpu")
     monkeypatch.setattr(blocks, "_forward_cpu", lambda *a: launch(fwd, 2)(*a[:8], *a[8], *a[9:]))
     monkeypatch.setattr(blocks, "_backward_cpu", lambda *a: launch(bwd, 2)(*a[:9], *a[9], *a[10:]))
-    body = angles_on_device(SYSTEM, cfg, [5, 6], 1.0, backend="cpu")
+    body = angle_members(SYSTEM, cfg, [5, 6], 1.0, backend="cpu")
     for a, b in zip(twin, body):
         assert np.array_equal(a.phi_full, b.phi_full)
         assert np.array_equal(a.phi_restricted, b.phi_restricted)

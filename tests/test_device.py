@@ -12,7 +12,8 @@ import pytest
 
 import charts
 import charts.solvers.device as device
-from charts.analyses.lyapunov import lyapunov_device, lyapunov_ensemble, lyapunov_settings
+from charts.analyses.lyapunov import lyapunov_settings
+from charts.analyses.lyapunov_members import lyapunov_device, lyapunov_ensemble
 from charts.geometry.system import RotorSystem
 from charts.runs.benchmarks.gpu import kernel_rate
 from charts.solvers.device import DeviceFlows, DeviceUnavailable, cuda_available

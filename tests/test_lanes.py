@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 import charts
-from charts.analyses.lyapunov import MIN_LANES, lyapunov_ensemble, lyapunov_spectrum
+from charts.analyses.lyapunov import lyapunov_spectrum
+from charts.analyses.lyapunov_members import MIN_LANES, lyapunov_ensemble
 from charts.geometry.system import RotorSystem
 from charts.solvers.lanes import LaneFlows
 from charts.solvers.status import NONFINITE, RUNNING, SINGULAR

@@ -7,8 +7,8 @@ import pytest
 
 from charts.flows.ambient import adjoint_rhs, flow_rhs, flow_tangent_rhs
 from charts.geometry.projection import project_state, project_tangent
-from charts.analyses.lyapunov import (identify_nonphysical, lyapunov_ensemble, lyapunov_spectrum,
-                                      reconstruct_spectrum)
+from charts.analyses.lyapunov import identify_nonphysical, lyapunov_spectrum, reconstruct_spectrum
+from charts.analyses.lyapunov_members import lyapunov_ensemble
 from charts.solvers.tangent import TangentFlow
 from charts.geometry.system import RotorSystem
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from charts import RotorSystem
-from charts.analyses.lyapunov import LANE_BLOCK, MIN_LANES
+from charts.analyses.lyapunov_members import LANE_BLOCK, MIN_LANES
 from charts.runs.runner import RunError, run_scene
 from charts.runs.scene import parse_scene
 from charts.runs.seed_lanes import run_seed_lanes, seed_family

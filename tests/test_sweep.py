@@ -239,7 +239,7 @@ def test_summary_keeps_integers_integers():
 def test_the_seeds_of_a_point_run_in_lanes_with_the_rows_of_single_runs(tmp_path):
     """`MIN_LANES` seeds of one point share a lane kernel on the cluster; every row equals
     the row of its point run alone (`evaluate_point`)."""
-    from charts.analyses.lyapunov import MIN_LANES
+    from charts.analyses.lyapunov_members import MIN_LANES
     from charts.runs.sweep.execute import lane_blocks, same_scene_groups
     from charts.runs.sweep.table import point_row
     from charts.runs.sweep.worker import evaluate_point

@@ -33,13 +33,12 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..solvers.device import THREADS_PER_BLOCK, cuda_module
+from ..solvers.device import THREADS_PER_BLOCK, cuda_module, load_member, store_member
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory, memory_budget, orthonormalize, stacked_work
 from .adjoint_pass import backward_loop
 from .ensemble import map_jobs
-from .hyperbolicity import (AngleSettings, adjoint_start, angle_flow, angle_result,
-                            forward_segments)
+from .forward_pass import AngleSettings, adjoint_start, angle_flow, forward_segments
 
 __all__ = ["forward_member", "backward_member", "block_plan", "block_bytes", "angle_states",
            "angles_on_device", "kernel_functions", "BlockPlan"]
@@ -61,16 +60,7 @@ def forward_member(l, Zs, scs, counters, logsums, status, stopped, Vrec, CK, arr
     minv, m, wts, w = arrays
     ce, reorth, project, rec_start, sample, a, b, vec_end, S, record_start = steps
     R, d = Z.shape
-    n = d // 2
-    for i in range(R):
-        for j in range(d):
-            Z[i, j] = Zs[l, i, j]
-    for j in range(n):
-        sc[0, j] = scs[l, 0, j]
-        sc[1, j] = scs[l, 1, j]
-    for r in range(R - 1):
-        logsum[r] = logsums[l, r]
-    counter[0] = counters[l]
+    load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum)
     if a == 0:
         for j in range(d):
             CK[l, 0, j] = Z[0, j]
@@ -81,18 +71,7 @@ def forward_member(l, Zs, scs, counters, logsums, status, stopped, Vrec, CK, arr
     code = forward_segments(Z, sc, counter, minv, m, wts, level, speeds[l], dt, ce, reorth, w,
                             project, logsum, rec_start, sample, Vrec[l, :S], CK[l], a, b,
                             vec_end, no_events, none, work)
-    for i in range(R):
-        for j in range(d):
-            Zs[l, i, j] = Z[i, j]
-    for j in range(n):
-        scs[l, 0, j] = sc[0, j]
-        scs[l, 1, j] = sc[1, j]
-    for r in range(R - 1):
-        logsums[l, r] = logsum[r]
-    counters[l] = counter[0]
-    if code != RUNNING:
-        status[l] = code
-        stopped[l] = counter[0]
+    store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 
 
 @njit(cache=True, inline="always")
@@ -299,13 +278,16 @@ class _Arrays:
 
 def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda", workers=1,
                      budget=None, block=None, update=None):
-    """[`AngleResult`] of the seeds (as `hyperbolicity_angles` with ``seed=s`` on
+    """The angle test of the seeds (as `hyperbolicity_angles` with ``seed=s`` on
     ``system.random_state(seed=s, speed=speed)``), every member a GPU thread (``backend=
     "cuda"``) or in turn on the CPU (``"cpu"``: the same logic), the window in blocks
     (module docstring) sized to ``budget`` bytes (default: half the GPU's free memory, or
     `memory_budget` on the CPU) or to ``block`` window steps at most; ``update(t)`` gets
-    the window time done by all members after each block.  The first member that stops
-    raises the error `hyperbolicity_angles` raises, naming its seed."""
+    the window time done by all members after each block.  Returns (sines full (L, S),
+    sines restricted (L, S), forward log-norm sums (L, m), adjoint rates (L, m), speeds
+    (L,)) (``charts.analyses.hyperbolicity.angle_members`` makes them `AngleResult` s).  The
+    first member that stops raises the error `hyperbolicity_angles` raises, naming its
+    seed."""
     L = len(seeds)
     arr = _Arrays(backend)
     if budget is None:
@@ -382,10 +364,8 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
             origin += rho * ce
         if update is not None:
             update(L * B * dt)
-    logs = arr.get(dev["logsums"])
-    blogs = arr.get(dev["blogs"]) / (back_steps * dt)
-    return [angle_result(system, _seeded(cfg, s), sf[l], sr[l], logs[l], blogs[l],
-                         float(speeds[l])) for l, s in enumerate(seeds)]
+    return (sf, sr, arr.get(dev["logsums"]), arr.get(dev["blogs"]) / (back_steps * dt),
+            speeds)
 
 
 def _seeded(cfg, s):

@@ -36,27 +36,25 @@ alone, same bits), W back to the window's start (the first transient is not retr
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
-from numba import njit
 
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, stacked_work, tangent_loop
 from .adjoint_pass import adjoint_step, backward_kernel
-from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        samples_of, start_state, steps_of, unstable_dimension, Documented)
+from .angle_blocks import angles_on_device
+from .arguments import positive_time, progress_reporter, start_state, Documented
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble
+from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settings, forward_kernel
 from .singular_values import smallest_singular_values
 from .statistics import small_value_law
 
-__all__ = ["AngleResult", "AngleSettings", "angle_settings", "angle_flow", "angle_result",
-           "adjoint_start", "forward_segments", "hyperbolicity_angles", "hyperbolicity_ensemble",
-           "angle_statistics",
+__all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
+           "hyperbolicity_ensemble", "angle_statistics",
            "SMALL_ANGLE", "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
@@ -67,54 +65,6 @@ LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
 MAX_STORE = 1 << 30
 #: forward segments per compiled call (the progress is reported between calls).
 _SEGMENTS = 1000
-
-
-@njit(cache=True)
-def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
-                    logsum, rec_start, rec_every, states, ck, a, b, vec_end):
-    """`forward_segments` with its work arrays allocated."""
-    return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
-                            project, logsum, rec_start, rec_every, states, ck, a, b, vec_end,
-                            np.empty(0, dtype=np.int64), np.empty((0, 0)),
-                            stacked_work(Z.shape[0], Z.shape[1]))
-
-
-@njit(cache=True)
-def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
-                     logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events, none,
-                     work):
-    """Forward segments a … b−1 of ``ce`` steps of the tangent loop (restricted vectors,
-    samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
-    global step ``vec_end`` the state alone (its bits do not depend on the vectors).
-    Returns the loop's status.  Allocates nothing (no_events (0,), none (0, 0), ``work``:
-    ``charts.solvers.tangent.stacked_work``): it also runs in a GPU thread
-    (``charts.analyses.angle_blocks``)."""
-    y = Z[:1]
-    # the literal True (restricted) in both calls, and typed zeros, not the literal 0, which
-    # compiled the loop a second time here; `bool(True)`, the signature of
-    # TangentFlow.advance, would share that one but ran the angle test ~1 % slower (measured)
-    zero = np.int64(0)
-    for i in range(a, b):
-        left = ce
-        if counter[0] < vec_end:
-            k = vec_end - counter[0]
-            if ce < k:
-                k = ce
-            status, _ = tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
-                                     w, True, project, logsum, rec_start, rec_every, states,
-                                     no_events, none, work)
-            if status != RUNNING:
-                return status
-            left -= k
-        if left > 0:
-            status, _ = tangent_loop(y, sc, counter, minv, m, wts, level, speed, dt, left,
-                                     reorth, w, True, project, logsum, zero, zero, none,
-                                     no_events, none, work)
-            if status != RUNNING:
-                return status
-        for j in range(Z.shape[1]):      # a loop, not a slice copy (adjoint_pass)
-            ck[i + 1, j] = Z[0, j]
-    return RUNNING
 
 
 @dataclass
@@ -244,7 +194,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         states[0] = flow.Z.ravel()
     for a in range(0, nseg, _SEGMENTS):
         b = min(nseg, a + _SEGMENTS)
-        status = _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
+        status = forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
                                  system.weights, system.level, flow.speed, dt, ce, reorth,
                                  flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b,
                                  n_tr + n_win)
@@ -264,60 +214,6 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     rep.close()
     return angle_result(system, cfg, sf, sr, flow.logsum, blog / ((nsteps - n_tr) * dt),
                         flow.speed)
-
-
-@dataclass(frozen=True)
-class AngleSettings:
-    """Validated settings of one angle test; every count in RK4 steps of ``dt``."""
-    n: int
-    m: int
-    dt: float
-    n_tr: int
-    n_win: int
-    sample: int
-    ce: int
-    project: int
-    reorth: int
-    seed: int
-
-    @property
-    def samples(self) -> int:
-        return self.n_win // self.sample
-
-
-def angle_settings(system, t_final, *, dt=0.01, n_unstable=None, t_transient=Documented(100.0),
-                   sample_every=Documented(0.1), checkpoint_every=Documented(1.0),
-                   project_every=Documented(1.0), seed=0) -> AngleSettings:
-    """Check the arguments of `hyperbolicity_angles` (ValueError naming the bad one)."""
-    n = system.n
-    m = unstable_dimension(n, n_unstable)
-    dt = positive_time("dt", dt)
-    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
-    n_win = steps_of("t_final", t_final, dt)
-    sample = steps_of("sample_every", sample_every, dt, divides=n_win)
-    ce = steps_of("checkpoint_every", checkpoint_every, dt)
-    project = project_steps(project_every, dt)
-    seed = positive_int("seed", seed, 0)
-    if samples_of(n_win, sample, t_final, sample_every) < 1:
-        raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")
-    reorth = reorth_steps(dt, sample, n_tr, ce)  # orthonormal at every sample and segment end
-    return AngleSettings(n, m, dt, n_tr, n_win, sample, ce, project, reorth, seed)
-
-
-def angle_flow(system, theta0, u0, cfg: AngleSettings) -> TangentFlow:
-    """The forward pass's flow from a validated state: m restricted tangent vectors,
-    Euclidean, seeded with ``cfg.seed``."""
-    return TangentFlow(system, theta0, u0, cfg.m, dt=cfg.dt, inner="euclidean", restricted=True,
-                       reorth_every=cfg.reorth, project_every=cfg.project, seed=cfg.seed)
-
-
-def adjoint_start(cfg: AngleSettings, w, block=None):
-    """The backward pass's initial vectors W (m, 2N), orthonormal in ``w``: from the stream
-    [seed, 1] (and the block number, for the later blocks of a windowed run)."""
-    key = [cfg.seed, 1] if block is None else [cfg.seed, 1, block]
-    W = np.random.default_rng(key).normal(size=(cfg.m, 2 * cfg.n))
-    orthonormalize(W, w, np.zeros(cfg.m))
-    return W
 
 
 def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_exponents, speed):
@@ -346,17 +242,26 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
     the adjoint vectors' convergence error, e^(−λ_m·t_transient)); t_transient must then be a
     multiple of checkpoint_every.  ``"auto"``: the GPU when there is one."""
     if resolve_device(device) == "cuda":
-        from .angle_blocks import angles_on_device
         n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                            workers, progress)
         cfg = angle_settings(system, t_final, seed=seed, **kwargs)
         rep = progress_reporter(progress, n_trajectories * t_final,
                                 f"angles N={system.n} ensemble (GPU)")
-        members = angles_on_device(system, cfg, list(range(seed, seed + n_trajectories)), speed,
-                                   workers=workers or os.cpu_count() or 1, update=rep.update)
+        members = angle_members(system, cfg, list(range(seed, seed + n_trajectories)), speed,
+                                workers=workers or os.cpu_count() or 1, update=rep.update)
         rep.close()
         return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
     short = (2 * kwargs.get("sample_every", 0.1), {"t_transient": 0.0})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
                         seed=seed, workers=workers, progress=progress,
                         desc=f"angles N={system.n} ensemble", prime=short, **kwargs)
+
+
+def angle_members(system, cfg: AngleSettings, seeds, speed, **kw):
+    """[`AngleResult`] of the seeds by ``charts.analyses.angle_blocks.angles_on_device``
+    (every member a GPU thread, ``backend="cuda"``, or its CPU twin; ``kw``: its arguments),
+    each as `hyperbolicity_angles` with ``seed=s`` from ``system.random_state(seed=s,
+    speed=speed)`` would return it (bit for bit with one block)."""
+    sf, sr, logs, adjoint, speeds = angles_on_device(system, cfg, seeds, speed, **kw)
+    return [angle_result(system, replace(cfg, seed=s), sf[l], sr[l], logs[l], adjoint[l],
+                         float(speeds[l])) for l, s in enumerate(seeds)]

@@ -62,7 +62,8 @@ def _task_lyapunov(n, seeds, t, batches):
     """The members ``seeds`` of N in the lanes of one kernel (`lyapunov_lanes`: one by one
     below ``MIN_LANES``; each equal to ``lyapunov_spectrum`` from ``random_state(seed)``),
     stacked along a first member axis."""
-    from ..analyses.lyapunov import lyapunov_lanes, lyapunov_settings
+    from ..analyses.lyapunov import lyapunov_settings
+    from ..analyses.lyapunov_members import lyapunov_lanes
     from ..geometry.system import RotorSystem
     s = RotorSystem(n)
     cfg = lyapunov_settings(s, t, n_batches=batches, seed=seeds[0])

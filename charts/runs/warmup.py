@@ -22,7 +22,8 @@ import time
 from ..analyses.covariant import covariant_lyapunov_vectors
 from ..analyses.curvature import curvature_along_trajectory
 from ..analyses.hyperbolicity import hyperbolicity_angles
-from ..analyses.lyapunov import MIN_LANES, lyapunov_ensemble, lyapunov_spectrum
+from ..analyses.lyapunov import lyapunov_spectrum
+from ..analyses.lyapunov_members import MIN_LANES, lyapunov_ensemble
 from ..compilation import compile_timer
 from ..geometry.system import RotorSystem
 from ..solvers.integrate import integrate

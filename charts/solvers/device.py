@@ -30,7 +30,7 @@ from .status import RUNNING, status_error
 from .tangent import stacked_loop, tangent_vectors_rate
 
 __all__ = ["DeviceFlows", "DeviceUnavailable", "cuda_module", "cuda_available",
-           "member_advance", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
+           "member_advance", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
            "THREADS_PER_BLOCK"]
 
 #: Threads per CUDA block (one trajectory each); their local memory, not registers, bounds
@@ -105,28 +105,41 @@ def member_advance(l, Zs, scs, counters, status, stopped, minv, m, wts, level, s
     go to event_logs[l, e].  ``rec``: a (1, 1) array, never written (no records)."""
     if status[l] != RUNNING:
         return
-    R, d = Z.shape
-    n = d // 2
-    k = R - 1
-    for i in range(R):
-        for j in range(d):
-            Z[i, j] = Zs[l, i, j]
-    for j in range(n):
-        sc[0, j] = scs[l, 0, j]
-        sc[1, j] = scs[l, 1, j]
-    for r in range(k):
-        logsum[r] = logsums[l, r]
-    counter[0] = counters[l]
+    load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum)
     code, done = stacked_loop(Z, sc, counter, minv, m, wts, level, speeds[l], dt, nsteps,
                               reorth_every, w, restricted, project_every, logsum, 0, 0, rec,
                               events, event_logs[l], tangent_vectors_rate, work)
+    store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
+
+
+@njit(cache=True, inline="always")
+def load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum):
+    """Member l's flow — stacked state Zs[l], sin/cos scs[l], step counter counters[l],
+    log-norm sums logsums[l] — into a thread's work arrays Z, sc, counter, logsum."""
+    R, d = Z.shape
+    for i in range(R):
+        for j in range(d):
+            Z[i, j] = Zs[l, i, j]
+    for j in range(d // 2):
+        sc[0, j] = scs[l, 0, j]
+        sc[1, j] = scs[l, 1, j]
+    for r in range(R - 1):
+        logsum[r] = logsums[l, r]
+    counter[0] = counters[l]
+
+
+@njit(cache=True, inline="always")
+def store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped):
+    """The reverse of `load_member`; a loop status ``code`` other than RUNNING flags member l
+    (its global step in ``stopped``)."""
+    R, d = Z.shape
     for i in range(R):
         for j in range(d):
             Zs[l, i, j] = Z[i, j]
-    for j in range(n):
+    for j in range(d // 2):
         scs[l, 0, j] = sc[0, j]
         scs[l, 1, j] = sc[1, j]
-    for r in range(k):
+    for r in range(R - 1):
         logsums[l, r] = logsum[r]
     counters[l] = counter[0]
     if code != RUNNING:

@@ -27,7 +27,8 @@ import time
 
 import numpy as np
 
-from ...analyses.lyapunov import lyapunov_ensemble, lyapunov_spectrum
+from ...analyses.lyapunov import lyapunov_spectrum
+from ...analyses.lyapunov_members import lyapunov_ensemble
 from ...geometry.system import RotorSystem
 from ..cli_parser import OneLineParser
 from .environment import load, machine

@@ -38,7 +38,8 @@ import numpy as np
 
 from ...analyses.ensemble import map_jobs
 from ...analyses.hyperbolicity import hyperbolicity_ensemble
-from ...analyses.lyapunov import lyapunov_ensemble, lyapunov_settings, member_states
+from ...analyses.lyapunov import lyapunov_settings
+from ...analyses.lyapunov_members import lyapunov_ensemble, member_states
 from ...geometry.system import RotorSystem
 from ...solvers.device import DeviceFlows, cuda_module
 from ...solvers.tangent import inner_weights

@@ -20,7 +20,7 @@ from .report import SUMMARY, plot_sweep, summarize, write_summary
 from .spec import Sweep, SweepError
 from .table import (TABLE, TableAppender, finish_table, point_columns, point_row,
                     prepare_table)
-from ...analyses.lyapunov import LANE_BLOCK, MIN_LANES
+from ...analyses.lyapunov_members import LANE_BLOCK, MIN_LANES
 from ..seed_lanes import seed_family
 from .worker import evaluate_points
 

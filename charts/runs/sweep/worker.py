@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ...analyses.lyapunov import MIN_LANES
+from ...analyses.lyapunov_members import MIN_LANES
 from .. import runner
 from ..scene import parse_scene
 from ..seed_lanes import run_seed_lanes, seed_family

@@ -1,0 +1,120 @@
+"""The forward pass of the angle test (section 4, ``charts.analyses.hyperbolicity``): its
+settings, its flow (m restricted tangent vectors in the Euclidean product), the segments of
+the tangent loop that record the vectors at the samples and the state at the checkpoints,
+and the adjoint vectors the backward pass (``charts.analyses.adjoint_pass``) starts from."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from ..solvers.status import RUNNING
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, stacked_work, tangent_loop
+from .arguments import (Documented, positive_int, positive_time, project_steps, samples_of,
+                        steps_of, unstable_dimension)
+
+__all__ = ["AngleSettings", "angle_settings", "angle_flow", "adjoint_start", "forward_segments",
+           "forward_kernel"]
+
+
+@dataclass(frozen=True)
+class AngleSettings:
+    """Validated settings of one angle test; every count in RK4 steps of ``dt``."""
+    n: int
+    m: int
+    dt: float
+    n_tr: int
+    n_win: int
+    sample: int
+    ce: int
+    project: int
+    reorth: int
+    seed: int
+
+    @property
+    def samples(self) -> int:
+        return self.n_win // self.sample
+
+
+def angle_settings(system, t_final, *, dt=0.01, n_unstable=None, t_transient=Documented(100.0),
+                   sample_every=Documented(0.1), checkpoint_every=Documented(1.0),
+                   project_every=Documented(1.0), seed=0) -> AngleSettings:
+    """Check the arguments of `hyperbolicity_angles` (ValueError naming the bad one)."""
+    n = system.n
+    m = unstable_dimension(n, n_unstable)
+    dt = positive_time("dt", dt)
+    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    n_win = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=n_win)
+    ce = steps_of("checkpoint_every", checkpoint_every, dt)
+    project = project_steps(project_every, dt)
+    seed = positive_int("seed", seed, 0)
+    if samples_of(n_win, sample, t_final, sample_every) < 1:
+        raise ValueError(f"t_final={t_final:g} holds no sample; increase it or lower sample_every")
+    reorth = reorth_steps(dt, sample, n_tr, ce)  # orthonormal at every sample and segment end
+    return AngleSettings(n, m, dt, n_tr, n_win, sample, ce, project, reorth, seed)
+
+
+def angle_flow(system, theta0, u0, cfg: AngleSettings) -> TangentFlow:
+    """The forward pass's flow from a validated state: m restricted tangent vectors,
+    Euclidean, seeded with ``cfg.seed``."""
+    return TangentFlow(system, theta0, u0, cfg.m, dt=cfg.dt, inner="euclidean", restricted=True,
+                       reorth_every=cfg.reorth, project_every=cfg.project, seed=cfg.seed)
+
+
+def adjoint_start(cfg: AngleSettings, w, block=None):
+    """The backward pass's initial vectors W (m, 2N), orthonormal in ``w``: from the stream
+    [seed, 1] (and the block number, for the later blocks of a windowed run)."""
+    key = [cfg.seed, 1] if block is None else [cfg.seed, 1, block]
+    W = np.random.default_rng(key).normal(size=(cfg.m, 2 * cfg.n))
+    orthonormalize(W, w, np.zeros(cfg.m))
+    return W
+
+
+@njit(cache=True)
+def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
+                    logsum, rec_start, rec_every, states, ck, a, b, vec_end):
+    """`forward_segments` with its work arrays allocated."""
+    return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
+                            project, logsum, rec_start, rec_every, states, ck, a, b, vec_end,
+                            np.empty(0, dtype=np.int64), np.empty((0, 0)),
+                            stacked_work(Z.shape[0], Z.shape[1]))
+
+
+@njit(cache=True)
+def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
+                     logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events, none,
+                     work):
+    """Forward segments a … b−1 of ``ce`` steps of the tangent loop (restricted vectors,
+    samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
+    global step ``vec_end`` the state alone (its bits do not depend on the vectors).
+    Returns the loop's status.  Allocates nothing (no_events (0,), none (0, 0), ``work``:
+    ``charts.solvers.tangent.stacked_work``): it also runs in a GPU thread
+    (``charts.analyses.angle_blocks``)."""
+    y = Z[:1]
+    # the literal True (restricted) in both calls, and typed zeros, not the literal 0, which
+    # compiled the loop a second time here; `bool(True)`, the signature of
+    # TangentFlow.advance, would share that one but ran the angle test ~1 % slower (measured)
+    zero = np.int64(0)
+    for i in range(a, b):
+        left = ce
+        if counter[0] < vec_end:
+            k = vec_end - counter[0]
+            if ce < k:
+                k = ce
+            status, _ = tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
+                                     w, True, project, logsum, rec_start, rec_every, states,
+                                     no_events, none, work)
+            if status != RUNNING:
+                return status
+            left -= k
+        if left > 0:
+            status, _ = tangent_loop(y, sc, counter, minv, m, wts, level, speed, dt, left,
+                                     reorth, w, True, project, logsum, zero, zero, none,
+                                     no_events, none, work)
+            if status != RUNNING:
+                return status
+        for j in range(Z.shape[1]):      # a loop, not a slice copy (adjoint_pass)
+            ck[i + 1, j] = Z[0, j]
+    return RUNNING

@@ -1,0 +1,147 @@
+"""Lyapunov ensembles: independent trajectories of `lyapunov_spectrum` advanced together,
+in the vector lanes of one CPU kernel (``charts.solvers.lanes``, in parallel processes) or
+each in its own GPU thread (``charts.solvers.device``); every member a `LyapunovResult`
+(bit for bit `lyapunov_spectrum`'s on the CPU)."""
+from __future__ import annotations
+
+import os
+from dataclasses import replace
+from functools import partial
+
+import numpy as np
+
+from ..solvers.device import DeviceFlows, resolve_device
+from ..solvers.lanes import LaneFlows
+from ..solvers.tangent import inner_weights
+from .arguments import progress_reporter
+from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
+from .lyapunov import averaging_logs, lyapunov_flow, lyapunov_result, lyapunov_settings
+
+__all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states",
+           "LANE_BLOCK", "MIN_LANES"]
+
+
+def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
+                      progress=False, device="cpu", **kwargs) -> EnsembleResult:
+    """`lyapunov_spectrum` from ``n_trajectories`` independent random initial states of speed
+    ``speed`` (seeds seed, seed+1, …; also the seeds of their tangent vectors; ``kwargs``:
+    the settings of `lyapunov_spectrum`).
+
+    The trajectories advance together in the vector lanes of one kernel
+    (``charts.solvers.lanes``), in blocks of up to `LANE_BLOCK`, the blocks in ``workers``
+    parallel processes (default: all cores; 1: in this process).  Each member is the
+    `LyapunovResult` of `lyapunov_spectrum` on its state, bit for bit
+    (tests/test_lanes.py).  A member that stops (e.g. at a singular point) raises the error
+    `lyapunov_spectrum` raises for it, naming its seed.  Returns an `EnsembleResult`:
+    ``members``, and ``exponents`` / ``stderr``, the mean over the trajectories and its
+    standard error.
+
+    ``device="cuda"`` advances every member in its own GPU thread instead
+    (``charts.solvers.device``: the same loop and equations compiled for the GPU; the
+    members' bits differ from the CPU's by the GPU's fused multiply-adds and libm, see
+    there); ``"auto"``: the GPU when there is one.  ``workers`` then only builds the
+    members' initial states."""
+    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                       workers, progress)
+    device = resolve_device(device)
+    cfg = lyapunov_settings(system, t_final, seed=seed, **kwargs)
+    if device == "cuda":
+        rep = progress_reporter(progress, n_trajectories * t_final,
+                                f"Lyapunov N={system.n} ensemble (GPU)")
+        members = lyapunov_device((system, cfg, list(range(seed, seed + n_trajectories)), speed),
+                                  rep.update, "cuda", workers or os.cpu_count() or 1)
+        rep.close()
+        return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
+    cores = workers or os.cpu_count() or 1
+    n_blocks = min(n_trajectories, max(cores, -(-n_trajectories // LANE_BLOCK)))
+    cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
+    jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
+    desc = f"Lyapunov N={system.n} ensemble"
+    if n_blocks == 1 or workers == 1:        # in this process: progress chunk by chunk
+        rep = progress_reporter(progress, n_trajectories * t_final, desc)
+        members = [m for job in jobs for m in lyapunov_lanes(job, rep.update)]
+        rep.close()
+    else:
+        # the first block's route (lanes or one by one) over two re-orthonormalisations
+        short = replace(cfg, transient=0, total=2 * cfg.reorth, n_batches=2, record=cfg.reorth)
+        members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), workers, t_final, progress, desc,
+                           prime=(lyapunov_lanes, (system, short, jobs[0][2], speed)),
+                           name="lyapunov_ensemble", n=system.n)
+    return ensemble_result(members, system, seed, speed, t_final, kwargs)
+
+
+#: Most trajectories one lane kernel advances together (larger ensembles: several blocks).
+LANE_BLOCK = 64
+#: Fewest trajectories worth one lane kernel: below, the members run one after the other in
+#: the one-trajectory kernel, which is as fast there (the lanes are padded to blocks of 8;
+#: N = 5, paired: 0.98x the one-trajectory kernel's pace at 2 lanes, 1.44x at 3, 1.83x at
+#: 4, 3.6x at 8; docs/performance.md, "Ensembles in vector lanes").
+MIN_LANES = 3
+
+
+def lyapunov_lanes(job, update=None):
+    """[`LyapunovResult`] of the seeds of ``job`` = (system, settings, seeds, speed), from
+    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows` (fewer
+    than `MIN_LANES`: one after the other); ``update(t)`` (optional) gets the averaging time
+    done by all members after each chunk."""
+    system, cfg, seeds, speed = job
+    cfgs = [replace(cfg, seed=s) for s in seeds]
+    flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
+             for s, c in zip(seeds, cfgs)]
+    if len(seeds) < MIN_LANES:
+        logs = []
+        for f, c, s in zip(flows, cfgs, seeds):
+            w = _where(s)
+            f.advance(cfg.transient, where=w)
+            f.logsum[:] = 0.0
+            logs.append(averaging_logs(f, c, partial(f.advance, where=w), update))
+        return [lyapunov_result(system, c, lg, f.speed) for c, lg, f in zip(cfgs, logs, flows)]
+    return _members_of(LaneFlows(flows), system, cfg, seeds, update)
+
+
+def lyapunov_device(job, update=None, backend="cuda", workers=1):
+    """`lyapunov_lanes` with every member in its own GPU thread (``backend="cuda"``) or the
+    same logic on the CPU (``"cpu"``), by ``charts.solvers.device.DeviceFlows``; the members'
+    initial states are built in ``workers`` processes (`member_states`)."""
+    system, cfg, seeds, speed = job
+    size = max(1, -(-len(seeds) // (4 * workers)))
+    jobs = [(system, cfg, seeds[i:i + size], speed) for i in range(0, len(seeds), size)]
+    parts = (map_jobs(member_states, jobs, [1] * len(jobs), workers, 0.0, False, "states")
+             if workers > 1 and len(jobs) > 1 else [member_states(j)[0] for j in jobs])
+    states = [np.concatenate(a) for a in zip(*parts)]
+    flows = DeviceFlows(system, states, dt=cfg.dt, w=inner_weights(system, cfg.inner),
+                        restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
+                        project_every=cfg.project, backend=backend)
+    return _members_of(flows, system, cfg, seeds, update)
+
+
+def member_states(job):
+    """[(Zs, scs, speeds)]: the stacked initial states (L, 1 + k, 2N), weighted sin/cos
+    (L, 2, N) and speeds (L,) of the seeds of ``job`` (as in `lyapunov_lanes`), in a list
+    of one (for ``map_jobs``)."""
+    system, cfg, seeds, speed = job
+    flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed),
+                           replace(cfg, seed=s)) for s in seeds]
+    return [(np.stack([f.Z for f in flows]), np.stack([f.sc for f in flows]),
+             np.array([f.speed for f in flows]))]
+
+
+def _where(seed):
+    return f"lyapunov_ensemble (ambient RK4, member seed={seed})"
+
+
+def _members_of(lanes, system, cfg, seeds, update):
+    """The members' `LyapunovResult` s of a run on ``lanes`` (`LaneFlows` or `DeviceFlows`,
+    none advanced): the transient, then `averaging_logs`; the first member that stopped
+    raises its error."""
+    def advance(steps, **kw):
+        lanes.advance(steps, **kw)
+        for l in lanes.stopped_lanes()[:1]:
+            raise lanes.error(l, _where(seeds[l]))
+
+    advance(cfg.transient)
+    lanes.logsum[...] = 0.0
+    logs = averaging_logs(lanes, cfg, advance,
+                          None if update is None else lambda t: update(len(seeds) * t))
+    return [lyapunov_result(system, replace(cfg, seed=s), logs[:, i], float(lanes.speed[i]))
+            for i, s in enumerate(seeds)]
