@@ -119,7 +119,7 @@ def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_
                          np.empty((0, 0)), stacked_work(1 + kk, d), samples)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def backward_loop(ck, Z, sc, counter, rec, minv, masses, wts, level, speed, dt, ck_every,
                   first_sample, sample_every, reorth, V, w, logs, sf, sr, no_events, none, work,
                   samples):

@@ -10,7 +10,7 @@ import numpy as np
 from numba import njit
 
 from ..solvers.status import RUNNING
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, stacked_work, tangent_loop
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, stacked_work, tangent_kernel
 from .arguments import (Documented, positive_int, positive_time, project_steps, samples_of,
                         steps_of, unstable_dimension)
 
@@ -82,7 +82,7 @@ def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w
                             stacked_work(Z.shape[0], Z.shape[1]))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
                      logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events, none,
                      work):
@@ -103,14 +103,14 @@ def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth,
             k = vec_end - counter[0]
             if ce < k:
                 k = ce
-            status, _ = tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
+            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
                                      w, True, project, logsum, rec_start, rec_every, states,
                                      no_events, none, work)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
-            status, _ = tangent_loop(y, sc, counter, minv, m, wts, level, speed, dt, left,
+            status, _ = tangent_kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
                                      reorth, w, True, project, logsum, zero, zero, none,
                                      no_events, none, work)
             if status != RUNNING:

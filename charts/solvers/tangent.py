@@ -36,7 +36,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes"]
 
@@ -319,20 +319,10 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
 @njit(cache=True)
 def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                    restricted, project_every, logsum, rec_start, rec_every, states, events,
-                   event_logs):
-    """`stacked_loop` of eqs (8) + (17): the state and its tangent vectors (hook
-    `tangent_vectors_rate`), the kernel of `TangentFlow` and of every forward analysis."""
-    return tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                        restricted, project_every, logsum, rec_start, rec_every, states, events,
-                        event_logs, stacked_work(Z.shape[0], Z.shape[1]))
-
-
-@njit(cache=True)
-def tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                 restricted, project_every, logsum, rec_start, rec_every, states, events,
-                 event_logs, work):
-    """`tangent_kernel` on the work arrays ``work`` (`stacked_work`), allocating nothing: the
-    forward pass of the angle test on a GPU thread (``charts.analyses.angle_blocks``)."""
+                   event_logs, work):
+    """`stacked_loop` of eqs (8) + (17) (hook `tangent_vectors_rate`) on the work arrays
+    ``work`` (`stacked_work`, kept by the caller: it allocates nothing, so it also runs in a
+    GPU thread): the kernel of `TangentFlow` and of every forward analysis."""
     return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                         restricted, project_every, logsum, rec_start, rec_every, states, events,
                         event_logs, tangent_vectors_rate, work)
@@ -462,6 +452,7 @@ class TangentFlow(StackedFlow):
         self.sc = np.vstack([a * np.sin(self.Z[0, :n]), a * np.cos(self.Z[0, :n])])
         self.counter = np.zeros(1, dtype=np.int64)
         self.logsum = np.zeros(k)
+        self._work = None   # the kernel's work arrays, allocated at the first advance
 
     def advance(self, nsteps, *, rec_start=0, rec_every=0, states=None, events=None,
                 event_logs=None, where="RK4"):
@@ -471,11 +462,13 @@ class TangentFlow(StackedFlow):
         states = _NO_ROWS if states is None else states
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_ROWS
+        if self._work is None:
+            self._work = stacked_work(*self.Z.shape)
         status, done = tangent_kernel(self.Z, self.sc, self.counter, sys_.minv, sys_.masses,
                                       sys_.weights, sys_.level, self.speed, self.dt, int(nsteps), self.reorth_every,
                                       self.w, self.restricted, self.project_every, self.logsum,
                                       int(rec_start), int(rec_every), states, events,
-                                      event_logs)
+                                      event_logs, self._work)
         if status != RUNNING:
             raise status_error(status, self.steps * self.dt, where)
 
