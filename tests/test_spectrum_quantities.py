@@ -110,3 +110,32 @@ def test_angles_of_a_long_run_take_a_window_and_are_thinned():
     assert "1 chart switches" in ax.get_title()
     with pytest.raises(ValueError, match="holds no sample"):
         plot_angles_time(t, theta, window=(2000, 3000))
+
+
+def test_the_error_ratio_compares_claimed_and_measured_errors():
+    """Members whose batch errors equal the spread of their exponents give a ratio near 1;
+    members claiming a tenth of it give 0.1 and an `ErrorBarWarning` (from 8 members on);
+    fewer members are not judged."""
+    import types
+    import warnings
+
+    from charts.analyses.ensemble import ErrorBarWarning, ensemble_result, error_ratio_of
+
+    rng = np.random.default_rng(5)
+    E = 0.3 + 0.01 * rng.normal(size=(400, 2))
+    honest = error_ratio_of(E, np.full((400, 2), 0.01))
+    assert np.allclose(honest, 1.0, atol=0.1)    # the spread's own error: 1/√(2·399) ≈ 3.5 %
+    system = charts.RotorSystem(4)
+
+    def members(n, claimed):
+        return [types.SimpleNamespace(exponents=e, stderr=np.full(2, claimed)) for e in E[:n]]
+
+    with pytest.warns(ErrorBarWarning, match=r"exponent \d.* 0\.\d\d of the members' standard"):
+        res = ensemble_result(members(8, 0.001), system, 0, 1.0, 10.0, {})
+    assert np.all(res.error_ratio < 0.5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ensemble_result(members(7, 0.001), system, 0, 1.0, 10.0, {})    # too few to judge
+        ok = ensemble_result(members(50, 0.01), system, 0, 1.0, 10.0, {})
+    assert np.all(np.abs(ok.error_ratio - 1) < 0.35)
+    assert np.all(np.isnan(error_ratio_of(E[:1], np.ones((1, 2)))))

@@ -1,6 +1,7 @@
 """Ensembles: one analysis on independent random initial states, in parallel processes."""
 from __future__ import annotations
 
+import warnings
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
@@ -13,7 +14,9 @@ from .arguments import positive_int, positive_time, progress_reporter
 from .spectrum_quantities import kaplan_yorke_dimension, kolmogorov_sinai_entropy, with_error
 from .statistics import standard_error
 
-__all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result"]
+__all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result",
+           "error_ratio_of", "warn_understated", "ErrorBarWarning", "UNDERSTATED_RATIO",
+           "MIN_MEMBERS_TO_JUDGE"]
 
 
 @dataclass
@@ -23,11 +26,16 @@ class EnsembleResult(Archivable):
     members : list of the analysis' results, in seed order.
     exponents, stderr : (k,) for Lyapunov members: mean over the members and its two-sided
         standard error (their spread); None for other analyses.
+    error_ratio : (k,) for Lyapunov members: the members' own batch-mean errors (root mean
+        square) over the spread of their exponents (standard deviation) — about 1 when the
+        error bars of single runs are honest, below 1 when they understate the spread between
+        trajectories (`error_ratio_of`; `ErrorBarWarning`).
     """
     members: list
     exponents: np.ndarray | None = None
     stderr: np.ndarray | None = None
     params: dict = field(default_factory=dict)
+    error_ratio: np.ndarray | None = None
 
     def __len__(self):
         return len(self.members)
@@ -61,6 +69,10 @@ class EnsembleResult(Archivable):
             data["ensemble_exponents"] = (("exponent",), self.exponents, "1 / time", "mean")
             data["ensemble_stderr"] = (("exponent",), self.stderr, "1 / time",
                                        "two-sided standard error of the mean")
+        if self.error_ratio is not None:
+            data["batch_error_ratio"] = (("exponent",), self.error_ratio, "1",
+                                         "members' batch-mean errors (rms) / spread of their "
+                                         "exponents (std)")
         return dataset(self.KIND, data, coords=coords, attrs={
             "params": self.params, "member_kind": kinds.pop(),
             "member_attrs": [dict(p.attrs) for p in parts]})
@@ -73,7 +85,8 @@ class EnsembleResult(Archivable):
         a = attributes(ds)
         module, name = KINDS[a["member_kind"]].split(":")
         member_cls = getattr(importlib.import_module(module), name)
-        body = ds.drop_vars([v for v in ("ensemble_exponents", "ensemble_stderr") if v in ds])
+        body = ds.drop_vars([v for v in ("ensemble_exponents", "ensemble_stderr",
+                                         "batch_error_ratio") if v in ds])
         members = []
         for i, attrs in enumerate(a["member_attrs"]):
             m = body.isel(member=i)
@@ -81,7 +94,9 @@ class EnsembleResult(Archivable):
             members.append(member_cls.from_xarray(m))
         ex = ds["ensemble_exponents"].values if "ensemble_exponents" in ds else None
         se = ds["ensemble_stderr"].values if "ensemble_stderr" in ds else None
-        return cls(members=members, exponents=ex, stderr=se, params=a["params"])
+        ratio = ds["batch_error_ratio"].values if "batch_error_ratio" in ds else None
+        return cls(members=members, exponents=ex, stderr=se, params=a["params"],
+                   error_ratio=ratio)
 
     def _spectra(self):
         """(mean spectrum, the members' spectra) of a Lyapunov ensemble."""
@@ -197,7 +212,51 @@ def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleRe
     if all(hasattr(m, "exponents") for m in members):
         E = np.array([m.exponents for m in members])
         res.exponents, res.stderr = E.mean(axis=0), standard_error(E)
+        if all(getattr(m, "stderr", None) is not None for m in members):
+            res.error_ratio = error_ratio_of(E, np.array([m.stderr for m in members]))
+            warn_understated(res.error_ratio, len(members))
     return res
+
+
+class ErrorBarWarning(UserWarning):
+    """The error bars of single runs understate the spread between trajectories."""
+
+
+#: Fewest members for `warn_understated` to judge (the spread's own relative error is
+#: 1/√(2(M − 1)): 27 % at 8 members).
+MIN_MEMBERS_TO_JUDGE = 8
+#: `error_ratio_of` below which the members' error bars count as understated: with 8 members
+#: an honest ratio falls below 0.5 by chance with probability ≈ 2·10⁻⁴ (χ² with 7 degrees of
+#: freedom above 28).
+UNDERSTATED_RATIO = 0.5
+
+
+def error_ratio_of(exponents, stderrs):
+    """(k,) the members' batch-mean errors, root mean square over the members, divided by
+    the standard deviation of their exponents (members × k both): each member's error bar
+    claims the error of its own estimate, the spread measures it; NaN for fewer than two
+    members or no spread."""
+    E = np.asarray(exponents, dtype=float)
+    if E.shape[0] < 2:
+        return np.full(E.shape[1:], np.nan)
+    spread = E.std(axis=0, ddof=1)
+    claimed = np.sqrt(np.mean(np.asarray(stderrs, dtype=float) ** 2, axis=0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(spread > 0, claimed / spread, np.nan)
+
+
+def warn_understated(ratio, members) -> None:
+    """`ErrorBarWarning` when an ensemble of at least `MIN_MEMBERS_TO_JUDGE` members shows
+    error bars of single runs below `UNDERSTATED_RATIO` of the spread between them."""
+    r = np.asarray(ratio, dtype=float)
+    bad = np.flatnonzero(r < UNDERSTATED_RATIO)
+    if members >= MIN_MEMBERS_TO_JUDGE and bad.size:
+        i = int(bad[np.argmin(r[bad])])
+        warnings.warn(f"the members' own error bars understate the spread between trajectories: "
+                      f"for exponent {i} they are {r[i]:.2f} of the members' standard deviation "
+                      f"({members} members); quote the ensemble's stderr (across trajectories), "
+                      "not a single run's batch error, and run longer transients or longer runs",
+                      ErrorBarWarning, stacklevel=3)
 
 
 def _collect(it, sizes, t_final, progress, desc):
