@@ -150,3 +150,12 @@ def test_the_angle_rows_run_on_the_cpu_route():
     from charts.runs.benchmarks.gpu import angle_rate
     wall, window, integrated = angle_rate(3, 2, 2.0, 1.0, 1, backend="cpu")
     assert wall > 0 and integrated > window > 0
+
+
+def test_ensembles_too_large_for_memory_are_refused_before_they_start():
+    """10¹² members: refused at once with the bytes and the remedy, on both routes."""
+    from charts.analyses.hyperbolicity import hyperbolicity_ensemble
+    with pytest.raises(ValueError, match=r"results of 1000000000000 members .* GiB.*fewer members"):
+        lyapunov_ensemble(RotorSystem(4), 10**12, 100.0)
+    with pytest.raises(ValueError, match=r"angles of 1000000000000 members .* GiB"):
+        hyperbolicity_ensemble(RotorSystem(4), 10**12, 100.0)

@@ -45,6 +45,7 @@ from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device
 from ..solvers.status import RUNNING, status_error
+from ..solvers.tangent import check_memory
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
 from .arguments import positive_time, progress_reporter, start_state, Documented
@@ -241,10 +242,14 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
     equals `hyperbolicity_angles`, with several the angles after the first block differ by
     the adjoint vectors' convergence error, e^(−λ_m·t_transient)); t_transient must then be a
     multiple of checkpoint_every.  ``"auto"``: the GPU when there is one."""
-    if resolve_device(device) == "cuda":
-        n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
-                                                           workers, progress)
-        cfg = angle_settings(system, t_final, seed=seed, **kwargs)
+    device = resolve_device(device)
+    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                       workers, progress)
+    cfg = angle_settings(system, t_final, seed=seed, **kwargs)
+    check_memory(n_trajectories * 8 * (3 * cfg.samples + 2 * cfg.m),
+                 f"the angles of {n_trajectories} members ({cfg.samples} samples each)",
+                 "run fewer members or sample less often (sample_every)")
+    if device == "cuda":
         rep = progress_reporter(progress, n_trajectories * t_final,
                                 f"angles N={system.n} ensemble (GPU)")
         members = angle_members(system, cfg, list(range(seed, seed + n_trajectories)), speed,

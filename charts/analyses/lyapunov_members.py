@@ -10,15 +10,16 @@ from functools import partial
 
 import numpy as np
 
-from ..solvers.device import DeviceFlows, resolve_device
+from ..solvers.device import DeviceFlows, cuda_module, device_bytes, resolve_device
 from ..solvers.lanes import LaneFlows
-from ..solvers.tangent import inner_weights
+from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
-from .lyapunov import averaging_logs, lyapunov_flow, lyapunov_result, lyapunov_settings
+from .lyapunov import (averaging_logs, lyapunov_flow, lyapunov_result, lyapunov_schedule,
+                       lyapunov_settings)
 
 __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states",
-           "LANE_BLOCK", "MIN_LANES"]
+           "plan_memory", "result_bytes", "LANE_BLOCK", "MIN_LANES"]
 
 
 def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
@@ -45,6 +46,7 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
                                                        workers, progress)
     device = resolve_device(device)
     cfg = lyapunov_settings(system, t_final, seed=seed, **kwargs)
+    plan_memory(system, cfg, n_trajectories, device)
     if device == "cuda":
         rep = progress_reporter(progress, n_trajectories * t_final,
                                 f"Lyapunov N={system.n} ensemble (GPU)")
@@ -68,6 +70,30 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
                            prime=(lyapunov_lanes, (system, short, jobs[0][2], speed)),
                            name="lyapunov_ensemble", n=system.n)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
+
+
+def result_bytes(cfg) -> int:
+    """Bytes of one member's `LyapunovResult`: its history, batches and exponents (k each)."""
+    records, ends, _ = lyapunov_schedule(cfg)
+    return 8 * cfg.k * (2 * len(records) + len(ends) + 4)
+
+
+def plan_memory(system, cfg, members, device) -> None:
+    """Refuse, before anything is built, an ensemble whose results exceed this machine's
+    memory budget, or whose members' states on the GPU (`DeviceFlows`, with the initial
+    states built on the host) exceed half its free memory: ValueError with the numbers."""
+    check_memory(members * result_bytes(cfg),
+                 f"the results of {members} members (history of {cfg.total // cfg.record} records)",
+                 "run fewer members or record less often (record_every)")
+    if device == "cuda":
+        per = device_bytes(system.n, cfg.k)
+        check_memory(2 * members * per, f"the initial states of {members} members",
+                     "run fewer members at once")
+        free = cuda_module().current_context().get_memory_info()[0]
+        if members * per > free // 2:
+            raise ValueError(f"{members} members need {members * per / 2**30:.1f} GiB on the GPU, "
+                             f"more than half its free {free / 2**30:.1f} GiB; run fewer members "
+                             "at once")
 
 
 #: Most trajectories one lane kernel advances together (larger ensembles: several blocks).

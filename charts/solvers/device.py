@@ -30,7 +30,7 @@ from .status import RUNNING, status_error
 from .tangent import stacked_loop, tangent_vectors_rate
 
 __all__ = ["DeviceFlows", "DeviceUnavailable", "cuda_module", "cuda_available",
-           "member_advance", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
+           "member_advance", "device_bytes", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
            "THREADS_PER_BLOCK"]
 
 #: Threads per CUDA block (one trajectory each); their local memory, not registers, bounds
@@ -199,6 +199,12 @@ def kernel_function(n, k):
                         cuda.local.array(n, float64), cuda.local.array(n, float64)))
 
     return kernel
+
+
+def device_bytes(n, k) -> int:
+    """Bytes one member of `DeviceFlows` holds on the GPU: its stacked state (1 + k)·2N,
+    sin/cos 2N, log-norm sums k, speed, counter, status and stop step."""
+    return 8 * ((1 + k) * 2 * n + 2 * n + k + 4)
 
 
 _NO_EVENTS = np.empty(0, dtype=np.int64)
