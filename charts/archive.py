@@ -31,7 +31,8 @@ import numpy as np
 from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "attributes", "save", "load", "require_xarray",
-           "ENGINE", "TITLES", "GLOBALS", "FLATTENED"]
+           "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MEMBER", "member_settings",
+           "member_attributes"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
@@ -179,8 +180,81 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
 
 
 def _setting(key) -> bool:
-    return not (key.startswith("charts_") or key in GLOBALS
+    return not (key.startswith("charts_") or key in GLOBALS or key.startswith(MEMBER)
                 or any(key.startswith(f"{name}_") for name in FLATTENED))
+
+
+#: Prefix of the members' settings in a file of several results (an ensemble): a setting
+#: every member shares is one attribute ``member.params.n``; one that differs is a variable
+#: along ``member`` (``member.params.seed``), native where the values are numbers or strings.
+MEMBER = "member."
+
+
+def _flat(settings: dict) -> dict:
+    """{path: value}: the entries of dict-valued settings one level down."""
+    out = {}
+    for key, value in settings.items():
+        if isinstance(value, dict) and value:
+            for sub, v in value.items():
+                out[(key, sub)] = v
+        else:
+            out[(key,)] = value
+    return out
+
+
+def _scalar(v) -> bool:
+    return isinstance(v, (str, int, float, np.integer, np.floating)) and not isinstance(
+        v, (bool, np.bool_))
+
+
+def member_settings(settings: list) -> tuple[dict, dict]:
+    """(attributes, data variables) that hold the members' decoded settings (a list of dicts,
+    one per member): the shared ones once, encoded as attributes are, the differing ones
+    along ``member`` (`MEMBER`)."""
+    flats = [_flat(a) for a in settings]
+    paths = list(dict.fromkeys(p for f in flats for p in f))
+    attrs, data = {}, {}
+    for path in paths:
+        name = MEMBER + ".".join(path)
+        values = [f.get(path) for f in flats]
+        first = _encode(values[0])
+        if all(_encode(v) == first for v in values[1:]):
+            attrs[name] = _native_list(values[0]) if isinstance(values[0], list) else first
+        elif all(_scalar(v) for v in values) and len({type(v) for v in values}) == 1:
+            data[name] = (("member",), np.asarray(values), "1", f"each member's {'.'.join(path)}")
+        else:
+            data[name] = (("member",), np.asarray([_encode(v) for v in values], dtype=str), "1",
+                          f"each member's {'.'.join(path)} (JSON after 'json:')")
+    return attrs, data
+
+
+def _native_list(v):
+    """A list of numbers of one type as a native 1-D attribute (read back by
+    `member_attributes` as the same list), else its JSON encoding."""
+    kinds = {type(x) for x in v}
+    if v and (kinds == {int} or kinds == {float}):
+        return np.asarray(v)
+    return _encode(v)
+
+
+def member_attributes(ds, i) -> dict:
+    """Member ``i``'s settings from a file written with `member_settings`, encoded as a
+    member's own file would hold them (``attributes`` decodes them)."""
+    flat = {}
+    for key, value in ds.attrs.items():
+        if key.startswith(MEMBER):
+            value = value.tolist() if isinstance(value, np.ndarray) else _decode(value)
+            flat[tuple(key[len(MEMBER):].split("."))] = value
+    for key in ds.data_vars:
+        if key.startswith(MEMBER):
+            flat[tuple(key[len(MEMBER):].split("."))] = _decode(ds[key].values[i])
+    nested = {}
+    for path, value in flat.items():
+        if len(path) == 1:
+            nested[path[0]] = value
+        else:
+            nested.setdefault(path[0], {})[path[1]] = value
+    return {k: _encode(v) for k, v in nested.items()}
 
 
 def attributes(ds) -> dict:

@@ -200,3 +200,20 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
                 transport=ds["transported"].values[0] if "transported" in ds else None,
                 t_eval=ds["t"].values if ds.attrs["options_output"] == "t_eval" else None)
             assert np.array_equal(again.theta, ds["theta"].values)
+
+
+def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
+    """No JSON inside JSON: the members' shared settings are one attribute each
+    (``member.params.n``; lists of numbers native), the differing ones (the seed) a variable
+    along ``member``; loading gives every member its own settings back."""
+    import xarray as xr
+    ens = results["ensemble"]
+    path = ens.save(tmp_path / "ensemble.nc")
+    with xr.open_dataset(path, engine="h5netcdf") as ds:
+        assert "member_attrs" not in ds.attrs
+        assert int(ds.attrs["member.params.n"]) == ens.params["n"]
+        assert np.array_equal(ds.attrs["member.params.masses"], ens.members[0].params["masses"])
+        assert list(ds["member.params.seed"].values) == [m.params["seed"] for m in ens.members]
+        assert not any(isinstance(v, str) and v.startswith("json:[{") for v in ds.attrs.values())
+    back = load(path)
+    assert [m.params for m in back.members] == [m.params for m in ens.members]

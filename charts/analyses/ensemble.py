@@ -7,7 +7,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, require_xarray
+from ..archive import (MEMBER, Archivable, attributes, dataset, member_attributes,
+                       member_settings, require_xarray)
 from ..compilation import announce, timed_call
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
@@ -54,7 +55,9 @@ class EnsembleResult(Archivable):
 
     def to_xarray(self):
         """The members' datasets stacked along a ``member`` dimension (members of one
-        analysis share their shapes); each member's settings in ``member_attrs``."""
+        analysis share their shapes); their settings as ``member.*`` attributes where they
+        share them and ``member.*`` variables along ``member`` where they differ (the seed,
+        the speed: ``charts.archive.member_settings``)."""
         xr = require_xarray()
         if not self.members:
             raise ValueError("an empty ensemble has nothing to save")
@@ -73,9 +76,12 @@ class EnsembleResult(Archivable):
             data["batch_error_ratio"] = (("exponent",), self.error_ratio, "1",
                                          "members' batch-mean errors (rms) / spread of their "
                                          "exponents (std)")
-        return dataset(self.KIND, data, coords=coords, attrs={
-            "params": self.params, "member_kind": kinds.pop(),
-            "member_attrs": [dict(p.attrs) for p in parts]})
+        shared, varying = member_settings([attributes(p) for p in parts])
+        data.update(varying)
+        ds = dataset(self.KIND, data, coords=coords,
+                     attrs={"params": self.params, "member_kind": kinds.pop()})
+        ds.attrs.update(shared)
+        return ds
 
     @classmethod
     def from_xarray(cls, ds):
@@ -85,12 +91,13 @@ class EnsembleResult(Archivable):
         a = attributes(ds)
         module, name = KINDS[a["member_kind"]].split(":")
         member_cls = getattr(importlib.import_module(module), name)
-        body = ds.drop_vars([v for v in ("ensemble_exponents", "ensemble_stderr",
-                                         "batch_error_ratio") if v in ds])
-        members = []
-        for i, attrs in enumerate(a["member_attrs"]):
+        body = ds.drop_vars([v for v in ds.data_vars if v.startswith(MEMBER) or v in (
+            "ensemble_exponents", "ensemble_stderr", "batch_error_ratio")])
+        old = a.get("member_attrs")              # files written before the members' settings
+        members = []                             # had their own attributes and variables
+        for i in range(ds.sizes["member"]):
             m = body.isel(member=i)
-            m.attrs = attrs
+            m.attrs = old[i] if old is not None else member_attributes(ds, i)
             members.append(member_cls.from_xarray(m))
         ex = ds["ensemble_exponents"].values if "ensemble_exponents" in ds else None
         se = ds["ensemble_stderr"].values if "ensemble_stderr" in ds else None
