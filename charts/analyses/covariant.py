@@ -248,6 +248,8 @@ class CovariantResult(Archivable):
     KIND = "covariant"
 
     def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``)."""
         data = {
             "phi": (("t",), self.phi, "rad", "angle between E_u and E_cs"),
             "phi_vectors": (("t",), self.phi_vectors, "rad",

@@ -85,12 +85,16 @@ class AngleResult(Archivable):
     params: dict
 
     def statistics(self, variant="restricted", small=SMALL_ANGLE):
+        """`angle_statistics` of the angles of ``variant`` ("restricted" or "full"): a dict
+        of the summary (quantiles, fraction below ``small``, the small-angle law)."""
         return angle_statistics(self.phi_restricted if variant == "restricted" else self.phi_full,
                                 small)
 
     KIND = "angles"
 
     def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``)."""
         return dataset(self.KIND, {
             "phi_full": (("t",), self.phi_full, "rad", "angle, full 2N-dim tangent space"),
             "phi_restricted": (("t",), self.phi_restricted, "rad",

@@ -38,6 +38,8 @@ class Waveform(Archivable):
     KIND = "waveform"
 
     def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``)."""
         return dataset(self.KIND, {"theta": (("t", "rotor"), self.theta, "rad"),
                                    "u": (("t", "rotor"), self.u, "rad / time")},
                        coords={"t": (("t",), self.t, "time"),
@@ -80,6 +82,8 @@ class PowerSpectrum(Archivable, tuple):
         return self[1]
 
     def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``)."""
         return dataset(self.KIND, {"density": (("omega",), self.density, "signal² · time / rad",
                                                "one-sided power spectral density per unit ω")},
                        coords={"omega": (("omega",), self.omega, "rad / time",

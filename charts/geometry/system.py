@@ -144,6 +144,8 @@ class RotorSystem:
         return u
 
     def check_state(self, theta, u):
+        """(theta, u) as float arrays after checking them: theta on the manifold, u tangent
+        there, finite energy; ValueError naming the bad one."""
         theta = self.check_point(theta)
         u = self.check_tangent(theta, u)
         if not np.isfinite(self.energy(u)):
@@ -152,6 +154,7 @@ class RotorSystem:
 
     # -- invariants and projections ----------------------------------------------------
     def energy(self, u):
+        """Kinetic energy ½ Σ mᵢuᵢ² of the velocities u (..., N)."""
         return 0.5 * np.sum(self.masses * np.asarray(u) ** 2, axis=-1)
 
     def speed(self, u):
@@ -263,6 +266,8 @@ class RotorSystem:
         return self._gen.metric(q, m, a, self.level, np.empty((self.dim, self.dim)))
 
     def metric_inverse(self, theta, chart=None):
+        """The inverse metric g^{ij}, (N − 1, N − 1), of chart ``chart`` (default: the best
+        chart at theta) at the point theta (eq 12)."""
         _, _, q, m, a = self._chart(theta, chart)
         return self._gen.metric_inverse(q, m, a, self.level, np.empty((self.dim, self.dim)))
 

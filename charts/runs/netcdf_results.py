@@ -59,6 +59,8 @@ class SceneResult(Archivable):
         return cls(json.loads(json.dumps(result, default=json_default)), arrays, text)
 
     def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``)."""
         data = {}
         for name, arr in self.arrays.items():
             dims, units = ARRAY_LAYOUT.get(name, (None, "1"))
@@ -112,6 +114,8 @@ class SweepTable(Archivable):
         return cls(cols, {"source": str(path)})
 
     def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``)."""
         data = {k: (("point",), v, "1") for k, v in self.columns.items()}
         return dataset(self.KIND, data, attrs={"table": self.attrs,
                                                "column_order": list(self.columns)})
