@@ -32,6 +32,7 @@ _HOMES = {
     "SingularPointError": ".solvers.status",
     "DeviceUnavailable": ".solvers.device",
     "EnsembleResult": ".analyses.ensemble",
+    "ErrorBarWarning": ".analyses.ensemble",
     "LyapunovResult": ".analyses.lyapunov",
     "lyapunov_ensemble": ".analyses.lyapunov_members",
     "lyapunov_spectrum": ".analyses.lyapunov",

@@ -15,8 +15,8 @@ from ..solvers.lanes import LaneFlows
 from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
-from .lyapunov import (averaging_logs, lyapunov_flow, lyapunov_result, lyapunov_schedule,
-                       lyapunov_settings)
+from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, lyapunov_flow,
+                       lyapunov_result, lyapunov_schedule, lyapunov_settings, transient_rule)
 
 __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states",
            "plan_memory", "result_bytes", "LANE_BLOCK", "MIN_LANES"]
@@ -45,7 +45,17 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     device = resolve_device(device)
+    if transient_rule(kwargs.get("t_transient")) == "auto":   # one transient for all members:
+        pilot = {k: kwargs[k] for k in ("dt", "n_exponents", "inner", "space") if k in kwargs}
+        tr = auto_transient(system, *system.random_state(seed=seed, speed=speed), seed=seed,
+                            **pilot)                          # the first member's pilot
+        dt = kwargs.get("dt", 0.01)
+        kwargs = {**kwargs, "t_transient": round(float(tr) / dt) * dt,
+                  "transient_rule": AUTO_RULE}
+    rule = kwargs.pop("transient_rule", None)
     cfg = lyapunov_settings(system, t_final, seed=seed, **kwargs)
+    if rule is not None:
+        kwargs = {**kwargs, "transient_rule": rule}
     plan_memory(system, cfg, n_trajectories, device)
     if device == "cuda":
         rep = progress_reporter(progress, n_trajectories * t_final,
