@@ -124,23 +124,35 @@ class RotorSystem:
                 f"weights={self.weights.tolist()}, level={self.level!r})")
 
     # -- validation --------------------------------------------------------------------
+    @property
+    def constraint_scale(self) -> float:
+        """The size of the constraint's terms, max(maxᵢ |aᵢ|, |level|): the tolerances of
+        `check_point` and `check_tangent` are relative to it (1 for the paper's weights), so
+        that weights of 1e-10 or 1e9 are checked as strictly as weights of 1."""
+        return max(float(np.max(np.abs(self.weights))), abs(self.level))
+
     def check_point(self, theta) -> np.ndarray:
+        """theta (N,) as a float array after checking it is on the manifold:
+        |Σ aᵢ cos θᵢ − level| within ``TOL['constraint']`` × `constraint_scale`."""
         theta = finite_array("theta", theta, shape=(self.n,))
         F = float(self.weights @ np.cos(theta)) - self.level
-        if abs(F) > TOL["constraint"]:
+        tol = TOL["constraint"] * self.constraint_scale
+        if abs(F) > tol:
             what = "sum(cos theta)" if self.is_paper_family else "sum(a cos theta) - level"
             raise ValueError(f"theta is off the manifold: {what} = {F:.3e} "
-                             f"(tolerance {TOL['constraint']:g}); use RotorSystem.project_point")
+                             f"(tolerance {tol:g}); use RotorSystem.project_point")
         return theta
 
     def check_tangent(self, theta, u, name="u") -> np.ndarray:
+        """u (N,) as a float array after checking it is tangent at theta:
+        |Σ uᵢ aᵢ sin θᵢ| within ``TOL['tangency']`` × `constraint_scale` × max(1, |u|)."""
         u = finite_array(name, u, shape=(self.n,))
         G = float(u @ (self.weights * np.sin(theta)))
-        scale = max(1.0, float(np.linalg.norm(u)))
-        if abs(G) > TOL["tangency"] * scale:
+        tol = TOL["tangency"] * self.constraint_scale * max(1.0, float(np.linalg.norm(u)))
+        if abs(G) > tol:
             what = f"sum({name} sin theta)" if self.is_paper_family else f"sum({name} a sin theta)"
             raise ValueError(f"{name} is not tangent to the manifold: {what} = {G:.3e} "
-                             f"(tolerance {TOL['tangency']:g}); use RotorSystem.project_tangent")
+                             f"(tolerance {tol:g}); use RotorSystem.project_tangent")
         return u
 
     def check_state(self, theta, u):
