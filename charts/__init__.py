@@ -57,6 +57,7 @@ _HOMES = {
     "DegenerateMetricError": ".solvers.linkage",
     "LinkageResult": ".analyses.linkage",
     "linkage_run": ".analyses.linkage",
+    "linkage_ensemble": ".analyses.linkage",
     "linkage_trajectory": ".analyses.linkage",
     "Scene": ".runs.scene",
     "SceneError": ".runs.scene",

@@ -44,6 +44,7 @@ KINDS = {
     "waveform": "charts.analyses.spectra:Waveform",
     "spectrum": "charts.analyses.spectra:PowerSpectrum",
     "ensemble": "charts.analyses.ensemble:EnsembleResult",
+    "linkage": "charts.analyses.linkage:LinkageResult",
     "scene": "charts.runs.netcdf_results:SceneResult",
     "sweep": "charts.runs.netcdf_results:SweepTable",
 }
@@ -100,6 +101,7 @@ TITLES = {
     "waveform": "waveforms theta(t), u(t) (charts.waveform)",
     "spectrum": "power spectrum (charts.power_spectrum)",
     "ensemble": "ensemble of independent trajectories (charts ensembles)",
+    "linkage": "Lyapunov exponents and curvature of the Appendix's linkage (charts.linkage_run)",
     "scene": "scene results (charts run)",
     "sweep": "sweep table (charts sweep)",
 }

@@ -296,3 +296,22 @@ def test_angle_passes_converge_to_the_same_exponents():
     # measured at ε = 0.01, t = 200: (0.403, 0.232) forward, (0.397, 0.227) backward
     assert np.allclose(r.forward_exponents, r.backward_exponents, rtol=0.15)
     assert np.all(r.phi > 0) and np.all(r.phi <= np.pi / 2)
+
+
+def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
+    """LinkageResult is a result like the others: saved and loaded (every array and setting),
+    plotted, and gathered into an ensemble whose members keep their seeds in the file."""
+    import charts
+    L = charts.LinkageSystem(0.1)
+    r = charts.linkage_run(L, *L.random_state(seed=2), 4.0, t_transient=1.0, n_batches=2)
+    back = charts.load(r.save(tmp_path / "run.nc"))
+    for a in ("exponents", "stderr", "batches", "t", "states", "K"):
+        assert np.array_equal(getattr(back, a), getattr(r, a), equal_nan=True), a
+    assert back.params == r.params and back.min_health == r.min_health
+    fig, _ = r.plot()
+    assert "linkage ε = 0.1" in fig._suptitle.get_text()
+    e = charts.linkage_ensemble(L, 3, 4.0, workers=1, t_transient=1.0, n_batches=2)
+    assert e.params["eps"] == 0.1 and e.exponents.shape == (2,)
+    again = charts.load(e.save(tmp_path / "ensemble.nc"))
+    assert [m.params["seed"] for m in again.members] == [0, 1, 2]
+    assert np.array_equal(again.exponents, e.exponents)

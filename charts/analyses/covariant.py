@@ -341,8 +341,7 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     rep.close()
     S, tau = cfg.S, cfg.tau
     t = (cfg.n_tr + np.arange(S) * cfg.sample) * cfg.dt
-    params = dict(n=system.n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=system.level, variant=variant, dt=cfg.dt, m=cfg.m, D=cfg.D,
+    params = dict(**system.describe(), variant=variant, dt=cfg.dt, m=cfg.m, D=cfg.D,
                   t_final=cfg.n_win * cfg.dt, t_transient=cfg.n_tr * cfg.dt, sample_every=tau,
                   speed=flow.speed, project_every=cfg.project * cfg.dt or None, seed=cfg.seed,
                   bytes_per_sample=sample_bytes(system.n, variant), stored_samples=cfg.total)

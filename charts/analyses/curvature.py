@@ -378,8 +378,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     if exact:
         Kb = exact_curvatures(system, Ys[:, :n], Ps)
     t = (np.arange(1, S + 1) * sample) * dt
-    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=system.level, dt=dt, sample_every=sample * dt,
+    params = dict(**system.describe(), dt=dt, sample_every=sample * dt,
                   t_transient=transient * dt, project_every=project * dt or None,
                   speed=flow.speed, t_final=float(t[-1]), seed=seed)
     return CurvatureResult(t, Ys[:, :n], Ys[:, n:], Ps, Ka, Kb, params)

@@ -230,8 +230,7 @@ def certify_curvature_sign(system, *, max_boxes=200_000):
         cover = _cover_proof(a, c, ratio)
         if cover is not None:
             break
-    params = dict(n=3, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=float(system.level), cover_ratio=ratio, max_boxes=max_boxes)
+    params = dict(**system.describe(), cover_ratio=ratio, max_boxes=max_boxes)
     if cover is None:
         return CurvatureCertificate("undecided", [], [], "no part of the charts' domains |C| <= "
                                     f"r a_k with r in {COVER_RATIOS} was proved to cover this "

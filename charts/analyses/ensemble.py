@@ -211,11 +211,9 @@ def _announced(timed, name, n):
 
 def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleResult:
     """The `EnsembleResult` of ``members`` (seeds seed, seed+1, …)."""
-    res = EnsembleResult(members, params=dict(n=system.n, masses=system.masses.tolist(),
-                                              weights=system.weights.tolist(),
-                                              level=system.level,
-                                              n_trajectories=len(members), seed=seed,
-                                              speed=speed, t_final=t_final, **kwargs))
+    res = EnsembleResult(members, params=dict(**system.describe(), n_trajectories=len(members),
+                                              seed=seed, speed=speed, t_final=t_final,
+                                              **kwargs))
     if all(hasattr(m, "exponents") for m in members):
         E = np.array([m.exponents for m in members])
         res.exponents, res.stderr = E.mean(axis=0), standard_error(E)

@@ -189,8 +189,7 @@ def certify_flat_torus(system, *, steps=4096) -> FlatTorusCertificate:
     """Prove (symbolically) the flat totally geodesic antipodal torus of ``system`` and
     compute the monodromy of its closed geodesic (``steps`` RK4 steps per period); see the
     module doc for what it implies."""
-    params = dict(n=system.n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=float(system.level), steps=int(steps))
+    params = dict(**system.describe(), steps=int(steps))
     found = antipodal_torus(system)
     if found is None:
         return FlatTorusCertificate("no antipodal torus", [], [], 0, [], None, None, params)

@@ -226,8 +226,7 @@ def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_expon
     forward pass's log-norm sums over [0, t_transient + t_final] and the adjoint's rates."""
     dt = cfg.dt
     t = (cfg.n_tr + np.arange(cfg.samples) * cfg.sample) * dt
-    params = dict(n=cfg.n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=system.level, dt=dt, m=cfg.m, t_final=cfg.n_win * dt,
+    params = dict(**system.describe(), dt=dt, m=cfg.m, t_final=cfg.n_win * dt,
                   t_transient=cfg.n_tr * dt, sample_every=cfg.sample * dt, speed=speed,
                   checkpoint_every=cfg.ce * dt, project_every=cfg.project * dt or None,
                   seed=cfg.seed)

@@ -20,15 +20,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..archive import Archivable, attributes, dataset
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from .arguments import positive_int, positive_time, progress_reporter, project_steps, steps_of
+from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
 from .statistics import batch_ends
 
-__all__ = ["LinkageResult", "linkage_run", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
+__all__ = ["LinkageResult", "linkage_run", "linkage_ensemble", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
 
 #: The six cone points of Σ cos θ = 0 (N = 4): two angles 0, two π.
 CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
@@ -57,7 +59,7 @@ def gauss_curvature(system, q, X, Y):
 
 
 @dataclass
-class LinkageResult:
+class LinkageResult(Archivable):
     """One run of `linkage_run`.
 
     exponents, stderr : (k,)  Lyapunov exponents (1/time) with batch-means standard errors.
@@ -80,6 +82,38 @@ class LinkageResult:
     def fraction_positive(self):
         """Fraction of samples with K(v̂, eᵢ) > 0, shape (k,)."""
         return (self.K > 0).mean(axis=0)
+
+    KIND = "linkage"
+
+    def to_xarray(self):
+        """This result as an ``xarray.Dataset``: named dimensions, units, settings as
+        attributes (``charts.archive``); the state's 14 components are q (θ₀…θ₃ and the
+        disk's three coordinates), then their velocities."""
+        data = {"exponents": (("exponent",), self.exponents, "1 / time"),
+                "stderr": (("exponent",), self.stderr, "1 / time", "batch-means standard error"),
+                "batches": (("batch", "exponent"), self.batches, "1 / time"),
+                "K": (("sample", "exponent"), self.K, "1 / rad^2",
+                      "sectional curvature K(unit velocity, e_i) (Gauss equation)"),
+                "states": (("sample", "component"), self.states, "rad, rad / time",
+                           "the sampled state (q, v)")}
+        coords = {"t": (("sample",), self.t, "time", "after the transient")}
+        return dataset(self.KIND, data, coords=coords, attrs={
+            "params": self.params, "min_sin2": self.min_sin2, "min_health": self.min_health})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        a = attributes(ds)
+        return cls(ds["exponents"].values, ds["stderr"].values, ds["batches"].values,
+                   ds["t"].values, ds["states"].values, ds["K"].values, float(a["min_sin2"]),
+                   float(a["min_health"]), a["params"])
+
+    def plot(self, ax=None, **kw):
+        """Histograms of the sectional curvatures K(v̂, eᵢ), one panel per plane
+        (``charts.plotting.plot_curvature``); the exponents in the title; ``(fig, axes)``."""
+        from ..plotting import plot_curvature
+        pm = ", ".join(f"{e:.4f} ± {s:.4f}" for e, s in zip(self.exponents, self.stderr))
+        kw.setdefault("title", f"linkage ε = {self.params.get('eps'):g}: exponents {pm}")
+        return plot_curvature({"Gauss equation": self.K}, axes=ax, **kw)
 
     def __repr__(self):
         pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
@@ -161,12 +195,23 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
             K[i] = frame_curvatures(system, rows[i], k)
     states = rows[:, :NY].copy()
     min_sin2 = float(np.min(np.sum(np.sin(states[:, :4]) ** 2, axis=1)))
-    params = dict(eps=system.eps, rho=system.rho, disk_mass=system.disk_mass,
-                  disk_inertia=system.disk_inertia, t_final=total * dt, dt=dt,
+    params = dict(**system.describe(), t_final=total * dt, dt=dt,
                   t_transient=transient * dt, n_batches=n_batches, reorth_every=reorth * dt,
                   sample_every=sample * dt, speed=flow.speed, seed=seed)
     return LinkageResult(exps, stderr, batches, np.arange(1, S + 1) * sample * dt, states, K,
                          min_sin2, float(flow.health[0]), params)
+
+
+def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
+                     progress=False, **kwargs) -> EnsembleResult:
+    """`linkage_run` from ``n_trajectories`` random states of kinetic speed ``speed``
+    (``system.random_state(seed=s, speed=speed)``, seeds seed, seed+1, …; also the seeds of
+    the tangent vectors), in ``workers`` processes (default: all cores); ``kwargs``: the
+    settings of `linkage_run`.  Returns an `EnsembleResult` (mean exponents, their standard
+    error across the members, the members' error ratio), saved and loaded like every other."""
+    return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
+                        workers=workers, progress=progress,
+                        desc=f"linkage eps={system.eps:g} ensemble", **kwargs)
 
 
 def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,

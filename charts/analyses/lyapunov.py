@@ -390,8 +390,7 @@ def lyapunov_result(system, cfg: LyapunovSettings, logs, speed) -> LyapunovResul
         spectrum = exps.copy()
     else:
         spectrum = reconstruct_spectrum(exps[: n - 2]) if k >= n - 2 else None
-    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=system.level, t_final=cfg.total * cfg.dt, dt=cfg.dt,
+    params = dict(**system.describe(), t_final=cfg.total * cfg.dt, dt=cfg.dt,
                   inner=cfg.inner, space=cfg.space, t_transient=cfg.transient * cfg.dt,
                   n_batches=cfg.n_batches, reorth_every=cfg.reorth * cfg.dt,
                   project_every=cfg.project * cfg.dt or None, speed=speed, seed=cfg.seed)

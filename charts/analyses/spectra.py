@@ -129,8 +129,7 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=Documented(0.
     rep.close()
     t = np.arange(1, S + 1) * sample * dt
     n = system.n
-    params = dict(n=n, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                  level=float(system.level), speed=flow.speed, dt=dt,
+    params = dict(**system.describe(), speed=flow.speed, dt=dt,
                   theta0=np.asarray(theta0, float).tolist(), u0=np.asarray(u0, float).tolist(),
                   t_final=total * dt, t_transient=transient * dt,
                   project_every=project * dt or None)

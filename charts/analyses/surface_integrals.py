@@ -168,5 +168,4 @@ def surface_integrals(system, n_grid=256, route="chart") -> SurfaceIntegrals:
         mean_sqrt_neg_curvature=float(np.sum(np.sqrt(np.maximum(-K, 0.0)) * dA) / area),
         max_curvature=float(K.max()), positive_area=float(np.sum(dA[K > 0.0]) / area),
         n_grid=int(n_grid), route=route,
-        params=dict(n=3, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                    level=float(system.level)))
+        params=system.describe())

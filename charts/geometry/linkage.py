@@ -406,9 +406,20 @@ class LinkageSystem:
         return self.project(q, np.concatenate([u, np.zeros(3)]),
                             speed=float(np.linalg.norm(u)) if self.massless_disk else None)
 
+    def describe(self) -> dict:
+        """The system as the settings of a result (``params``): ε, ρ, the disk's mass and
+        moment."""
+        return dict(eps=self.eps, rho=self.rho, disk_mass=self.disk_mass,
+                    disk_inertia=self.disk_inertia)
+
     def random_state(self, seed=0, speed=1.0, branch=1):
         """A random state on M (uniform θ₀…θ₂ with |Σ cos| ≤ 1, random sign of sin θ₃, the
-        disk on ``branch``) with a random tangent velocity of kinetic speed ``speed``."""
+        disk on ``branch``) with a random tangent velocity of kinetic speed ``speed``.
+
+        The angles are those of ``RotorSystem(4).random_state(seed)``; the velocity is drawn
+        anew in the linkage's seven coordinates (stream seed + 7919) and projected, so a seed
+        gives the rotors' positions of the rotor system's state of that seed but not its
+        velocities (nor, therefore, its trajectory)."""
         theta, u = RotorSystem(4).random_state(seed=seed, speed=1.0)
         q, v = self.from_rotor_state(theta, u, branch)
         v = np.random.default_rng(seed + 7919).normal(size=NQ)

@@ -124,6 +124,11 @@ class RotorSystem:
                 f"weights={self.weights.tolist()}, level={self.level!r})")
 
     # -- validation --------------------------------------------------------------------
+    def describe(self) -> dict:
+        """The system as the settings of a result (``params``): N, masses, weights, level."""
+        return dict(n=self.n, masses=self.masses.tolist(), weights=self.weights.tolist(),
+                    level=float(self.level))
+
     @property
     def constraint_scale(self) -> float:
         """The size of the constraint's terms, max(maxᵢ |aᵢ|, |level|): the tolerances of

@@ -40,8 +40,7 @@ def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict
         exponents.append(dict(seed=int(seed), t_final=float(t_final), lambda1=lam, stderr=se,
                               consistent=bool(consistent), resolved_inside=bool(resolved)))
     cert = certify_curvature_sign(system).to_dict()
-    return dict(system=dict(n=3, masses=system.masses.tolist(), weights=system.weights.tolist(),
-                            level=float(system.level)),
+    return dict(system=system.describe(),
                 n_grid=int(n_grid), routes=routes, bracket=[lower, upper],
                 exponents=exponents, certificate=cert,
                 seconds=time.perf_counter() - t0)
@@ -52,8 +51,7 @@ def torus_verdict(system) -> dict:
     JSON-ready dict."""
     t0 = time.perf_counter()
     cert = certify_flat_torus(system).to_dict()
-    return dict(system=dict(n=system.n, masses=system.masses.tolist(),
-                            weights=system.weights.tolist(), level=float(system.level)),
+    return dict(system=system.describe(),
                 torus=cert, seconds=time.perf_counter() - t0)
 
 
