@@ -285,13 +285,40 @@ def load(path):
     path = Path(path)
     if not path.exists():
         raise FileNotFoundError(f"no such file: {path}")
-    ds = xr.load_dataset(path, engine=ENGINE)
+    _check_netcdf4(path)
+    try:
+        ds = xr.load_dataset(path, engine=ENGINE)
+    except (OSError, ValueError) as err:       # a damaged file behind a valid signature
+        raise ValueError(f"{path} could not be read as NetCDF-4 (is it truncated?): {err}") from None
     kind = ds.attrs.get("charts_kind")
     if kind not in KINDS:
         raise ValueError(f"{path} is not a charts result (charts_kind = {kind!r}; known: "
                          f"{', '.join(KINDS)})")
     module, name = KINDS[kind].split(":")
     return getattr(importlib.import_module(module), name).from_xarray(ds)
+
+
+#: The first bytes of an HDF5 file (NetCDF-4, what ``save`` writes), and of NetCDF-3.
+_HDF5 = b"\x89HDF\r\n\x1a\n"
+_NETCDF3 = (b"CDF\x01", b"CDF\x02", b"CDF\x05")
+
+
+def _check_netcdf4(path: Path) -> None:
+    """ValueError naming ``path`` and what it is, unless it is a regular file that starts as
+    NetCDF-4 (HDF5) does: a folder, a device or FIFO, an empty file, NetCDF-3, text."""
+    if not path.is_file():
+        raise ValueError(f"{path} is not a regular file (a folder, a device or a pipe): charts.load "
+                         "reads the NetCDF-4 files that results save")
+    with open(path, "rb") as f:
+        head = f.read(8)
+    if not head:
+        raise ValueError(f"{path} is empty: not a charts result")
+    if head[:4] in _NETCDF3:
+        raise ValueError(f"{path} is NetCDF-3 (classic): charts results are NetCDF-4; convert it "
+                         "with `nccopy -k nc4` or save the result again")
+    if head != _HDF5:
+        raise ValueError(f"{path} is not a NetCDF-4 file (its first bytes are {head!r}): not a "
+                         "charts result")
 
 
 class Archivable:

@@ -217,3 +217,19 @@ def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
         assert not any(isinstance(v, str) and v.startswith("json:[{") for v in ds.attrs.values())
     back = load(path)
     assert [m.params for m in back.members] == [m.params for m in ens.members]
+
+
+@pytest.mark.parametrize("content, says", [
+    (b"", "is empty"), (b"hello\n", "not a NetCDF-4 file"), (b"CDF\x01" + bytes(20), "NetCDF-3"),
+    (b"\x89HDF\r\n\x1a\n" + bytes(40), "could not be read as NetCDF-4")])
+def test_load_names_the_file_and_what_it_is_not(tmp_path, content, says):
+    path = tmp_path / "f.nc"
+    path.write_bytes(content)
+    with pytest.raises(ValueError, match=rf"f\.nc .*{says}|f\.nc {says}"):
+        load(path)
+
+
+def test_load_refuses_a_folder_by_name(tmp_path):
+    (tmp_path / "d.nc").mkdir()
+    with pytest.raises(ValueError, match=r"d\.nc is not a regular file"):
+        load(tmp_path / "d.nc")

@@ -126,3 +126,18 @@ def test_curvature_checks_seed_and_exact():
         charts.curvature_along_trajectory(SYSTEM, THETA, U, 1.0, seed="a")
     with pytest.raises(ValueError, match="exact"):
         charts.curvature_along_trajectory(SYSTEM, THETA, U, 1.0, exact="yes")
+
+
+def test_an_ensemble_never_starts_more_processes_than_jobs(monkeypatch):
+    """workers=10**6 for two members starts two processes (the pool is asked for two)."""
+    import charts.analyses.ensemble as ensemble
+    asked = []
+    real = ensemble.ProcessPoolExecutor
+
+    def pool(max_workers=None):
+        asked.append(max_workers)
+        return real(max_workers=max_workers)
+
+    monkeypatch.setattr(ensemble, "ProcessPoolExecutor", pool)
+    res = charts.lyapunov_ensemble(SYSTEM, 2, 2.0, workers=10**6, t_transient=0.0, n_batches=2)
+    assert asked == [2] and len(res.members) == 2

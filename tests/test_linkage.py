@@ -315,3 +315,15 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     again = charts.load(e.save(tmp_path / "ensemble.nc"))
     assert [m.params["seed"] for m in again.members] == [0, 1, 2]
     assert np.array_equal(again.exponents, e.exponents)
+
+
+@pytest.mark.parametrize("branch", [0, "x", True, 2])
+def test_the_disk_branch_is_plus_or_minus_one(branch):
+    with pytest.raises(ValueError, match="branch must be \\+1 or -1"):
+        charts.LinkageSystem(0.1).random_state(seed=1, branch=branch)
+
+
+def test_curvature_must_be_a_boolean():
+    L = charts.LinkageSystem(0.1)
+    with pytest.raises(ValueError, match="curvature must be True or False, got 'no'"):
+        charts.linkage_run(L, *L.random_state(seed=1), 2.0, curvature="no")

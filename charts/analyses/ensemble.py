@@ -1,6 +1,7 @@
 """Ensembles: one analysis on independent random initial states, in parallel processes."""
 from __future__ import annotations
 
+import os
 import warnings
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
@@ -185,7 +186,9 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
     that compiles them, runs here first, so that the workers load them from numba's disk
     cache instead of each compiling them at once; what it or a worker compiled for longer
     than ``charts.compilation.NOTE_SECONDS`` is announced here, on this process's stderr
-    (``name``, ``n``: the analysis and N the notice names)."""
+    (``name``, ``n``: the analysis and N the notice names).  Never more processes than jobs
+    (``workers=10**6`` for two jobs starts two)."""
+    workers = min(workers or os.cpu_count() or 1, max(1, len(jobs)))
     if workers == 1:
         return _collect(map(fn, jobs), sizes, t_final, progress, desc)
     name = name or getattr(fn, "__name__", "ensemble")

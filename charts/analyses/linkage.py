@@ -151,6 +151,8 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
     time between curvature samples (a multiple of ``reorth_every``); ``curvature=False``
     skips the Gauss-equation evaluations.
     """
+    if not isinstance(curvature, (bool, np.bool_)):
+        raise ValueError(f"curvature must be True or False, got {curvature!r}")
     q0, v0 = system.check_state(q0, v0)
     if not system.speed(v0) > 0:
         raise ValueError("v0 has zero kinetic speed: the geodesic flow needs a nonzero speed")

@@ -392,6 +392,7 @@ class LinkageSystem:
     def first_order_disk(self, theta, branch=1):
         """(x, y, α) of the Appendix's first-order solution for the angles theta: x = ε(c₂ −
         c₀)/2, y = ε(c₁ − c₃)/2, cos α = ε(c₁ + c₃)/(2ρ), sign of sin α = ``branch``."""
+        branch = _branch(branch)
         c = np.cos(finite_array("theta", theta, (4,)))
         ca = np.clip(self.eps * (c[1] + c[3]) / (2.0 * self.rho), -1.0, 1.0)
         return np.array([self.eps * (c[2] - c[0]) / 2, self.eps * (c[1] - c[3]) / 2,
@@ -424,6 +425,13 @@ class LinkageSystem:
         q, v = self.from_rotor_state(theta, u, branch)
         v = np.random.default_rng(seed + 7919).normal(size=NQ)
         return self.project(q, v, speed=_positive("speed", speed))
+
+
+def _branch(branch) -> int:
+    """``branch``: +1 or −1, the sign of sin α of the disk (ValueError otherwise)."""
+    if isinstance(branch, bool) or branch not in (1, -1):
+        raise ValueError(f"branch must be +1 or -1 (the sign of sin α), got {branch!r}")
+    return int(branch)
 
 
 def _positive(name, x) -> float:

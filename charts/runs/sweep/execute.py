@@ -172,6 +172,9 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
     from dask.distributed import as_completed
     from tqdm.auto import tqdm
 
+    groups = same_scene_groups(todo)
+    if scheduler is None:       # a local cluster: never more processes than point groups
+        workers = min(workers or os.cpu_count() or 1, max(1, len(groups)))
     client, cluster = dask_client(scheduler, workers)
     app = TableAppender(outdir)
     bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
@@ -183,7 +186,7 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
             bar.write(f"{sweep.name}: {total} points ({n_done} finished before, {len(todo)} to "
                       f"compute) on {where}")
         # identical scenes are computed once; the seeds of a point together, in lanes
-        for block in lane_blocks(same_scene_groups(todo), max(nw, 1)):
+        for block in lane_blocks(groups, max(nw, 1)):
             fut = client.submit(evaluate_points, [group[0].raw for group in block],
                                 key=f"charts-sweep-{block[0][0].point_id}", pure=False)
             futures[fut] = block
