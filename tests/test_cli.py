@@ -3,6 +3,7 @@ scenes, and a real Ctrl-C (SIGINT) followed by ``--resume``."""
 from __future__ import annotations
 
 import json
+import shlex
 import signal
 import subprocess
 import sys
@@ -134,7 +135,7 @@ sample_every = 100.0
 def test_ctrl_c_keeps_a_valid_result_and_resume_finishes_it(tmp_path):
     scene_file = tmp_path / "long.toml"
     scene_file.write_text(LONG)
-    out = tmp_path / "out"
+    out = tmp_path / "out dir"                 # a space: the printed command must quote it
     proc = subprocess.Popen(CHARTS + ["run", str(scene_file), "-o", str(out), "--quiet"],
                             stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 300          # only guards against a hang
@@ -145,6 +146,8 @@ def test_ctrl_c_keeps_a_valid_result_and_resume_finishes_it(tmp_path):
     _, err = proc.communicate()
     assert proc.returncode == 130, err
     assert "--resume" in err and "Traceback" not in err
+    command = next(line for line in err.splitlines() if line.strip().startswith("charts run"))
+    assert shlex.split(command)[4] == str(out)  # charts run SCENE -o DIR --resume
     partial = json.loads((out / "result.json").read_text())
     assert partial["status"] == "interrupted"
     assert 0 < partial["progress"]["t_done"] < 20000.0

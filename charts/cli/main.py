@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import os
+import shlex
 import sys
 import traceback
 from pathlib import Path
@@ -99,7 +100,8 @@ def _cmd_run(args) -> int:
             p = res["progress"]
             print(f"\ninterrupted at t = {p['t_done']:g} of {p['t_final']:g} "
                   f"({p['chunks_done']}/{p['chunks']} chunks kept in {args.output}); "
-                  f"continue with:\n  charts run {args.scene} -o {args.output} --resume",
+                  f"continue with:\n  charts run {shlex.quote(str(args.scene))} -o "
+                  f"{shlex.quote(str(args.output))} --resume",
                   file=sys.stderr)
         return EXIT_INTERRUPTED
     if not args.quiet:

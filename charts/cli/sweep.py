@@ -1,6 +1,7 @@
 """``charts sweep``: run a sweep file on Dask (see :mod:`charts.runs.sweep`)."""
 from __future__ import annotations
 
+import shlex
 import sys
 from pathlib import Path
 
@@ -74,7 +75,8 @@ def cmd_sweep(args) -> int:
         return _fail(str(exc))
     except KeyboardInterrupt:
         print(f"\ninterrupted: the finished points are in {args.output / TABLE}; continue "
-              f"with:\n  charts sweep {args.sweep} -o {args.output} --resume", file=sys.stderr)
+              f"with:\n  charts sweep {shlex.quote(str(args.sweep))} -o "
+              f"{shlex.quote(str(args.output))} --resume", file=sys.stderr)
         return EXIT_INTERRUPTED
     if not args.quiet:
         _report(sweep.name, info, args.output)
