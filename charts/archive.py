@@ -231,12 +231,11 @@ def member_settings(settings: list) -> tuple[dict, dict]:
 
 
 def _native_list(v):
-    """A list of numbers of one type as a native 1-D attribute (read back by
+    """A list of numbers of one type as a native 1-D attribute (`_native`; read back by
     `member_attributes` as the same list), else its JSON encoding."""
     kinds = {type(x) for x in v}
-    if v and (kinds == {int} or kinds == {float}):
-        return np.asarray(v)
-    return _encode(v)
+    native = _native(v) if kinds == {int} or kinds == {float} else None
+    return _encode(v) if native is None else native
 
 
 def member_attributes(ds, i) -> dict:

@@ -33,11 +33,12 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..solvers.device import THREADS_PER_BLOCK, cuda_module, load_member, store_member
+from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
+                              load_member, store_member)
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory, memory_budget, orthonormalize, stacked_work
 from .adjoint_pass import backward_loop
-from .ensemble import map_jobs
+from .ensemble import member_states_of
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, forward_segments
 
 __all__ = ["forward_member", "backward_member", "block_plan", "block_bytes", "angle_states",
@@ -243,8 +244,7 @@ def angle_states(job):
     from dataclasses import replace
     flows = [angle_flow(system, *system.random_state(seed=s, speed=speed), replace(cfg, seed=s))
              for s in seeds]
-    return [(np.stack([f.Z for f in flows]), np.stack([f.sc for f in flows]),
-             np.array([f.speed for f in flows]))]
+    return [flow_states(flows)]
 
 
 @njit(cache=True)
@@ -253,27 +253,6 @@ def _orthonormal_starts(W, w):
     logs = np.zeros(W.shape[1])
     for l in range(W.shape[0]):
         orthonormalize(W[l], w, logs)
-
-
-class _Arrays:
-    """The members' arrays on the device (``cuda``) or in host memory (``cpu``)."""
-
-    def __init__(self, backend):
-        self.backend = backend
-        self.cuda = cuda_module() if backend == "cuda" else None
-
-    def put(self, a):
-        return self.cuda.to_device(np.ascontiguousarray(a)) if self.cuda else np.ascontiguousarray(a).copy()
-
-    def get(self, a):
-        return a.copy_to_host() if self.cuda else a
-
-    def copy(self, a):
-        if self.cuda is None:
-            return a.copy()
-        b = self.cuda.device_array_like(a)
-        b.copy_to_device(a)
-        return b
 
 
 def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda", workers=1,
@@ -289,18 +268,14 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
     first member that stops raises the error `hyperbolicity_angles` raises, naming its
     seed."""
     L = len(seeds)
-    arr = _Arrays(backend)
+    arr = DeviceArrays(backend)
     if budget is None:
         budget = (arr.cuda.current_context().get_memory_info()[0] // 2 if arr.cuda
                   else memory_budget())
     plan = block_plan(cfg, L, budget, block)
     check_memory(L * block_bytes(cfg, plan.largest), f"the angle test's stores of {L} members",
                  "run fewer members at once")
-    size = max(1, -(-L // (4 * workers)))
-    jobs = [(system, cfg, seeds[i:i + size], speed) for i in range(0, L, size)]
-    parts = (map_jobs(angle_states, jobs, [1] * len(jobs), workers, 0.0, False, "states")
-             if workers > 1 and len(jobs) > 1 else [angle_states(j)[0] for j in jobs])
-    Zs, scs, speeds = (np.concatenate(a) for a in zip(*parts))
+    Zs, scs, speeds = member_states_of(angle_states, system, cfg, seeds, speed, workers)
     n, m, d = cfg.n, cfg.m, 2 * cfg.n
     w = np.ones(d)                                  # the Euclidean product of the angle test
     ce, sample, n_tr = cfg.ce, cfg.sample, cfg.n_tr

@@ -17,7 +17,7 @@ from .spectrum_quantities import kaplan_yorke_dimension, kolmogorov_sinai_entrop
 from .statistics import standard_error
 
 __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result",
-           "error_ratio_of", "warn_understated", "ErrorBarWarning", "UNDERSTATED_RATIO",
+           "error_ratio_of", "warn_understated", "member_states_of", "ErrorBarWarning", "UNDERSTATED_RATIO",
            "MIN_MEMBERS_TO_JUDGE"]
 
 
@@ -197,6 +197,16 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
     with ProcessPoolExecutor(max_workers=workers) as pool:
         timed = pool.map(_timed_job, [(fn, job) for job in jobs])
         return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
+
+
+def member_states_of(states_of, system, cfg, seeds, speed, workers):
+    """The members' initial states [Zs, scs, speeds] (``charts.solvers.device.flow_states``)
+    of the seeds, built by ``states_of((system, cfg, seeds, speed))`` (which returns them in
+    a list of one) in about four chunks per process of ``workers`` (`map_jobs`)."""
+    size = max(1, -(-len(seeds) // (4 * workers)))
+    jobs = [(system, cfg, seeds[i:i + size], speed) for i in range(0, len(seeds), size)]
+    parts = map_jobs(states_of, jobs, [1] * len(jobs), workers, 0.0, False, "states")
+    return [np.concatenate(a) for a in zip(*parts)]
 
 
 def _timed_job(fn_job):

@@ -10,11 +10,12 @@ from functools import partial
 
 import numpy as np
 
-from ..solvers.device import DeviceFlows, cuda_module, device_bytes, resolve_device
+from ..solvers.device import DeviceFlows, cuda_module, device_bytes, flow_states, resolve_device
 from ..solvers.lanes import LaneFlows
 from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
-from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, map_jobs
+from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
+                       member_states_of)
 from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, lyapunov_flow,
                        lyapunov_result, lyapunov_schedule, lyapunov_settings, transient_rule)
 
@@ -140,11 +141,7 @@ def lyapunov_device(job, update=None, backend="cuda", workers=1):
     same logic on the CPU (``"cpu"``), by ``charts.solvers.device.DeviceFlows``; the members'
     initial states are built in ``workers`` processes (`member_states`)."""
     system, cfg, seeds, speed = job
-    size = max(1, -(-len(seeds) // (4 * workers)))
-    jobs = [(system, cfg, seeds[i:i + size], speed) for i in range(0, len(seeds), size)]
-    parts = (map_jobs(member_states, jobs, [1] * len(jobs), workers, 0.0, False, "states")
-             if workers > 1 and len(jobs) > 1 else [member_states(j)[0] for j in jobs])
-    states = [np.concatenate(a) for a in zip(*parts)]
+    states = member_states_of(member_states, system, cfg, seeds, speed, workers)
     flows = DeviceFlows(system, states, dt=cfg.dt, w=inner_weights(system, cfg.inner),
                         restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
                         project_every=cfg.project, backend=backend)
@@ -158,8 +155,7 @@ def member_states(job):
     system, cfg, seeds, speed = job
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed),
                            replace(cfg, seed=s)) for s in seeds]
-    return [(np.stack([f.Z for f in flows]), np.stack([f.sc for f in flows]),
-             np.array([f.speed for f in flows]))]
+    return [flow_states(flows)]
 
 
 def _where(seed):

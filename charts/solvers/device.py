@@ -30,7 +30,7 @@ from .status import RUNNING, status_error
 from .tangent import stacked_loop, tangent_vectors_rate
 
 __all__ = ["DeviceFlows", "DeviceUnavailable", "cuda_module", "cuda_available",
-           "member_advance", "device_bytes", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
+           "member_advance", "device_bytes", "DeviceArrays", "flow_states", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
            "THREADS_PER_BLOCK"]
 
 #: Threads per CUDA block (one trajectory each); their local memory, not registers, bounds
@@ -201,6 +201,42 @@ def kernel_function(n, k):
     return kernel
 
 
+class DeviceArrays:
+    """The members' arrays on the GPU (``backend="cuda"``) or in host memory (``"cpu"``, the
+    twin): one place for what the two drivers (`DeviceFlows`, the angle test's
+    ``charts.analyses.angle_blocks``) move between host and device."""
+
+    def __init__(self, backend):
+        if backend not in ("cuda", "cpu"):
+            raise ValueError(f"backend must be 'cuda' or 'cpu', got {backend!r}")
+        self.backend = backend
+        self.cuda = cuda_module() if backend == "cuda" else None
+
+    def put(self, a):
+        """A contiguous copy of the host array ``a`` where the members live."""
+        a = np.ascontiguousarray(a)
+        return self.cuda.to_device(a) if self.cuda else a.copy()
+
+    def get(self, a):
+        """``a`` as a host array."""
+        return a.copy_to_host() if self.cuda else a
+
+    def copy(self, a):
+        """A copy of ``a`` where it lives."""
+        if self.cuda is None:
+            return a.copy()
+        b = self.cuda.device_array_like(a)
+        b.copy_to_device(a)
+        return b
+
+
+def flow_states(flows):
+    """(Zs (L, 1 + k, 2N), scs (L, 2, N), speeds (L,)): the `TangentFlow` s' states in the
+    form `DeviceFlows` and the angle test's device driver take them."""
+    return (np.stack([f.Z for f in flows]), np.stack([f.sc for f in flows]),
+            np.array([f.speed for f in flows]))
+
+
 def device_bytes(n, k) -> int:
     """Bytes one member of `DeviceFlows` holds on the GPU: its stacked state (1 + k)·2N,
     sin/cos 2N, log-norm sums k, speed, counter, status and stop step."""
@@ -243,22 +279,17 @@ class DeviceFlows:
         self.threads = THREADS_PER_BLOCK if threads is None else int(threads)
         self.shape = (L, R, d)
         self.speed = speeds
-        host = {"Zs": Zs.copy(), "scs": scs.copy(), "counters": np.zeros(L, dtype=np.int64),
+        host = {"Zs": Zs, "scs": scs, "counters": np.zeros(L, dtype=np.int64),
                 "status": np.full(L, RUNNING, dtype=np.int64),
-                "stopped": np.zeros(L, dtype=np.int64), "speeds": speeds.copy()}
+                "stopped": np.zeros(L, dtype=np.int64), "speeds": speeds}
         consts = {"minv": system.minv, "m": system.masses, "wts": system.weights, "w": self.w}
-        consts = {k: np.ascontiguousarray(v, dtype=float) for k, v in consts.items()}
+        consts = {k: np.asarray(v, dtype=float) for k, v in consts.items()}
         self.logsum = np.zeros((L, R - 1))
         self._steps = 0
+        self._arr = DeviceArrays(backend)
         if backend == "cuda":
-            cuda = cuda_module()
-            self._cuda = cuda
             self._kernel = cuda_kernel(int(system.n), R - 1)
-            self._dev = {k: cuda.to_device(v) for k, v in {**host, **consts}.items()}
-        elif backend == "cpu":
-            self._dev = {**host, **consts}
-        else:
-            raise ValueError(f"backend must be 'cuda' or 'cpu', got {backend!r}")
+        self._dev = {k: self._arr.put(v) for k, v in {**host, **consts}.items()}
 
     @classmethod
     def of_flows(cls, flows, backend="cuda"):
@@ -276,8 +307,7 @@ class DeviceFlows:
         return self._steps
 
     def _host(self, name):
-        a = self._dev[name]
-        return a.copy_to_host() if self.backend == "cuda" else a
+        return self._arr.get(self._dev[name])
 
     @property
     def status(self):
@@ -304,18 +334,18 @@ class DeviceFlows:
         sys_ = self.system
         dev = self._dev
         if self.backend == "cuda":
-            cuda = self._cuda
-            dev["logsums"] = cuda.to_device(np.ascontiguousarray(self.logsum))
-            d_events, d_logs = cuda.to_device(chunk), cuda.to_device(logs)
+            arr = self._arr
+            dev["logsums"] = arr.put(self.logsum)
+            d_events, d_logs = arr.put(chunk), arr.put(logs)
             blocks = -(-L // self.threads)
             self._kernel[blocks, self.threads](
                 dev["Zs"], dev["scs"], dev["counters"], dev["status"], dev["stopped"],
                 dev["minv"], dev["m"], dev["wts"], float(sys_.level), dev["speeds"],
                 self.dt, nsteps, self.reorth_every, dev["w"], self.restricted, self.project_every,
                 dev["logsums"], d_events, d_logs)
-            cuda.synchronize()
-            self.logsum[...] = dev["logsums"].copy_to_host()
-            logs = d_logs.copy_to_host()
+            arr.cuda.synchronize()
+            self.logsum[...] = arr.get(dev["logsums"])
+            logs = arr.get(d_logs)
         else:
             dev["logsums"] = self.logsum
             cpu_members(dev["Zs"], dev["scs"], dev["counters"], dev["status"], dev["stopped"],

@@ -36,7 +36,7 @@ import warnings
 
 import numpy as np
 
-from ...analyses.ensemble import map_jobs
+from ...analyses.ensemble import member_states_of
 from ...analyses.hyperbolicity import hyperbolicity_ensemble
 from ...analyses.lyapunov import lyapunov_settings
 from ...analyses.lyapunov_members import lyapunov_ensemble, member_states
@@ -62,10 +62,7 @@ def device_flows(n, k, members, t_final, workers, backend="cuda"):
     S = RotorSystem(n)
     cfg = lyapunov_settings(S, t_final, n_exponents=k, t_transient=0.0, n_batches=2)
     t0 = time.perf_counter()
-    size = max(1, -(-members // (4 * workers)))
-    jobs = [(S, cfg, list(range(i, min(members, i + size))), 1.0) for i in range(0, members, size)]
-    parts = map_jobs(member_states, jobs, [1] * len(jobs), workers, 0.0, False, "states")
-    states = [np.concatenate(a) for a in zip(*parts)]
+    states = member_states_of(member_states, S, cfg, list(range(members)), 1.0, workers)
     flows = DeviceFlows(S, states, dt=cfg.dt, w=inner_weights(S, cfg.inner), restricted=True,
                         reorth_every=cfg.reorth, project_every=cfg.project, backend=backend)
     return flows, cfg, time.perf_counter() - t0
