@@ -45,7 +45,7 @@ from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, stacked_work, tangent_kernel
+from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .finite_time import domination, finite_time_statistics
@@ -118,7 +118,6 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
     none = np.empty((0, 0))
     no_events = np.empty(0, dtype=np.int64)
     zero = np.int64(0)  # not the literal 0, which would compile tangent_kernel once more
-    work = stacked_work(Z.shape[0], Z.shape[1])
     D = Z.shape[0] - 1
     done = 0
     j = a
@@ -128,7 +127,7 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
         if k > 0:
             status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k,
                                        reorth_every, w, restricted, project_every, logsum,
-                                       zero, zero, none, no_events, none, work)
+                                       zero, zero, none, no_events, none, None)
             if status != RUNNING:
                 return status
         if transient:

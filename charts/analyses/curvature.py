@@ -42,7 +42,7 @@ from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
-                               stacked_work, tangent_kernel)
+                               tangent_kernel)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
@@ -231,13 +231,12 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
     work = curvature_work(n, k)
     S = Ka.shape[0]
     buf = np.empty((min(S, _BLOCK), Z.size))
-    loop_work = stacked_work(Z.shape[0], Z.shape[1])
     for a in range(0, S, _BLOCK):
         nb = min(_BLOCK, S - a)
         status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt,
                                       nb * sample_steps, reorth, w, True, project_every, logs,
                                       counter[0] + sample_steps, sample_steps, buf, no_events,
-                                      buf, loop_work)
+                                      buf, None)
         if status != RUNNING:
             return status, a
         for b in range(nb):

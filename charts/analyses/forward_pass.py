@@ -10,7 +10,7 @@ import numpy as np
 from numba import njit
 
 from ..solvers.status import RUNNING
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, stacked_work, tangent_kernel
+from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
 from .arguments import (Documented, positive_int, positive_time, project_steps, samples_of,
                         steps_of, unstable_dimension)
 
@@ -78,8 +78,7 @@ def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w
     """`forward_segments` with its work arrays allocated."""
     return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
                             project, logsum, rec_start, rec_every, states, ck, a, b, vec_end,
-                            np.empty(0, dtype=np.int64), np.empty((0, 0)),
-                            stacked_work(Z.shape[0], Z.shape[1]))
+                            np.empty(0, dtype=np.int64), np.empty((0, 0)), None)
 
 
 @njit(cache=True, inline="always")
@@ -91,7 +90,7 @@ def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth,
     global step ``vec_end`` the state alone (its bits do not depend on the vectors).
     Returns the loop's status.  Allocates nothing (no_events (0,), none (0, 0), ``work``:
     ``charts.solvers.tangent.stacked_work``): it also runs in a GPU thread
-    (``charts.analyses.angle_blocks``)."""
+    (``charts.analyses.angle_blocks``); ``work`` None on the CPU (`tangent_kernel`)."""
     y = Z[:1]
     # the literal True (restricted) in both calls, and typed zeros, not the literal 0, which
     # compiled the loop a second time here; `bool(True)`, the signature of
