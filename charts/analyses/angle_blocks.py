@@ -36,7 +36,8 @@ from numba import njit
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
                               load_member, store_member)
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import check_memory, memory_budget, orthonormalize, stacked_work
+from ..solvers.tangent import (check_memory, memory_budget, orthonormalize, stacked_work,
+                               tangent_loop)
 from .adjoint_pass import backward_loop
 from .ensemble import member_states_of
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, forward_segments
@@ -71,7 +72,7 @@ def forward_member(l, Zs, scs, counters, logsums, status, stopped, Vrec, CK, arr
                     Vrec[l, 0, i * d + j] = Z[i, j]
     code = forward_segments(Z, sc, counter, minv, m, wts, level, speeds[l], dt, ce, reorth, w,
                             project, logsum, rec_start, sample, Vrec[l, :S], CK[l], a, b,
-                            vec_end, no_events, none, work)
+                            vec_end, no_events, none, work, tangent_loop)
     store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 
 

@@ -75,22 +75,23 @@ def adjoint_start(cfg: AngleSettings, w, block=None):
 @njit(cache=True)
 def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
                     logsum, rec_start, rec_every, states, ck, a, b, vec_end):
-    """`forward_segments` with its work arrays allocated."""
+    """`forward_segments` on the CPU: with `tangent_kernel`, which allocates its work."""
     return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
                             project, logsum, rec_start, rec_every, states, ck, a, b, vec_end,
-                            np.empty(0, dtype=np.int64), np.empty((0, 0)), None)
+                            np.empty(0, dtype=np.int64), np.empty((0, 0)), None, tangent_kernel)
 
 
 @njit(cache=True, inline="always")
 def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
                      logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events, none,
-                     work):
+                     work, kernel):
     """Forward segments a … b−1 of ``ce`` steps of the tangent loop (restricted vectors,
     samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
     global step ``vec_end`` the state alone (its bits do not depend on the vectors).
-    Returns the loop's status.  Allocates nothing (no_events (0,), none (0, 0), ``work``:
-    ``charts.solvers.tangent.stacked_work``): it also runs in a GPU thread
-    (``charts.analyses.angle_blocks``); ``work`` None on the CPU (`tangent_kernel`)."""
+    Returns the loop's status.  ``kernel``: `tangent_kernel` (CPU, ``work`` None) or
+    `tangent_loop` on the work arrays ``work`` (``charts.solvers.tangent.stacked_work``),
+    which allocates nothing: in a GPU thread (``charts.analyses.angle_blocks``); no_events
+    (0,), none (0, 0)."""
     y = Z[:1]
     # the literal True (restricted) in both calls, and typed zeros, not the literal 0, which
     # compiled the loop a second time here; `bool(True)`, the signature of
@@ -102,14 +103,14 @@ def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth,
             k = vec_end - counter[0]
             if ce < k:
                 k = ce
-            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
+            status, _ = kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
                                      w, True, project, logsum, rec_start, rec_every, states,
                                      no_events, none, work)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
-            status, _ = tangent_kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
+            status, _ = kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
                                      reorth, w, True, project, logsum, zero, zero, none,
                                      no_events, none, work)
             if status != RUNNING:

@@ -36,7 +36,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, sta
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes"]
 
@@ -320,23 +320,28 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
 def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                    restricted, project_every, logsum, rec_start, rec_every, states, events,
                    event_logs, work):
-    """`stacked_loop` of eqs (8) + (17) (hook `tangent_vectors_rate`) on the work arrays
-    ``work`` (`stacked_work`, kept by the caller: it allocates nothing, so it also runs in a
-    GPU thread): the kernel of `TangentFlow` and of every forward analysis.
+    """`stacked_loop` of eqs (8) + (17) (hook `tangent_vectors_rate`): the kernel of
+    `TangentFlow` and of every forward analysis on the CPU.  It allocates its work arrays in
+    its own body, where LLVM knows they alias nothing (``work`` is ignored: callers pass
+    None; it is there so that `tangent_loop` can stand in for it): given by the caller, the
+    warm kernel ran 15 % slower (0.138 against 0.120 s, scripts/bench_kernel_pair.py)."""
+    R, d = Z.shape
+    n = d // 2
+    s, c, f, g, p, q = stage_work(n)
+    return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                        restricted, project_every, logsum, rec_start, rec_every, states, events,
+                        event_logs, tangent_vectors_rate,
+                        (np.empty(R * d), np.empty(4 * R * d), np.empty(n), np.empty(n), s, c, f,
+                         g, p, q))
 
-    ``work=None`` (the CPU routes): the work arrays are allocated here, in the kernel's own
-    body, where LLVM knows they alias nothing: passed in, the warm kernel ran 15 % slower
-    (0.138 against 0.120 s, scripts/bench_kernel_pair.py).  Each value of ``work`` compiles
-    its own version; the CPU routes all pass None, so they share one."""
-    if work is None:
-        R, d = Z.shape
-        n = d // 2
-        s, c, f, g, p, q = stage_work(n)
-        return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every,
-                            w, restricted, project_every, logsum, rec_start, rec_every, states,
-                            events, event_logs, tangent_vectors_rate,
-                            (np.empty(R * d), np.empty(4 * R * d), np.empty(n), np.empty(n), s, c,
-                             f, g, p, q))
+
+@njit(cache=True)
+def tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
+                 restricted, project_every, logsum, rec_start, rec_every, states, events,
+                 event_logs, work):
+    """`tangent_kernel` on the caller's work arrays ``work`` (`stacked_work`), allocating
+    nothing: the forward pass of the angle test in a GPU thread
+    (``charts.analyses.angle_blocks``)."""
     return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                         restricted, project_every, logsum, rec_start, rec_every, states, events,
                         event_logs, tangent_vectors_rate, work)
