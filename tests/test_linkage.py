@@ -248,8 +248,12 @@ def test_bad_arguments_are_refused(L01):
         LinkageSystem(0.1, rho=0.6)
     with pytest.raises(ValueError, match="disk_mass"):
         LinkageSystem(0.1, disk_mass=-1)
-    with pytest.raises(TypeError, match="eps"):
+    with pytest.raises(ValueError, match="eps must be a real number"):
         LinkageSystem("0.1")
+    with pytest.raises(ValueError, match=r"eps = 1e-300 is outside \[1e-06, 0.5\)"):
+        LinkageSystem(1e-300)
+    with pytest.raises(ValueError, match="rho = 1e-07 is outside"):
+        LinkageSystem(0.1, rho=1e-7)
     q, v = L01.random_state(seed=0)
     with pytest.raises(ValueError, match="off the linkage"):
         L01.check_state(q + 0.01, v)
@@ -327,3 +331,19 @@ def test_curvature_must_be_a_boolean():
     L = charts.LinkageSystem(0.1)
     with pytest.raises(ValueError, match="curvature must be True or False, got 'no'"):
         charts.linkage_run(L, *L.random_state(seed=1), 2.0, curvature="no")
+
+
+def test_the_smallest_eps_still_tracks_the_rotor_limit():
+    """At the floor ε = LENGTH_MIN the rotor angles differ from Σ cos θᵢ = 0's by O(ε) at
+    t = 5: |Δθ|/ε = 3.23 for ε = 1e-3 … 3e-7 and 10⁵–10⁶ once the projection loses its
+    digits (scripts/linkage_eps_floor.py), so [1, 10] separates the two."""
+    from charts import RotorSystem, integrate, linkage_trajectory
+    from charts.geometry.linkage import LENGTH_MIN
+    S = RotorSystem(4)
+    theta, u = S.random_state(seed=3)
+    rotor = integrate(S, theta, u, 5.0, dt=1e-3, method="rk4", formulation="ambient")
+    L = LinkageSystem(LENGTH_MIN)
+    q, v = L.from_rotor_state(theta, u)
+    _, states = linkage_trajectory(L, q, v, 5.0, dt=1e-3, sample_every=5.0)
+    d = np.max(np.abs(np.angle(np.exp(1j * (states[-1, :4] - rotor.theta[-1])))))
+    assert 1.0 < d / LENGTH_MIN < 10.0

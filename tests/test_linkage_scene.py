@@ -104,7 +104,7 @@ def test_linkage_waveforms_and_drift_are_the_api_trajectory(tmp_path):
 BAD = [
     ({"kind": "linkage", "eps": 0.7, "masses": [1, 1, 1, 1], "rhoo": 0.1},
      ["3 problems", "unknown key 'rhoo' in [system] — did you mean 'rho'?",
-      "[system] eps = 0.7 is not allowed: expected a number in (0, 0.5)",
+      "[system] eps = 0.7 is not allowed: expected a number in [1e-06, 0.5)",
       "[system] masses = [1, 1, 1, 1] is not allowed with kind = 'linkage'"]),
     ({"kind": "linkage"}, ["[system] eps is required"]),
     ({"n": 4, "eps": 0.1}, ["[system] eps = 0.1 is not allowed with kind = 'rotors'"]),

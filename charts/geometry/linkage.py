@@ -31,7 +31,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .checks import finite_array
+from .checks import finite_array, number
 from .projection import rescale_speed
 from .system import RotorSystem
 
@@ -43,6 +43,14 @@ __all__ = ["LinkageSystem", "NQ", "NC", "gen_constraints", "gen_jacobian", "gen_
 _gen = importlib.import_module("charts.generated.linkage")
 NQ = _gen.NQ
 NC = _gen.NC
+#: The range of the crank ε and the disk radius ρ: [LENGTH_MIN, LENGTH_MAX).  Above, the
+#: Appendix's small-linkage picture fails (rods R = 1, axes at distance 1).  Below about
+#: 2.5e-7 the kinetic projection's KKT matrix (entries of order ε²) falls under its pivot
+#: threshold and the rotor angles jump 0.1 rad off both the ε → 0 limit and the trend of
+#: larger ε (``python scripts/linkage_eps_floor.py``, docs/linkage.md): the floor keeps a
+#: factor four from that edge.
+LENGTH_MIN = 1e-6
+LENGTH_MAX = 0.5
 #: The generated kernels (``generated/linkage.py``), compiled.
 gen_constraints = njit(cache=True)(_gen.constraints)
 gen_jacobian = njit(cache=True)(_gen.jacobian)
@@ -289,11 +297,11 @@ class LinkageSystem:
     dim = 3
 
     def __init__(self, eps, rho=None, *, disk_mass=0.0, disk_inertia=0.0):
-        eps = _positive("eps", eps)
-        rho = 2.0 * eps if rho is None else _positive("rho", rho)
-        if not eps < 0.5 or not rho < 0.5:
-            raise ValueError(f"eps={eps:g} and rho={rho:g} must be < 0.5 (small against the rods "
-                             "R = 1 and the axes at distance 1, as in the Appendix)")
+        eps = _length("eps", eps)
+        rho = 2.0 * eps if rho is None else _length("rho", rho)
+        if not rho < LENGTH_MAX:
+            raise ValueError(f"rho = 2 eps = {rho:g} must be < {LENGTH_MAX:g}: pass a smaller "
+                             "eps or rho explicitly")
         dm = _nonnegative("disk_mass", disk_mass)
         di = _nonnegative("disk_inertia", disk_inertia)
         self.eps, self.rho = eps, rho
@@ -434,17 +442,26 @@ def _branch(branch) -> int:
     return int(branch)
 
 
-def _positive(name, x) -> float:
-    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise TypeError(f"{name} must be a number, got {type(x).__name__}")
-    if not (math.isfinite(x) and x > 0):
-        raise ValueError(f"{name} must be a positive finite number, got {x!r}")
-    return float(x)
+def _length(name, x) -> float:
+    """ε or ρ as a float in [`LENGTH_MIN`, `LENGTH_MAX`); ValueError naming it otherwise."""
+    x = number(name, x)
+    if not LENGTH_MIN <= x < LENGTH_MAX:
+        raise ValueError(
+            f"{name} = {x:g} is outside [{LENGTH_MIN:g}, {LENGTH_MAX:g}): above, the linkage is "
+            "not small against its rods R = 1 (the Appendix); below, the kinetic projection "
+            "loses its digits (docs/linkage.md)")
+    return x
 
 
 def _nonnegative(name, x) -> float:
-    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise TypeError(f"{name} must be a number, got {type(x).__name__}")
-    if not (math.isfinite(x) and x >= 0):
+    x = number(name, x)
+    if not x >= 0:
         raise ValueError(f"{name} must be a finite number >= 0, got {x!r}")
-    return float(x)
+    return x
+
+
+def _positive(name, x) -> float:
+    x = number(name, x)
+    if not x > 0:
+        raise ValueError(f"{name} must be a positive finite number, got {x!r}")
+    return x

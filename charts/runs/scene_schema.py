@@ -14,6 +14,7 @@ from functools import cache
 from typing import Any, Callable
 
 from ..analyses.arguments import GRID_RTOL
+from ..geometry.linkage import LENGTH_MAX, LENGTH_MIN
 
 __all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL",
            "API", "FromAPI", "api_default"]
@@ -86,8 +87,8 @@ def _ge(lo):
     return lambda v: None if v >= lo else f"a number >= {lo:g}"
 
 
-def _open(lo, hi):
-    return lambda v: None if lo < v < hi else f"a number in ({lo:g}, {hi:g})"
+def _half_open(lo, hi):
+    return lambda v: None if lo <= v < hi else f"a number in [{lo:g}, {hi:g})"
 
 
 def _between(lo, hi):
@@ -120,11 +121,12 @@ SCHEMA: dict[str, dict[str, Key]] = {
                      "paper's case); |c| < Σ aᵢ, and a critical value Σ ±aᵢ warns "
                      "(docs/families.md)."),
         "eps": Key("float", None, "Linkage only (required there): crank length ε of the "
-                   "rotors' hinges, 0 < ε < 0.5 (rods R = 1); ε → 0 gives Σ cos θᵢ = 0.",
-                   check=_open(0, 0.5)),
-        "rho": Key("float", None, "Linkage only: radius ρ of the disk's hinges, < 0.5 "
+                   "rotors' hinges, 1e-6 <= ε < 0.5 (rods R = 1; below, the projections lose "
+                   "their digits); ε → 0 gives Σ cos θᵢ = 0.",
+                   check=_half_open(LENGTH_MIN, LENGTH_MAX)),
+        "rho": Key("float", None, "Linkage only: radius ρ of the disk's hinges, in [1e-6, 0.5) "
                    "(default 2ε, as LinkageSystem: unset in a sweep over eps, ρ/ε stays 2).",
-                   check=_open(0, 0.5)),
+                   check=_half_open(LENGTH_MIN, LENGTH_MAX)),
         "disk_mass": Key("float", 0.0, "Linkage only: the disk's mass m_d (default 0, the "
                          "Appendix's massless disk).", check=_ge(0)),
         "disk_inertia": Key("float", 0.0, "Linkage only: the disk's moment of inertia I_d "
