@@ -24,13 +24,9 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-try:  # Python >= 3.11
-    import tomllib
-except ModuleNotFoundError:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
-
 from ..analyses.arguments import Documented, steps_of
 from ..solvers.status import check_step
+from .input_files import read_toml
 from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
                            where)
 from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
@@ -69,16 +65,7 @@ def scene_to_dict(scene: Scene) -> dict:
 def load_scene(path) -> Scene:
     """Read and validate a TOML scene file.  Raises :class:`SceneError`."""
     path = Path(path)
-    try:
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise SceneError(f"{path}: no such scene file (bundled scenes: `charts scenes`)") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SceneError(f"{path}: cannot read the scene: {exc}") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+    data = read_toml(path, "scene", SceneError, " (bundled scenes: `charts scenes`)")
     return parse_scene(data, source=str(path), default_name=path.stem)
 
 

@@ -14,6 +14,9 @@ __all__ = ["ExpressionError", "expression_symbols", "evaluate_expression", "ALLO
 
 #: What an expression may contain (the wording of every error message).
 ALLOWED = "numbers, parameter names, + - * / **"
+#: Longest expression accepted (a mass pattern is a few terms; Python's parser recurses
+#: once per operator and would fail at a few thousand).
+MAX_LENGTH = 500
 
 _OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
         ast.Div: operator.truediv, ast.Pow: operator.pow, ast.USub: operator.neg,
@@ -26,10 +29,7 @@ class ExpressionError(ValueError):
 
 def expression_symbols(expr: str) -> set:
     """The names used by ``expr``; :class:`ExpressionError` if it is not allowed arithmetic."""
-    try:
-        tree = ast.parse(expr, mode="eval")
-    except SyntaxError:
-        raise ExpressionError(f"{expr!r} is not an arithmetic expression ({ALLOWED})") from None
+    tree = _parse(expr)
     names = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
@@ -45,7 +45,7 @@ def evaluate_expression(expr: str, env: dict) -> float:
     :class:`ExpressionError` quoting it when the arithmetic fails (division by zero, a
     result too large, complex or not finite)."""
     try:
-        value = _evaluate(ast.parse(expr, mode="eval"), env)
+        value = _evaluate(_parse(expr), env)
     except (ZeroDivisionError, OverflowError, TypeError, ValueError) as exc:
         raise ExpressionError(f"{expr!r} cannot be computed with {_values(expr, env)}: "
                               f"{exc}") from None
@@ -53,6 +53,19 @@ def evaluate_expression(expr: str, env: dict) -> float:
         raise ExpressionError(f"{expr!r} is {value!r} with {_values(expr, env)}: "
                               "not a finite real number")
     return float(value)
+
+
+def _parse(expr: str) -> ast.Expression:
+    if not isinstance(expr, str):
+        raise ExpressionError(f"an expression is a string, got {type(expr).__name__}")
+    if len(expr) > MAX_LENGTH:
+        raise ExpressionError(f"{expr[:40]!r}… has {len(expr)} characters; an expression may "
+                              f"have at most {MAX_LENGTH}")
+    try:
+        return ast.parse(expr, mode="eval")
+    except (SyntaxError, RecursionError, MemoryError):
+        raise ExpressionError(f"{expr[:60]!r} is not an arithmetic expression "
+                              f"({ALLOWED})") from None
 
 
 def _values(expr: str, env: dict) -> str:

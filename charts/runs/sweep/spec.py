@@ -10,12 +10,8 @@ import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
-try:  # Python >= 3.11
-    import tomllib
-except ModuleNotFoundError:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
-
 from ..bundled import bundled_files, path_or_bundled
+from ..input_files import read_toml
 from ..scene_checks import is_finite_number, unknown_key
 from .expressions import ExpressionError, expression_symbols
 
@@ -69,13 +65,7 @@ def resolve_sweep(arg: str) -> Path:
 def load_sweep(path) -> Sweep:
     """Read and validate a sweep file (TOML).  Raises :class:`SweepError`."""
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_bytes().decode("utf-8"))
-    except FileNotFoundError:
-        raise SweepError(f"{path}: no such sweep file (bundled sweeps: `charts sweep --list`)") \
-            from None
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise SweepError(f"{path}: cannot read the sweep: {exc}") from None
+    data = read_toml(path, "sweep", SweepError, " (bundled sweeps: `charts sweep --list`)")
     return parse_sweep(data, source=str(path), default_name=path.stem)
 
 
