@@ -119,3 +119,13 @@ def test_leading_exponent_lies_in_the_entropy_bracket(name):
         assert lam + 3 * se < upper, (seed, lam, se, upper)
         if lower is not None:
             assert lam - 3 * se > lower, (seed, lam, se, lower)
+
+
+def test_a_grid_beyond_memory_is_refused_before_it_is_built(monkeypatch):
+    import charts.analyses.surface_integrals as quadrature
+    import charts.solvers.tangent as tangent
+    for module in (tangent, quadrature):      # the check and the remedy's largest grid
+        monkeypatch.setattr(module, "memory_budget", lambda: 1 << 30)
+    with pytest.raises(ValueError, match=r"2048² cells would need 2\.3 GiB, more than the 1\.0 "
+                       r"GiB.*use n_grid <= 1337"):
+        surface_integrals(charts.RotorSystem(3), 2048)

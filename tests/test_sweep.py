@@ -58,6 +58,11 @@ def _sweep(**over):
     ({"masses": {"p": [1, 1, "m", "import os"]}}, "is not an arithmetic expression"),
     ({"mode": "latin"}, "mode = 'latin' is not allowed"),
     ({"seeds": [1, 1]}, "repeats a seed"),
+    ({"seeds": 10**9}, "seeds = 1000000000 is more than the 100000 points"),
+    ({"seeds": 5000, "parameters": {"m": [float(i + 1) for i in range(30)]}},
+     "the sweep has 1.5e+05 points = 1 ([sweep.masses]) × 30 (m) × 5000 (seeds), more than"),
+    ({"mode": "random", "n_points": 10**12, "parameters": {"m": {"min": 0.5, "max": 2.0}}},
+     "1e+12 points = 1 ([sweep.masses]) × 1000000000000 (n_points) × 1 (seeds)"),
 ])
 def test_malformed_sweeps_are_named(change, message):
     with pytest.raises(SweepError) as exc:
