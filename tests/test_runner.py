@@ -303,6 +303,49 @@ def test_interrupt_then_resume_gives_the_same_numbers(tmp_path, over):
             np.testing.assert_array_equal(a[k], b[k], err_msg=k)
 
 
+PASSES = {"lyapunov": {"n_batches": 2}, "angles": {"sample_every": 0.5, "t_transient": 1.0},
+          "clv": {}}
+
+
+@pytest.mark.parametrize("where", ["_angles_pass", "_clv_pass", "finalize"])
+def test_an_interrupt_in_a_pass_or_while_writing_resumes_to_the_same_result(
+        tmp_path, monkeypatch, where):
+    """Ctrl-C in the separate angle or CLV pass or while the outputs are written: an
+    "interrupted" result.json with the progress and the quoted resume command, no output it
+    does not list, and --resume gives the uninterrupted run's numbers."""
+    import charts.runs.runner as runner
+    sc = scene(n=3, effects=PASSES, t_final=12.0, t_transient=0.5,
+               run={"t_final": 12.0, "t_transient": 0.5, "sample_dt": 0.05,
+                    "checkpoint_every": 4.0})
+    full = run(sc, tmp_path, "full")
+    real = getattr(runner, where)
+    calls = []
+
+    def interrupted(*args, **kw):
+        calls.append(1)
+        if len(calls) == 1:
+            raise KeyboardInterrupt
+        return real(*args, **kw)
+
+    monkeypatch.setattr(runner, where, interrupted)
+    out = tmp_path / "cut here"
+    with pytest.raises(KeyboardInterrupt) as exc:
+        run(sc, tmp_path, "cut here")
+    partial = exc.value.args[0]
+    on_disk = json.loads((out / "result.json").read_text())
+    assert on_disk["status"] == partial["status"] == "interrupted"
+    assert on_disk["resume"].endswith(f"-o '{out}' --resume")
+    done = on_disk["progress"]["chunks_done"]
+    left = {"_angles_pass": 2, "_clv_pass": 1, "finalize": 0}[where]   # the passes not run
+    assert done == on_disk["progress"]["chunks"] - left
+    outputs = {p.name for p in out.iterdir() if not p.name.startswith(".")}
+    assert outputs == set(on_disk["files"])
+    monkeypatch.setattr(runner, where, real)
+    resumed = run(sc, tmp_path, "cut here", resume=True)
+    assert resumed["status"] == "complete" and resumed["results"] == full["results"]
+    assert {p.name for p in out.iterdir() if not p.name.startswith(".")} == set(resumed["files"])
+
+
 def test_interrupt_in_the_first_chunk_leaves_an_empty_valid_result(tmp_path):
     sc = scene(n=3, effects={"lyapunov": {"n_batches": 2}})
 

@@ -48,7 +48,8 @@ from .run_state import CHECKPOINT, RunError, RunState, scene_hash, scene_system,
 from .linkage_run import linkage_angles_pass
 from .scene_linkage import is_linkage
 from .scene import Scene
-from .scene_results import FTLE_STATS, finalize, write_result
+from .scene_results import (FTLE_STATS, finalize, result_header, resume_command,
+                            write_result)
 
 __all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "PAPER_EXPONENTS",
            "clear_run_outputs", "RUN_FILES", "SCENE_FIGURES"]
@@ -244,14 +245,36 @@ class SceneRun:
 
     def finish(self, status: str, failure=None) -> dict:
         """The result (every output file written); raises KeyboardInterrupt (interrupted) or
-        `RunError` (failed, the finished part written) after writing it."""
-        result = finalize(self.st, status, self.ends, self.transient, self.unit, self.outdir)
+        `RunError` (failed, the finished part written) after writing it.  An interrupt while
+        the outputs are written leaves the checkpoint and an "interrupted" result.json
+        (`interrupted_while_writing`)."""
+        try:
+            result = finalize(self.st, status, self.ends, self.transient, self.unit,
+                              self.outdir)
+        except KeyboardInterrupt:
+            raise KeyboardInterrupt(self.interrupted_while_writing()) from None
         if status == "interrupted":
             raise KeyboardInterrupt(result)
         if status == "failed":
             result["error"] = failure
             write_result(self.outdir, result)
             raise RunError(f"{failure} (the finished part is in {self.outdir}/result.json)")
+        return result
+
+
+    def interrupted_while_writing(self) -> dict:
+        """Ctrl-C while the outputs were written: the partly written outputs are removed (the
+        checkpoint, already complete, stays) and result.json says "interrupted", with the
+        progress and the command whose ``--resume`` writes them all."""
+        for name in sorted((set(RUN_FILES) | set(SCENE_FIGURES)) - {CHECKPOINT}):
+            path = self.outdir / name
+            if path.is_file() or path.is_symlink():
+                path.unlink()
+        result = result_header(self.st, "interrupted", self.ends, self.transient, self.unit)
+        result.update(files=["result.json", CHECKPOINT], resume=resume_command(self.st,
+                                                                               self.outdir),
+                      note="interrupted while the outputs were written; --resume writes them")
+        write_result(self.outdir, result)
         return result
 
 

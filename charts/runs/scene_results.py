@@ -4,6 +4,7 @@ drift, the per-effect results), ``arrays.npz`` and the figures, each written ato
 from __future__ import annotations
 
 import json
+import shlex
 import time
 from pathlib import Path
 
@@ -25,7 +26,7 @@ from .scene import scene_to_dict
 from .linkage_run import linkage_result
 from .scene_linkage import is_linkage
 
-__all__ = ["finalize", "write_result", "waveforms_result", "spectrum_result", "drift_result",
+__all__ = ["finalize", "result_header", "resume_command", "write_result", "waveforms_result", "spectrum_result", "drift_result",
            "lyapunov_result", "curvature_result", "angles_result", "clv_result",
            "switches_result", "FTLE_STATS"]
 
@@ -46,13 +47,31 @@ def write_result(outdir: Path, result: dict) -> None:
     atomic_write(outdir / "result.json", json.dumps(result, indent=2, default=json_default).encode())
 
 
+def result_header(st: RunState, status, ends, transient, unit) -> dict:
+    """The first entries of result.json: status, scene, source, versions and progress."""
+    sc, plan = st.scene, st.plan
+    t_done = max(0, units_done(st, ends) - transient) * unit
+    if not plan.main_pass:    # the separate passes only: done when the last one has run
+        t_done = sc.run["t_final"] if st.chunk_index == len(plan.passes) else 0.0
+    return {"status": status, "scene": scene_to_dict(sc), "source": sc.source,
+            "versions": versions(),
+            "progress": {"t_done": t_done, "t_final": sc.run["t_final"],
+                         "t_transient": sc.run["t_transient"],
+                         "chunks_done": st.chunk_index,
+                         "chunks": (len(ends) if plan.main_pass else 0) + len(plan.passes)}}
+
+
+def resume_command(st: RunState, outdir: Path) -> str:
+    """The shell command that continues this run (its paths quoted)."""
+    return f"charts run {shlex.quote(str(st.scene.source))} -o {shlex.quote(str(outdir))} --resume"
+
+
 def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
     """Build the result of the run so far and write every output file; return the result."""
     sc, plan = st.scene, st.plan
     eff = sc.effects
-    t_done = max(0, units_done(st, ends) - transient) * unit
-    if not plan.main_pass:    # the separate passes only: done when the last one has run
-        t_done = sc.run["t_final"] if st.chunk_index == len(plan.passes) else 0.0
+    result = result_header(st, status, ends, transient, unit)
+    t_done = result["progress"]["t_done"]
     out = _Outputs()
     for name, build in (("waveforms", waveforms_result), ("spectrum", spectrum_result),
                         ("drift", drift_result), ("lyapunov", lyapunov_result),
@@ -71,14 +90,7 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
     comp["frame_rhs_evaluations"] = st.rhs_frame
     comp["tangent_vector_evaluations"] = st.rhs * plan.tangent_vectors
     files = ["result.json", CHECKPOINT] + (["arrays.npz"] if out.arrays else []) + sorted(out.figures)
-    result = {
-        "status": status,
-        "scene": scene_to_dict(sc),
-        "source": sc.source,
-        "versions": versions(),
-        "progress": {"t_done": t_done, "t_final": sc.run["t_final"],
-                     "t_transient": sc.run["t_transient"],
-                     "chunks_done": st.chunk_index, "chunks": len(ends)},
+    result.update({
         "timings": {"integration_wall_s": round(max(st.elapsed - st.compile_s, 0.0), 4),
                     "compile_wall_s": round(st.compile_s, 4)},
         "computation": comp,
@@ -87,9 +99,9 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
         "drift": _drift_summary(st, out),
         "results": out.results,
         "files": files,
-    }
+    })
     if status == "interrupted":
-        result["resume"] = f"charts run {sc.source} -o {outdir} --resume"
+        result["resume"] = resume_command(st, outdir)
     t0 = time.perf_counter()
     for name, png in out.figures.items():
         atomic_write(outdir / name, png)
