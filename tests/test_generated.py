@@ -296,25 +296,41 @@ def test_bad_points_vectors_and_charts():
 
 
 # -- generated/ is fresh ----------------------------------------------------------------
-def _generate_script():
-    spec = importlib.util.spec_from_file_location("generate_script", ROOT / "scripts" / "generate.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
 def test_generated_folder_is_fresh_and_edits_are_caught(tmp_path):
-    gen = _generate_script()
+    from charts.codegen.shipped import compare, write_all
     fresh = tmp_path / "fresh"
-    gen.write_all(fresh, charts.codegen.emit.SHIPPED_N, verbose=False)
-    assert gen.compare(fresh, ROOT / "generated") == [], \
+    write_all(fresh, verbose=False)
+    assert compare(fresh, ROOT / "generated") == [], \
         "generated/ is stale: run python scripts/generate.py"
     edited = tmp_path / "edited"
     shutil.copytree(ROOT / "generated", edited)
     path = edited / "rotor_n4.py"
     path.write_text(path.read_text().replace("math.sin(q[0])", "math.sin(q[0] + 1e-9)", 1))
-    diff = gen.compare(fresh, edited)
+    (edited / "linkage.py").write_bytes(b"\xff\xfe not python")
+    diff = compare(fresh, edited)
     assert any(line.startswith("-") and "1e-9" in line for line in diff)
+    assert any(line.startswith("-<unreadable") for line in diff)
+
+
+def test_a_damaged_shipped_module_names_itself_and_the_repair(tmp_path, monkeypatch):
+    import sys
+
+    import charts.generated
+    from charts.codegen.shipped import REPAIR, DamagedModuleError, import_shipped
+    source = (ROOT / "generated" / "rotor_n3.py").read_text()
+    (tmp_path / "rotor_n97.py").write_text(source[: len(source) // 2])      # truncated
+    (tmp_path / "rotor_n98.py").write_bytes(b"\x00\x89PNG garbage")
+    monkeypatch.setattr(charts.generated, "__path__", [str(tmp_path), *charts.generated.__path__])
+    for name in ("rotor_n97", "rotor_n98"):
+        with pytest.raises(DamagedModuleError) as info:
+            import_shipped(name)
+        message = str(info.value)
+        assert message.startswith(f"{tmp_path / name}.py: the shipped generated module is "
+                                  "damaged") and REPAIR in message and "\n" not in message
+        sys.modules.pop(f"charts.generated.{name}", None)
+    with pytest.raises(DamagedModuleError, match="missing from this installation"):
+        import_shipped("rotor_n99")
+    assert import_shipped("rotor_n3").__name__ == "charts.generated.rotor_n3"
 
 
 def test_generated_headers_name_the_command():

@@ -32,7 +32,7 @@ LAYERS = (
     ("solvers",),                           # steppers, the loop, formulations, integrate
     ("analyses",),                          # Lyapunov, curvature, CLVs, spectra, ...
     ("runs", "data"),                       # scenes, sweeps, benchmarks; the bundled TOML files
-    ("cli",),                               # the ``charts`` command
+    ("cli", "__main__"),                    # the ``charts`` command, ``python -m charts``
     ("__init__",),                          # the public surface, charts/__init__.py
 )
 RANK = {name: i for i, names in enumerate(LAYERS) for name in names}

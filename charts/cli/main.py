@@ -26,7 +26,6 @@ import sys
 import traceback
 from pathlib import Path
 
-from ..atomic import atomic_write
 from ..runs.bundled import bundled_files
 from ..runs.cli_parser import OneLineParser
 
@@ -197,22 +196,16 @@ def _cmd_generate(args) -> int:
 
 def _generate_installed(check: bool) -> int:
     """Without a checkout: compare (or rewrite) the installed ``charts.generated``."""
-    import charts.generated as gen
-    from ..codegen.emit import SHIPPED_N, init_source, module_name, module_source
+    from importlib.util import find_spec
 
-    folder = Path(gen.__file__).resolve().parent
-    stale = []
-    for n in SHIPPED_N:
-        path = folder / f"{module_name(n)}.py"
-        src = module_source(n)
-        if not path.exists() or path.read_text() != src:
-            stale.append(path.name)
-            if not check:
-                atomic_write(path, src.encode("utf-8"))
+    from ..codegen.shipped import stale_files, write_all
+
+    folder = Path(find_spec("charts.generated").origin).resolve().parent
     if not check:
-        atomic_write(folder / "__init__.py", init_source().encode("utf-8"))
+        write_all(folder, verbose=False)
         print(f"wrote {folder}")
         return 0
+    stale, _ = stale_files(folder)
     if stale:
         print(f"{folder}: stale: {', '.join(stale)}; run `charts generate` to rewrite")
         return 1

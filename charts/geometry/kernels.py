@@ -17,7 +17,6 @@ and the level c, and agree to rounding (tests/test_structured.py).
 from __future__ import annotations
 
 import hashlib
-import importlib
 import numbers
 from functools import cache
 from types import SimpleNamespace
@@ -27,6 +26,7 @@ import numpy as np
 from numba.extending import register_jitable
 
 from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
+from ..codegen.shipped import import_shipped
 
 __all__ = ["chart_module", "module_digest", "compiled", "geometry", "source", "is_paper",
            "GENERATED_N", "MAX_N"]
@@ -55,7 +55,7 @@ def chart_module(n: int, paper: bool = False):
     """The generated module for N rotors (canonical chart eliminating θ_{N−1}): the family,
     or with ``paper`` its member a = 1, c = 0; its kernels registered with numba."""
     if n in SHIPPED_N:
-        mod = importlib.import_module(f"charts.generated.{module_name(n, bool(paper))}")
+        mod = import_shipped(module_name(n, bool(paper)))
     elif 3 <= n <= MAX_N:
         from ..codegen.cache import load_or_generate
 

@@ -25,12 +25,12 @@ Euclidean.
 """
 from __future__ import annotations
 
-import importlib
 import math
 
 import numpy as np
 from numba import njit
 
+from ..codegen.shipped import import_shipped
 from .checks import finite_array, number
 from .projection import rescale_speed
 from .system import RotorSystem
@@ -40,7 +40,7 @@ __all__ = ["LinkageSystem", "NQ", "NC", "gen_constraints", "gen_jacobian", "gen_
            "project_velocity_linkage", "kkt_matrix", "project_state_linkage", "project_tangent_linkage", "PROJ_OK", "PROJ_SHAPE",
            "PROJ_SINGULAR", "PROJ_ZERO_SPEED"]
 
-_gen = importlib.import_module("charts.generated.linkage")
+_gen = import_shipped("linkage")
 NQ = _gen.NQ
 NC = _gen.NC
 #: The range of the crank ε and the disk radius ρ: [LENGTH_MIN, LENGTH_MAX).  Above, the
