@@ -82,3 +82,34 @@ def test_two_processes_needing_the_same_n_derive_it_once(tmp_path):
     err = "".join(e for _, e in outs)
     assert err.count(f"deriving geometry for N={N}") == 1, err
     assert "waiting for another process" in err, err
+
+
+@pytest.mark.parametrize("damage", ["module is a folder", "hash is a folder", "lock is a folder",
+                                    "folder is a file"])
+def test_cache_entries_of_the_wrong_kind_are_replaced(cache, capsys, damage):
+    _load()
+    path = cache / f"{module_name(N)}.py"
+    target = {"module is a folder": path,
+              "hash is a folder": path.with_name(path.name + ".sha256"),
+              "lock is a folder": cache / f"{module_name(N)}.lock",
+              "folder is a file": cache}[damage]
+    import shutil
+    shutil.rmtree(target) if target.is_dir() else target.unlink()
+    if damage == "folder is a file":
+        target.write_text("not a folder")
+    else:
+        (target / "inside").mkdir(parents=True)
+    capsys.readouterr()
+    assert _load().N == N
+    assert "deriving" in capsys.readouterr().err or damage == "lock is a folder"
+    assert path.read_text() == module_source(N)
+    _load()
+    assert capsys.readouterr().err == ""
+
+
+def test_a_cache_root_that_is_a_file_is_named(tmp_path, monkeypatch):
+    root = tmp_path / "root"
+    root.write_text("")
+    monkeypatch.setenv("CHARTS_CACHE_DIR", str(root))
+    with pytest.raises(ValueError, match=f"the geometry cache {root} is not a folder"):
+        _load()

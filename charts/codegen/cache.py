@@ -20,6 +20,7 @@ import contextlib
 import hashlib
 import importlib.util
 import os
+import shutil
 import sys
 import time
 from pathlib import Path
@@ -78,19 +79,52 @@ def _derivation_lock(path: Path, n: int):
 
 def _problem(path: Path) -> str | None:
     """Why the cached module at ``path`` cannot be used (None if its hash matches)."""
-    if not path.exists():
-        return "missing"
     sidecar = path.with_name(path.name + ".sha256")
+    if not path.exists() and not path.is_symlink():
+        return "missing"
+    if not path.is_file():
+        return "it is not a file"
     if not sidecar.exists():
         return "its hash file is missing (an interrupted derivation?)"
-    if sidecar.read_text().strip() != _digest(path.read_bytes()):
-        return "its contents do not match the stored hash (corrupt or stale)"
+    if not sidecar.is_file():
+        return "its hash file is not a file"
+    try:
+        if sidecar.read_text().strip() != _digest(path.read_bytes()):
+            return "its contents do not match the stored hash (corrupt or stale)"
+    except (OSError, UnicodeDecodeError) as exc:
+        return f"it cannot be read ({exc})"
     return None
+
+
+def _clear(path: Path) -> None:
+    """Remove whatever occupies one of the cache's own names (a file, a link or a folder)."""
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path)
+    elif path.exists() or path.is_symlink():
+        path.unlink()
+
+
+def _folder() -> Path:
+    """The cache folder, created; a file in its place (a damaged cache) is replaced, with a
+    message; a ``CHARTS_CACHE_DIR`` that is not a folder is a ValueError naming it."""
+    folder = cache_dir()
+    root = folder.parent                              # CHARTS_CACHE_DIR (or ~/.cache/charts)
+    if root.exists() and not root.is_dir():
+        raise ValueError(f"the geometry cache {root} is not a folder: remove it or set "
+                         "CHARTS_CACHE_DIR to a folder")
+    if (folder.exists() or folder.is_symlink()) and not folder.is_dir():
+        _say(f"the geometry cache {folder} is not a folder; replacing it")
+        _clear(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder
 
 
 def _derive(n: int, path: Path, reason: str, paper: bool) -> None:
     if reason != "missing":
         _say(f"the cached geometry for N={n} at {path} is unusable: {reason}; deriving it again")
+        for stale in (path, path.with_name(path.name + ".sha256")):
+            if stale.is_dir() and not stale.is_symlink():
+                _clear(stale)
     t0 = time.perf_counter()
     _say(f"deriving geometry for N={n} (not shipped); cached at {path}")
     data = module_source(n, paper).encode("utf-8")
@@ -111,11 +145,14 @@ def _import(n: int, path: Path, paper: bool):
 def load_or_generate(n: int, paper: bool = False):
     """The generated module for N rotors (``paper``: its specialisation to a = 1, c = 0) from
     the cache, derived (once, under a file lock) when missing, corrupt or stale."""
-    folder = cache_dir()
-    folder.mkdir(parents=True, exist_ok=True)
+    folder = _folder()
     name = module_name(n, paper)
     path = folder / f"{name}.py"
-    with _derivation_lock(folder / f"{name}.lock", n):
+    lock = folder / f"{name}.lock"
+    if lock.is_dir() and not lock.is_symlink():
+        _say(f"the geometry cache's lock {lock} is a folder; replacing it")
+        _clear(lock)
+    with _derivation_lock(lock, n):
         reason = _problem(path)
         if reason is not None:
             _derive(n, path, reason, paper)

@@ -1,0 +1,62 @@
+"""A damaged numba cache entry of a charts kernel is removed and compiled again, once, with
+one notice (charts.numba_cache, installed through numba's entry point)."""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+CALL = ("import charts; th, u = charts.RotorSystem(3).random_state(seed=1); "
+        "print(repr(th.tolist()))")
+
+
+def _run(cache: Path):
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache))
+    r = subprocess.run([sys.executable, "-c", CALL], capture_output=True, text=True, env=env,
+                       timeout=300)
+    assert r.returncode == 0, r.stderr
+    return r.stdout, [line for line in r.stderr.splitlines() if line.startswith("charts:")]
+
+
+@pytest.fixture(scope="module")
+def filled(tmp_path_factory):
+    cache = tmp_path_factory.mktemp("numba-cache")
+    out, notes = _run(cache)
+    assert notes == []
+    return cache, out
+
+
+@pytest.mark.parametrize("suffix, damage", [
+    (".nbi", lambda p: p.write_bytes(p.read_bytes()[:10])),          # truncated index
+    (".nbc", lambda p: p.write_bytes(os.urandom(4096))),              # object file overwritten
+])
+def test_a_damaged_entry_is_rebuilt_once_with_a_notice(filled, tmp_path, suffix, damage):
+    source, expected = filled
+    cache = tmp_path / "cache"
+    subprocess.run(["cp", "-r", str(source), str(cache)], check=True)
+    files = sorted(cache.rglob(f"*{suffix}"))
+    assert files
+    for path in files:
+        damage(path)
+    out, notes = _run(cache)
+    assert out == expected
+    assert notes and len(set(notes)) == len(notes)      # one notice per damaged function
+    assert all("was damaged" in n and "compiling again (once)" in n for n in notes)
+    out, notes = _run(cache)             # healed: loads silently
+    assert out == expected and notes == []
+
+
+def test_the_guard_is_installed_by_numba_itself_and_leaves_other_packages_alone():
+    code = ("import numba\n@numba.njit\ndef f(x): return x\nf(1)\n"
+            "from numba.core.caching import Cache\n"
+            "print(getattr(Cache.load_overload, '_charts_heals', False))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.stdout.strip() == "True", r.stderr
+    from charts.numba_cache import _ours
+
+    class Fake:
+        def __init__(self, module):
+            self._py_func = type("F", (), {"__module__": module})()
+    assert _ours(Fake("charts.solvers.tangent")) and _ours(Fake("charts_ondemand_rotor_n7"))
+    assert not _ours(Fake("chartsy.other")) and not _ours(Fake("scipy.x"))
