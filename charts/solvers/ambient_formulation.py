@@ -15,8 +15,8 @@ formulation="ambient", method="rk4")`` and ``TangentFlow(..., k=0)`` give the sa
 (projection: ``project=True`` is the tangent kernel's ``project_every`` = 1 step, ``False``
 its 0) wherever the step cap (``charts.solvers.status``) does not bind; where it binds, near
 a singular point, the loop caps each step from its own start while the tangent kernel cuts
-dt into equal sub-steps (through Σ sin²θ ≈ 2e-6: 1.1e-7 against 5.0e-5 from DOP853 at
-rtol 1e-13, docs/integrators.md).  DOP853 evaluates libm at every stage (:func:`_rhs`).
+dt into sub-steps capped at their own starts (through Σ sin²θ ≈ 2e-6: 1.1e-7 against 5.1e-7
+from DOP853 at rtol 1e-13, docs/integrators.md).  DOP853 evaluates libm at every stage (:func:`_rhs`).
 
 Parameters: ``par``, the fields of `PAR` (``charts.packed``): N, 1/m, m, the speed,
 the project flag, the cap fraction, the point's work (a sin θ, a cos θ, a sin θ/m of the point
@@ -36,7 +36,7 @@ from ..geometry.projection import invariants_of, project_state, project_velocity
 from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, STEP_SIG,
                    Formulation)
 from .rk import NO_REFCOUNT, RHS_SIG
-from .status import step_cap, sum_squares
+from .status import SINGULAR_S, singular_floor, step_cap, sum_squares
 from ..packed import layout, pack, value, view
 from .tangent import stacked_rk4_step
 
@@ -77,7 +77,8 @@ def _point(y, par, n):
 
 
 def _rhs(y, par, dy):
-    """Eq (8) and eq (19); returns S = Σ a² sin²θ (0 at a singular point: dy is then 0)."""
+    """Eq (8) and eq (19); returns the health S = Σ a² sin²θ (`_health`; 0 at a singular
+    point: dy is then 0)."""
     n = int(value(par, 0, _N))   # (N comes first: its offset is 0)
     nv = (y.size - 2 * n) // n
     minv, s, c, f = _point(y, par, n)
@@ -93,7 +94,23 @@ def _rhs(y, par, dy):
     S = 0.0
     for j in range(n):
         S += s[j] * s[j]
-    return S
+    return _health(S, c, n, par)
+
+
+@njit(cache=True, inline="always")
+def _health(S, c, n, par):
+    """The loop's health of a point with S = Σ (a sin θ)² and weighted cosines c: S, scaled
+    by SINGULAR_S / `singular_floor` where the drift from the constraint raises the floor, so
+    that the loop's one test (health < SINGULAR_S) reads S < singular_floor
+    (``charts.solvers.status``: a drifted trajectory stops at a cone point as the chart
+    route does)."""
+    wts = view(par, n, _WTS)
+    amax = 0.0
+    for j in range(n):
+        if wts[j] > amax:
+            amax = wts[j]
+    floor = singular_floor(c, n, value(par, n, _LEVEL), amax)
+    return S if floor == SINGULAR_S else S * (SINGULAR_S / floor)
 
 
 @njit(cache=True, inline="always")
@@ -127,7 +144,7 @@ def _step(rhs, y, h, dt, par, K, ytmp, ynew):
                      view(par, n, _C0), view(par, n, _MINV), view(par, n, _WTS), h,
                      np.uint64(n), np.uint64((y.size - 2 * n) // n), np.uint64(n),
                      np.uint64(y.size), transport_vectors_rate)
-    return health[0]
+    return _health(health[0], view(par, n, _C0), n, par)
 
 
 def _rk4_cap(y, par, ipar):

@@ -11,7 +11,18 @@ controls its own error, so its cap only serves that safety.  RK4 has no error co
 near a singular point the path turns by ~|u|h/√S per step; its local error ∝ (fraction)⁵
 per step, and 0.03 keeps a close pass (S ≈ 1e-6) at an energy error ≈ 1e-8 (0.1 gave 3e-6).
 For dt = 0.01 at unit speed it only binds where S < 0.1.  A fixed-step route (the tangent
-kernel) keeps its grid: a capped step is cut into equal sub-steps.
+kernel, the lanes) keeps its grid: a capped step is cut into sub-steps, each within the cap
+at its own start point (`substep_length`), so the approach is geometric on every route and
+a trajectory aimed at a singular point stops there instead of stepping over it.  The test
+S = Σ (aᵢ sin θᵢ)² < `SINGULAR_S` holds for every family member: the gradient of
+Σ aᵢ cos θᵢ vanishes exactly where every sin θᵢ does, and such a point lies on the level set
+only at a critical level c = Σ ±aᵢ (the paper's N = 4 at c = 0, N = 3 at c = ±1, …).
+Near such a cone point the computed trajectory lives on a neighbouring level c + δ, δ its
+drift from the constraint, whose neck has S ≈ 2aδ: a trajectory aimed at the cone point
+passes through that neck or turns back by the sign of δ, not by the geometry.  So where a
+step is capped the test is S < `singular_floor` (δ) = max(`SINGULAR_S`, `NECK_FACTOR`·a·|δ|),
+a few neck radii: without projection (δ ≈ 1e-12 after a long pass) every route then stops
+where the chart routes (δ = 0 by construction) and the projected ones stop.
 """
 from __future__ import annotations
 
@@ -20,7 +31,7 @@ from math import ceil, isfinite, sqrt
 
 from numba import njit
 
-__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "substep_count", "RUNNING",
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "substep_count", "substep_length", "singular_floor", "NECK_FACTOR", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
            "status_error", "StepSizeWarning", "check_step", "check_duration", "MAX_STEP_LENGTH",
@@ -40,6 +51,9 @@ CHART_MIN_RATIO = 1e-4
 #: the sines carry a relative rounding error ≈ 1e-16/√S ≈ 1e-9, and the flow (whose
 #: acceleration scales as 1/√S) cannot be continued meaningfully.
 SINGULAR_S = 1e-14
+#: S / (a·|F − c|) below which a capped step counts as singular (`singular_floor`): the
+#: neck of the drifted level has S ≈ 2a|δ|, so 20 stops about three neck radii out.
+NECK_FACTOR = 20.0
 
 
 @njit(cache=True, inline="always")
@@ -75,11 +89,31 @@ def fixed_step_status(S, U, dt, fraction):
 
 
 @njit(cache=True, inline="always")
+def singular_floor(c, n, level, amax):
+    """S below which a point counts as singular, from its weighted cosines c[:n]
+    (a cos θ: Σ c − level is the drift δ from the constraint) and the largest weight amax:
+    max(`SINGULAR_S`, `NECK_FACTOR`·amax·|δ|) (module doc)."""
+    drift = -level
+    for j in range(n):
+        drift += c[j]
+    floor = NECK_FACTOR * amax * abs(drift)
+    return floor if floor > SINGULAR_S else SINGULAR_S
+
+
+@njit(cache=True, inline="always")
 def substep_count(dt, hc):
-    """The equal sub-steps a fixed step ``dt`` is cut into within the cap ``hc`` of
-    `fixed_step_status` (1: the step itself); each sub-step starts with the singular-point
-    test (Σ sin²θ < `SINGULAR_S`: stop)."""
+    """An upper bound of the sub-steps of a fixed step ``dt`` capped at ``hc`` by
+    `fixed_step_status` where the cap did not shrink (1: the step itself)."""
     return 1 if hc >= dt else int(ceil(dt / hc))
+
+
+@njit(cache=True, inline="always")
+def substep_length(left, S, U, fraction):
+    """The next sub-step of a capped fixed step with ``left`` (> 0) of it still to take,
+    from a point with Σ sin²θ = S and speed² U: its own cap, or what is left.  The caller
+    tests S < `singular_floor` (stop) before each sub-step."""
+    hc = step_cap(S, U, fraction)
+    return left if hc >= left else hc
 
 
 #: Most steps one duration may hold (2⁴⁰ ≈ 1.1·10¹²: days of CPU time at the kernel's rate);
@@ -145,8 +179,9 @@ RUNNING, FINISHED, OUT_FULL, LOG_FULL = 0, 1, 2, 3
 SINGULAR, DOMAIN, UNDERFLOW, NONFINITE = -1, -2, -3, -4
 
 STATUS_MESSAGES = {
-    SINGULAR: "the trajectory reached a singular point of the manifold (N = 4: all θᵢ ∈ {{0, π}}, "
-              "sum(sin² θ) < {s_sing:.1e}) at t = {t:.17g}; the geodesic cannot be continued "
+    SINGULAR: "the trajectory reached a singular point of the manifold (all θᵢ ∈ {{0, π}}, "
+              "sum((a sin θ)²) < {s_sing:.1e}: a critical level) at t = {t:.17g}; the geodesic "
+              "cannot be continued "
               "through it. Start from a different state (the part computed up to t is in "
               "err.result).",
     DOMAIN: "a step left the domain of the current chart at t = {t:.17g}, or came so close to its "

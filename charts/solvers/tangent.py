@@ -21,7 +21,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 from __future__ import annotations
 
 import os
-from math import cos, gcd, isfinite, sin
+from math import copysign, cos, gcd, isfinite, sin
 
 import numpy as np
 from numba import njit
@@ -31,8 +31,8 @@ from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
 from ..geometry.projection import project_state_into, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
-from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, SINGULAR_S, status_error,
-                     fixed_step_status, substep_count, sum_squares)
+from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
+                     fixed_step_status, singular_floor, substep_length, sum_squares)
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
@@ -177,15 +177,22 @@ def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
 
 
 @njit(cache=True)
-def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, dt, hc, n, R, d, L):
-    """The step dt of one lane of the lane kernel (``charts.solvers.lanes``, in the
-    one-trajectory layout) in `substep_count` equal `_rk4_step` sub-steps within the cap hc,
-    as `tangent_kernel` takes them; False if a sub-step starts at a singular point."""
-    nsub = substep_count(dt, hc)
-    h = dt / nsub
-    for sub in range(nsub):
-        if sum_squares(s0, 0, n) < SINGULAR_S:
+def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, n, R, d, L):
+    """The step dt (> 0, capped at its start) of one lane of the lane kernel
+    (``charts.solvers.lanes``, in the one-trajectory layout) in `_rk4_step` sub-steps, each
+    within the cap at its own start point (`substep_length`), as `tangent_kernel` takes them;
+    False if a sub-step starts at a singular point (`singular_floor`)."""
+    amax = 0.0
+    for j in range(n):
+        if wts[j] > amax:
+            amax = wts[j]
+    left = dt
+    while left > 0.0:
+        S = sum_squares(s0, 0, n)
+        if S < singular_floor(c0, n, level, amax):
             return False
+        h = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
+        left -= h
         _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L)
     return True
 
@@ -233,8 +240,9 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     sorted array of global steps), store ``logsum`` in ``event_logs[e]``.
 
     Steps follow the policy of ``charts.solvers.status`` (for |dt|): a step longer than the
-    cap near a singular point is cut into equal sub-steps.  Returns (status, steps done):
-    RUNNING, or SINGULAR / NONFINITE with Z at the start of the failing step.
+    cap near a singular point is cut into sub-steps, each within the cap at its own start.
+    Returns (status, steps done): RUNNING, or SINGULAR / NONFINITE with Z at the start of the failing step (SINGULAR
+    inside a cut step: Z where its sub-steps reached the singular point).
 
     The time loop is one function on purpose: the equations are inlined, and an array-valued
     call or view inside the loop would cost reference-count updates per step (see
@@ -257,6 +265,10 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     X_ = Z[1:]
     s0 = sc[0]
     c0 = sc[1]
+    amax = 0.0
+    for j in range(n):
+        if wts[j] > amax:
+            amax = wts[j]
     nrec = states.shape[1]
     nz = nrec if nrec < L else L        # the record: Z's first nz entries, then where
     nsc = n if nrec > L else 0          # asked s0 and c0 (nsc each)
@@ -272,18 +284,23 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
         code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), adt, _CAP)
         if code != RUNNING:
             return code, it
-        # near a singular point: equal sub-steps within the cap, each from a point that
-        # passes the singular-point test (the policy, charts.solvers.status); else one step.
-        # One inlined step in a loop: no second copy of it to compile (a separately compiled
-        # sub-step function cost every first call 3.7 s of compiling, the backward pass's
-        # another 3.8 s), and no slower (measured)
-        nsub = substep_count(adt, hc)
-        h = dt / nsub
-        for sub in range(nsub):
-            if nsub > 1 and sum_squares(s0, 0, n) < SINGULAR_S:
-                return SINGULAR, it
-            stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du,
-                             Lu, vectors_rate)
+        # near a singular point: sub-steps, each within the cap at its own start point and
+        # from a point that passes the singular-point test (the policy,
+        # charts.solvers.status); else one step.  One inlined step in a loop: no second copy
+        # of it to compile (a separately compiled sub-step function cost every first call
+        # 3.7 s of compiling, the backward pass's another 3.8 s), and no slower (measured)
+        capped = hc < adt
+        left = adt
+        while left > 0.0:
+            h = adt
+            if capped:
+                S = sum_squares(s0, 0, n)
+                if S < singular_floor(c0, n, level, amax):
+                    return SINGULAR, it
+                h = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
+            left -= h
+            stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts,
+                             copysign(h, dt), nu, Ru, du, Lu, vectors_rate)
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
