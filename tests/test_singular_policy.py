@@ -115,6 +115,6 @@ def test_a_cone_point_of_a_critical_level_stops_every_analysis(route):
 
 def test_the_floor_is_the_paper_constant_on_the_constraint_and_grows_with_the_drift():
     from charts.solvers.status import NECK_FACTOR, singular_floor
-    c = np.array([0.5, 0.25, 0.25])
-    assert singular_floor(c, 3, 1.0, 2.0) == SINGULAR_S
-    assert singular_floor(c, 3, 1.0 - 1e-12, 2.0) == pytest.approx(NECK_FACTOR * 2.0 * 1e-12)
+    c, wts = np.array([0.5, 0.25, 0.25]), np.array([1.0, 2.0, 0.5])
+    assert singular_floor(c, wts, 3, 1.0) == SINGULAR_S
+    assert singular_floor(c, wts, 3, 1.0 - 1e-12) == pytest.approx(NECK_FACTOR * 2.0 * 1e-12)

@@ -104,12 +104,7 @@ def _health(S, c, n, par):
     that the loop's one test (health < SINGULAR_S) reads S < singular_floor
     (``charts.solvers.status``: a drifted trajectory stops at a cone point as the chart
     route does)."""
-    wts = view(par, n, _WTS)
-    amax = 0.0
-    for j in range(n):
-        if wts[j] > amax:
-            amax = wts[j]
-    floor = singular_floor(c, n, value(par, n, _LEVEL), amax)
+    floor = singular_floor(c, view(par, n, _WTS), n, value(par, n, _LEVEL))
     return S if floor == SINGULAR_S else S * (SINGULAR_S / floor)
 
 

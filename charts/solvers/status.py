@@ -89,13 +89,16 @@ def fixed_step_status(S, U, dt, fraction):
 
 
 @njit(cache=True, inline="always")
-def singular_floor(c, n, level, amax):
+def singular_floor(c, wts, n, level):
     """S below which a point counts as singular, from its weighted cosines c[:n]
-    (a cos θ: Σ c − level is the drift δ from the constraint) and the largest weight amax:
-    max(`SINGULAR_S`, `NECK_FACTOR`·amax·|δ|) (module doc)."""
+    (a cos θ: Σ c − level is the drift δ from the constraint) and the weights wts[:n]:
+    max(`SINGULAR_S`, `NECK_FACTOR`·max(a)·|δ|) (module doc)."""
     drift = -level
+    amax = 0.0
     for j in range(n):
         drift += c[j]
+        if wts[j] > amax:
+            amax = wts[j]
     floor = NECK_FACTOR * amax * abs(drift)
     return floor if floor > SINGULAR_S else SINGULAR_S
 

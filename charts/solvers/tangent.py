@@ -21,7 +21,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 from __future__ import annotations
 
 import os
-from math import copysign, cos, gcd, isfinite, sin
+from math import cos, gcd, isfinite, sin
 
 import numpy as np
 from numba import njit
@@ -46,6 +46,9 @@ __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "or
 REORTH_TIME = 0.1
 
 _CAP = CAP_FRACTION["rk4"]
+#: Bound of the sub-steps of one capped step (never reached: the loop ends when the step is
+#: taken or S is singular; the cap at S = SINGULAR_S is still ≥ 3e-9 per unit speed).
+MAX_SUBSTEPS = 1 << 40
 
 
 @njit(cache=True, inline="always")
@@ -182,14 +185,10 @@ def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, 
     (``charts.solvers.lanes``, in the one-trajectory layout) in `_rk4_step` sub-steps, each
     within the cap at its own start point (`substep_length`), as `tangent_kernel` takes them;
     False if a sub-step starts at a singular point (`singular_floor`)."""
-    amax = 0.0
-    for j in range(n):
-        if wts[j] > amax:
-            amax = wts[j]
     left = dt
     while left > 0.0:
         S = sum_squares(s0, 0, n)
-        if S < singular_floor(c0, n, level, amax):
+        if S < singular_floor(c0, wts, n, level):
             return False
         h = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
         left -= h
@@ -241,8 +240,9 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
 
     Steps follow the policy of ``charts.solvers.status`` (for |dt|): a step longer than the
     cap near a singular point is cut into sub-steps, each within the cap at its own start.
-    Returns (status, steps done): RUNNING, or SINGULAR / NONFINITE with Z at the start of the failing step (SINGULAR
-    inside a cut step: Z where its sub-steps reached the singular point).
+    Returns (status, steps done): RUNNING, or SINGULAR / NONFINITE with Z at the start of the
+    failing step (SINGULAR inside a cut step: Z where its sub-steps reached the singular
+    point).
 
     The time loop is one function on purpose: the equations are inlined, and an array-valued
     call or view inside the loop would cost reference-count updates per step (see
@@ -265,10 +265,6 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     X_ = Z[1:]
     s0 = sc[0]
     c0 = sc[1]
-    amax = 0.0
-    for j in range(n):
-        if wts[j] > amax:
-            amax = wts[j]
     nrec = states.shape[1]
     nz = nrec if nrec < L else L        # the record: Z's first nz entries, then where
     nsc = n if nrec > L else 0          # asked s0 and c0 (nsc each)
@@ -285,22 +281,27 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
         if code != RUNNING:
             return code, it
         # near a singular point: sub-steps, each within the cap at its own start point and
-        # from a point that passes the singular-point test (the policy,
+        # from a point that passes the singular-point test (`singular_floor`: the policy,
         # charts.solvers.status); else one step.  One inlined step in a loop: no second copy
         # of it to compile (a separately compiled sub-step function cost every first call
-        # 3.7 s of compiling, the backward pass's another 3.8 s), and no slower (measured)
-        capped = hc < adt
+        # 3.7 s of compiling, the backward pass's another 3.8 s), and no slower (measured;
+        # the largest weight computed once before the loop instead made the whole kernel
+        # 2× slower, docs/performance.md)
+        nsub = 1 if hc >= adt else MAX_SUBSTEPS
+        h = dt
         left = adt
-        while left > 0.0:
-            h = adt
-            if capped:
+        for sub in range(nsub):
+            if nsub > 1:
                 S = sum_squares(s0, 0, n)
-                if S < singular_floor(c0, n, level, amax):
+                if S < singular_floor(c0, wts, n, level):
                     return SINGULAR, it
-                h = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
-            left -= h
-            stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts,
-                             copysign(h, dt), nu, Ru, du, Lu, vectors_rate)
+                hs = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
+                h = hs if dt > 0.0 else -hs
+            stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du,
+                             Lu, vectors_rate)
+            left -= abs(h)
+            if nsub > 1 and left <= 0.0:
+                break
         counter[0] += 1
         to_proj -= 1
         if to_proj == 0:
