@@ -88,7 +88,7 @@ def fixed_step_status(S, U, dt, fraction):
     return RUNNING, hc
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def singular_floor(c, wts, n, level):
     """S below which a point counts as singular, from its weighted cosines c[:n]
     (a cos θ: Σ c − level is the drift δ from the constraint) and the weights wts[:n]:
@@ -110,7 +110,7 @@ def substep_count(dt, hc):
     return 1 if hc >= dt else int(ceil(dt / hc))
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def substep_length(left, S, U, fraction):
     """The next sub-step of a capped fixed step with ``left`` (> 0) of it still to take,
     from a point with Σ sin²θ = S and speed² U: its own cap, or what is left.  The caller
