@@ -126,6 +126,32 @@ def test_factors_streamed_to_disk_give_the_same_numbers(tmp_path):
     assert a.params["bytes_per_sample"] == sample_bytes(3, "full") == 8 * (6 * 6 + 36 + 6)
 
 
+def test_storage_beyond_memory_or_disk_is_refused_before_any_work(tmp_path, monkeypatch):
+    """The results (and the CLVs with keep_vectors) against the memory budget, the factors on
+    disk against the scratch folder's free space: refused with the numbers at once, and no
+    folder is left behind, also when the memory maps cannot be made."""
+    import charts.analyses.covariant as covariant
+    s, th, u = state(5, 1)
+    import charts.solvers.tangent as tangent
+    monkeypatch.setattr(tangent, "memory_budget", lambda: 1 << 30)
+    with pytest.raises(ValueError, match=r"10000000 samples with their CLVs need 8\.6 GiB, more "
+                                         r"than the 1\.0 GiB.*drop keep_vectors"):
+        covariant_lyapunov_vectors(s, th, u, 1e5, sample_every=0.01, keep_vectors=True)
+
+    class Usage:
+        free = 1 << 20
+    monkeypatch.setattr(covariant.shutil, "disk_usage", lambda folder: Usage)
+    with pytest.raises(ValueError, match=rf"need 0\.0 GiB on disk in {tmp_path}, which has "
+                                         r"0\.0 GiB free"):
+        covariant_lyapunov_vectors(s, th, u, 30.0, max_memory=0, scratch=str(tmp_path))
+    monkeypatch.undo()
+    monkeypatch.setattr(np.lib.format, "open_memmap",
+                        lambda *a, **k: (_ for _ in ()).throw(OSError(22, "Invalid argument")))
+    with pytest.raises(OSError):
+        covariant_lyapunov_vectors(s, th, u, 30.0, max_memory=0, scratch=str(tmp_path))
+    assert os.listdir(tmp_path) == []
+
+
 def test_finite_time_statistics_and_domination_by_hand():
     """Window means, percentiles, the non-positive fraction and the domination fractions of a
     hand-made sequence of rates (sample_every 0.5, windows of 1.0 = 2 intervals)."""

@@ -45,7 +45,7 @@ from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
-from ..solvers.tangent import TangentFlow, orthonormalize, tangent_kernel
+from ..solvers.tangent import TangentFlow, check_memory, orthonormalize, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .finite_time import domination, finite_time_statistics
@@ -180,8 +180,34 @@ def _angle(A, B):
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
+def plan_storage(cfg, n, variant, keep_vectors, scratch) -> bool:
+    """Whether the stored factors go to disk; ValueError with the numbers, before anything is
+    allocated, when the results (and the factors kept in memory, or the CLVs with
+    ``keep_vectors``) exceed the memory budget (``charts.solvers.tangent.check_memory``), or
+    the factors on disk exceed 90 % of the free space of the scratch folder."""
+    factors = cfg.total * sample_bytes(n, variant)
+    on_disk = factors > cfg.max_memory
+    results = 8 * (cfg.total * cfg.D + cfg.S * (2 + 2 * cfg.D + 2 * n))
+    vectors = 8 * cfg.S * cfg.D * 2 * n if keep_vectors else 0
+    check_memory(results + vectors + (0 if on_disk else factors),
+                 f"covariant_lyapunov_vectors' {cfg.S} samples" + (" with their CLVs"
+                                                                     if keep_vectors else ""),
+                 "shorten t_final, raise sample_every" + (" or drop keep_vectors"
+                                                          if keep_vectors else ""))
+    if on_disk:
+        folder = scratch if scratch is not None else tempfile.gettempdir()
+        free = shutil.disk_usage(folder).free
+        if factors > 0.9 * free:
+            raise ValueError(
+                f"covariant_lyapunov_vectors' stored factors need {factors / 2**30:.1f} GiB on "
+                f"disk in {folder}, which has {free / 2**30:.1f} GiB free; shorten t_final, "
+                "raise sample_every, or give scratch= a folder with room")
+    return on_disk
+
+
 class _Store:
-    """Q (S, D, 2N), R (S, D, D) and states (S, 2N) in memory or as .npy memory maps."""
+    """Q (S, D, 2N), R (S, D, D) and states (S, 2N) in memory or as .npy memory maps (the
+    folder removed again if they cannot be made)."""
 
     def __init__(self, shape_q, shape_r, shape_y, on_disk, scratch):
         self.folder = None
@@ -191,11 +217,16 @@ class _Store:
                 f"{self.folder}/{name}.npy", mode="w+", dtype=float, shape=shp)
         else:
             mk = lambda name, shp: np.empty(shp)                   # noqa: E731
-        self.Q, self.R, self.y = mk("Q", shape_q), mk("R", shape_r), mk("y", shape_y)
+        try:
+            self.Q, self.R, self.y = mk("Q", shape_q), mk("R", shape_r), mk("y", shape_y)
+        except BaseException:
+            self.close()
+            raise
 
     def close(self):
         if self.folder is not None:
-            del self.Q, self.R, self.y
+            for name in ("Q", "R", "y"):
+                self.__dict__.pop(name, None)
             shutil.rmtree(self.folder, ignore_errors=True)
 
 
@@ -328,9 +359,9 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
                        restricted=variant == "restricted", reorth_every=cfg.n_steps + 1,
                        project_every=cfg.project, seed=cfg.seed)
     rep = progress_reporter(progress, cfg.n_steps * cfg.dt, f"CLV N={system.n} {variant}")
+    on_disk = plan_storage(cfg, system.n, variant, keep_vectors, scratch)
     store = _Store((cfg.total, cfg.D, 2 * system.n), (cfg.total, cfg.D, cfg.D),
-                   (cfg.total, 2 * system.n),
-                   cfg.total * sample_bytes(system.n, variant) > cfg.max_memory, scratch)
+                   (cfg.total, 2 * system.n), on_disk, scratch)
     try:
         gs = _forward_pass(flow, system, cfg, store, rep,
                            f"covariant_lyapunov_vectors (RK4, {variant})")
