@@ -161,6 +161,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     s1, c1, f1, g1, p1, q1 = stage_work(n)
     ku = np.uint64(k)
     sub = np.empty(L, dtype=np.int64)
+    subcap = np.empty(L)
     subZ = np.empty((L, D))
     subS = np.empty((L, 2, n))
     to_proj, to_reorth, ev = countdowns(counter[0], project_every, reorth_every, events)
@@ -186,6 +187,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
                 _stop(l, st, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
             elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
                 sub[nsub] = l
+                subcap[nsub] = hc
                 gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
                 nsub += 1
         _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv, wl, dt,
@@ -194,7 +196,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
             l = sub[t]
             zz = subZ[t]
             ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
-                          minv, wts, level, dt, nu, Ru, du, np.uint64(D))
+                          minv, wts, level, dt, subcap[t], nu, Ru, du, np.uint64(D))
             scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
             if not ok:
                 _stop(l, SINGULAR, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)

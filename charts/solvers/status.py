@@ -11,9 +11,10 @@ controls its own error, so its cap only serves that safety.  RK4 has no error co
 near a singular point the path turns by ~|u|h/√S per step; its local error ∝ (fraction)⁵
 per step, and 0.03 keeps a close pass (S ≈ 1e-6) at an energy error ≈ 1e-8 (0.1 gave 3e-6).
 For dt = 0.01 at unit speed it only binds where S < 0.1.  A fixed-step route (the tangent
-kernel, the lanes) keeps its grid: a capped step is cut into sub-steps, each within the cap
-at its own start point (`substep_length`), so the approach is geometric on every route and
-a trajectory aimed at a singular point stops there instead of stepping over it.  The test
+kernel, the lanes) keeps its grid: a capped step is cut into equal sub-steps planned from the
+cap at its start, and where the point comes closer than that plan allows, into sub-steps
+each within the cap at its own start (`next_substep`), so a trajectory aimed at a singular
+point approaches it geometrically on every route and stops there instead of stepping over it.  The test
 S = Σ (aᵢ sin θᵢ)² < `SINGULAR_S` holds for every family member: the gradient of
 Σ aᵢ cos θᵢ vanishes exactly where every sin θᵢ does, and such a point lies on the level set
 only at a critical level c = Σ ±aᵢ (the paper's N = 4 at c = 0, N = 3 at c = ±1, …).
@@ -31,7 +32,7 @@ from math import ceil, isfinite, sqrt
 
 from numba import njit
 
-__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "substep_count", "substep_length", "singular_floor", "NECK_FACTOR", "RUNNING",
+__all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "substep_count", "substep_length", "next_substep", "singular_floor", "NECK_FACTOR", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",
            "STATUS_MESSAGES", "IntegrationError", "SingularPointError", "ChartDomainError",
            "status_error", "StepSizeWarning", "check_step", "check_duration", "MAX_STEP_LENGTH",
@@ -105,18 +106,34 @@ def singular_floor(c, wts, n, level):
 
 @njit(cache=True, inline="always")
 def substep_count(dt, hc):
-    """An upper bound of the sub-steps of a fixed step ``dt`` capped at ``hc`` by
-    `fixed_step_status` where the cap did not shrink (1: the step itself)."""
+    """The equal sub-steps planned for a fixed step ``dt`` capped at ``hc`` by
+    `fixed_step_status` (1: the step itself; `next_substep` departs from the plan where the
+    point comes closer)."""
     return 1 if hc >= dt else int(ceil(dt / hc))
 
 
 @njit(cache=True)
 def substep_length(left, S, U, fraction):
     """The next sub-step of a capped fixed step with ``left`` (> 0) of it still to take,
-    from a point with Σ sin²θ = S and speed² U: its own cap, or what is left.  The caller
-    tests S < `singular_floor` (stop) before each sub-step."""
+    from a point with Σ sin²θ = S and speed² U: its own cap, or what is left."""
     hc = step_cap(S, U, fraction)
     return left if hc >= left else hc
+
+
+@njit(cache=True)
+def next_substep(left, S, U, planned, adaptive, fraction):
+    """(length, adaptive) of the next sub-step of a capped fixed step: the planned equal
+    sub-step (`substep_count` of them) until the point comes closer than the plan allows (its
+    own cap below half the planned length: a trajectory heading into a singular point), from
+    then on each within its own cap (`substep_length`).  A close pass keeps its equal
+    sub-steps (and so its bits, and the backward pass retraces them); a trajectory aimed at a
+    singular point approaches it geometrically instead of stepping over it.  The caller tests
+    S < `singular_floor` (stop) before each sub-step."""
+    if not adaptive and step_cap(S, U, fraction) < 0.5 * planned:
+        adaptive = True
+    if adaptive:
+        return substep_length(left, S, U, fraction), True
+    return planned, False
 
 
 #: Most steps one duration may hold (2⁴⁰ ≈ 1.1·10¹²: days of CPU time at the kernel's rate);

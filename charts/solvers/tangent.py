@@ -32,7 +32,8 @@ from ..geometry.projection import project_state_into, project_tangent, project_t
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
-                     fixed_step_status, singular_floor, substep_length, sum_squares)
+                     fixed_step_status, next_substep, singular_floor, substep_count,
+                     sum_squares)
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
@@ -180,19 +181,27 @@ def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
 
 
 @njit(cache=True)
-def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, n, R, d, L):
-    """The step dt (> 0, capped at its start) of one lane of the lane kernel
-    (``charts.solvers.lanes``, in the one-trajectory layout) in `_rk4_step` sub-steps, each
-    within the cap at its own start point (`substep_length`), as `tangent_kernel` takes them;
-    False if a sub-step starts at a singular point (`singular_floor`)."""
+def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc, n, R, d, L):
+    """The step dt (> 0, capped at hc < dt at its start) of one lane of the lane kernel
+    (``charts.solvers.lanes``, in the one-trajectory layout) in `_rk4_step` sub-steps as
+    `tangent_kernel` takes them (`next_substep`); False if a sub-step starts at a singular
+    point (`singular_floor`)."""
+    planned = substep_count(dt, hc)
+    h = dt / planned
     left = dt
-    while left > 0.0:
+    adaptive = False
+    for sub in range(MAX_SUBSTEPS):
         S = sum_squares(s0, 0, n)
         if S < singular_floor(c0, wts, n, level):
             return False
-        h = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
-        left -= h
+        hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), dt / planned, adaptive,
+                                    _CAP)
+        if adaptive:
+            h = hs
         _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L)
+        left -= h
+        if left <= 0.0 if adaptive else sub + 1 == planned:
+            break
     return True
 
 
@@ -239,7 +248,7 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     sorted array of global steps), store ``logsum`` in ``event_logs[e]``.
 
     Steps follow the policy of ``charts.solvers.status`` (for |dt|): a step longer than the
-    cap near a singular point is cut into sub-steps, each within the cap at its own start.
+    cap near a singular point is cut into sub-steps (`next_substep`).
     Returns (status, steps done): RUNNING, or SINGULAR / NONFINITE with Z at the start of the
     failing step (SINGULAR inside a cut step: Z where its sub-steps reached the singular
     point).
@@ -280,7 +289,8 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
         code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), adt, _CAP)
         if code != RUNNING:
             return code, it
-        # near a singular point: sub-steps, each within the cap at its own start point and
+        # near a singular point: sub-steps (`next_substep`: equal ones as planned from the cap
+        # at the step's start, each within its own cap once the point comes closer), each
         # from a point that passes the singular-point test (`singular_floor`: the policy,
         # charts.solvers.status); else one step.  One inlined step in a loop: no second copy
         # of it to compile (a separately compiled sub-step function cost every first call
@@ -289,18 +299,26 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
         # 2× slower, docs/performance.md)
         nsub = 1 if hc >= adt else MAX_SUBSTEPS
         h = dt
+        planned = 0
+        hp = adt
         left = adt
+        adaptive = False
+        if nsub > 1:
+            planned = substep_count(adt, hc)
+            h = dt / planned
+            hp = abs(h)
         for sub in range(nsub):
             if nsub > 1:
                 S = sum_squares(s0, 0, n)
                 if S < singular_floor(c0, wts, n, level):
                     return SINGULAR, it
-                hs = substep_length(left, S, sum_squares(Zf, n, n), _CAP)
-                h = hs if dt > 0.0 else -hs
+                hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
+                if adaptive:
+                    h = hs if dt > 0.0 else -hs
             stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du,
                              Lu, vectors_rate)
             left -= abs(h)
-            if nsub > 1 and left <= 0.0:
+            if nsub > 1 and (left <= 0.0 if adaptive else sub + 1 == planned):
                 break
         counter[0] += 1
         to_proj -= 1
