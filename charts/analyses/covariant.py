@@ -236,12 +236,18 @@ class CovariantResult(Archivable):
     (index 0 the largest exponent).
 
     t : (S,) sample times.   phi : (S,) angle (rad) between E_u and E_cs (section 4).
+
     phi_vectors : (S,) angle (rad, in [0, π/2]) between the leading unstable CLV (index 0)
         and the leading stable one (index D − (N−2), the first negative exponent).
+
     growth : (S, D) growth rates along the CLVs over [t_j, t_j + sample_every] (1/time).
+
     gs_rates : (S, D) the same for the Gram–Schmidt vectors, log R_ii / sample_every.
+
     exponents, gs_exponents : (D,) their means over the window (the Lyapunov spectrum).
+
     states : (S, 2N) the trajectory (θ, u) at the samples.
+
     vectors : (S, D, 2N) or None  the CLVs (unit, Euclidean), if ``keep_vectors``.
     """
     t: np.ndarray

@@ -26,8 +26,10 @@ class EnsembleResult(Archivable):
     """Results of one analysis on independent trajectories (seeds seed, seed+1, …).
 
     members : list of the analysis' results, in seed order.
+
     exponents, stderr : (k,) for Lyapunov members: mean over the members and its two-sided
         standard error (their spread); None for other analyses.
+
     error_ratio : (k,) for Lyapunov members: the members' own batch-mean errors (root mean
         square) over the spread of their exponents (standard deviation) — about 1 when the
         error bars of single runs are honest, below 1 when they understate the spread between

@@ -145,8 +145,10 @@ class LyapunovResult(Archivable):
 
     exponents : (k,)  the computed exponents, largest first (1/time).
     stderr : (k,)  two-sided standard errors (batch means).
+
     spectrum : (2N−2,) or None  the relevant spectrum: reconstructed from the leading N−2
         (pairs ±λ and two zeros) if only those were computed, else the computed values.
+
     history_t : (n_rec,)  times (after the transient) of the convergence history.
     history : (n_rec, k)  running estimates of the exponents at ``history_t``.
     batches : (n_batches, k)  per-block estimates behind ``stderr``.

@@ -1,0 +1,66 @@
+"""Sphinx configuration of the API reference: every public name of ``charts`` (``charts.__all__``),
+documented from its docstring by autodoc (NumPy-style sections read by napoleon).
+
+    python -m sphinx -W -b html docs/reference docs/reference/_build     # warnings fail
+
+The page ``api.rst`` is written here at each build from ``charts._HOMES`` (the names grouped by
+the module they live in), so a new public name appears without an edit; tests/test_api_docs.py
+builds it with warnings as errors.
+"""
+from __future__ import annotations
+
+import inspect
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parents[1]))          # the checkout's charts, also uninstalled
+
+import charts  # noqa: E402
+
+project = "charts"
+author = "the charts developers"
+release = charts.__version__
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon"]
+napoleon_google_docstring = False
+napoleon_numpy_docstring = True
+autodoc_member_order = "bysource"
+autodoc_typehints = "none"
+exclude_patterns = ["_build"]
+html_theme = "alabaster"
+suppress_warnings = ["ref.python"]  # bare type words in prose ("ndarray") are not links
+
+
+def api_page() -> str:
+    """The reST of every public name, grouped by its home module."""
+    groups: dict[str, list[str]] = {}
+    for name, home in charts._HOMES.items():
+        groups.setdefault(f"charts{home}", []).append(name)
+    lines = ["API reference", "=============", "",
+             "Every name below is importable as ``charts.NAME``; each section is the module it",
+             "lives in.  The narrative is in the other pages of docs/; the equations cited are",
+             "the paper's.", ""]
+    for module, names in groups.items():
+        lines += [f"``{module}``", "-" * (len(module) + 4), ""]
+        for name in names:
+            obj = getattr(charts, name)
+            if inspect.isclass(obj):
+                lines += [f".. autoclass:: charts.{name}", "   :members:", ""]
+            elif callable(obj):
+                lines += [f".. autofunction:: charts.{name}", ""]
+            else:
+                lines += [f".. autodata:: charts.{name}", "   :annotation:", ""]
+    return "\n".join(lines) + "\n"
+
+
+def literal_bars(app, what, name, obj, options, lines) -> None:
+    """|x| in the docstrings is an absolute value or a norm, not a reST substitution."""
+    for i, line in enumerate(lines):
+        lines[i] = line.replace("|", "\\|")
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", literal_bars, priority=400)
+
+
+(HERE / "api.rst").write_text(api_page(), encoding="utf-8")
