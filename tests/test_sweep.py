@@ -11,6 +11,7 @@ import time
 
 import pytest
 
+from charts.runs.sweep.execute import POINTS
 from charts.runs.sweep import (LOG, SUMMARY, TABLE, SweepError, load_sweep, parse_sweep,
                           point_columns, read_table, run_sweep, sweep_points)
 
@@ -164,6 +165,7 @@ def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
     log = [json.loads(x) for x in (out / LOG).read_text().splitlines()]
     resumed = [x["point_id"] for x in log if x["run_id"] == res["run_id"]]
     assert sorted(resumed) == sorted(res["computed"])
+    assert not (out / POINTS).exists() and not (tmp_path / "ref" / POINTS).exists()
     # 4. a finished sweep resumed again computes nothing
     again = run_sweep(sweep, out, resume=True, quiet=True, plots=False)
     assert again["computed"] == [] and again["skipped"] == len(ids)
@@ -184,6 +186,35 @@ def test_a_point_with_non_finite_results_is_failed(monkeypatch):
     raw = sweep_points(_sweep())[0].raw
     out = evaluate_point(raw)
     assert out["status"] == "failed" and "lambda_1" in out["error"] and "project" in out["error"]
+
+
+def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypatch):
+    """A point computed alone runs in the sweep's points/<id>: a sweep stopped in the middle
+    of it leaves its checkpoints there, and the resumed sweep's worker continues the run
+    (resume=True) to the same row as a point computed in one go."""
+    from charts.runs import runner
+    from charts.runs.sweep.worker import evaluate_point
+    point = sweep_points(_sweep())[0]
+    keep = tmp_path / POINTS / point.point_id
+
+    def stop(idx, total):
+        if idx == 2:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        runner.run_scene(point.scene, keep, quiet=True, on_chunk=stop)
+    calls, real = [], runner.run_scene
+    monkeypatch.setattr(runner, "run_scene",
+                        lambda *a, **k: calls.append(k.get("resume", False)) or real(*a, **k))
+    resumed = evaluate_point(point.raw, str(keep))
+    assert calls == [True] and resumed["status"] == "complete"
+    fresh = evaluate_point(point.raw)
+    assert calls == [True, False]
+    assert resumed["stats"] == fresh["stats"] and resumed["t_final"] == fresh["t_final"]
+    # a checkpoint of another scene there is not resumed: the point starts over
+    other = sweep_points(_sweep(parameters={"m": [3.0]}))[0]
+    resumed_other = evaluate_point(other.raw, str(keep))
+    assert calls[2:] == [True, False] and resumed_other["status"] == "complete"
 
 
 def test_a_half_written_last_row_is_dropped_on_resume(tmp_path):

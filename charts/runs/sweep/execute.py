@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import logging
 import os
+import shutil
 import signal
 import threading
 import time
@@ -25,9 +26,12 @@ from ..seed_lanes import seed_family
 from .worker import evaluate_points
 
 __all__ = ["run_sweep", "dask_client", "same_scene_groups", "lane_blocks",
-           "check_scheduler_address", "META", "SCHEDULER_TIMEOUT_S"]
+           "check_scheduler_address", "META", "POINTS", "SCHEDULER_TIMEOUT_S"]
 
 META = "sweep.json"
+#: Folder of the points in progress (one per point computed alone: its run's checkpoints),
+#: each removed once its row is written, the folder once the table is complete.
+POINTS = "points"
 #: How long a client waits for an existing scheduler before the sweep fails.
 SCHEDULER_TIMEOUT_S = 10
 
@@ -100,7 +104,8 @@ def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
         _compute(sweep, todo, len(points), len(done), columns, outdir, info, scheduler,
                  workers, quiet, on_point)
     table = finish_table(outdir / TABLE, len(points))
-    if table is not None:
+    if table is not None:           # every row written: no point in progress is left
+        shutil.rmtree(outdir / POINTS, ignore_errors=True)
         summary = summarize(*table, points)
         write_summary(outdir / SUMMARY, summary)
         info["summary"] = str(outdir / SUMMARY)
@@ -187,7 +192,11 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
                       f"compute) on {where}")
         # identical scenes are computed once; the seeds of a point together, in lanes
         for block in lane_blocks(groups, max(nw, 1)):
-            fut = client.submit(evaluate_points, [group[0].raw for group in block],
+            # a point computed alone keeps its checkpoints in points/<id> until its row is
+            # written, so that a resumed sweep continues a long point where it stopped
+            keep = [str(outdir / POINTS / g[0].point_id) for g in block] if len(block) == 1 \
+                else None
+            fut = client.submit(evaluate_points, [group[0].raw for group in block], keep,
                                 key=f"charts-sweep-{block[0][0].point_id}", pure=False)
             futures[fut] = block
         for fut in as_completed(list(futures)):
@@ -201,6 +210,7 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
                 continue
             for group, out in zip(block, outs):
                 _add_rows(group, out, columns, app, info, bar, on_point, n_done, total)
+                shutil.rmtree(outdir / POINTS / group[0].point_id, ignore_errors=True)
             lead = outs[-1]["stats"].get("lambda_1")
             bar.set_postfix_str(f"#{block[-1][0].index}"
                                 + (f" λ1={lead:.3f}" if lead is not None else ""))

@@ -22,28 +22,63 @@ from .statistics import result_statistics
 __all__ = ["evaluate_point", "evaluate_points"]
 
 
-def evaluate_point(raw: dict) -> dict:
-    """Run one point (on a Dask worker): the scene in a temporary folder, quietly.
-    Returns {'status', 'error', 'stats', 'wall_s', 'worker', 't_final'}; never raises for
-    a point that fails to integrate (status 'failed' with the message)."""
+def evaluate_point(raw: dict, keep=None) -> dict:
+    """Run one point (on a Dask worker) quietly, in the folder ``keep`` if given and
+    writable (the sweep's ``points/<point id>``: its checkpoints survive an interrupted sweep,
+    and a point found there half done is resumed, with the same numbers), else in a
+    temporary folder.  Returns {'status', 'error', 'stats', 'wall_s', 'worker', 't_final'};
+    never raises for a point that fails to integrate (status 'failed' with the message)."""
     scene = parse_scene(raw, source=raw.get("name", "<point>"))
     t0 = time.perf_counter()
-    with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
-        try:
-            outcome = runner.run_scene(scene, td, quiet=True)
-        except runner.RunError as exc:
-            outcome = exc
-        return _point_outcome(outcome, Path(td), time.perf_counter() - t0)
+    folder = _kept_folder(keep)
+    if folder is None:
+        with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
+            return _point_outcome(_run(scene, td, False), Path(td), time.perf_counter() - t0)
+    resume = (folder / runner.CHECKPOINT).exists()
+    return _point_outcome(_run(scene, folder, resume), folder, time.perf_counter() - t0)
 
 
-def evaluate_points(raws: list) -> list:
-    """`evaluate_point` of each of ``raws``; points of one seed family
+def _kept_folder(keep):
+    """``keep`` as a created folder, or None (not given, or not writable on this worker)."""
+    if keep is None:
+        return None
+    try:
+        folder = Path(keep)
+        folder.mkdir(parents=True, exist_ok=True)
+        return folder
+    except OSError:
+        return None
+
+
+def _run(scene, folder, resume):
+    """`runner.run_scene` into ``folder``: resumed from its checkpoint if ``resume`` (started
+    over when that checkpoint belongs to another scene or cannot be read); the result dict,
+    or the `RunError` of a run that failed."""
+    try:
+        if resume:
+            try:
+                return runner.run_scene(scene, folder, quiet=True, resume=True)
+            except runner.RunError as exc:
+                if "--resume" not in str(exc):
+                    raise
+            except (OSError, ValueError, KeyError):          # a torn checkpoint
+                pass
+            return runner.run_scene(scene, folder, quiet=True, force=True)
+        return runner.run_scene(scene, folder, quiet=True)
+    except runner.RunError as exc:
+        return exc
+
+
+def evaluate_points(raws: list, keep=None) -> list:
+    """`evaluate_point` of each of ``raws`` (in the folders ``keep``, one per point, if
+    given); points of one seed family
     (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
     one kernel (the same rows, bit for bit; each point's wall time is the block's share)."""
     scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
     families = {seed_family(sc) for sc in scenes}
     if len(scenes) < MIN_LANES or None in families or len(families) != 1:
-        return [evaluate_point(raw) for raw in raws]
+        keep = keep if keep is not None else [None] * len(raws)
+        return [evaluate_point(raw, k) for raw, k in zip(raws, keep)]
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
         dirs = [Path(td) / f"point-{i}" for i in range(len(scenes))]
