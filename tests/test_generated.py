@@ -5,7 +5,6 @@ written independently in tests/scenarios.py; a live ``sympy.lambdify`` of the de
 *every* chart (which also proves that the canonical-chart module with relabelled inputs is
 each chart's geometry); the textbook ∂Γ definition of Riemann; Riemann's algebraic identities.
 """
-import importlib.util
 import shutil
 from pathlib import Path
 
