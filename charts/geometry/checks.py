@@ -12,10 +12,11 @@ import math
 
 import numpy as np
 
-__all__ = ["number", "integer", "finite_array", "option"]
+__all__ = ["number", "integer", "finite_array", "option", "shown"]
 
 
-def _show(x) -> str:
+def shown(x) -> str:
+    """``repr(x)`` for a message, at most 80 characters (a million masses are not echoed)."""
     text = repr(x.tolist() if isinstance(x, np.ndarray) else x)
     return text if len(text) <= 80 else text[:77] + "..."
 
@@ -24,7 +25,7 @@ def number(name, x) -> float:
     """``x`` as a finite float; ValueError naming ``name`` otherwise (bool, strings and
     complex numbers are not numbers; an integer beyond a float's range is refused)."""
     if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise ValueError(f"{name} must be a real number, got {_show(x)}")
+        raise ValueError(f"{name} must be a real number, got {shown(x)}")
     try:
         x = float(x)
     except OverflowError:
@@ -56,7 +57,7 @@ def integer(name, x, minimum=None, maximum=None) -> int:
     if isinstance(x, bool) or not isinstance(x, (int, np.integer)):
         allowed = ("an integer" if minimum is None else f"an integer >= {minimum}"
                    if maximum is None else f"an integer in {minimum}..{maximum}")
-        raise ValueError(f"{name} must be {allowed}, got {_show(x)}")
+        raise ValueError(f"{name} must be {allowed}, got {shown(x)}")
     x = int(x)
     if (minimum is not None and x < minimum) or (maximum is not None and x > maximum):
         allowed = (f"an integer >= {minimum}" if maximum is None
@@ -76,7 +77,7 @@ def finite_array(name, x, shape=None, ndim=None) -> np.ndarray:
     except OverflowError:
         raise ValueError(f"{name} has an integer beyond a float's range") from None
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of real numbers, got {_show(x)}") from None
+        raise ValueError(f"{name} must be an array of real numbers, got {shown(x)}") from None
     if ndim is not None and a.ndim != ndim:
         raise ValueError(f"{name} must be a {ndim}-D array, got shape {a.shape}")
     if shape is not None and (a.ndim != len(shape) or any(
@@ -85,7 +86,7 @@ def finite_array(name, x, shape=None, ndim=None) -> np.ndarray:
             ("," if len(shape) == 1 else "") + ")"
         raise ValueError(f"{name} must have shape {want}, got {a.shape}")
     if not np.all(np.isfinite(a)):
-        raise ValueError(f"{name} has non-finite entries: {_show(a)}")
+        raise ValueError(f"{name} has non-finite entries: {shown(a)}")
     return a
 
 
@@ -99,4 +100,4 @@ def option(name, x, allowed):
                 return x
         elif isinstance(x, type(a)) and x == a:
             return x
-    raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {_show(x)}")
+    raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {shown(x)}")

@@ -27,6 +27,7 @@ from pathlib import Path
 from ..analyses.arguments import Documented, steps_of
 from ..solvers.status import check_step
 from .input_files import read_toml
+from ..geometry.checks import shown
 from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
                            where)
 from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
@@ -87,7 +88,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     effects = {}
     if not isinstance(raw_eff, dict):
         problems.messages.append(f"{source}: [effects] must be a table of effect tables, "
-                                 f"got {raw_eff!r}")
+                                 f"got {shown(raw_eff)}")
         raw_eff = {}
     for ename, eraw in raw_eff.items():
         if ename not in EFFECTS:
@@ -98,7 +99,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         if eraw is True:
             eraw = {}
         if not isinstance(eraw, dict):
-            problems.messages.append(f"{source}: [effects] {ename} = {eraw!r} is not allowed: "
+            problems.messages.append(f"{source}: [effects] {ename} = {shown(eraw)} is not allowed: "
                                      f"expected true, false or a table [effects.{ename}]")
             continue
         effects[ename] = section_values(source, {ename: eraw}, ename, EFFECTS[ename], problems,
@@ -118,7 +119,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     if method == "rk4":
         for key in ("rtol", "atol"):
             if key in raw_int:
-                raise SceneError(f"{where(source, 'integrator', key)} = {raw_int[key]!r} is not "
+                raise SceneError(f"{where(source, 'integrator', key)} = {shown(raw_int[key])} is not "
                                  "allowed with method = 'rk4' (fixed step: set dt, or use "
                                  "method = 'dop853')")
         integ["dt"] = integ["dt"] if integ["dt"] is not None else api_default("lyapunov", "dt")
@@ -129,7 +130,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
             raise SceneError(f"{where(source, 'integrator', 'dt')}: {exc}") from None
     else:
         if "dt" in raw_int:
-            raise SceneError(f"{where(source, 'integrator', 'dt')} = {raw_int['dt']!r} is not "
+            raise SceneError(f"{where(source, 'integrator', 'dt')} = {shown(raw_int['dt'])} is not "
                              "allowed with method = 'dop853' (adaptive: set rtol/atol, or use "
                              "method = 'rk4')")
         integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
@@ -213,12 +214,12 @@ def _check_rotors(source, system, raw_sys, initial, raw_init):
     for key in ("kind",) + LINKAGE_KEYS:    # no trace of the linkage's keys: ids unchanged
         del system[key]
     if system["masses"] is not None and len(system["masses"]) != n:
-        raise SceneError(f"{where(source, 'system', 'masses')} = {system['masses']!r} is not "
+        raise SceneError(f"{where(source, 'system', 'masses')} = {shown(system['masses'])} is not "
                          f"allowed: expected a list of n = {n} positive numbers")
     masses = system["masses"] if system["masses"] is not None else [1.0] * n
     system["masses"] = masses
     if system["weights"] is not None and len(system["weights"]) != n:
-        raise SceneError(f"{where(source, 'system', 'weights')} = {system['weights']!r} is not "
+        raise SceneError(f"{where(source, 'system', 'weights')} = {shown(system['weights'])} is not "
                          f"allowed: expected a list of n = {n} positive numbers")
     _check_family(source, system)
     # the paper's constraint leaves no trace: scenes (and sweep point ids) stay as they were
@@ -231,7 +232,7 @@ def _check_rotors(source, system, raw_sys, initial, raw_init):
     explicit = ("theta" in raw_init) or ("u" in raw_init)
     if explicit:
         if "seed" in raw_init:
-            raise SceneError(f"{where(source, 'initial', 'seed')} = {raw_init['seed']!r} is not "
+            raise SceneError(f"{where(source, 'initial', 'seed')} = {shown(raw_init['seed'])} is not "
                              "allowed together with an explicit theta/u: give one or the other")
         for key in ("theta", "u"):
             if key not in raw_init:
@@ -239,17 +240,17 @@ def _check_rotors(source, system, raw_sys, initial, raw_init):
                 raise SceneError(f"{where(source, 'initial', key)} is required when "
                                  f"[initial] {other} is given (an explicit state needs both)")
             if len(initial[key]) != n:
-                raise SceneError(f"{where(source, 'initial', key)} = {initial[key]!r} is not "
+                raise SceneError(f"{where(source, 'initial', key)} = {shown(initial[key])} is not "
                                  f"allowed: expected a list of n = {n} numbers")
         if "speed" in raw_sys:
-            raise SceneError(f"{where(source, 'system', 'speed')} = {raw_sys['speed']!r} is not "
+            raise SceneError(f"{where(source, 'system', 'speed')} = {shown(raw_sys['speed'])} is not "
                              "allowed with an explicit [initial] u (the speed is that of u)")
         _check_state(source, n, masses, initial["theta"], initial["u"], system.get("weights"),
                      system.get("level", 0.0))
         initial["seed"] = None
         system["speed"] = float(math.sqrt(sum(m * x * x for m, x in zip(masses, initial["u"]))))
         if not system["speed"] > 0:
-            raise SceneError(f"{where(source, 'initial', 'u')} = {initial['u']!r} is not "
+            raise SceneError(f"{where(source, 'initial', 'u')} = {shown(initial['u'])} is not "
                              "allowed: the velocity must be nonzero (a geodesic needs a speed)")
 
 
@@ -265,7 +266,7 @@ def _check_family(source, system):
             RotorSystem(system["n"], system["masses"], system["weights"], system["level"])
         except ValueError as exc:
             key = "weights" if str(exc).startswith("weights") else "level"
-            raise SceneError(f"{where(source, 'system', key)} = {system[key]!r} is not "
+            raise SceneError(f"{where(source, 'system', key)} = {shown(system[key])} is not "
                              f"allowed: {exc}") from None
 
 
@@ -282,12 +283,12 @@ def _check_state(source, n, masses, theta, u, weights=None, level=0.0):
     try:
         sys_.check_point(np.array(theta))
     except ValueError as exc:
-        raise SceneError(f"{where(source, 'initial', 'theta')} = {theta!r} is not allowed: "
+        raise SceneError(f"{where(source, 'initial', 'theta')} = {shown(theta)} is not allowed: "
                          f"{exc}") from None
     try:
         sys_.check_tangent(np.array(theta), np.array(u))
     except ValueError as exc:
-        raise SceneError(f"{where(source, 'initial', 'u')} = {u!r} is not allowed: "
+        raise SceneError(f"{where(source, 'initial', 'u')} = {shown(u)} is not allowed: "
                          f"{exc}") from None
 
 
@@ -297,18 +298,18 @@ def _check_effects(source, n, integ, run, effects):
     if tangent and (integ["formulation"] != "ambient" or integ["method"] != "rk4"):
         raise SceneError(
             f"{source}: [effects] {', '.join(tangent)} is not allowed with formulation = "
-            f"{integ['formulation']!r}, method = {integ['method']!r}: tangent vectors follow the "
+            f"{shown(integ['formulation'])}, method = {shown(integ['method'])}: tangent vectors follow the "
             "variational equations (17) with fixed-step RK4 and re-orthonormalisation (18); "
             "set [integrator] formulation = 'ambient', method = 'rk4'")
     if "switches" in effects and integ["formulation"] != "chart":
         raise SceneError(f"{source}: [effects] switches is not allowed with formulation = "
-                         f"{integ['formulation']!r}: only the chart formulation switches charts; "
+                         f"{shown(integ['formulation'])}: only the chart formulation switches charts; "
                          "set [integrator] formulation = 'chart'")
     if "waveforms" in effects:
         w = effects["waveforms"]
         rotors = w["rotors"] if w["rotors"] is not None else list(range(n))
         if not rotors or any(not 0 <= r < n for r in rotors) or len(set(rotors)) != len(rotors):
-            raise SceneError(f"{where(source, sect('waveforms'), 'rotors')} = {rotors!r} is not "
+            raise SceneError(f"{where(source, sect('waveforms'), 'rotors')} = {shown(rotors)} is not "
                              f"allowed: expected distinct rotor indices in 0..{n - 1}")
         w["rotors"] = list(rotors)
         w["t_window"] = min(w["t_window"], run["t_final"])
@@ -317,11 +318,11 @@ def _check_effects(source, n, integ, run, effects):
     if "spectrum" in effects:
         s = effects["spectrum"]
         if not 0 <= s["rotor"] < n:
-            raise SceneError(f"{where(source, sect('spectrum'), 'rotor')} = {s['rotor']!r} is not "
+            raise SceneError(f"{where(source, sect('spectrum'), 'rotor')} = {shown(s['rotor'])} is not "
                              f"allowed: expected a rotor index in 0..{n - 1}")
         n_samples = round(run["t_final"] / run["sample_dt"])
         if s["nperseg"] > n_samples:
-            raise SceneError(f"{where(source, sect('spectrum'), 'nperseg')} = {s['nperseg']!r} is "
+            raise SceneError(f"{where(source, sect('spectrum'), 'nperseg')} = {shown(s['nperseg'])} is "
                              f"not allowed: expected at most the number of samples, {n_samples} "
                              "(lengthen [run] t_final or shorten the segments)")
     if integ["formulation"] == "ambient" and integ["method"] == "rk4" and integ["project_every"]:
@@ -341,15 +342,15 @@ def _check_effects(source, n, integ, run, effects):
         if ly["n_exponents"] > kmax:
             more = " (use inner_product = 'full' for up to 2N−2)" if kmax == n - 1 else ""
             raise SceneError(f"{where(source, sect('lyapunov'), 'n_exponents')} = "
-                             f"{ly['n_exponents']!r} is not allowed with inner_product = "
-                             f"{ly['inner_product']!r}: expected 1..{kmax}{more}")
+                             f"{shown(ly['n_exponents'])} is not allowed with inner_product = "
+                             f"{shown(ly['inner_product'])}: expected 1..{kmax}{more}")
     if "curvature" in effects:
         c = effects["curvature"]
         if c["n_directions"] is None:
             c["n_directions"] = n - 2
         if c["n_directions"] > n - 2:
             raise SceneError(f"{where(source, sect('curvature'), 'n_directions')} = "
-                             f"{c['n_directions']!r} is not allowed: expected 1..{n - 2} (N−2 "
+                             f"{shown(c['n_directions'])} is not allowed: expected 1..{n - 2} (N−2 "
                              "directions orthogonal to the velocity in the N−1-dim. manifold)")
         multiple_of(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
                   "[integrator] dt")
@@ -360,7 +361,7 @@ def _check_effects(source, n, integ, run, effects):
         if a["n_vectors"] is None:
             a["n_vectors"] = n - 2
         if a["n_vectors"] > n - 2:
-            raise SceneError(f"{where(source, sect(name), 'n_vectors')} = {a['n_vectors']!r} "
+            raise SceneError(f"{where(source, sect(name), 'n_vectors')} = {shown(a['n_vectors'])} "
                              f"is not allowed: expected 1..{n - 2} (at most the number of "
                              "positive exponents)")
         multiple_of(source, sect(name), "sample_every", a["sample_every"], integ["dt"],

@@ -8,6 +8,7 @@ import difflib
 import math
 from contextlib import contextmanager
 
+from ..geometry.checks import shown
 from .scene_schema import GRID_RTOL, Key, SceneError
 
 __all__ = ["Problems", "where", "unknown_key", "is_number", "is_finite_number", "coerce", "section_values",
@@ -23,9 +24,9 @@ def unknown_key(source, section, key, allowed, error=SceneError):
     """The error (`SceneError` unless ``error`` says otherwise) for an unknown key, with the
     closest allowed key as a hint."""
     hint = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
-    did = f" — did you mean {hint[0]!r}?" if hint else ""
+    did = f" — did you mean {shown(hint[0])}?" if hint else ""
     sect = f"[{section}]" if section else "the top level"
-    return error(f"{source}: unknown key {key!r} in {sect}{did} "
+    return error(f"{source}: unknown key {shown(key)} in {sect}{did} "
                       f"(allowed: {', '.join(sorted(allowed)) or 'none'})")
 
 
@@ -34,7 +35,15 @@ def is_number(v):
 
 
 def is_finite_number(v):
-    return is_number(v) and math.isfinite(v)
+    return is_number(v) and _finite(v)
+
+
+def _finite(v) -> bool:
+    """v finite as a float (an integer beyond a float's range is not)."""
+    try:
+        return math.isfinite(v)
+    except OverflowError:
+        return False
 
 
 def coerce(source, section, key, spec: Key, value):
@@ -48,8 +57,8 @@ def coerce(source, section, key, spec: Key, value):
     elif kind == "float":
         if not is_number(value):
             bad = "a number"
-        elif not math.isfinite(value):
-            bad = "a finite number"
+        elif not _finite(value):
+            bad = "a finite number (an integer beyond a float's range is not)"
         else:
             value = float(value)
     elif kind == "str":
@@ -61,7 +70,7 @@ def coerce(source, section, key, spec: Key, value):
     elif kind == "floats":
         if not isinstance(value, list) or not all(is_number(x) for x in value):
             bad = "a list of numbers"
-        elif not all(math.isfinite(x) for x in value):
+        elif not all(_finite(x) for x in value):
             bad = "a list of finite numbers (no nan or inf)"
         else:
             value = [float(x) for x in value]
@@ -71,13 +80,13 @@ def coerce(source, section, key, spec: Key, value):
             bad = "a list of integers"
     if bad is None and spec.choices and value not in spec.choices:
         hint = difflib.get_close_matches(str(value), spec.choices, n=1, cutoff=0.6)
-        did = f" — did you mean {hint[0]!r}?" if hint else ""
-        raise SceneError(f"{loc} = {value!r} is not allowed{did} "
+        did = f" — did you mean {shown(hint[0])}?" if hint else ""
+        raise SceneError(f"{loc} = {shown(value)} is not allowed{did} "
                          f"(allowed: {', '.join(repr(c) for c in spec.choices)})")
     if bad is None and spec.check is not None:
         bad = spec.check(value)
     if bad is not None:
-        raise SceneError(f"{loc} = {value!r} is not allowed: expected {bad}")
+        raise SceneError(f"{loc} = {shown(value)} is not allowed: expected {bad}")
     return value
 
 
@@ -111,7 +120,7 @@ def section_values(source, data, section, schema, problems, label=None):
     raw = data.get(section, {})
     section = label or section
     if not isinstance(raw, dict):
-        problems.messages.append(f"{source}: [{section}] must be a table, got {raw!r}")
+        problems.messages.append(f"{source}: [{section}] must be a table, got {shown(raw)}")
         raw = {}
     return table_values(source, raw, section, schema, problems), raw
 
@@ -141,6 +150,6 @@ def multiple_of(source, section, key, value, base, base_name):
     r = round(k)
     if r < 1 or abs(k - r) > GRID_RTOL * max(1.0, k):
         near = max(1, r) * base
-        raise SceneError(f"{where(source, section, key)} = {value!r} is not allowed: expected "
-                         f"a positive multiple of {base_name} = {base!r} (nearest: {near:.10g})")
+        raise SceneError(f"{where(source, section, key)} = {shown(value)} is not allowed: expected "
+                         f"a positive multiple of {base_name} = {shown(base)} (nearest: {near:.10g})")
     return int(r)

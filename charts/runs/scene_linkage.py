@@ -16,6 +16,7 @@ The state is y = (q, v) with q = (θ₀…θ₃, x, y, α): the rotors' velociti
 """
 from __future__ import annotations
 
+from ..geometry.checks import shown
 from .scene_checks import where
 from .scene_schema import SceneError
 
@@ -44,8 +45,8 @@ def system_kind_problems(source, raw_sys, kind, problems) -> None:
     for key in other:
         if key in raw_sys:
             problems.messages.append(
-                f"{where(source, 'system', key)} = {raw_sys[key]!r} is not allowed with kind = "
-                f"{kind!r} (the keys of kind = {kind!r}: {', '.join(own)}; docs/scenes.md)")
+                f"{where(source, 'system', key)} = {shown(raw_sys[key])} is not allowed with kind = "
+                f"{shown(kind)} (the keys of kind = {shown(kind)}: {', '.join(own)}; docs/scenes.md)")
     if need not in raw_sys:
         what = ("the crank length ε of the linkage, 0 < eps < 0.5" if need == "eps"
                 else "Number of rotors N (>= 3; the manifold has dimension N−1).")
@@ -58,14 +59,14 @@ def check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_
     from ..geometry.linkage import LinkageSystem
 
     if "n" in raw_sys and system["n"] != 4:
-        raise SceneError(f"{where(source, 'system', 'n')} = {system['n']!r} is not allowed with "
+        raise SceneError(f"{where(source, 'system', 'n')} = {shown(system['n'])} is not allowed with "
                          "kind = 'linkage': the linkage of the Appendix has 4 rotors (omit n)")
     try:
         L = LinkageSystem(system["eps"], system["rho"], disk_mass=system["disk_mass"],
                           disk_inertia=system["disk_inertia"])
     except ValueError as exc:
         key = "rho" if "rho" in raw_sys and str(exc).startswith("rho") else "eps"
-        raise SceneError(f"{where(source, 'system', key)} = {system[key]!r} is not allowed: "
+        raise SceneError(f"{where(source, 'system', key)} = {shown(system[key])} is not allowed: "
                          f"{exc}") from None
     system.update(n=4, rho=L.rho, masses=[1.0] * 4)
     for key in ROTOR_KEYS[1:]:
@@ -77,10 +78,10 @@ def check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_
                              "give [initial] seed")
     for key, only in (("formulation", "ambient"), ("method", "rk4")):
         if integ[key] != only:
-            raise SceneError(f"{where(source, 'integrator', key)} = {integ[key]!r} is not "
+            raise SceneError(f"{where(source, 'integrator', key)} = {shown(integ[key])} is not "
                              f"allowed with kind = 'linkage': the linkage is integrated by "
                              f"multipliers in its 7 coordinates with fixed-step RK4 "
-                             f"({key} = {only!r}; docs/linkage.md)")
+                             f"({key} = {shown(only)}; docs/linkage.md)")
 
 
 def check_linkage_effects(source, run, effects, raw_eff) -> None:
@@ -100,14 +101,14 @@ def check_linkage_effects(source, run, effects, raw_eff) -> None:
             continue
         given = raw_eff[eff].get(key, only) if isinstance(raw_eff[eff], dict) else only
         if given != only:
-            raise SceneError(f"{where(source, sect(eff), key)} = {given!r} is not allowed with "
-                             f"kind = 'linkage': only {only!r} ({why})")
+            raise SceneError(f"{where(source, sect(eff), key)} = {shown(given)} is not allowed with "
+                             f"kind = 'linkage': only {shown(only)} ({why})")
         effects[eff][key] = only
     if "angles" in effects:
         a = effects["angles"]
         if a["n_vectors"] not in (None, 2):
             raise SceneError(f"{where(source, sect('angles'), 'n_vectors')} = "
-                             f"{a['n_vectors']!r} is not allowed with kind = 'linkage': the "
+                             f"{shown(a['n_vectors'])} is not allowed with kind = 'linkage': the "
                              "linkage's test follows 2 vectors (its 2 positive exponents)")
         from .scene_checks import multiple_of
         for sec, key, value in (("run", "t_final", run["t_final"]),

@@ -15,6 +15,7 @@ from typing import Any, Callable
 
 from ..analyses.arguments import GRID_RTOL
 from ..geometry.linkage import LENGTH_MAX, LENGTH_MIN
+from ..geometry.system import MAX_N
 
 __all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL",
            "API", "FromAPI", "api_default"]
@@ -87,6 +88,10 @@ def _ge(lo):
     return lambda v: None if v >= lo else f"a number >= {lo:g}"
 
 
+def _int_between(lo, hi):
+    return lambda v: None if lo <= v <= hi else f"an integer in {lo}..{hi}"
+
+
 def _half_open(lo, hi):
     return lambda v: None if lo <= v < hi else f"a number in [{lo:g}, {hi:g})"
 
@@ -107,9 +112,9 @@ SCHEMA: dict[str, dict[str, Key]] = {
                     "paper's); \"linkage\": the exact four-rotor linkage of the Appendix "
                     "(docs/linkage.md), with eps, rho, disk_mass, disk_inertia.",
                     choices=("rotors", "linkage")),
-        "n": Key("int", None, "Number of rotors N (>= 3; the manifold has dimension N−1). "
-                 "Required for kind = \"rotors\"; 4 for the linkage (may be omitted).",
-                 check=_ge(3)),
+        "n": Key("int", None, "Number of rotors N (3 <= N <= 1048576; the manifold has "
+                 "dimension N−1). Required for kind = \"rotors\"; 4 for the linkage (may be "
+                 "omitted).", check=_int_between(3, MAX_N)),
         "masses": Key("floats", None, "Moments of inertia m₁..m_N, all > 0 (default: all 1, "
                       "the paper's case).", check=lambda v: None if all(x > 0 for x in v)
                       else "a list of numbers, each > 0"),

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ..bundled import bundled_files, path_or_bundled
 from ..input_files import read_toml
+from ...geometry.checks import shown
 from ..scene_checks import is_finite_number, unknown_key
 from .expressions import ExpressionError, expression_symbols
 
@@ -64,7 +65,7 @@ def resolve_sweep(arg: str) -> Path:
     """A sweep argument is a path to a .toml file or the name of a bundled sweep."""
     path = path_or_bundled(arg, bundled_sweeps())
     if path is None:
-        raise SweepError(f"{arg!r} is neither a sweep file nor a bundled sweep (list them with "
+        raise SweepError(f"{shown(arg)} is neither a sweep file nor a bundled sweep (list them with "
                          "`charts sweep --list`)")
     return path
 
@@ -115,7 +116,7 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
         _check_axis(f"{source}: [sweep.parameters] {name}", name, vals, mode)
     for v in axes.get("speed", []) if isinstance(axes.get("speed"), list) else []:
         if isinstance(v, str) and not _speed_expression(v):
-            raise SweepError(f"{source}: [sweep.parameters] speed = {v!r}: a speed given as a "
+            raise SweepError(f"{source}: [sweep.parameters] speed = {shown(v)}: a speed given as a "
                              "string must be an arithmetic expression in n (e.g. \"n ** 0.5\": "
                              "kinetic energy ½ per rotor of unit mass)")
     symbols = {k for k in axes if "." not in k and k not in SYSTEM_AXES}
@@ -145,12 +146,23 @@ def _plan_points(source, mode, seeds, n_points, patterns, axes) -> int:
     factors.append(("seeds", len(seeds)))
     total = math.prod(n for _, n in factors)
     if total > MAX_POINTS:
-        shown = " × ".join(f"{n} ({name})" for name, n in factors)
-        raise SweepError(f"{source}: the sweep has {total:.3g} points = {shown}, more than the "
-                         f"{MAX_POINTS} a sweep may have (planning them alone would take "
-                         f"{total * 1.6e-3:.3g} s and {total * 6.3e3 / 2**30:.3g} GiB); split "
-                         "the study into several sweeps or use mode = \"random\" with n_points")
+        factors_text = " × ".join(f"{_count(n)} ({name})" for name, n in factors)
+        cost = (f" (planning them alone would take {total * 1.6e-3:.3g} s and "
+                f"{total * 6.3e3 / 2**30:.3g} GiB)" if total < 10**300 else "")
+        raise SweepError(f"{source}: the sweep has {_count(total)} points = {factors_text}, more "
+                         f"than the {MAX_POINTS} a sweep may have{cost}; split the study into "
+                         "several sweeps or use mode = \"random\" with n_points")
     return total
+
+
+def _count(n: int) -> str:
+    """An integer count for a message: exact up to 10¹², else its leading digits and the
+    exponent (also beyond a float's range)."""
+    n = int(n)
+    if n <= 10**12:
+        return str(n)
+    digits = str(n)
+    return f"{digits[0]}.{digits[1:3]}e+{len(digits) - 1:02d}"
 
 
 def _speed_expression(v: str) -> bool:
@@ -168,7 +180,7 @@ def _sampling(source, sw: dict):
     """``mode, seeds, n_points, sample_seed`` of the [sweep] table, validated."""
     mode = sw.get("mode", "grid")
     if mode not in MODES:
-        raise SweepError(f"{source}: [sweep] mode = {mode!r} is not allowed "
+        raise SweepError(f"{source}: [sweep] mode = {shown(mode)} is not allowed "
                          f"(allowed: {', '.join(map(repr, MODES))})")
     seeds = sw.get("seeds", [0])
     if _is_int(seeds) and seeds > MAX_POINTS:
@@ -177,17 +189,17 @@ def _sampling(source, sw: dict):
     if _is_int(seeds) and seeds >= 1:
         seeds = list(range(seeds))
     if not (isinstance(seeds, list) and seeds and all(_is_int(s) and s >= 0 for s in seeds)):
-        raise SweepError(f"{source}: [sweep] seeds = {seeds!r} is not allowed: expected a "
+        raise SweepError(f"{source}: [sweep] seeds = {shown(seeds)} is not allowed: expected a "
                          "non-empty list of integers >= 0, or a count >= 1")
     if len(set(seeds)) != len(seeds):
-        raise SweepError(f"{source}: [sweep] seeds = {seeds!r} repeats a seed")
+        raise SweepError(f"{source}: [sweep] seeds = {shown(seeds)} repeats a seed")
     n_points, sample_seed = sw.get("n_points"), sw.get("sample_seed", 0)
     if mode == "random":
         if not (_is_int(n_points) and n_points >= 1):
-            raise SweepError(f"{source}: [sweep] n_points = {n_points!r}: random mode needs "
+            raise SweepError(f"{source}: [sweep] n_points = {shown(n_points)}: random mode needs "
                              "an integer >= 1 (the number of parameter draws)")
         if not _is_int(sample_seed):
-            raise SweepError(f"{source}: [sweep] sample_seed = {sample_seed!r}: expected an integer")
+            raise SweepError(f"{source}: [sweep] sample_seed = {shown(sample_seed)}: expected an integer")
     elif n_points is not None or "sample_seed" in sw:
         raise SweepError(f"{source}: [sweep] n_points/sample_seed are for mode = \"random\" "
                          "only")
@@ -198,20 +210,20 @@ def _check_axis(where: str, name: str, vals, mode: str) -> None:
     """One entry of [sweep.parameters]: a list of values, or a range in random mode."""
     if isinstance(vals, dict):
         if mode != "random":
-            raise SweepError(f"{where} = {vals!r}: a range {{min, max, log}} needs mode = "
+            raise SweepError(f"{where} = {shown(vals)}: a range {{min, max, log}} needs mode = "
                              "\"random\"; a grid takes a list of values")
         extra = set(vals) - {"min", "max", "log"}
         if extra or not (is_finite_number(vals.get("min")) and is_finite_number(vals.get("max"))
                          and vals["min"] < vals["max"]):
-            raise SweepError(f"{where} = {vals!r} is not allowed: expected {{min = a, "
+            raise SweepError(f"{where} = {shown(vals)} is not allowed: expected {{min = a, "
                              "max = b, log = true|false}} with a < b")
         if vals.get("log", False) and vals["min"] <= 0:
             raise SweepError(f"{where}: log = true needs min > 0")
     elif not (isinstance(vals, list) and vals):
-        raise SweepError(f"{where} = {vals!r} is not allowed: expected a non-empty list "
+        raise SweepError(f"{where} = {shown(vals)} is not allowed: expected a non-empty list "
                          "of values" + (" or {min, max, log}" if mode == "random" else ""))
     elif len({json.dumps(v) for v in vals}) != len(vals):
-        raise SweepError(f"{where} = {vals!r} repeats a value")
+        raise SweepError(f"{where} = {shown(vals)} repeats a value")
     if "." in name:
         section = name.split(".")[0]
         if section not in ("system", "initial", "integrator", "run", "effects"):
@@ -219,7 +231,7 @@ def _check_axis(where: str, name: str, vals, mode: str) -> None:
                              "run. or effects. (e.g. \"run.t_final\")")
         if name in ("system.masses", "system.n", "system.speed", "initial.seed"):
             raise SweepError(f"{where}: use the parameter name "
-                             f"{name.split('.')[-1]!r} (or seeds / [sweep.masses])")
+                             f"{shown(name.split('.')[-1])} (or seeds / [sweep.masses])")
 
 
 def _pattern_symbols(source, kind: str, patterns: dict, symbols: set) -> set:
@@ -227,9 +239,9 @@ def _pattern_symbols(source, kind: str, patterns: dict, symbols: set) -> set:
     symbols they use."""
     used = set()
     for pname, pat in patterns.items():
-        where = f"{source}: [sweep.{kind}] {pname!r}"
+        where = f"{source}: [sweep.{kind}] {shown(pname)}"
         if not (isinstance(pat, list) and pat):
-            raise SweepError(f"{where} = {pat!r}: expected a list of numbers or expressions")
+            raise SweepError(f"{where} = {shown(pat)}: expected a list of numbers or expressions")
         for x in pat:
             if isinstance(x, str):
                 try:
@@ -238,10 +250,10 @@ def _pattern_symbols(source, kind: str, patterns: dict, symbols: set) -> set:
                     raise SweepError(f"{where}: {exc}") from None
                 missing = names - symbols
                 if missing:
-                    raise SweepError(f"{where}: {x!r} uses {', '.join(sorted(missing))}, which is "
+                    raise SweepError(f"{where}: {shown(x)} uses {', '.join(sorted(missing))}, which is "
                                      "not a parameter; add it to [sweep.parameters]")
                 used |= names
             elif not (is_finite_number(x) and x > 0):
-                raise SweepError(f"{where}: {x!r} is not allowed: entries are numbers > 0 or "
+                raise SweepError(f"{where}: {shown(x)} is not allowed: entries are numbers > 0 or "
                                  "expressions in the parameters")
     return used
