@@ -8,6 +8,7 @@ import signal
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import pytest
 
@@ -219,6 +220,37 @@ def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypa
     other = sweep_points(_sweep(parameters={"m": [3.0]}))[0]
     resumed_other = evaluate_point(other.raw, str(keep))
     assert calls[2:] == [True, False] and resumed_other["status"] == "complete"
+
+
+def test_a_point_whose_folder_is_held_runs_in_a_temporary_one(tmp_path):
+    """Dask may run a point twice (a worker it took for lost still runs it): the second run
+    finds points/<id> locked by a live process and computes the point in a temporary folder,
+    to the same row."""
+    from charts.runs.outdir import OutputLock
+    from charts.runs.sweep.worker import evaluate_point
+    point = sweep_points(_sweep())[0]
+    keep = tmp_path / POINTS / point.point_id
+    keep.mkdir(parents=True)
+    with OutputLock(keep, "another run of this point"):
+        held = evaluate_point(point.raw, str(keep))
+    assert held["status"] == "complete"
+    assert held["stats"] == evaluate_point(point.raw)["stats"]
+
+
+def test_a_zombie_does_not_hold_a_lock():
+    """A killed process that nobody reaps (a container whose first process reaps nothing)
+    stays a zombie: its lock is stale, not live."""
+    from charts.runs.outdir import _alive
+    child = subprocess.Popen([sys.executable, "-c", "pass"])
+    t0 = time.monotonic()
+    while Path(f"/proc/{child.pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z":
+        assert time.monotonic() - t0 < 30
+        time.sleep(0.01)
+    try:
+        assert not _alive(child.pid)
+    finally:
+        child.wait()
+    assert _alive(os.getpid())
 
 
 def test_a_half_written_last_row_is_dropped_on_resume(tmp_path):

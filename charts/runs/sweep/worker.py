@@ -15,6 +15,7 @@ import numpy as np
 
 from ...analyses.lyapunov_members import MIN_LANES
 from .. import runner
+from ..outdir import OutputError
 from ..scene import parse_scene
 from ..seed_lanes import run_seed_lanes, seed_family
 from .statistics import result_statistics
@@ -35,7 +36,14 @@ def evaluate_point(raw: dict, keep=None) -> dict:
         with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
             return _point_outcome(_run(scene, td, False), Path(td), time.perf_counter() - t0)
     resume = (folder / runner.CHECKPOINT).exists()
-    return _point_outcome(_run(scene, folder, resume), folder, time.perf_counter() - t0)
+    try:
+        outcome = _run(scene, folder, resume)
+    except OutputError:
+        # the folder is held by another live run of this point (Dask may run a task twice,
+        # e.g. on a worker it took for lost): compute it here from the start instead
+        with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
+            return _point_outcome(_run(scene, td, False), Path(td), time.perf_counter() - t0)
+    return _point_outcome(outcome, folder, time.perf_counter() - t0)
 
 
 def _kept_folder(keep):
@@ -61,6 +69,8 @@ def _run(scene, folder, resume):
             except runner.RunError as exc:
                 if "--resume" not in str(exc):
                     raise
+            except OutputError:                             # held by a live run: the caller's
+                raise
             except (OSError, ValueError, KeyError):          # a torn checkpoint
                 pass
             return runner.run_scene(scene, folder, quiet=True, force=True)
