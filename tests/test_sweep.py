@@ -193,13 +193,24 @@ def test_a_point_with_non_finite_results_is_failed(monkeypatch):
     assert out["status"] == "failed" and "lambda_1" in out["error"] and "project" in out["error"]
 
 
+def _light_point(m=0.5):
+    """One short point (N = 3, t = 4, the Lyapunov effect, a checkpoint every time unit)."""
+    base = {"system": {"n": 3}, "integrator": {"dt": 0.01},
+            "run": {"t_final": 4.0, "t_transient": 0.0, "checkpoint_every": 1.0},
+            "effects": {"lyapunov": {"n_batches": 2}}}
+    sweep = parse_sweep({"name": "light", "scene": base,
+                         "sweep": {"seeds": [1], "parameters": {"m": [m]},
+                                   "masses": {"p": [1, "m", 1]}}}, source="light.toml")
+    return sweep_points(sweep)[0]
+
+
 def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypatch):
     """A point computed alone runs in the sweep's points/<id>: a sweep stopped in the middle
     of it leaves its checkpoints there, and the resumed sweep's worker continues the run
     (resume=True) to the same row as a point computed in one go."""
     from charts.runs import runner
     from charts.runs.sweep.worker import evaluate_point
-    point = sweep_points(_sweep())[0]
+    point = _light_point()
     keep = tmp_path / POINTS / point.point_id
 
     def stop(idx, total):
@@ -217,7 +228,7 @@ def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypa
     assert calls == [True, False]
     assert resumed["stats"] == fresh["stats"] and resumed["t_final"] == fresh["t_final"]
     # a checkpoint of another scene there is not resumed: the point starts over
-    other = sweep_points(_sweep(parameters={"m": [3.0]}))[0]
+    other = _light_point(3.0)
     resumed_other = evaluate_point(other.raw, str(keep))
     assert calls[2:] == [True, False] and resumed_other["status"] == "complete"
 
@@ -228,7 +239,7 @@ def test_a_point_whose_folder_is_held_runs_in_a_temporary_one(tmp_path):
     to the same row."""
     from charts.runs.outdir import OutputLock
     from charts.runs.sweep.worker import evaluate_point
-    point = sweep_points(_sweep())[0]
+    point = _light_point()
     keep = tmp_path / POINTS / point.point_id
     keep.mkdir(parents=True)
     with OutputLock(keep, "another run of this point"):
