@@ -187,15 +187,15 @@ def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, 
     `tangent_kernel` takes them (`next_substep`); False if a sub-step starts at a singular
     point (`singular_floor`)."""
     planned = substep_count(dt, hc)
-    h = dt / planned
+    hp = dt / planned
+    h = hp
     left = dt
     adaptive = False
     for sub in range(MAX_SUBSTEPS):
         S = sum_squares(s0, 0, n)
         if S < singular_floor(c0, wts, n, level):
             return False
-        hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), dt / planned, adaptive,
-                                    _CAP)
+        hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
         if adaptive:
             h = hs
         _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L)
