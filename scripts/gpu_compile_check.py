@@ -30,7 +30,7 @@ device.cuda = angle_blocks.cuda = cuda
 n, m = (int(x) for x in sys.argv[1:3]) if len(sys.argv) > 2 else (5, 3)
 a3, a2, a1, i1, f8 = t.float64[:, :, ::1], t.float64[:, ::1], t.float64[::1], t.int64[::1], t.float64
 lyapunov = (a3, a3, i1, i1, i1, a1, a1, a1, f8, a1, f8, t.int64, t.int64, a1, t.boolean, t.int64,
-            a2, i1, a3)
+            a2, i1, a3, t.int64[:, ::1])
 forward = (a3, a3, i1, a2, i1, i1, a3, a3, a1, a1, a1, a1, f8, a1, f8, t.UniTuple(t.int64, 10),
            i1, a2)
 backward = (i1, i1, i1, a3, a3, a3, a2, a2, a2, a1, a1, a1, a1, f8, f8, t.UniTuple(t.int64, 7),

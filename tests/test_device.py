@@ -14,6 +14,7 @@ import charts
 import charts.solvers.device as device
 from charts.analyses.lyapunov import lyapunov_settings
 from charts.analyses.lyapunov_members import lyapunov_device, lyapunov_ensemble
+from charts.geometry.energy_shares import SHARE_BINS
 from charts.geometry.system import RotorSystem
 from charts.runs.benchmarks.gpu import kernel_rate
 from charts.solvers.device import DeviceFlows, DeviceUnavailable, cuda_available
@@ -28,9 +29,9 @@ THROUGH = (np.array([0.0, 0.0, np.pi, np.pi]) - np.array([_A, _B, _A, _B]),
            np.array([_A, _B, _A, _B]))
 
 
-def _flows(system, states, k):
-    return [TangentFlow(system, th, u, k, dt=0.01, reorth_every=10, project_every=100, seed=s)
-            for s, (th, u) in enumerate(states)]
+def _flows(system, states, k, share_bins=SHARE_BINS):
+    return [TangentFlow(system, th, u, k, dt=0.01, reorth_every=10, project_every=100, seed=s,
+                        share_bins=share_bins) for s, (th, u) in enumerate(states)]
 
 
 def _run(flows, chunks, events):
@@ -42,7 +43,8 @@ def _run(flows, chunks, events):
 
 def test_the_cpu_twin_equals_the_lanes_bit_for_bit():
     """Five members of a weighted family with a level, k = 3, in uneven chunks with events
-    inside and at the chunk ends: states, log-norm sums and event logs identical."""
+    inside and at the chunk ends: states, log-norm sums, event logs and energy-share
+    histograms identical."""
     states = [SYSTEM.random_state(seed=s) for s in range(5)]
     events = np.array([1, 10, 100, 250, 449])
     lanes = LaneFlows(_flows(SYSTEM, states, 3))
@@ -50,6 +52,7 @@ def test_the_cpu_twin_equals_the_lanes_bit_for_bit():
     a, b = _run(lanes, (1, 99, 350), events), _run(twin, (100, 149, 201), events)
     assert np.array_equal(a, b) and a[-1].any()
     assert np.array_equal(lanes.logsum, twin.logsum)
+    assert np.array_equal(lanes.shares, twin.shares) and twin.shares.sum() == 5 * 45
     for i in range(5):
         assert np.array_equal(lanes.lane(i), twin.lane(i))
     assert twin.steps == 450
@@ -75,10 +78,11 @@ def test_the_kernel_body_with_a_stand_in_for_cuda(monkeypatch):
         state["l"] = l
         kernel(d["Zs"], d["scs"], d["counters"], d["status"], d["stopped"], d["minv"], d["m"],
                d["wts"], 0.0, d["speeds"], 0.01, 60, 10, d["w"], True, 100, twin.logsum,
-               events, logs)
+               events, logs, twin.shares)
     ref_logs = np.zeros((1, 3, 2))
     ref.advance(60, events=events, event_logs=ref_logs)
     assert np.array_equal(twin.logsum, ref.logsum)
+    assert np.array_equal(twin.shares, ref.shares) and twin.shares.sum() == 3 * 6
     assert np.array_equal(np.moveaxis(logs, 1, 0), ref_logs)
     assert all(np.array_equal(twin.lane(i), ref.lane(i)) for i in range(3))
 

@@ -63,8 +63,9 @@ def test_ensemble_members_equal_lyapunov_spectrum(name, members):
     for i, m in enumerate(ens.members):
         th, u = system.random_state(seed=7 + i, speed=1.3)
         r = lyapunov_spectrum(system, th, u, 8.0, seed=7 + i, **kw)
-        for a in ("exponents", "stderr", "batches", "history", "history_t"):
+        for a in ("exponents", "stderr", "batches", "history", "history_t", "energy_shares"):
             assert np.array_equal(getattr(m, a), getattr(r, a)), a
+        assert m.energy_shares.sum() == 80       # every 0.1 of the 8 time units
         assert m.params == r.params
     E = np.array([m.exponents for m in ens.members])
     assert np.array_equal(ens.exponents, E.mean(axis=0))

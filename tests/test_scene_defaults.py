@@ -88,6 +88,9 @@ def test_lyapunov_scene_with_nothing_written_is_the_api_call(tmp_path):
     api = lyapunov_spectrum(system, theta0, u0, 60.0)
     assert res["exponents"] == api.exponents.tolist()
     assert res["stderr"] == api.stderr.tolist()
+    assert res["energy_localisation"]["fraction"] == api.localised_fraction()
+    with np.load(tmp_path / "ly" / "arrays.npz") as a:
+        assert np.array_equal(a["energy_share_counts"], api.energy_shares)
 
 
 def test_angles_scene_with_nothing_written_is_the_api_call(tmp_path):

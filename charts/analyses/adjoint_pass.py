@@ -143,7 +143,8 @@ def backward_loop(ck, Z, sc, counter, rec, minv, masses, wts, level, speed, dt, 
         rec_start = (top - first_sample) % sample_every
         status, done = stacked_loop(Z, sc, counter, minv, masses, wts, level, speed, -dt,
                                     nsteps, reorth, w, False, 0, logs, rec_start, sample_every,
-                                    rec, no_events, none, adjoint_vectors_rate, work)
+                                    rec, no_events, none, no_events, adjoint_vectors_rate,
+                                    work)
         if status != RUNNING:
             return status, top - done
         for i in range(rec_start if rec_start > 0 else sample_every, nsteps + 1, sample_every):

@@ -127,7 +127,7 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
         if k > 0:
             status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k,
                                        reorth_every, w, restricted, project_every, logsum,
-                                       zero, zero, none, no_events, none, None)
+                                       zero, zero, none, no_events, none, no_events, None)
             if status != RUNNING:
                 return status
         if transient:

@@ -236,7 +236,7 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
         status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt,
                                       nb * sample_steps, reorth, w, True, project_every, logs,
                                       counter[0] + sample_steps, sample_steps, buf, no_events,
-                                      buf, None)
+                                      buf, no_events, None)
         if status != RUNNING:
             return status, a
         for b in range(nb):

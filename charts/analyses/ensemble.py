@@ -11,6 +11,7 @@ import numpy as np
 from ..archive import (MEMBER, Archivable, attributes, dataset, member_attributes,
                        member_settings, require_xarray)
 from ..compilation import announce, timed_call
+from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
 from .spectrum_quantities import kaplan_yorke_dimension, kolmogorov_sinai_entropy, with_error
@@ -49,6 +50,12 @@ class EnsembleResult(Archivable):
 
     def __getitem__(self, i):
         return self.members[i]
+
+    def localised_fractions(self, share=LOCALISED_SHARE):
+        """(members,): for each Lyapunov member, the fraction of its averaging time in which
+        one rotor held at least ``share`` of the kinetic energy
+        (`LyapunovResult.localised_fraction`)."""
+        return np.array([m.localised_fraction(share) for m in self.members])
 
     def concatenate(self, attribute):
         """The members' array ``attribute`` joined along its first axis."""

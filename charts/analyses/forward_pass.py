@@ -105,14 +105,14 @@ def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth,
                 k = ce
             status, _ = kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
                                      w, True, project, logsum, rec_start, rec_every, states,
-                                     no_events, none, work)
+                                     no_events, none, no_events, work)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
             status, _ = kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
                                      reorth, w, True, project, logsum, zero, zero, none,
-                                     no_events, none, work)
+                                     no_events, none, no_events, work)
             if status != RUNNING:
                 return status
         for j in range(Z.shape[1]):      # a loop, not a slice copy (adjoint_pass)

@@ -26,6 +26,7 @@ import numpy as np
 from ..archive import Archivable, attributes, dataset
 from ..compilation import announces_compilation
 from ..geometry.checks import option
+from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
@@ -36,7 +37,7 @@ from .statistics import batch_ends, batch_estimates
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
            "lyapunov_spectrum", "lyapunov_schedule",
-           "lyapunov_result", "chunk_sizes", "averaging_logs",
+           "lyapunov_result", "chunk_sizes", "averaging_logs", "end_transient",
            "reconstruct_spectrum", "auto_transient", "transient_rule", "AUTO_EFOLDINGS",
            "PILOT_TIMES", "AUTO_TRANSIENT_RANGE", "AUTO_RULE",
            "identify_nonphysical", "exponents_from_marks"]
@@ -109,7 +110,7 @@ def lyapunov_flow(system, theta0, u0, cfg: LyapunovSettings) -> TangentFlow:
     theta0, u0 = start_state(system, theta0, u0, cfg.dt)
     return TangentFlow(system, theta0, u0, cfg.k, dt=cfg.dt, inner=cfg.inner,
                        restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
-                       project_every=cfg.project, seed=cfg.seed)
+                       project_every=cfg.project, seed=cfg.seed, share_bins=SHARE_BINS)
 
 
 def exponents_from_marks(logsums, steps, dt):
@@ -152,6 +153,10 @@ class LyapunovResult(Archivable):
     history_t : (n_rec,)  times (after the transient) of the convergence history.
     history : (n_rec, k)  running estimates of the exponents at ``history_t``.
     batches : (n_batches, k)  per-block estimates behind ``stderr``.
+
+    energy_shares : (bins,) or None  histogram of the largest kinetic-energy share
+        max_i mᵢuᵢ² / Σ mⱼuⱼ², sampled at every re-orthonormalisation of the averaging time
+        (bin b: shares in [b/bins, (b+1)/bins)); `localised_fraction` reads it.
     """
     exponents: np.ndarray
     stderr: np.ndarray
@@ -160,6 +165,7 @@ class LyapunovResult(Archivable):
     history: np.ndarray
     batches: np.ndarray
     params: dict = field(default_factory=dict)
+    energy_shares: np.ndarray | None = None
 
     KIND = "lyapunov"
 
@@ -172,20 +178,36 @@ class LyapunovResult(Archivable):
                 "history": (("record", "exponent"), self.history, "1 / time",
                             "running estimates"),
                 "batches": (("batch", "exponent"), self.batches, "1 / time", "batch estimates")}
+        coords = {"exponent": (("exponent",), np.arange(1, k + 1), "1",
+                               "i of λᵢ, from 1 as in the paper"),
+                  "history_t": (("record",), self.history_t, "time", "averaging time")}
         if self.spectrum is not None:
             data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",
                                      "the relevant spectrum (reconstructed or computed)")
-        return dataset(self.KIND, data, attrs={"params": self.params}, coords={
-            "exponent": (("exponent",), np.arange(1, k + 1), "1",
-                         "i of λᵢ, from 1 as in the paper"),
-            "history_t": (("record",), self.history_t, "time", "averaging time")})
+        if self.energy_shares is not None:
+            data["energy_share_counts"] = (("share_bin",), self.energy_shares, "1",
+                                           "samples of the largest kinetic-energy share of one "
+                                           "rotor, per bin, every re-orthonormalisation")
+            coords["share_bin"] = (("share_bin",), share_edges(len(self.energy_shares)), "1",
+                                   "lower edge of the bin of the largest share")
+        return dataset(self.KIND, data, attrs={"params": self.params}, coords=coords)
 
     @classmethod
     def from_xarray(cls, ds):
         return cls(exponents=ds["exponents"].values, stderr=ds["stderr"].values,
                    spectrum=ds["full_spectrum"].values if "full_spectrum" in ds else None,
                    history_t=ds["history_t"].values, history=ds["history"].values,
-                   batches=ds["batches"].values, params=attributes(ds)["params"])
+                   batches=ds["batches"].values, params=attributes(ds)["params"],
+                   energy_shares=(ds["energy_share_counts"].values
+                                  if "energy_share_counts" in ds else None))
+
+    def localised_fraction(self, share=LOCALISED_SHARE) -> float:
+        """Fraction of the averaging time in which one rotor held at least ``share`` of the
+        kinetic energy (from ``energy_shares``; ``share`` a multiple of 0.01)."""
+        if self.energy_shares is None:
+            raise ValueError("this result holds no energy shares (computed before they were "
+                             "recorded)")
+        return float(localised_fraction(self.energy_shares, share))
 
     def plot(self, ax=None, **kw):
         """Running estimates against the averaging time (log axis) with the final estimate ±
@@ -295,10 +317,10 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     where = "lyapunov_spectrum (ambient RK4)"
     flow.advance(cfg.transient, where=where)
     rep.update(cfg.transient * cfg.dt)
-    flow.logsum[:] = 0.0
+    end_transient(flow)
     logs = averaging_logs(flow, cfg, partial(flow.advance, where=where), rep.update)
     rep.close()
-    res = lyapunov_result(system, cfg, logs, flow.speed)
+    res = lyapunov_result(system, cfg, logs, flow.speed, flow.shares)
     if rule == "auto":
         res.params["transient_rule"] = AUTO_RULE
     return res
@@ -346,6 +368,15 @@ def auto_transient(system, theta0, u0, *, dt=0.01, n_exponents=None, inner="thet
     return Documented(min(high, max(low, AUTO_EFOLDINGS / rate)))
 
 
+def end_transient(flow) -> None:
+    """The transient of ``flow`` (a `TangentFlow`, the lanes, or the linkage's flow, which
+    records no energy shares) is done: its log-norm sums and its energy-share histograms
+    start from zero."""
+    flow.logsum[...] = 0.0
+    if hasattr(flow, "shares"):
+        flow.shares[...] = 0
+
+
 def averaging_logs(flow, cfg: LyapunovSettings, advance, update=None):
     """The averaging part of a Lyapunov run on ``flow`` (a `TangentFlow`, or the lanes'
     `LaneFlows`), its transient done and its log-norm sums zeroed: ``advance(steps, events=,
@@ -377,9 +408,10 @@ def chunk_sizes(cfg: LyapunovSettings):
     return np.diff([cfg.total * i // c for i in range(c + 1)])
 
 
-def lyapunov_result(system, cfg: LyapunovSettings, logs, speed) -> LyapunovResult:
+def lyapunov_result(system, cfg: LyapunovSettings, logs, speed, shares=None) -> LyapunovResult:
     """The `LyapunovResult` of a run from its log-norm sums ``logs`` (events, k) at the
-    events of `lyapunov_schedule`; ``speed`` = |u0|."""
+    events of `lyapunov_schedule`; ``speed`` = |u0|; ``shares``: the histogram of the largest
+    energy share over the averaging time."""
     n, k = system.n, cfg.k
     records, ends, events = lyapunov_schedule(cfg)
     row = {e: i for i, e in enumerate(events)}
@@ -396,4 +428,5 @@ def lyapunov_result(system, cfg: LyapunovSettings, logs, speed) -> LyapunovResul
                   inner=cfg.inner, space=cfg.space, t_transient=cfg.transient * cfg.dt,
                   n_batches=cfg.n_batches, reorth_every=cfg.reorth * cfg.dt,
                   project_every=cfg.project * cfg.dt or None, speed=speed, seed=cfg.seed)
-    return LyapunovResult(exps, stderr, spectrum, t_rec, running, batches, params)
+    return LyapunovResult(exps, stderr, spectrum, t_rec, running, batches, params,
+                          None if shares is None else np.array(shares))

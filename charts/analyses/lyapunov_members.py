@@ -10,13 +10,14 @@ from functools import partial
 
 import numpy as np
 
+from ..geometry.energy_shares import SHARE_BINS
 from ..solvers.device import DeviceFlows, cuda_module, device_bytes, flow_states, resolve_device
 from ..solvers.lanes import LaneFlows
 from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
                        member_states_of)
-from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, lyapunov_flow,
+from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, end_transient, lyapunov_flow,
                        lyapunov_result, lyapunov_schedule, lyapunov_settings, transient_rule)
 
 __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states",
@@ -130,9 +131,10 @@ def lyapunov_lanes(job, update=None):
         for f, c, s in zip(flows, cfgs, seeds):
             w = _where(s)
             f.advance(cfg.transient, where=w)
-            f.logsum[:] = 0.0
+            end_transient(f)
             logs.append(averaging_logs(f, c, partial(f.advance, where=w), update))
-        return [lyapunov_result(system, c, lg, f.speed) for c, lg, f in zip(cfgs, logs, flows)]
+        return [lyapunov_result(system, c, lg, f.speed, f.shares)
+                for c, lg, f in zip(cfgs, logs, flows)]
     return _members_of(LaneFlows(flows), system, cfg, seeds, update)
 
 
@@ -144,7 +146,7 @@ def lyapunov_device(job, update=None, backend="cuda", workers=1):
     states = member_states_of(member_states, system, cfg, seeds, speed, workers)
     flows = DeviceFlows(system, states, dt=cfg.dt, w=inner_weights(system, cfg.inner),
                         restricted=cfg.space == "restricted", reorth_every=cfg.reorth,
-                        project_every=cfg.project, backend=backend)
+                        project_every=cfg.project, share_bins=SHARE_BINS, backend=backend)
     return _members_of(flows, system, cfg, seeds, update)
 
 
@@ -172,8 +174,8 @@ def _members_of(lanes, system, cfg, seeds, update):
             raise lanes.error(l, _where(seeds[l]))
 
     advance(cfg.transient)
-    lanes.logsum[...] = 0.0
+    end_transient(lanes)
     logs = averaging_logs(lanes, cfg, advance,
                           None if update is None else lambda t: update(len(seeds) * t))
-    return [lyapunov_result(system, replace(cfg, seed=s), logs[:, i], float(lanes.speed[i]))
-            for i, s in enumerate(seeds)]
+    return [lyapunov_result(system, replace(cfg, seed=s), logs[:, i], float(lanes.speed[i]),
+                            lanes.shares[i]) for i, s in enumerate(seeds)]

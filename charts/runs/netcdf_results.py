@@ -29,6 +29,7 @@ ARRAY_LAYOUT = {
     "drift_energy": (("drift_sample",), "1"),
     "lyapunov_history_t": (("lyapunov_record",), "time"),
     "lyapunov_history": (("lyapunov_record", "exponent"), "1 / time"),
+    "energy_share_counts": (("share_bin",), "1"),
     "angles_t": (("angles_sample",), "time"),
     "angles_full": (("angles_sample",), "rad"),
     "angles_restricted": (("angles_sample",), "rad"),

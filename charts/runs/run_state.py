@@ -119,7 +119,8 @@ class RunState:
 
     def load_arrays(self, a):
         if self.flow is not None:
-            self.flow.load_state({k: a["flow_" + k] for k in self.flow.state()})
+            self.flow.load_state({k: a["flow_" + k] for k in self.flow.state()
+                                  if "flow_" + k in a})
         else:
             self._y = a["y"].copy()
         rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]

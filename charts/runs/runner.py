@@ -37,6 +37,7 @@ from pathlib import Path
 import numpy as np
 
 from ..compilation import NOTE_SECONDS, compile_timer
+from ..analyses.lyapunov import end_transient
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
 from .netcdf_results import SCENE_NETCDF
@@ -186,8 +187,8 @@ class SceneRun:
         """After main chunk ``idx``: the transient does not count for the exponents; the
         Lyapunov batch marks.  Returns the time advanced."""
         st, end = self.st, self.ends[idx]
-        if end == self.transient:
-            st.logsum[:] = 0.0
+        if end == self.transient and st.flow is not None:
+            end_transient(st.flow)
         if end in self.lyap_ends:
             st.lyap_marks.append((end - self.transient, st.logsum.copy()))
         return (end - self.chunk_start(idx)) * self.unit

@@ -16,6 +16,7 @@ from ..analyses.curvature import gaussian_curvature_eq22
 from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
 from ..analyses.spectra import power_spectrum
 from ..archive import require_xarray
+from ..geometry.energy_shares import LOCALISED_SHARE, localised_fraction
 from . import scene_figures as figs
 from .netcdf_results import SCENE_NETCDF, SceneResult
 from .io import atomic_write, json_default, npz_bytes, versions
@@ -222,6 +223,15 @@ def lyapunov_result(st, out, *, t_done, **_):
         res["paper"] = [round(float(p), 12) for p in paper[: ly["n_exponents"]]]
         res["paper_note"] = "section 2, unit speed, equal masses; scaled by the speed"
     out.arrays.update(lyapunov_history_t=T, lyapunov_history=L / T[:, None])
+    shares = getattr(st.flow, "shares", None)
+    if shares is not None and shares.sum():
+        res["energy_localisation"] = {
+            "share": LOCALISED_SHARE, "fraction": float(localised_fraction(shares)),
+            "samples": int(shares.sum()),
+            "note": ("fraction of the samples (every re-orthonormalisation after the transient) "
+                     "in which one rotor held at least this share of the kinetic energy; the "
+                     "histogram: energy_share_counts")}
+        out.arrays["energy_share_counts"] = shares.copy()
     out.figures["lyapunov.png"] = figs.lyapunov_png(st.scene, T, L / T[:, None], res)
 
 

@@ -108,7 +108,8 @@ def _main_pass(runs, outcome) -> list[int]:
         wall = (time.perf_counter() - t_wall) / max(len(live), 1)
         for i in live:
             runs[i].end_main_chunk(idx)
-            lanes.logsum[i] = runs[i].st.logsum     # zeroed at the end of the transient
+            lanes.logsum[i] = runs[i].st.logsum     # zeroed at the end of the transient,
+            lanes.shares[i] = runs[i].st.flow.shares  # as are the shares
             runs[i].checkpoint(idx, wall)
     return live
 

@@ -95,20 +95,22 @@ def resolve_device(device) -> str:
 @njit(cache=True, inline="always")
 def member_advance(l, Zs, scs, counters, status, stopped, minv, m, wts, level, speeds, dt,
                    nsteps, reorth_every, w, restricted, project_every, logsums, events,
-                   event_logs, Z, sc, counter, logsum, rec, work):
+                   event_logs, shares, Z, sc, counter, logsum, rec, work):
     """What one GPU thread does: member l (Zs: (L, 1 + k, 2N), scs: (L, 2, N), counters,
     status, stopped: (L,), logsums: (L, k)) copied into the work arrays Z, sc, counter,
     logsum (``work``: the loop's work arrays, see `stacked_loop`), advanced ``nsteps`` steps by `stacked_loop` with eq (17)'s hook, copied back; a
     member that stops is flagged in ``status`` with its global step in ``stopped`` and keeps
     the state at the start of the failing step (as `LaneFlows` freezes it); a stopped member
     is left alone.  At the global steps ``events`` (all after the counter) the log-norm sums
-    go to event_logs[l, e].  ``rec``: a (1, 1) array, never written (no records)."""
+    go to event_logs[l, e]; the largest kinetic-energy shares to the member's histogram
+    shares[l] (shares: (L, bins), bins 0: none).  ``rec``: a (1, 1) array, never written
+    (no records)."""
     if status[l] != RUNNING:
         return
     load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum)
     code, done = stacked_loop(Z, sc, counter, minv, m, wts, level, speeds[l], dt, nsteps,
                               reorth_every, w, restricted, project_every, logsum, 0, 0, rec,
-                              events, event_logs[l], tangent_vectors_rate, work)
+                              events, event_logs[l], shares[l], tangent_vectors_rate, work)
     store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 
 
@@ -149,7 +151,7 @@ def store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, st
 
 @njit(cache=True)
 def cpu_members(Zs, scs, counters, status, stopped, minv, m, wts, level, speeds, dt, nsteps,
-                reorth_every, w, restricted, project_every, logsums, events, event_logs):
+                reorth_every, w, restricted, project_every, logsums, events, event_logs, shares):
     """The CUDA kernel's work done on the CPU, member after member, each with its own work
     arrays: the device driver's logic without a GPU (tests; the CPU routes themselves are
     `TangentFlow` and `LaneFlows`)."""
@@ -159,7 +161,7 @@ def cpu_members(Zs, scs, counters, status, stopped, minv, m, wts, level, speeds,
     for l in range(L):
         member_advance(l, Zs, scs, counters, status, stopped, minv, m, wts, level, speeds, dt,
                        nsteps, reorth_every, w, restricted, project_every, logsums, events,
-                       event_logs, np.empty((R, d)), np.empty((2, n)),
+                       event_logs, shares, np.empty((R, d)), np.empty((2, n)),
                        np.empty(1, dtype=np.int64), np.empty(R - 1), np.empty((1, 1)),
                        (np.empty(D), np.empty(4 * D), np.empty(n), np.empty(n), np.empty(n),
                         np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)))
@@ -183,13 +185,13 @@ def kernel_function(n, k):
     D4 = 4 * D                           # sizes: constants of the closure, not expressions
 
     def kernel(Zs, scs, counters, status, stopped, minv, m, wts, level, speeds, dt, nsteps,
-               reorth_every, w, restricted, project_every, logsums, events, event_logs):
+               reorth_every, w, restricted, project_every, logsums, events, event_logs, shares):
         l = cuda.grid(1)
         if l >= Zs.shape[0]:
             return
         member_advance(l, Zs, scs, counters, status, stopped, minv, m, wts, level, speeds, dt,
                        nsteps, reorth_every, w, restricted, project_every, logsums, events,
-                       event_logs, cuda.local.array((R, d), float64),
+                       event_logs, shares, cuda.local.array((R, d), float64),
                        cuda.local.array((2, n), float64), cuda.local.array(1, int64),
                        cuda.local.array(k, float64), cuda.local.array((1, 1), float64),
                        (cuda.local.array(D, float64), cuda.local.array(D4, float64),
@@ -259,14 +261,15 @@ class DeviceFlows:
     states : (Zs, scs, speeds)
         The members' stacked states (L, 1 + k, 2N), weighted sin/cos (L, 2, N) and speeds
         (L,), as `TangentFlow` holds them (`of_flows`), none advanced.
-    dt, w, restricted, reorth_every, project_every
-        The settings of `TangentFlow`, shared by all members.
+    dt, w, restricted, reorth_every, project_every, share_bins
+        The settings of `TangentFlow`, shared by all members (``shares`` (L, share_bins):
+        the members' histograms of the largest energy share, a host array like ``logsum``).
     threads : int, optional
         Threads per CUDA block (default `THREADS_PER_BLOCK`).
     """
 
     def __init__(self, system, states, *, dt, w, restricted, reorth_every, project_every,
-                 backend="cuda", threads=None):
+                 share_bins=0, backend="cuda", threads=None):
         Zs, scs, speeds = (np.ascontiguousarray(a, dtype=float) for a in states)
         L, R, d = Zs.shape
         if d != 2 * system.n or scs.shape != (L, 2, system.n) or speeds.shape != (L,):
@@ -285,6 +288,7 @@ class DeviceFlows:
         consts = {"minv": system.minv, "m": system.masses, "wts": system.weights, "w": self.w}
         consts = {k: np.asarray(v, dtype=float) for k, v in consts.items()}
         self.logsum = np.zeros((L, R - 1))
+        self.shares = np.zeros((L, int(share_bins)), dtype=np.int64)
         self._steps = 0
         self._arr = DeviceArrays(backend)
         if backend == "cuda":
@@ -300,7 +304,8 @@ class DeviceFlows:
         Zs = p.Z.T.reshape(L, *flows[0].Z.shape)
         return cls(p.system, (Zs, np.moveaxis(p.sc, 2, 0), p.speed), dt=p.dt, w=p.w,
                    restricted=p.restricted, reorth_every=p.reorth_every,
-                   project_every=p.project_every, backend=backend)
+                   project_every=p.project_every, share_bins=p.shares.shape[1],
+                   backend=backend)
 
     @property
     def steps(self) -> int:
@@ -336,22 +341,24 @@ class DeviceFlows:
         if self.backend == "cuda":
             arr = self._arr
             dev["logsums"] = arr.put(self.logsum)
+            d_shares = arr.put(self.shares)
             d_events, d_logs = arr.put(chunk), arr.put(logs)
             blocks = -(-L // self.threads)
             self._kernel[blocks, self.threads](
                 dev["Zs"], dev["scs"], dev["counters"], dev["status"], dev["stopped"],
                 dev["minv"], dev["m"], dev["wts"], float(sys_.level), dev["speeds"],
                 self.dt, nsteps, self.reorth_every, dev["w"], self.restricted, self.project_every,
-                dev["logsums"], d_events, d_logs)
+                dev["logsums"], d_events, d_logs, d_shares)
             arr.cuda.synchronize()
             self.logsum[...] = arr.get(dev["logsums"])
+            self.shares[...] = arr.get(d_shares)
             logs = arr.get(d_logs)
         else:
             dev["logsums"] = self.logsum
             cpu_members(dev["Zs"], dev["scs"], dev["counters"], dev["status"], dev["stopped"],
                         dev["minv"], dev["m"], dev["wts"], float(sys_.level), dev["speeds"],
                         self.dt, nsteps, self.reorth_every, dev["w"], self.restricted,
-                        self.project_every, self.logsum, chunk, logs)
+                        self.project_every, self.logsum, chunk, logs, self.shares)
         if event_logs is not None and hi > lo:
             event_logs[lo:hi] = np.moveaxis(logs, 1, 0)
         self._steps = end

@@ -34,6 +34,7 @@ from numba import njit
 
 from ..flows.ambient import (multiplier_lanes, stage_work, state_rate_lanes, tangent_factors_lanes,
                              tangent_rate_lanes)
+from ..geometry.energy_shares import energies_lanes, record_share_of
 from ..geometry.primitives import LANE_WIDTH, sincos
 from ..geometry.projection import project_state, project_tangent_lanes
 from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
@@ -99,12 +100,14 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
 
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                  nsteps, reorth_every, w, restricted, project_every, logsum, events,
-                 event_logs, arrays=None):
+                 event_logs, shares, arrays=None):
     """Advance the L lanes of Z, shape ((1 + k)·2N, L), by ``nsteps`` RK4 steps: lane l does
     what `tangent_kernel` does to the flat state Z[:, l] with ``sc[:, :, l]`` (sc: (2, N, L)),
     the shared step counter ``counter`` (1,), ``speed[l]`` and ``logsum[l]`` (logsum: (L, k));
     at the global step events[e] it stores logsum[l] in event_logs[e, l] (event_logs:
-    (E, L, k)).  Recording of states is not offered.
+    (E, L, k)); at every re-orthonormalisation it adds lane l's largest kinetic-energy share
+    to the histogram shares[l] (shares: (L, bins), bins 0: none).  Recording of states is
+    not offered.
 
     ``status`` (L,) holds each lane's status (RUNNING, or SINGULAR / NONFINITE once it
     stopped, with the global step in ``stopped[l]``); a stopped lane keeps, in ``frozen``
@@ -123,7 +126,7 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     lanes_in(Z, sc, Zp, s0, c0)
     running = _lanes_run(Zp, s0, c0, counter, status, stopped, frozen, minv, m, wts, level,
                          speed, dt, nsteps, reorth_every, w, restricted, project_every, logsum,
-                         events, event_logs, work, (0,) * n, (0,) * k)
+                         events, event_logs, shares, work, (0,) * n, (0,) * k)
     lanes_out(Zp, s0, c0, Z, sc)
     return running
 
@@ -131,7 +134,7 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
 @njit(cache=True, pipeline_class=LanesCompiler)
 def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
-               work, n_tag, k_tag):
+               shares, work, n_tag, k_tag):
     """The time loop of `lanes_kernel` on the flat lanes Zf, s0, c0 (element i of lane l at
     i·Lp + l, Lp a multiple of `LANE_WIDTH`; lanes ≥ L = status.size are padding, copied
     from lane 0 after each re-orthonormalisation); ``work``: the step's work arrays and the
@@ -224,6 +227,11 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
                         logsum[l, r] += log(nrm[r * Lp + l])
                     if not isfinite(logsum[l, R - 2]):
                         _stop(l, NONFINITE, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
+            if shares.shape[1] > 0:       # S, U: free until the next step's policy
+                energies_lanes(Zf, n, m, Lp, S, U)
+                for l in range(L):
+                    if status[l] == RUNNING:
+                        record_share_of(U[l], S[l], shares, l)
             _refresh(Zf, s0, c0, Lp, status, z, zs0, zc0)
         if ev < events.size and counter[0] == events[ev]:
             for l in range(L):
@@ -303,7 +311,8 @@ class LaneFlows:
         steps done.
 
     Attributes: ``Z`` ((1 + k)·2N, L), ``sc`` (2, N, L), ``counter`` (1,), ``logsum`` (L, k),
-    ``status`` (L,) and ``stopped`` (L,) (global step of a stopped lane).
+    ``shares`` (L, bins) (the histograms of the largest energy share, as the flows record
+    them), ``status`` (L,) and ``stopped`` (L,) (global step of a stopped lane).
     """
 
     def __init__(self, flows):
@@ -315,7 +324,7 @@ class LaneFlows:
             same = (_same_system(f.system, f0.system) and f.dt == f0.dt and np.array_equal(f.w, f0.w)
                     and f.restricted == f0.restricted and f.reorth_every == f0.reorth_every
                     and f.project_every == f0.project_every and f.Z.shape == f0.Z.shape
-                    and f.steps == 0)
+                    and f.shares.shape == f0.shares.shape and f.steps == 0)
             if not same:
                 raise ValueError("flows must share their system and settings, none advanced")
         self.system, self.dt, self.w = f0.system, f0.dt, f0.w
@@ -326,6 +335,7 @@ class LaneFlows:
         self.sc = np.ascontiguousarray(np.stack([f.sc for f in flows], axis=2))
         self.speed = np.array([f.speed for f in flows])
         self.logsum = np.zeros((L, f0.Z.shape[0] - 1))
+        self.shares = np.zeros((L, f0.shares.size), dtype=np.int64)
         self.counter = np.zeros(1, dtype=np.int64)
         self.status = np.full(L, RUNNING, dtype=np.int64)
         self.stopped = np.zeros(L, dtype=np.int64)
@@ -341,10 +351,11 @@ class LaneFlows:
         return self.Z[:, l].reshape(-1, 2 * self.system.n).copy()
 
     def store(self, l, flow) -> None:
-        """Lane l's whole state (stacked state, sin/cos, step counter, log-norm sums) into the
-        `TangentFlow` ``flow``: what ``flow`` would hold had it advanced alone."""
+        """Lane l's whole state (stacked state, sin/cos, step counter, log-norm sums, energy
+        shares) into the `TangentFlow` ``flow``: what ``flow`` would hold had it advanced
+        alone."""
         flow.load_state({"Z": self.lane(l), "sc": self.sc[:, :, l], "counter": self.counter,
-                         "logsum": self.logsum[l]})
+                         "logsum": self.logsum[l], "shares": self.shares[l]})
 
     def stopped_lanes(self):
         """The lanes that stopped (see `error`), in order."""
@@ -363,7 +374,7 @@ class LaneFlows:
                             self.frozen, sys_.minv, sys_.masses, sys_.weights, sys_.level,
                             self.speed, self.dt, int(nsteps), self.reorth_every, self.w,
                             self.restricted, self.project_every, self.logsum, events,
-                            event_logs, self._arrays)
+                            event_logs, self.shares, self._arrays)
 
     def error(self, l, where):
         """The exception `TangentFlow.advance` raises for the stopped lane l (``where`` names

@@ -27,6 +27,7 @@ import numpy as np
 from numba import njit
 
 from ..flows.ambient import multiplier, stage_work, state_rate, tangent_factors, tangent_rate
+from ..geometry.energy_shares import record_share
 from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
 from ..geometry.projection import project_state_into, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
@@ -230,7 +231,7 @@ def stacked_work(R, d):
 @njit(cache=True, inline="always")
 def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                  restricted, project_every, logsum, rec_start, rec_every, states, events,
-                 event_logs, vectors_rate, work):
+                 event_logs, shares, vectors_rate, work):
     """The time loop of every stacked flow: advance Z = [y; X], shape (1 + k, 2N), by
     ``nsteps`` RK4 steps of eq (8) and of the vectors' linear flow ``vectors_rate`` (the hook
     of `stacked_rk4_step`: eq (17) in `tangent_kernel`, the adjoint flow in the backward pass
@@ -245,7 +246,9 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     the first ``states.shape[1]`` entries of Z (y, then the rows of X), then of sc (the
     weighted sines, then cosines, as the loop keeps them) in ``states[row]``,
     row = (i − rec_start) // rec_every (if ``states`` has that row); when i = events[e] (a
-    sorted array of global steps), store ``logsum`` in ``event_logs[e]``.
+    sorted array of global steps), store ``logsum`` in ``event_logs[e]``; at every
+    re-orthonormalisation step add the largest kinetic-energy share to the histogram
+    ``shares`` (``charts.geometry.energy_shares``; size 0: none).
 
     Steps follow the policy of ``charts.solvers.status`` (for |dt|): a step longer than the
     cap near a singular point is cut into sub-steps (`next_substep`).
@@ -335,6 +338,7 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
                 orthonormalize(X_, w, logsum)
                 if not isfinite(logsum[R - 2]):
                     return NONFINITE, it + 1
+            record_share(Zf, n, m, shares)
         if ev < events.size and counter[0] == events[ev]:
             for r in range(R - 1):
                 event_logs[ev, r] = logsum[r]
@@ -355,7 +359,7 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
 @njit(cache=True)
 def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                    restricted, project_every, logsum, rec_start, rec_every, states, events,
-                   event_logs, work):
+                   event_logs, shares, work):
     """`stacked_loop` of eqs (8) + (17) (hook `tangent_vectors_rate`): the kernel of
     `TangentFlow` and of every forward analysis on the CPU.  It allocates its work arrays in
     its own body, where LLVM knows they alias nothing (``work`` is ignored: callers pass
@@ -366,7 +370,7 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
     s, c, f, g, p, q = stage_work(n)
     return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                         restricted, project_every, logsum, rec_start, rec_every, states, events,
-                        event_logs, tangent_vectors_rate,
+                        event_logs, shares, tangent_vectors_rate,
                         (np.empty(R * d), np.empty(4 * R * d), np.empty(n), np.empty(n), s, c, f,
                          g, p, q))
 
@@ -374,13 +378,13 @@ def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reort
 @njit(cache=True)
 def tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                  restricted, project_every, logsum, rec_start, rec_every, states, events,
-                 event_logs, work):
+                 event_logs, shares, work):
     """`tangent_kernel` on the caller's work arrays ``work`` (`stacked_work`), allocating
     nothing: the forward pass of the angle test in a GPU thread
     (``charts.analyses.angle_blocks``)."""
     return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                         restricted, project_every, logsum, rec_start, rec_every, states, events,
-                        event_logs, tangent_vectors_rate, work)
+                        event_logs, shares, tangent_vectors_rate, work)
 
 
 def reorth_steps(dt, *multiples) -> int:
@@ -477,13 +481,17 @@ class TangentFlow(StackedFlow):
         RK4 step.
     reorth_every, project_every : int
         Steps between re-orthonormalisations / projections of y (0: never project).
+    share_bins : int
+        Bins of the histogram ``shares`` of the largest kinetic-energy share, sampled at every
+        re-orthonormalisation (``charts.geometry.energy_shares``; 0: not recorded).
 
     Attributes: ``Z`` (1 + k, 2N) = [y; X], ``sc`` (2, N), ``counter`` (1,), ``logsum``
-    (k,) — together the whole state (``state()`` / ``load_state()`` for checkpoints).
+    (k,), ``shares`` (share_bins,) — together the whole state (``state()`` /
+    ``load_state()`` for checkpoints).
     """
 
     def __init__(self, system, theta, u, k, *, dt, inner="theta", restricted=True,
-                 reorth_every=1, project_every=100, seed=0):
+                 reorth_every=1, project_every=100, seed=0, share_bins=0):
         n = system.n
         check_memory(stacked_bytes(n, k), f"{k} tangent vectors of N = {n}",
                      "compute fewer exponents (n_exponents) or fewer vectors")
@@ -507,6 +515,7 @@ class TangentFlow(StackedFlow):
         self.sc = np.vstack([a * np.sin(self.Z[0, :n]), a * np.cos(self.Z[0, :n])])
         self.counter = np.zeros(1, dtype=np.int64)
         self.logsum = np.zeros(k)
+        self.shares = np.zeros(int(share_bins), dtype=np.int64)
 
     def advance(self, nsteps, *, rec_start=0, rec_every=0, states=None, events=None,
                 event_logs=None, where="RK4"):
@@ -520,17 +529,21 @@ class TangentFlow(StackedFlow):
                                       sys_.weights, sys_.level, self.speed, self.dt, int(nsteps), self.reorth_every,
                                       self.w, self.restricted, self.project_every, self.logsum,
                                       int(rec_start), int(rec_every), states, events,
-                                      event_logs, None)
+                                      event_logs, self.shares, None)
         if status != RUNNING:
             raise status_error(status, self.steps * self.dt, where)
 
     def state(self) -> dict:
         """Copies of every array that decides the next step (for checkpoints)."""
         return {"Z": self.Z.copy(), "sc": self.sc.copy(), "counter": self.counter.copy(),
-                "logsum": self.logsum.copy()}
+                "logsum": self.logsum.copy(), "shares": self.shares.copy()}
 
     def load_state(self, a) -> None:
+        """The arrays of `state` back (a checkpoint without ``shares``, written before they
+        were recorded, leaves the histogram as it is)."""
         self.Z[...] = a["Z"]
         self.sc[...] = a["sc"]
         self.counter[...] = a["counter"]
         self.logsum[...] = a["logsum"]
+        if "shares" in a:
+            self.shares[...] = a["shares"]
