@@ -23,7 +23,8 @@ from numba import njit
 from .primitives import LANE_WIDTH, sincos
 
 __all__ = ["project_state", "project_state_into", "project_constraint", "rescale_speed", "project_velocity", "tangent_part", "project_tangent", "project_tangent_sc", "project_tangent_lanes", "removed", "dg_term",
-           "project_tangent_euclidean", "project_tangent_euclidean_sc", "invariants", "invariants_of", "invariant_terms"]
+           "project_tangent_euclidean", "project_tangent_euclidean_sc", "constraint_normals",
+           "normals_of", "invariants", "invariants_of", "invariant_terms"]
 
 
 @njit(cache=True, inline="always")
@@ -204,16 +205,38 @@ def project_tangent_euclidean(y, W, wts):
 
 
 @njit(cache=True, inline="always")
-def project_tangent_euclidean_sc(y, W, s, c, a, b):
-    """Euclidean-orthogonal projection of the rows of W, shape (k, 2N), onto T_r at y
-    (the complement of span(∇F, ∇G), ∇F ∝ (a sin θ, 0), ∇G = (u a cos θ, a sin θ)); s, c =
-    a sin θ, a cos θ of y; a, b (2N,) work space."""
+def constraint_normals(y, s, c, a, b):
+    """The normals of T_r at y into a, b (2N,): a = −∇F = (a sin θ, 0) and ∇G = (u a cos θ,
+    a sin θ), the gradients of the constraint and of the tangency (s, c = a sin θ, a cos θ
+    of y); T_r is their Euclidean-orthogonal complement."""
     n = y.size // 2
     for i in range(n):
         a[i] = s[i]
         a[n + i] = 0.0
         b[i] = y[n + i] * c[i]
         b[n + i] = s[i]
+
+
+@njit(cache=True)
+def normals_of(y, wts):
+    """(a, b): `constraint_normals` of the state y (sin/cos from libm; wts = a)."""
+    n = y.size // 2
+    s = np.empty(n)
+    c = np.empty(n)
+    sincos(y, 0, n, wts, s, c)
+    a = np.empty(2 * n)
+    b = np.empty(2 * n)
+    constraint_normals(y, s, c, a, b)
+    return a, b
+
+
+@njit(cache=True, inline="always")
+def project_tangent_euclidean_sc(y, W, s, c, a, b):
+    """Euclidean-orthogonal projection of the rows of W, shape (k, 2N), onto T_r at y
+    (the complement of span(∇F, ∇G): `constraint_normals`); s, c = a sin θ, a cos θ of y;
+    a, b (2N,) work space."""
+    n = y.size // 2
+    constraint_normals(y, s, c, a, b)
     aa = 0.0
     ab = 0.0
     bb = 0.0
