@@ -24,7 +24,7 @@ S_ARGS = dict(dt=0.01, n_exponents=3, t_transient=0.0)
 AOT_SIG = ("UniTuple(int64, 2)(float64[:, ::1], float64[:, ::1], int64[::1], float64[::1], "
            "float64[::1], float64[::1], float64, float64, float64, int64, int64, float64[::1], "
            "boolean, int64, float64[::1], int64, int64, float64[:, ::1], int64[::1], "
-           "float64[:, ::1], UniTuple(float64[::1], 10))")   # the last: the kernel's work arrays
+           "float64[:, ::1], int64[::1], UniTuple(float64[::1], 10))")   # shares, work arrays
 
 
 def warm_rate(charts, S, th, u):
@@ -95,7 +95,7 @@ def interpreted():
     c = time.process_time()
     slow(b.Z, b.sc, b.counter, S.minv, S.masses, S.weights, S.level, b.speed, b.dt, n + 1,
          b.reorth_every, b.w, b.restricted, b.project_every, b.logsum, 0, 0, none,
-         np.empty(0, dtype=np.int64), none, tangent.stacked_work(*b.Z.shape))
+         np.empty(0, dtype=np.int64), none, b.shares, tangent.stacked_work(*b.Z.shape))
     py = (time.process_time() - c) / (n + 1)
     print(f"{n + 1} steps: Z identical {np.array_equal(a.Z, b.Z)}, log sums identical "
           f"{np.array_equal(a.logsum, b.logsum)}; compiled {fast * 1e6:.2f} µs per step, "

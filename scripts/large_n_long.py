@@ -7,9 +7,10 @@ transient), with errors across the members:
 * the members' own batch-means errors of λ₁ against their spread (the ensemble's
   ``error_ratio``);
 * energy localisation: the fraction of the averaging time in which one rotor holds at least
-  ``--share`` of the kinetic energy (`EnsembleResult.localised_fractions`), and across the
-  members its correlation with λ₁ (Pearson r with a 95 % interval from Fisher's z) and the
-  slope dλ₁/d(fraction);
+  ``--share`` of the kinetic energy (`EnsembleResult.localised_fractions`) and the time mean
+  of the largest share, and across the members their correlations with λ₁ (Pearson r with a
+  95 % interval from Fisher's z) and the slope dλ₁/d(fraction); the members' histograms of
+  the largest share are kept in the JSON;
 * weighted power-law fits λ₁ ∝ N^a, Σλ⁺ ∝ N^b over ``--fit-from`` and above; at a kinetic
   energy ½ per rotor (speed √N) every exponent is √N times the unit-speed one (a geodesic
   flow's time scaling, tested), so those laws follow with a + ½, b + ½.
@@ -84,6 +85,7 @@ def run_n(n, a):
                lambda1_spread=float(lam[:, 0].std(ddof=1)),
                error_ratio=float(ens.error_ratio[0]),
                share=a.share, localised_members=frac.tolist(),
+               share_counts_members=[m.energy_shares.tolist() for m in ens.members],
                cpu_seconds=time.process_time() - c0, seconds=time.perf_counter() - t0)
     row["lambda1"], row["lambda1_se"] = mean_se(lam[:, 0])
     row["sum_pos"], row["sum_pos_se"] = mean_se(pos)
@@ -91,7 +93,16 @@ def run_n(n, a):
     row["localised"], row["localised_se"] = mean_se(frac)
     row["localised_range"] = [float(frac.min()), float(frac.max())]
     row["lambda1_vs_localised"] = correlation(frac, lam[:, 0])
+    mean_top = np.array([_mean_share(m.energy_shares) for m in ens.members])
+    row["mean_largest_share"], row["mean_largest_share_se"] = mean_se(mean_top)
+    row["lambda1_vs_mean_largest_share"] = correlation(mean_top, lam[:, 0])
     return row
+
+
+def _mean_share(hist):
+    """The time mean of the largest share, from its histogram (bin centres)."""
+    hist = np.asarray(hist, float)
+    return float((hist * (np.arange(hist.size) + 0.5)).sum() / hist.sum() / hist.size)
 
 
 def print_row(r):
@@ -100,7 +111,9 @@ def print_row(r):
           f"{r['sum_pos_se']:.4f} | {r['smallest']:.4f} ± {r['smallest_se']:.4f} | "
           f"{r['error_ratio']:.2f} | {r['localised']:.3f} ± {r['localised_se']:.3f} "
           f"({r['localised_range'][0]:.3f}–{r['localised_range'][1]:.3f}) | r = {c['r']:.2f} "
-          f"[{c['r_low']:.2f}, {c['r_high']:.2f}] | transient {r['transient']:g} "
+          f"[{c['r_low']:.2f}, {c['r_high']:.2f}] | mean largest share "
+          f"{r['mean_largest_share']:.3f} ± {r['mean_largest_share_se']:.3f}, r with lambda1 = "
+          f"{r['lambda1_vs_mean_largest_share']['r']:.2f} | transient {r['transient']:g} "
           f"({r['seconds']:.0f} s wall)", flush=True)
 
 

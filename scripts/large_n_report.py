@@ -4,7 +4,9 @@
     python scripts/large_n_report.py runs/large-n --figures docs/figures/large-n > tables.md
 
 Reads the sweep's summary.csv (means over seeds, standard errors: the larger of the seed
-spread and the propagated batch-means errors, `charts.runs.sweep.statistics`).  The two speed
+spread and the propagated batch-means errors, `charts.runs.sweep.statistics`) and its
+table.csv (one row per point: the curvature and angle columns per trajectory).  The
+exponents to quote come from the long ensembles of ``scripts/large_n_long.py``.  The two speed
 normalisations are the rows with speed "1" (unit total speed, the paper's) and "n ** 0.5"
 (kinetic energy ½ per rotor of unit mass).
 """
@@ -38,6 +40,23 @@ def load(folder):
     return out
 
 
+def per_seed(folder):
+    """{(N, speed): {column: [value of seed 1, seed 2, …]}} from the sweep's table.csv (one
+    row per point): the spread between the trajectories, shown as it is."""
+    out = {}
+    for r in csv.DictReader(open(Path(folder) / "table.csv")):
+        n = int(float(r["n"]))
+        d = out.setdefault((n, r["speed"].strip()), {})
+        kpos = [float(r[f"Kpos_exact_{i}"]) for i in range(1, n - 1)]
+        for key, value in (("kpos", np.mean(kpos)), ("kany", float(r["Kpos_exact_any"])),
+                           ("phi_min", float(r["phi_restricted_min"])),
+                           ("phi_p001", float(r["phi_restricted_p001"])),
+                           ("phi_med", float(r["phi_restricted_median"])),
+                           ("phi_small", float(r["phi_restricted_frac_small"]))):
+            d.setdefault(key, []).append(value)
+    return out
+
+
 def ks(d):
     """h_KS = Σ of the N − 2 positive exponents; error bar Σ se (the exponents' errors are
     correlated, so the quadrature sum would understate it)."""
@@ -48,21 +67,21 @@ def fmt(x, e):
     return f"{x:.4f} ± {e:.4f}"
 
 
-def tables(data, ns):
-    print("### Leading exponent, KS entropy, curvature and angles against N\n")
-    print("| N | speed | λ₁ | h_KS = Σλᵢ | h_KS/(N−2) | D_KY | frac K>0 (mean over i) | "
-          "frac K>0 (any i) | φ_r min | φ_r 0.1 % | φ_r median | φ_r < 0.05 |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
-    for sp in (UNIT, PER_ROTOR):
-        for n in ns:
-            d = data.get((n, sp))
-            if d is None:
-                continue
-            h, he = ks(d)
-            print(f"| {n} | {LABEL[sp]} | {fmt(d['lam'][0], d['se'][0])} | {fmt(h, he)} | "
-                  f"{h / (n - 2):.4f} | {2 * n - 3} | {d['kpos'].mean():.3f} | {d['kany']:.3f} | "
-                  f"{d['phi_min']:.1e} | {d['phi_p001']:.1e} | {d['phi_med']:.3f} | "
-                  f"{d['phi_small']:.4f} |")
+def tables(data, ns, seeds=None):
+    if seeds:
+        print("### Curvature and angles against N (each trajectory's value: seed 1 / seed 2)\n")
+        print("| N | speed | frac K>0 (mean over i) | frac K>0 (any i) | φ_r min | φ_r 0.1 % | "
+              "φ_r median | φ_r < 0.05 |")
+        print("|---|---|---|---|---|---|---|---|")
+        forms = (("kpos", "{:.3f}"), ("kany", "{:.3f}"), ("phi_min", "{:.1e}"),
+                 ("phi_p001", "{:.1e}"), ("phi_med", "{:.3f}"), ("phi_small", "{:.4f}"))
+        for sp in (UNIT, PER_ROTOR):
+            for n in ns:
+                d = seeds.get((n, sp))
+                if d is None:
+                    continue
+                cells = [" / ".join(f.format(v) for v in d[key]) for key, f in forms]
+                print(f"| {n} | {LABEL[sp]} | " + " | ".join(cells) + " |")
     print("\n### Scaling law: λ(√N)/λ(1) = √N for a geodesic flow\n")
     print("| N | √N | λ₁(√N)/λ₁(1) | h_KS(√N)/h_KS(1) |")
     print("|---|---|---|---|")
@@ -76,17 +95,6 @@ def tables(data, ns):
         rh = ha / hb
         eh = rh * np.hypot(hae / ha, hbe / hb)
         print(f"| {n} | {np.sqrt(n):.3f} | {r1:.3f} ± {e1:.3f} | {rh:.3f} ± {eh:.3f} |")
-    for n in (8, 12):
-        print(f"\n### Lyapunov spectrum, N = {n} (the N − 2 = {n - 2} positive exponents; the "
-              "others are their negatives and a zero pair)\n")
-        print("| i | " + " | ".join(LABEL[sp] for sp in (UNIT, PER_ROTOR)) + " |")
-        print("|---|---|---|")
-        for i in range(n - 2):
-            cells = []
-            for sp in (UNIT, PER_ROTOR):
-                d = data.get((n, sp))
-                cells.append("" if d is None else fmt(d["lam"][i], d["se"][i]))
-            print(f"| {i + 1} | " + " | ".join(cells) + " |")
 
 
 def _n_axis(ax, ns):
@@ -178,7 +186,8 @@ def main(argv=None):
     a = p.parse_args(argv)
     data = load(a.folder)
     ns = sorted({n for n, _ in data})
-    tables(data, ns)
+    table = Path(a.folder) / "table.csv"
+    tables(data, ns, per_seed(a.folder) if table.exists() else None)
     if a.figures:
         figures(data, ns, a.figures)
     return 0

@@ -94,3 +94,33 @@ def test_ensemble_fractions_and_files_keep_the_counts(tmp_path):
     ds = ens.to_xarray()
     assert ds["energy_share_counts"].dims == ("member", "share_bin")
     assert ds["share_bin"].values[40] == 0.4
+
+
+def test_a_resumed_scene_keeps_its_histogram_and_an_old_checkpoint_is_named(tmp_path):
+    """Interrupted and resumed, a Lyapunov scene gives the uninterrupted histogram; resumed
+    from a checkpoint written before the histogram existed (no ``flow_shares``), it says the
+    localisation is not given instead of reporting part of the run."""
+    from charts.runs.runner import run_scene
+    from charts.runs.scene import parse_scene
+    sc = parse_scene({"system": {"n": 5}, "run": {"t_final": 4.0, "t_transient": 1.0,
+                                                  "checkpoint_every": 0.5},
+                      "effects": {"lyapunov": {"n_batches": 2}}})
+    full = run_scene(sc, tmp_path / "full", quiet=True)["results"]["lyapunov"]
+
+    def stop(i, n):
+        if i == 3:
+            raise KeyboardInterrupt
+
+    for name in ("cut", "old"):
+        with pytest.raises(KeyboardInterrupt):
+            run_scene(sc, tmp_path / name, quiet=True, on_chunk=stop)
+    ck = tmp_path / "old" / "checkpoint.npz"
+    with np.load(ck) as a:
+        arrays = {k: a[k] for k in a.files if k not in ("flow_shares", "shares_partial")}
+    np.savez(ck, **arrays)
+    cut = run_scene(sc, tmp_path / "cut", quiet=True, resume=True)["results"]["lyapunov"]
+    old = run_scene(sc, tmp_path / "old", quiet=True, resume=True)["results"]["lyapunov"]
+    assert cut["energy_localisation"] == full["energy_localisation"]
+    assert full["energy_localisation"]["samples"] == 40
+    assert "before the energy shares" in old["energy_localisation"]["note"]
+    assert old["exponents"] == full["exponents"]

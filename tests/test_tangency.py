@@ -1,10 +1,11 @@
-"""The orientation of the splitting E_u ⊕ E_cs (``charts.analyses.tangency``).
+"""The oriented volume of the splitting E_u ⊕ E_cs (``charts.analyses.tangency``).
 
-The oriented volume V = det[Q_u, Q_cs, a, b]/|a ∧ b| keeps its sign along an orbit (E_u and
-E_cs are invariant, det M > 0): checked along an orbit of a smooth family member that passes
-within 4·10⁻⁴ rad of a tangency.  |V| is the product of the sines of the principal angles
+|V| = |det[Q_u, Q_cs, a, b]|/|a ∧ b| is the product of the sines of the principal angles
 between E_u and E_cs: checked against SciPy's `subspace_angles` (an independent route), and
-so |V| ≤ sin φ, φ the CLV route's angle."""
+so |V| ≤ sin φ, φ the CLV route's angle, along an orbit of a smooth family member that
+passes within 4·10⁻⁴ rad of a tangency.  V's sign is fixed along an orbit (by the
+invariance of E_u and E_cs, and by the construction of Ginelli's CLVs): a consistency check
+of the implementation, which could fail only where |V| ≈ 10⁻¹⁶."""
 import numpy as np
 import pytest
 from scipy.linalg import subspace_angles
@@ -22,7 +23,7 @@ def scan():
     return covariant_lyapunov_vectors(SYSTEM, theta, u, 1660.0, keep_vectors=True)
 
 
-def test_the_sign_of_v_is_an_invariant_of_the_orbit(scan):
+def test_v_is_bounded_by_the_angle_and_keeps_its_sign(scan):
     V = oriented_volume(scan.vectors, scan.params["m"], scan.states, SYSTEM.weights)
     assert np.unique(np.sign(V)).size == 1
     assert np.nanmin(scan.phi) < 1e-3                 # the orbit does come close
@@ -56,4 +57,12 @@ def test_closest_passage_is_resolved_on_the_same_orbit():
     assert cp.differences["scan_difference"] < 1e-6       # the same passage
     assert cp.differences["state_difference"] < 1e-3      # dt/2 follows it
     assert cp.sign_kept and ref.crossings.size == 0
-    assert "invariant" in cp.summary()
+    assert "invariance" in cp.summary()
+
+
+def test_bad_arguments_are_refused(scan):
+    with pytest.raises(ValueError, match="restricted variant"):
+        oriented_volume(np.zeros((1, 8, 8)), 2, scan.states[:1], SYSTEM.weights)
+    theta, u = SYSTEM.random_state(seed=SEED)
+    with pytest.raises(ValueError, match="at least 2"):
+        closest_passage(SYSTEM, theta, u, 10.0, window=1.0)

@@ -85,9 +85,10 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
 
 
 def result_bytes(cfg) -> int:
-    """Bytes of one member's `LyapunovResult`: its history, batches and exponents (k each)."""
+    """Bytes of one member's `LyapunovResult`: its history, batches and exponents (k each)
+    and its histogram of energy shares."""
     records, ends, _ = lyapunov_schedule(cfg)
-    return 8 * cfg.k * (2 * len(records) + len(ends) + 4)
+    return 8 * (cfg.k * (2 * len(records) + len(ends) + 4) + SHARE_BINS)
 
 
 def plan_memory(system, cfg, members, device) -> None:
@@ -98,7 +99,7 @@ def plan_memory(system, cfg, members, device) -> None:
                  f"the results of {members} members (history of {cfg.total // cfg.record} records)",
                  "run fewer members or record less often (record_every)")
     if device == "cuda":
-        per = device_bytes(system.n, cfg.k)
+        per = device_bytes(system.n, cfg.k, SHARE_BINS)
         check_memory(2 * members * per, f"the initial states of {members} members",
                      "run fewer members at once")
         free = cuda_module().current_context().get_memory_info()[0]

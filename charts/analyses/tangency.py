@@ -11,17 +11,17 @@ Gram–Schmidt, which keeps its orientation), a, b the normals of T_r
 (``charts.geometry.projection.constraint_normals``), has |V| = the product of the sines of
 the principal angles between E_u and E_cs, so |V| ≤ sin φ, φ the angle of the test.
 
-**Its sign is an invariant of the orbit.**  E_u and E_cs are invariant: E(t) = M(t) E(0),
-M(t) the linearised flow (eq 17), and the computed bases are the transported ones times
-triangular factors with positive diagonals (Gram–Schmidt, Ginelli's positive column
-scalings).  So V(t) = det M(t)·V(0)·(positive factors), and det M(t) > 0 (M is continuous
-from the identity and invertible; on T_r the flow is symplectic).  A tangency at one time
-would be a tangency along the whole orbit; along a typical orbit the angle comes close to
-zero but V keeps its sign.  A sign change of V between samples of one orbit therefore
-certifies nothing: it can only be numerical noise (tests/test_tangency.py checks the
-invariant along orbits with angles down to 10⁻⁴).  (The sign itself is a convention of the
-run: it depends on the orientations that the random initial vectors give the bases, so two
-runs of one orbit may differ in sign; each keeps its own.)
+**Its sign cannot change along an orbit**, for two reasons.  Dynamically: E_u and E_cs are
+invariant, E(t) = M(t) E(0), M(t) the linearised flow (eq 17), and the computed bases are
+the transported ones times triangular factors with positive diagonals (Gram–Schmidt,
+Ginelli's positive column scalings), so V(t) = det M(t)·V(0)·(positive factors) with
+det M(t) > 0 (M is continuous from the identity and invertible): a tangency at one time
+would be a tangency along the whole orbit.  By construction: the CLVs are v = Q C with Q the
+Gram–Schmidt basis of T_r and C upper triangular with a positive diagonal, so sign V =
+sign det[Q, a, b], which never vanishes.  A sign change of V between samples of one orbit
+can therefore only be rounding where |V| ≈ 10⁻¹⁶, and a certificate of a tangency by a sign
+change along one orbit is impossible (docs/families.md).  (The sign is a convention of the
+run, set by its random initial vectors: two runs of one orbit may differ in it.)
 
 What can be resolved is the closest passage itself: `closest_passage` finds it in a scan and
 samples it at every step, again with the step halved and with the transients halved, so that
@@ -53,11 +53,14 @@ def _oriented_basis(V):
 
 
 def oriented_volume(vectors, m, states, weights):
-    """V(t) of the module docstring at each sample: ``vectors`` (S, D, 2N) the CLVs (unit,
-    largest exponent first), ``m`` the dimension of E_u, ``states`` (S, 2N), ``weights`` the
-    constraint's weights.  Returns (S,)."""
+    """V(t) of the module docstring at each sample: ``vectors`` (S, D, 2N) the CLVs of the
+    restricted variant (D = 2N − 2, unit, largest exponent first), ``m`` the dimension of
+    E_u, ``states`` (S, 2N), ``weights`` the constraint's weights.  Returns (S,)."""
     vectors = np.asarray(vectors, dtype=float)
-    S = vectors.shape[0]
+    S, D, d = vectors.shape
+    if D != d - 2 or not 0 < m < D:
+        raise ValueError(f"oriented_volume needs the {d - 2} CLVs of the restricted variant "
+                         f"(T_r) and 0 < m < {d - 2}; got {D} vectors, m = {m}")
     out = np.empty(S)
     for j in range(S):
         a, b = normals_of(np.ascontiguousarray(states[j]), weights)
@@ -110,11 +113,13 @@ class ClosestPassage:
         (dt/2, t_transient).
     phi_min, phi_uncertainty : the reference's smallest angle at every step, and the largest
         difference of the other two runs' smallest angles from it.
-    differences : max |ΔV| of runs 1 and 2 from run 0 over the window (``transient``,
-        ``step``); the largest differences of the trajectory (θ, u) of run 2 from run 0's
+    differences : max Δ|V| of runs 1 and 2 from run 0 over the window (``transient``,
+        ``step``; |V|, as the runs' orientations are independent conventions); the largest
+        differences of the trajectory (θ, u) of run 2 from run 0's
         (``state_difference``) and of run 0's from the scan's at their common samples
         (``scan_difference``: small, the same passage).
-    sign_kept : whether V keeps one sign along the scan and along each run (the invariant).
+    sign_kept : whether V keeps one sign along the scan and along each run (a consistency
+        check: by construction it can fail only where |V| ≈ 10⁻¹⁶).
     """
     t_scan_min: float
     phi_scan_min: float
@@ -146,9 +151,9 @@ class ClosestPassage:
                      f"{d['step']:.1e} with the step halved; trajectory with the step halved "
                      f"{d['state_difference']:.1e}, the reference from the scan "
                      f"{d['scan_difference']:.1e})")
-        lines.append("V keeps its sign along the scan and along each run: "
-                     f"{'yes' if self.sign_kept else 'NO (numerical noise: see the margins)'} "
-                     "(an invariant of the orbit: the angle is nowhere exactly zero on it)")
+        lines.append("V keeps its sign along the scan and along each run (as it must, by "
+                     "construction and by the invariance of E_u and E_cs): "
+                     f"{'yes' if self.sign_kept else 'NO (rounding where |V| ≈ 1e-16)'}")
         return "\n".join(lines)
 
 
@@ -175,27 +180,30 @@ def closest_passage(system, theta0, u0, t_scan, *, window=6.0, t_transient=40.0,
     (module docstring).
 
     The scan: `covariant_lyapunov_vectors` (restricted, samples every 0.1, the CLVs kept for
-    V) over ``t_scan`` after a transient of ``t_transient`` + ``window``/2, so that the
-    closest sample has room for the resolved runs before it.  The window of ``window`` time
-    units around it is sampled at every step ``dt`` three times: after transients (forward
-    and backward) of ``t_transient``, of ``t_transient``/2 (starting later on the same
-    trajectory) and of ``t_transient`` with the step dt/2 (``t_transient`` rounded up to an
-    even number of time units, the projection interval, so that every run starts at a
-    projection of the scan's trajectory).  Returns a `ClosestPassage` (``.summary()`` for the
-    report)."""
+    V) over ``t_scan`` after a transient of ``t_transient`` + ``window``, so that the closest
+    sample has room for the resolved runs before it.  The window of ``window`` time units
+    around it (≥ 2, so that the closest sample lies inside) is sampled at every step ``dt``
+    three times: after transients (forward and backward) of ``t_transient``, of
+    ``t_transient``/2 (starting later on the same trajectory) and of ``t_transient`` with
+    the step dt/2 (``t_transient`` rounded up to an even number of time units, the
+    projection interval, so that every run starts at a projection of the scan's
+    trajectory).  Returns a `ClosestPassage` (``.summary()`` for the report)."""
     t_transient = 2 * float(np.ceil(positive_time("t_transient", t_transient) / 2))
     half_tr = t_transient / 2
     window = positive_time("window", window)
+    if window < 2.0:
+        raise ValueError(f"window must be at least 2 time units (the runs start at whole time "
+                         f"units), got {window!r}")
     dt = positive_time("dt", dt)
     theta0, u0 = start_state(system, theta0, u0)
-    project = round(1.0 / dt)                    # the CLV route's projection every 1.0
-    lead = float(np.ceil(t_transient + window / 2))
+    lead = float(np.ceil(t_transient + window))
     scan = covariant_lyapunov_vectors(system, theta0, u0, t_scan, dt=dt, t_transient=lead,
                                       seed=seed, keep_vectors=True)
+    project = round(scan.params["project_every"] / dt) if scan.params["project_every"] else 0
     v_scan = oriented_volume(scan.vectors, scan.params["m"], scan.states, system.weights)
     j = int(np.nanargmin(scan.phi))
     t_min, phi_min = float(scan.t[j]), float(scan.phi[j])
-    t_start = float(np.floor(t_min - window / 2))            # the window's start
+    t_start = float(np.round(t_min - window / 2))            # a whole time unit: a projection
     a = t_start - t_transient                                # the reference run's start
     window = 2 * round(window / 2 / dt) * dt
     th_a, u_a = _state_at(system, theta0, u0, a, dt, project)
@@ -203,13 +211,13 @@ def closest_passage(system, theta0, u0, t_scan, *, window=6.0, t_transient=40.0,
     ref, st_ref = _resolved(system, th_a, u_a, a, window, dt, t_transient, dt, seed)
     short, _ = _resolved(system, th_b, u_b, a + half_tr, window, dt, half_tr, dt, seed)
     fine, st_fine = _resolved(system, th_a, u_a, a, window, dt / 2, t_transient, dt, seed)
-    common = np.searchsorted(scan.t, ref.t[0] - 0.5 * dt), np.searchsorted(scan.t, ref.t[-1] + 0.5 * dt)
-    step = round(0.1 / dt)                                   # the scan samples every 0.1
-    scan_diff = np.abs(scan.states[common[0]:common[1]] - st_ref[::step][: common[1] - common[0]])
-    diffs = {"transient": float(np.max(np.abs(short.volume - ref.volume))),
-             "step": float(np.max(np.abs(fine.volume - ref.volume))),
+    # the scan's samples inside the window, and the reference's samples at the same times
+    inside = np.flatnonzero((scan.t >= ref.t[0] - dt / 2) & (scan.t <= ref.t[-1] + dt / 2))
+    at = np.rint((scan.t[inside] - ref.t[0]) / dt).astype(int)
+    diffs = {"transient": float(np.max(np.abs(np.abs(short.volume) - np.abs(ref.volume)))),
+             "step": float(np.max(np.abs(np.abs(fine.volume) - np.abs(ref.volume)))),
              "state_difference": float(np.max(np.abs(st_fine - st_ref))),
-             "scan_difference": float(scan_diff.max()) if scan_diff.size else float("nan")}
+             "scan_difference": float(np.max(np.abs(scan.states[inside] - st_ref[at])))}
     kept = bool(all(np.unique(np.sign(v)).size == 1
                     for v in (v_scan, ref.volume, short.volume, fine.volume)))
     params = dict(**system.describe(), t_scan=float(t_scan), window=window,

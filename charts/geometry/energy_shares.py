@@ -23,7 +23,7 @@ __all__ = ["SHARE_BINS", "record_share", "energies_lanes", "record_share_of", "l
 #: read exactly).
 SHARE_BINS = 100
 #: The share above which a run counts as localised by default: one rotor holding over 40 % of
-#: the kinetic energy (at N ≥ 16 the mean share of a rotor is ≤ 6 %).
+#: the kinetic energy (at N ≥ 16 the mean share of a rotor is at most 1/16).
 LOCALISED_SHARE = 0.4
 
 

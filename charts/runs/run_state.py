@@ -61,6 +61,7 @@ class RunState:
                 if plan.engine == "kernel" else None
         self._y = self.y0.copy()
         self.lyap_marks = []           # (tick, logsum) at Lyapunov batch boundaries
+        self.shares_partial = False    # resumed from a checkpoint without the energy shares
         self.rhs = 0                   # evaluations of the (augmented) vector field
         self.rhs_frame = 0             # extra evaluations for the curvature frame steps
         self.steps = 0                 # accepted integrator steps
@@ -111,6 +112,7 @@ class RunState:
                  len(self.lyap_marks), self.plan.tangent_vectors)}
         if self.flow is not None:
             a.update({"flow_" + k: v for k, v in self.flow.state().items()})
+            a["shares_partial"] = np.array(self.shares_partial)
         for name, rows in self.rec.items():
             a["rec_" + name] = np.array(rows, dtype=float)
         for name, rows in self.rec_t.items():
@@ -119,8 +121,12 @@ class RunState:
 
     def load_arrays(self, a):
         if self.flow is not None:
+            # a checkpoint written before the energy shares were recorded has none: the
+            # histogram then covers only what follows, and the result says so
+            old = "flow_shares" not in a
+            self.shares_partial = old or bool(a.get("shares_partial", False))
             self.flow.load_state({k: a["flow_" + k] for k in self.flow.state()
-                                  if "flow_" + k in a})
+                                  if not (old and k == "shares")})
         else:
             self._y = a["y"].copy()
         rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]

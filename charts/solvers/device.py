@@ -239,10 +239,11 @@ def flow_states(flows):
             np.array([f.speed for f in flows]))
 
 
-def device_bytes(n, k) -> int:
+def device_bytes(n, k, share_bins=0) -> int:
     """Bytes one member of `DeviceFlows` holds on the GPU: its stacked state (1 + k)·2N,
-    sin/cos 2N, log-norm sums k, speed, counter, status and stop step."""
-    return 8 * ((1 + k) * 2 * n + 2 * n + k + 4)
+    sin/cos 2N, log-norm sums k, speed, counter, status and stop step, and its histogram of
+    energy shares (``share_bins``)."""
+    return 8 * ((1 + k) * 2 * n + 2 * n + k + 4 + share_bins)
 
 
 _NO_EVENTS = np.empty(0, dtype=np.int64)
