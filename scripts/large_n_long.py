@@ -30,6 +30,7 @@ import time
 import numpy as np
 
 import charts
+from charts.geometry.energy_shares import largest_shares
 
 
 def fit_power_law(n, y, se):
@@ -117,17 +118,65 @@ def print_row(r):
           f"({r['seconds']:.0f} s wall)", flush=True)
 
 
+def maxwell_shares(n, share, samples=200_000, seed=0):
+    """(mean largest share, fraction of samples with a largest share ≥ ``share``) of N
+    independent Gaussian velocities of unit mass (energy shared as in a Maxwell gas, the
+    constraints neglected): the equilibrium reference of the localisation columns."""
+    u = np.random.default_rng(seed).normal(size=(samples, n))
+    top = largest_shares(u, np.ones(n))
+    return float(top.mean()), float(np.mean(top >= share))
+
+
+def markdown(rows, fits, fit_from):
+    """The tables of docs/large-n.md from the rows (and the fits over N ≥ fit_from)."""
+    print("| N | members × T | transient | λ₁ | Σλ⁺ (h_KS) | λ_{N−2} | λ₁ at speed √N | "
+          "Σλ⁺ at speed √N | within-run / between-member error of λ₁ |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        q = np.sqrt(r["n"])
+        print(f"| {r['n']} | {r['members']} × {r['t_final']:g} | {r['transient']:.0f} | "
+              f"{r['lambda1']:.4f} ± {r['lambda1_se']:.4f} | {r['sum_pos']:.4f} ± "
+              f"{r['sum_pos_se']:.4f} | {r['smallest']:.4f} ± {r['smallest_se']:.4f} | "
+              f"{q * r['lambda1']:.4f} ± {q * r['lambda1_se']:.4f} | {q * r['sum_pos']:.3f} ± "
+              f"{q * r['sum_pos_se']:.3f} | {r['error_ratio']:.2f} |")
+    print()
+    print(f"| N | fraction of time one rotor holds ≥ {rows[0]['share']:g} of the energy: mean ± se "
+          "(members' range) | Maxwell gas | r with λ₁ [95 %] | slope dλ₁/d(fraction) | time mean "
+          "of the largest share | Maxwell gas | r with λ₁ [95 %] |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        c, d = r["lambda1_vs_localised"], r["lambda1_vs_mean_largest_share"]
+        rc = "—" if not np.isfinite(c["r"]) else f"{c['r']:.2f} [{c['r_low']:.2f}, {c['r_high']:.2f}]"
+        sl = "—" if not np.isfinite(c["slope"]) else f"{c['slope']:.3f} ± {c['slope_se']:.3f}"
+        top, frac = maxwell_shares(r["n"], r["share"])
+        print(f"| {r['n']} | {r['localised']:.4f} ± {r['localised_se']:.4f} "
+              f"({r['localised_range'][0]:.4f}–{r['localised_range'][1]:.4f}) | {frac:.4f} | "
+              f"{rc} | {sl} | {r['mean_largest_share']:.3f} ± {r['mean_largest_share_se']:.3f} | "
+              f"{top:.3f} | {d['r']:.2f} [{d['r_low']:.2f}, {d['r_high']:.2f}] |")
+    if fits:
+        print()
+        print(f"fits over N ≥ {fit_from}: λ₁ ∝ N^a, a = {fits['lambda1'][0]:.3f} ± "
+              f"{fits['lambda1'][1]:.3f} (χ²/dof {fits['lambda1'][2]:.2f}); Σλ⁺ ∝ N^b, b = "
+              f"{fits['sum_pos'][0]:.3f} ± {fits['sum_pos'][1]:.3f} (χ²/dof "
+              f"{fits['sum_pos'][2]:.2f})")
+
+
 def figures(rows, folder):
     """The spectrum's shape against i/(N − 2), the laws against N, λ₁ against the localised
     fraction per member."""
+    from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
+
     from charts.plotting.style import new_figure, save_png
     os.makedirs(folder, exist_ok=True)
+    from matplotlib import colormaps
+
+    colour = colormaps["viridis"]
     fig, ax = new_figure(figsize=(6.4, 4.4))
-    for r in rows:
+    for i, r in enumerate(rows):
         lam, se = np.array(r["spectrum"]), np.array(r["spectrum_se"])
         x = np.arange(1, lam.size + 1) / max(r["n"] - 2, 1)
         ax.errorbar(x, lam / r["lambda1"], yerr=se / r["lambda1"], marker="o", ms=2.5, lw=0.9,
-                    label=f"N = {r['n']}")
+                    color=colour(0.92 * i / max(len(rows) - 1, 1)), label=f"N = {r['n']}")
     ax.set_xlabel("i / (N − 2)")
     ax.set_ylabel("λᵢ / λ₁")
     ax.set_title(f"Spectrum shape, {rows[0]['members']} members × T = {rows[0]['t_final']:g} "
@@ -144,21 +193,36 @@ def figures(rows, folder):
                     capsize=2, label="speed √N (energy ½ per rotor)")
         ax.set_xscale("log")
         ax.set_yscale("log")
+        ax.set_xticks(ns)
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_formatter(ScalarFormatter())
+            axis.set_minor_formatter(NullFormatter())
+        ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
         ax.set_xlabel("N (rotors)")
         ax.set_ylabel(f"{label} (1 / time unit)")
         ax.set_title(f"{label} against N ± standard error across members", fontsize=10)
         ax.legend(fontsize=8, frameon=False)
     save_png(fig, os.path.join(folder, "long-laws.png"))
-    big = [r for r in rows if r["n"] >= 16]
+    big = [r for r in rows if r["n"] >= 8]
     if big:
-        fig, ax = new_figure(figsize=(6.4, 4.4))
-        for r in big:
-            ax.plot(r["localised_members"], r["lambda1_members"], "o", ms=4, label=f"N = {r['n']}")
-        ax.set_xlabel(f"fraction of time one rotor holds ≥ {big[0]['share']:g} of the energy")
-        ax.set_ylabel("λ₁ of the member (1 / time unit)")
-        ax.set_title("Energy localisation and the leading exponent, one point per member",
-                     fontsize=10)
-        ax.legend(fontsize=8, frameon=False)
+        fig, axes = new_figure(1, 2, figsize=(11, 4.2))
+        for i, r in enumerate(big):
+            c = colour(0.92 * i / max(len(big) - 1, 1))
+            rel = np.array(r["lambda1_members"]) / r["lambda1"]
+            top = [_mean_share(h) for h in r["share_counts_members"]]
+            if max(r["localised_members"]) > 0:
+                axes[0].plot(r["localised_members"], rel, "o", ms=3.5, color=c, label=f"N = {r['n']}")
+            axes[1].plot(top, rel, "o", ms=3.5, color=c, label=f"N = {r['n']}")
+        axes[0].set_xlabel(f"fraction of time one rotor holds ≥ {big[0]['share']:g} of the energy")
+        axes[1].set_xlabel("time mean of the largest share of the kinetic energy")
+        axes[1].set_xscale("log")
+        for ax in axes:
+            ax.set_ylabel("λ₁ of the member / mean λ₁ of its N")
+            ax.legend(fontsize=7, frameon=False, ncol=2)
+        axes[0].set_title("Localised episodes and the leading exponent (one point per member)",
+                          fontsize=9)
+        axes[1].set_title("The largest share and the leading exponent (one point per member)",
+                          fontsize=9)
         save_png(fig, os.path.join(folder, "long-localisation.png"))
 
 
@@ -174,7 +238,21 @@ def main():
     ap.add_argument("--json", default=None)
     ap.add_argument("--resume", action="store_true", help="skip the N the --json file holds")
     ap.add_argument("--figures", default=None)
+    ap.add_argument("--markdown", action="store_true",
+                    help="print the docs' tables from the --json file (no runs)")
     a = ap.parse_args()
+    if a.markdown:
+        with open(a.json, encoding="utf-8") as fh:
+            rows = sorted(json.load(fh)["rows"], key=lambda r: r["n"])
+        fit_rows = [r for r in rows if r["n"] >= a.fit_from]
+        ns = np.array([r["n"] for r in fit_rows], float)
+        fits = {key: fit_power_law(ns, np.array([r[key] for r in fit_rows]),
+                                   np.array([r[f"{key}_se"] for r in fit_rows]))
+                for key in ("lambda1", "sum_pos")} if len(fit_rows) >= 3 else {}
+        markdown(rows, fits, a.fit_from)
+        if a.figures:
+            figures(rows, a.figures)
+        return
     if a.transient != "auto":
         float(a.transient)
     rows = []

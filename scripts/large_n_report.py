@@ -107,55 +107,10 @@ def _n_axis(ax, ns):
     ax.xaxis.set_minor_formatter(NullFormatter())
 
 
-def _log_y(ax):
-    from matplotlib.ticker import LogFormatter
-
-    ax.set_yscale("log")
-    ax.yaxis.set_minor_formatter(LogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
-
-
 def figures(data, ns, out):
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    # spectrum shape
-    fig, axes = new_figure(1, 2, figsize=(10, 4))
-    for ax, sp in zip(axes, (UNIT, PER_ROTOR)):
-        cmap = __import__("matplotlib").colormaps["viridis"]
-        for j, n in enumerate(ns):
-            d = data.get((n, sp))
-            if d is None or n < 4:
-                continue
-            x = np.arange(1, n - 1) / (n - 2)
-            ax.errorbar(x, d["lam"] / d["lam"][0], yerr=d["se"] / d["lam"][0], fmt=".-", ms=3,
-                        lw=0.8, color=cmap(j / max(1, len(ns) - 1)), label=f"N = {n}")
-        ax.set_xlabel("i / (N − 2)")
-        ax.set_ylabel("λᵢ / λ₁")
-        ax.set_title(f"Spectrum shape, {LABEL[sp]}", fontsize=10)
-        ax.grid(alpha=0.3)
-    axes[1].legend(fontsize=7, ncol=2)
-    save_png(fig, out / "spectrum-shape.png")
-    # λ1, h_KS, per-degree entropy against N
-    fig, axes = new_figure(1, 3, figsize=(13, 4))
-    for sp, mk in ((UNIT, "o-"), (PER_ROTOR, "s-")):
-        nn = [n for n in ns if (n, sp) in data]
-        d = [data[(n, sp)] for n in nn]
-        axes[0].errorbar(nn, [x["lam"][0] for x in d], yerr=[x["se"][0] for x in d], fmt=mk,
-                         label=LABEL[sp])
-        h = [ks(x) for x in d]
-        axes[1].errorbar(nn, [a for a, _ in h], yerr=[e for _, e in h], fmt=mk, label=LABEL[sp])
-        axes[2].errorbar(nn, [a / (n - 2) for (a, _), n in zip(h, nn)],
-                         yerr=[e / (n - 2) for (_, e), n in zip(h, nn)], fmt=mk, label=LABEL[sp])
-    for ax, yl, title in zip(axes, ("λ₁ (1/time)", "h_KS = Σ λᵢ⁺ (1/time)", "h_KS / (N − 2)"),
-                             ("Leading exponent", "Kolmogorov–Sinai entropy (Pesin)",
-                              "Entropy per positive exponent")):
-        _n_axis(ax, ns)
-        _log_y(ax)
-        ax.set_xlabel("N (rotors)")
-        ax.set_ylabel(yl)
-        ax.set_title(title, fontsize=10)
-        ax.grid(alpha=0.3, which="both")
-    axes[0].legend(fontsize=8)
-    save_png(fig, out / "exponents-vs-n.png")
+    # (the exponents' figures come from the long ensembles: scripts/large_n_long.py)
     # curvature and angles against N
     fig, axes = new_figure(1, 2, figsize=(10, 4))
     for sp, mk in ((UNIT, "o-"), (PER_ROTOR, "s--")):
