@@ -200,6 +200,20 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
                 transport=ds["transported"].values[0] if "transported" in ds else None,
                 t_eval=ds["t"].values if ds.attrs["options_output"] == "t_eval" else None)
             assert np.array_equal(again.theta, ds["theta"].values)
+        if name == "lyapunov":          # the initial state and every setting: the same call
+            a = ds.attrs
+            system = charts.RotorSystem(n, masses=masses.tolist(), weights=weights.tolist(),
+                                        level=float(a["params_level"]))
+            again = charts.lyapunov_spectrum(
+                system, np.atleast_1d(a["params_theta0"]), np.atleast_1d(a["params_u0"]),
+                float(a["params_t_final"]), dt=float(a["params_dt"]),
+                n_exponents=int(a["params_n_exponents"]), inner=str(a["params_inner"]),
+                space=str(a["params_space"]), t_transient=float(a["params_t_transient"]),
+                n_batches=int(a["params_n_batches"]), reorth_every=float(a["params_reorth_every"]),
+                project_every=float(a["params_project_every"]),
+                record_every=float(a["params_record_every"]), seed=int(a["params_seed"]))
+            assert np.array_equal(again.exponents, ds["exponents"].values)
+            assert np.array_equal(again.energy_shares, ds["energy_share_counts"].values)
 
 
 def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):

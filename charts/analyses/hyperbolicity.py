@@ -86,7 +86,10 @@ class AngleResult(Archivable):
 
     def statistics(self, variant="restricted", small=SMALL_ANGLE):
         """`angle_statistics` of the angles of ``variant`` ("restricted" or "full"): a dict
-        of the summary (quantiles, fraction below ``small``, the small-angle law)."""
+        with the keys ``min``, ``median``, ``p001``, ``p01``, ``n``, ``small``,
+        ``frac_small`` and the small-angle law's ``law_exponent``, ``law_exponent_se``,
+        ``law_coef2``, ``law_coef2_se``, ``law_count`` (None where undefined).  To compare
+        variants, call it once for each."""
         return angle_statistics(self.phi_restricted if variant == "restricted" else self.phi_full,
                                 small)
 
@@ -119,12 +122,16 @@ class AngleResult(Archivable):
 
 
 def angle_statistics(phi, small=SMALL_ANGLE):
-    """dict(min, fraction below ``small`` rad, percentiles 0.1 % and 1 %, sample size) of
-    the finite angles ``phi`` (a non-empty 1-D array, in time order), and the law of the
-    small angles P(φ < x) = A x^β below ``small`` (``charts.analyses.statistics.
-    small_value_law``, 10 batches): ``law_exponent`` β̂ ± ``law_exponent_se``, ``law_coef2``
-    A for β = 2 ± ``law_coef2_se``, ``law_count`` samples below ``small`` (None where
-    undefined: no angle below ``small``, a single sample, or an angle of exactly 0)."""
+    """Summary of the finite angles ``phi`` (rad; a non-empty 1-D array, in time order), a
+    dict with the keys
+
+    * ``min``, ``median``, ``p001`` and ``p01`` (the 0.1 % and 1 % percentiles), ``n`` (the
+      sample size), ``small`` (the threshold) and ``frac_small`` (the fraction below it);
+    * the law of the small angles P(φ < x) = A x^β below ``small``
+      (``charts.analyses.statistics.small_value_law``, 10 batches): ``law_exponent`` β̂ ±
+      ``law_exponent_se``, ``law_coef2`` A for β = 2 ± ``law_coef2_se``, ``law_count`` the
+      samples below ``small`` — each None where undefined (no angle below ``small``: then
+      ``law_count`` is 0; a single sample; or an angle of exactly 0)."""
     phi = finite_array("phi", phi, ndim=1)
     if phi.size == 0:
         raise ValueError("phi must hold at least one angle, got an empty array")
@@ -133,9 +140,12 @@ def angle_statistics(phi, small=SMALL_ANGLE):
                p001=float(np.percentile(phi, 0.1)), p01=float(np.percentile(phi, 1)),
                median=float(np.median(phi)), n=int(phi.size), small=small)
     law = small_value_law(phi, small, n_batches=min(10, phi.size)) if out["min"] > 0 else {}
+    none_below = not (phi < small).any()
     for k in LAW_KEYS:        # undefined (no angle below, one batch, an angle of 0): None
         v = law.get(k)
         out[f"law_{k}"] = v if v is not None and np.isfinite(v) else None
+        if none_below and k != "count":
+            out[f"law_{k}"] = None
     return out
 
 

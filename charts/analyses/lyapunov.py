@@ -144,7 +144,8 @@ def identify_nonphysical(system, theta, u, X):
 class LyapunovResult(Archivable):
     """Result of `lyapunov_spectrum`.
 
-    exponents : (k,)  the computed exponents, largest first (1/time).
+    exponents : (k,)  the computed exponents (1/time), in the order of eq (18)'s
+        Gram–Schmidt: largest first once converged (a short run's estimates may be unsorted).
     stderr : (k,)  two-sided standard errors (batch means).
 
     spectrum : (2N−2,) or None  the relevant spectrum: reconstructed from the leading N−2
@@ -312,6 +313,7 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
                             reorth_every=reorth_every, project_every=project_every,
                             record_every=record_every, seed=seed)
     flow = lyapunov_flow(system, theta0, u0, cfg)
+    start = flow.y.copy()
     rep = progress_reporter(progress, (cfg.transient + cfg.total) * cfg.dt,
                             f"Lyapunov N={system.n}")
     where = "lyapunov_spectrum (ambient RK4)"
@@ -320,7 +322,7 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     end_transient(flow)
     logs = averaging_logs(flow, cfg, partial(flow.advance, where=where), rep.update)
     rep.close()
-    res = lyapunov_result(system, cfg, logs, flow.speed, flow.shares)
+    res = lyapunov_result(system, cfg, logs, flow.speed, flow.shares, start)
     if rule == "auto":
         res.params["transient_rule"] = AUTO_RULE
     return res
@@ -408,10 +410,12 @@ def chunk_sizes(cfg: LyapunovSettings):
     return np.diff([cfg.total * i // c for i in range(c + 1)])
 
 
-def lyapunov_result(system, cfg: LyapunovSettings, logs, speed, shares=None) -> LyapunovResult:
+def lyapunov_result(system, cfg: LyapunovSettings, logs, speed, shares=None,
+                    start=None) -> LyapunovResult:
     """The `LyapunovResult` of a run from its log-norm sums ``logs`` (events, k) at the
     events of `lyapunov_schedule`; ``speed`` = |u0|; ``shares``: the histogram of the largest
-    energy share over the averaging time."""
+    energy share over the averaging time; ``start``: the initial state (θ, u), shape (2N,),
+    recorded as ``theta0``, ``u0`` so that a saved result can repeat its call."""
     n, k = system.n, cfg.k
     records, ends, events = lyapunov_schedule(cfg)
     row = {e: i for i, e in enumerate(events)}
@@ -427,6 +431,10 @@ def lyapunov_result(system, cfg: LyapunovSettings, logs, speed, shares=None) -> 
     params = dict(**system.describe(), t_final=cfg.total * cfg.dt, dt=cfg.dt,
                   inner=cfg.inner, space=cfg.space, t_transient=cfg.transient * cfg.dt,
                   n_batches=cfg.n_batches, reorth_every=cfg.reorth * cfg.dt,
-                  project_every=cfg.project * cfg.dt or None, speed=speed, seed=cfg.seed)
+                  project_every=cfg.project * cfg.dt or None, record_every=cfg.record * cfg.dt,
+                  n_exponents=k, speed=speed, seed=cfg.seed)
+    if start is not None:
+        params.update(theta0=np.asarray(start[:n], dtype=float).tolist(),
+                      u0=np.asarray(start[n:], dtype=float).tolist())
     return LyapunovResult(exps, stderr, spectrum, t_rec, running, batches, params,
                           None if shares is None else np.array(shares))

@@ -4,6 +4,7 @@ each in its own GPU thread (``charts.solvers.device``); every member a `Lyapunov
 (bit for bit `lyapunov_spectrum`'s on the CPU)."""
 from __future__ import annotations
 
+import inspect
 import os
 from dataclasses import replace
 from functools import partial
@@ -44,6 +45,10 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     members' bits differ from the CPU's by the GPU's fused multiply-adds and libm, see
     there); ``"auto"``: the GPU when there is one.  ``workers`` then only builds the
     members' initial states."""
+    unknown = sorted(set(kwargs) - SETTINGS)
+    if unknown:
+        raise TypeError(f"lyapunov_ensemble() got an unexpected keyword argument {unknown[0]!r} "
+                        f"(its settings are lyapunov_spectrum's: {', '.join(sorted(SETTINGS))})")
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     device = resolve_device(device)
@@ -82,6 +87,12 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
                            prime=(lyapunov_lanes, (system, short, jobs[0][2], speed)),
                            name="lyapunov_ensemble", n=system.n)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
+
+
+#: The keyword settings `lyapunov_ensemble` passes on to every member (`lyapunov_spectrum`'s,
+#: less the state, the length, the seed and the progress, which the ensemble sets itself).
+SETTINGS = frozenset(inspect.signature(lyapunov_settings).parameters) - {"system", "t_final",
+                                                                        "seed"}
 
 
 def result_bytes(cfg) -> int:
@@ -129,13 +140,14 @@ def lyapunov_lanes(job, update=None):
              for s, c in zip(seeds, cfgs)]
     if len(seeds) < MIN_LANES:
         logs = []
+        starts = [f.y.copy() for f in flows]
         for f, c, s in zip(flows, cfgs, seeds):
             w = _where(s)
             f.advance(cfg.transient, where=w)
             end_transient(f)
             logs.append(averaging_logs(f, c, partial(f.advance, where=w), update))
-        return [lyapunov_result(system, c, lg, f.speed, f.shares)
-                for c, lg, f in zip(cfgs, logs, flows)]
+        return [lyapunov_result(system, c, lg, f.speed, f.shares, y0)
+                for c, lg, f, y0 in zip(cfgs, logs, flows, starts)]
     return _members_of(LaneFlows(flows), system, cfg, seeds, update)
 
 
@@ -174,9 +186,10 @@ def _members_of(lanes, system, cfg, seeds, update):
         for l in lanes.stopped_lanes()[:1]:
             raise lanes.error(l, _where(seeds[l]))
 
+    starts = [lanes.lane(i)[0].copy() for i in range(len(seeds))]
     advance(cfg.transient)
     end_transient(lanes)
     logs = averaging_logs(lanes, cfg, advance,
                           None if update is None else lambda t: update(len(seeds) * t))
     return [lyapunov_result(system, replace(cfg, seed=s), logs[:, i], float(lanes.speed[i]),
-                            lanes.shares[i]) for i, s in enumerate(seeds)]
+                            lanes.shares[i], starts[i]) for i, s in enumerate(seeds)]

@@ -416,9 +416,9 @@ class LinkageSystem:
                             speed=float(np.linalg.norm(u)) if self.massless_disk else None)
 
     def describe(self) -> dict:
-        """The system as the settings of a result (``params``): ε, ρ, the disk's mass and
-        moment."""
-        return dict(eps=self.eps, rho=self.rho, disk_mass=self.disk_mass,
+        """The system as the settings of a result (``params``): the rotor count (4), ε, ρ, the
+        disk's mass and moment."""
+        return dict(n=self.n, eps=self.eps, rho=self.rho, disk_mass=self.disk_mass,
                     disk_inertia=self.disk_inertia)
 
     def random_state(self, seed=0, speed=1.0, branch=1):

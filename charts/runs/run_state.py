@@ -123,10 +123,10 @@ class RunState:
         if self.flow is not None:
             # a checkpoint written before the energy shares were recorded has none: the
             # histogram then covers only what follows, and the result says so
-            old = "flow_shares" not in a
+            keys = self.flow.state()              # (the linkage's flow records none)
+            old = "shares" in keys and "flow_shares" not in a
             self.shares_partial = old or bool(a.get("shares_partial", False))
-            self.flow.load_state({k: a["flow_" + k] for k in self.flow.state()
-                                  if not (old and k == "shares")})
+            self.flow.load_state({k: a["flow_" + k] for k in keys if not (old and k == "shares")})
         else:
             self._y = a["y"].copy()
         rhs, rhs_frame, chunk, elapsed, done, steps, chart = a["scalars"]
