@@ -128,6 +128,12 @@ def test_ensemble_reports_the_member_that_stops(members):
         lyapunov_spectrum(system, *THROUGH, 4.0, t_transient=0.0, n_batches=2)
 
 
+def test_ensemble_names_an_unknown_setting_itself():
+    with pytest.raises(TypeError, match="lyapunov_ensemble\\(\\) got an unexpected keyword "
+                                        "argument 'foo'.*n_batches"):
+        lyapunov_ensemble(RotorSystem(3), 2, 1.0, workers=1, foo=1)
+
+
 def test_lanes_refuse_mixed_settings():
     system = RotorSystem(3)
     th, u = system.random_state(seed=0)

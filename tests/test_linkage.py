@@ -319,6 +319,8 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     again = charts.load(e.save(tmp_path / "ensemble.nc"))
     assert [m.params["seed"] for m in again.members] == [0, 1, 2]
     assert np.array_equal(again.exponents, e.exponents)
+    _, ax = e.plot_spectrum()                   # against i/(N − 2), N = 4 rotors
+    assert np.allclose(ax.lines[0].get_xdata(), [0.5, 1.0])
 
 
 @pytest.mark.parametrize("branch", [0, "x", True, 2])
