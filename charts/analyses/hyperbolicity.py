@@ -130,8 +130,9 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     * the law of the small angles P(φ < x) = A x^β below ``small``
       (``charts.analyses.statistics.small_value_law``, 10 batches): ``law_exponent`` β̂ ±
       ``law_exponent_se``, ``law_coef2`` A for β = 2 ± ``law_coef2_se``, ``law_count`` the
-      samples below ``small`` — each None where undefined (no angle below ``small``: then
-      ``law_count`` is 0; a single sample; or an angle of exactly 0)."""
+      samples below ``small`` — each None where undefined (a single batch, or an angle of
+      exactly 0; with no angle below ``small`` the exponent and its error are None, while
+      ``law_count`` = 0 and A = 0 ± 0 record that none fell below)."""
     phi = finite_array("phi", phi, ndim=1)
     if phi.size == 0:
         raise ValueError("phi must hold at least one angle, got an empty array")
@@ -140,12 +141,9 @@ def angle_statistics(phi, small=SMALL_ANGLE):
                p001=float(np.percentile(phi, 0.1)), p01=float(np.percentile(phi, 1)),
                median=float(np.median(phi)), n=int(phi.size), small=small)
     law = small_value_law(phi, small, n_batches=min(10, phi.size)) if out["min"] > 0 else {}
-    none_below = not (phi < small).any()
     for k in LAW_KEYS:        # undefined (no angle below, one batch, an angle of 0): None
         v = law.get(k)
         out[f"law_{k}"] = v if v is not None and np.isfinite(v) else None
-        if none_below and k != "count":
-            out[f"law_{k}"] = None
     return out
 
 

@@ -146,6 +146,7 @@ class LyapunovResult(Archivable):
 
     exponents : (k,)  the computed exponents (1/time), in the order of eq (18)'s
         Gram–Schmidt: largest first once converged (a short run's estimates may be unsorted).
+
     stderr : (k,)  two-sided standard errors (batch means).
 
     spectrum : (2N−2,) or None  the relevant spectrum: reconstructed from the leading N−2
