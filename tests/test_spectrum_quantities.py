@@ -112,6 +112,28 @@ def test_angles_of_a_long_run_take_a_window_and_are_thinned():
         plot_angles_time(t, theta, window=(2000, 3000))
 
 
+def test_the_angle_test_plots_phi_against_time_in_a_window():
+    """`AngleResult.plot(kind="time")`: φ(t) of both variants, a window and the thinning of
+    `plot_angles_time` (one helper: `charts.plotting.style.time_window`)."""
+    import types
+
+    from charts.analyses.hyperbolicity import AngleResult
+    t = np.linspace(0.0, 1000.0, 100001)
+    phi = 0.1 + 0.05 * np.sin(t)
+    res = types.SimpleNamespace(t=t, phi_full=phi, phi_restricted=0.5 * phi)
+    _, ax = AngleResult.plot(res, kind="time")
+    assert len(ax.get_lines()) == 2 and "every 6th sample" in ax.get_title()
+    _, ax = AngleResult.plot(res, kind="time", window=(100, 200))
+    for line in ax.get_lines():
+        x = np.asarray(line.get_xdata(), float)
+        assert x.min() >= 100 and x.max() <= 200
+    assert ax.get_yscale() == "log"
+    with pytest.raises(ValueError, match="kind must be"):
+        AngleResult.plot(res, kind="series")
+    with pytest.raises(ValueError, match="holds no sample"):
+        AngleResult.plot(res, kind="time", window=(2000, 3000))
+
+
 def test_the_error_ratio_compares_claimed_and_measured_errors():
     """Members whose batch errors equal the spread of their exponents give a ratio near 1;
     members claiming a tenth of it give 0.1 and an `ErrorBarWarning` (from 8 members on);

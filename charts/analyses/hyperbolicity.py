@@ -114,11 +114,19 @@ class AngleResult(Archivable):
                    adjoint_exponents=ds["adjoint_exponents"].values,
                    params=attributes(ds)["params"])
 
-    def plot(self, ax=None, **kw):
-        """Histograms of the angles φ (both variants); ``(fig, axes)``
-        (``charts.plotting.plot_angles``)."""
+    def plot(self, ax=None, kind="histogram", **kw):
+        """``kind="histogram"``: histograms of the angles φ (both variants), ``(fig, axes)``
+        (``charts.plotting.plot_angles``); ``"time"``: φ(t) on a log axis,
+        ``window=(t0, t1)`` for a span of a long run, ``(fig, ax)``
+        (``charts.plotting.plot_angles_series``)."""
+        phis = {"full": self.phi_full, "restricted": self.phi_restricted}
+        if kind == "time":
+            from ..plotting import plot_angles_series
+            return plot_angles_series(self.t, phis, ax=ax, **kw)
+        if kind != "histogram":
+            raise ValueError(f"kind must be 'histogram' or 'time', got {kind!r}")
         from ..plotting import plot_angles
-        return plot_angles({"full": self.phi_full, "restricted": self.phi_restricted}, axes=ax, **kw)
+        return plot_angles(phis, axes=ax, **kw)
 
 
 def angle_statistics(phi, small=SMALL_ANGLE):

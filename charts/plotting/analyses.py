@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import TIME, figure_axes, line_colors, new_figure
+from .style import MAX_POINTS, TIME, figure_axes, line_colors, new_figure, time_window
 
 __all__ = ["plot_lyapunov", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
            "CURVATURE_QUANTILES", "LOG_FLOOR"]
@@ -146,6 +146,25 @@ def plot_angles(phis, *, axes=None, title=None, bins=60):
         a.set_title(f"{v} tangent space (min φ = {phi.min():.2g}, {phi.size} samples)", fontsize=9)
     fig.suptitle(title or "angles between $E_u$ and $E_{cs}$", fontsize=10)
     return fig, axes
+
+
+def plot_angles_series(t, phis, *, window=None, max_points=MAX_POINTS, ax=None, title=None):
+    """φ(t) (rad, log axis) of each variant (``phis``: name → array at the times ``t``);
+    ``window`` = (t0, t1): only that span, at most ``max_points`` samples per line
+    (`time_window`: the title says when thinned).  Non-finite angles (a lost sample) are
+    left out."""
+    fig, ax = figure_axes(ax, figsize=(7.5, 3.6))
+    stride = 1
+    for name, phi in phis.items():
+        tt, ph, stride = time_window(t, phi, window, max_points)
+        ok = np.isfinite(ph) & (ph > 0)
+        ax.semilogy(tt[ok], ph[ok], lw=0.8, label=f"{name} (min {np.nanmin(ph):.2g} rad)")
+    ax.set_xlabel(TIME)
+    ax.set_ylabel("φ (rad)")
+    every = f", every {stride}th sample" if stride > 1 else ""
+    ax.set_title(title or f"angle between $E_u$ and $E_{{cs}}$ against time{every}", fontsize=10)
+    ax.legend(fontsize=8, frameon=False)
+    return fig, ax
 
 
 def plot_spectrum(omega, density, *, ax=None, label=None, title=None):

@@ -10,7 +10,27 @@ import numpy as np
 from ..atomic import atomic_write
 
 __all__ = ["new_figure", "png_bytes", "save_png", "DPI", "figure_axes", "wrap", "broken_at_wraps",
-           "TIME"]
+           "TIME", "time_window", "MAX_POINTS"]
+
+#: Most samples drawn per line of a time series (a longer series is thinned evenly).
+MAX_POINTS = 20000
+
+
+def time_window(t, values, window=None, max_points=MAX_POINTS):
+    """(t, values, stride): the samples of a time series inside ``window`` = (t0, t1) (all
+    if None; ValueError naming the span if none is inside), then every ``stride``-th so that
+    at most ``max_points`` remain (a long run drawn whole smears into a block)."""
+    t = np.asarray(t, dtype=float)
+    values = np.asarray(values)
+    if window is not None:
+        t0, t1 = (float(x) for x in window)
+        keep = (t >= t0) & (t <= t1)
+        if not keep.any():
+            raise ValueError(f"window={tuple(window)} holds no sample: the samples span "
+                             f"t = {t[0]:g} … {t[-1]:g}")
+        t, values = t[keep], values[keep]
+    stride = max(1, -(-t.size // int(max_points)))
+    return t[::stride], values[::stride], stride
 
 #: The time axis label of every figure.
 TIME = "t (time units of the flow)"

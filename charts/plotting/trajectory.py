@@ -6,14 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import TIME, broken_at_wraps, figure_axes, new_figure, wrap
+from .style import MAX_POINTS, TIME, broken_at_wraps, figure_axes, new_figure, time_window, wrap
 
 __all__ = ["plot_angles_time", "plot_surface", "plot_poincare", "animate_rotors",
            "plot_trajectory", "save_animation"]
-
-
-#: Most samples drawn per line by `plot_angles_time` (a longer series is thinned evenly).
-MAX_POINTS = 20000
 
 
 def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINTS, ax=None,
@@ -23,18 +19,9 @@ def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINT
     smears into a block); at most ``max_points`` samples per line (every k-th: the title
     says so)."""
     fig, ax = figure_axes(ax, figsize=(7.5, 3.6))
-    t = np.asarray(t, dtype=float)
-    theta = np.asarray(theta)
+    t, theta, stride = time_window(t, theta, window, max_points)
     if window is not None:
-        t0, t1 = (float(x) for x in window)
-        keep = (t >= t0) & (t <= t1)
-        if not keep.any():
-            raise ValueError(f"window={tuple(window)} holds no sample: the samples span "
-                             f"t = {t[0]:g} … {t[-1]:g}")
-        t, theta = t[keep], theta[keep]
-        switches = [sw for sw in switches if t0 <= sw[0] <= t1]
-    stride = max(1, -(-t.size // int(max_points)))
-    t, theta = t[::stride], theta[::stride]
+        switches = [sw for sw in switches if window[0] <= sw[0] <= window[1]]
     for i in range(theta.shape[1]):
         w, tt = broken_at_wraps([theta[:, i]], extra=[t])
         ax.plot(tt, w, lw=1.0, label=f"θ$_{i + 1}$")
