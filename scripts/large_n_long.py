@@ -153,6 +153,16 @@ def markdown(rows, fits, fit_from):
               f"({r['localised_range'][0]:.4f}–{r['localised_range'][1]:.4f}) | {frac:.4f} | "
               f"{rc} | {sl} | {r['mean_largest_share']:.3f} ± {r['mean_largest_share_se']:.3f} | "
               f"{top:.3f} | {d['r']:.2f} [{d['r_low']:.2f}, {d['r_high']:.2f}] |")
+    print()
+    print("| N | λᵢ/λ₁ at i/(N−2) = 0.25 | 0.5 | 0.8 | λ_{N−2}/λ₁ |")
+    print("|---|---|---|---|---|")
+    for r in rows:
+        if r["n"] < 16:
+            continue
+        lam = np.array(r["spectrum"]) / r["lambda1"]
+        x = np.arange(1, lam.size + 1) / (r["n"] - 2)
+        cells = " | ".join(f"{np.interp(q, x, lam):.3f}" for q in (0.25, 0.5, 0.8))
+        print(f"| {r['n']} | {cells} | {lam[-1]:.3f} |")
     if fits:
         print()
         print(f"fits over N ≥ {fit_from}: λ₁ ∝ N^a, a = {fits['lambda1'][0]:.3f} ± "
