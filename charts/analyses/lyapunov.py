@@ -372,12 +372,11 @@ def auto_transient(system, theta0, u0, *, dt=0.01, n_exponents=None, inner="thet
 
 
 def end_transient(flow) -> None:
-    """The transient of ``flow`` (a `TangentFlow`, the lanes, or the linkage's flow, which
-    records no energy shares) is done: its log-norm sums and its energy-share histograms
-    start from zero."""
+    """The transient of ``flow`` (a `TangentFlow`, the lanes, or the linkage's flow, whose
+    histogram is empty) is done: its log-norm sums and its energy-share histograms start
+    from zero."""
     flow.logsum[...] = 0.0
-    if hasattr(flow, "shares"):
-        flow.shares[...] = 0
+    flow.shares[...] = 0
 
 
 def averaging_logs(flow, cfg: LyapunovSettings, advance, update=None):

@@ -223,11 +223,11 @@ def lyapunov_result(st, out, *, t_done, **_):
         res["paper"] = [round(float(p), 12) for p in paper[: ly["n_exponents"]]]
         res["paper_note"] = "section 2, unit speed, equal masses; scaled by the speed"
     out.arrays.update(lyapunov_history_t=T, lyapunov_history=L / T[:, None])
-    shares = getattr(st.flow, "shares", None)
+    shares = st.flow.shares
     if st.shares_partial:
         res["energy_localisation"] = {"note": "not given: the run resumed from a checkpoint "
                                               "written before the energy shares were recorded"}
-    elif shares is not None and shares.sum():
+    elif shares.sum():
         res["energy_localisation"] = {
             "share": LOCALISED_SHARE, "fraction": float(localised_fraction(shares)),
             "samples": int(shares.sum()),
