@@ -17,7 +17,7 @@ OUT = "docs/figures"
 
 
 def section(t, y):
-    """θ₁ ≡ 0 (mod π) crossed with sin θ₁ increasing."""
+    """θ₀ ≡ 0 (mod π) crossed with sin θ₀ increasing."""
     return np.sin(y[0])
 
 
@@ -32,12 +32,12 @@ def main():
     wall = time.perf_counter() - t0
     pts = res.y_events[0]
     print(f"Poincaré section N = 3, t = 5000, rtol 1e-10: {len(pts)} crossings, {res.n_steps} steps, "
-          f"{len(res.switches)} chart switches, {wall:.2f} s; max |sin θ₁| at the crossings "
+          f"{len(res.switches)} chart switches, {wall:.2f} s; max |sin θ₀| at the crossings "
           f"{np.abs(np.sin(pts[:, 0])).max():.1e}")
-    sheet = np.cos(pts[:, 0]) > 0             # sin θ₁ = 0 upwards: θ₁ ≡ 0 (u₁ > 0) or π (u₁ < 0)
+    sheet = np.cos(pts[:, 0]) > 0             # sin θ₀ = 0 upwards: θ₀ ≡ 0 (u₀ > 0) or π (u₀ < 0)
     fig, ax = res.plot("poincare", coords=(1, 4), s=1.5, select=lambda Y: np.cos(Y[:, 0]) > 0)
-    ax.set_title(f"N = 3, section θ₁ ≡ 0, u₁ > 0: {int(sheet.sum())} of {len(pts)}\n"
-                 "crossings of sin θ₁ = 0 upwards, t = 5000", fontsize=9)
+    ax.set_title(f"N = 3, section θ₀ ≡ 0, u₀ > 0: {int(sheet.sum())} of {len(pts)}\n"
+                 "crossings of sin θ₀ = 0 upwards, t = 5000", fontsize=9)
     fig.set_size_inches(5.2, 4.6)
     save_png(fig, f"{OUT}/poincare_n3.png")
 

@@ -33,10 +33,15 @@ def test_trajectory_plots(run3):
     assert sum(1 for ln in ax.lines if ln.get_linestyle() == "--") == len(run3.switches) > 0
     w = np.concatenate([ln.get_ydata() for ln in ax.lines if ln.get_label().startswith("θ")])
     assert np.nanmax(np.abs(w)) <= np.pi                 # wrapped, lines broken at the wrap
+    # rotors are numbered from 0 in figures as in the arrays, files and scenes
+    assert [ln.get_label() for ln in ax.lines if ln.get_label().startswith("θ")] == \
+        ["θ$_0$", "θ$_1$", "θ$_2$"]
     fig, ax = run3.plot("surface")
     check_axes(ax, z=True)
-    fig, ax = run3.plot("poincare")
+    assert [ax.get_xlabel(), ax.get_ylabel(), ax.get_zlabel()] == ["θ₀ (rad)", "θ₁ (rad)", "θ₂ (rad)"]
+    fig, ax = run3.plot("poincare", coords=(1, 4))
     check_axes(ax)
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("θ$_1$ (rad)", "u$_1$ (rad / time)")
     assert len(ax.collections[0].get_offsets()) == len(run3.t_events[0]) > 0
 
 

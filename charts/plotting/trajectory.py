@@ -24,7 +24,7 @@ def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINT
         switches = [sw for sw in switches if window[0] <= sw[0] <= window[1]]
     for i in range(theta.shape[1]):
         w, tt = broken_at_wraps([theta[:, i]], extra=[t])
-        ax.plot(tt, w, lw=1.0, label=f"θ$_{i + 1}$")
+        ax.plot(tt, w, lw=1.0, label=f"θ$_{i}$")
     for j, (ts, a, b) in enumerate(switches):
         ax.axvline(ts, color="0.5", lw=0.6, ls="--",
                    label="chart switch" if j == 0 else None)
@@ -40,8 +40,8 @@ def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINT
 
 
 def _surface_sheets(system, m=61):
-    """The surface Σ cos θ = 0 of N = 3 over (θ₁, θ₂) ∈ (−π, π]²: θ₃ on its two branches
-    (``RotorSystem.from_chart`` of chart 2), NaN where |cos θ₁ + cos θ₂| ≥ 1."""
+    """The surface Σ cos θ = 0 of N = 3 over (θ₀, θ₁) ∈ (−π, π]²: θ₂ on its two branches
+    (``RotorSystem.from_chart`` of chart 2), NaN where |cos θ₀ + cos θ₁| ≥ 1."""
     g = np.linspace(-np.pi, np.pi, m)
     T1, T2 = np.meshgrid(g, g)
     sheets = []
@@ -56,7 +56,7 @@ def _surface_sheets(system, m=61):
 
 
 def plot_surface(theta, *, system=None, ax=None, title=None):
-    """N = 3: the path θ(t) (wrapped) on the surface cos θ₁ + cos θ₂ + cos θ₃ = 0 in the
+    """N = 3: the path θ(t) (wrapped) on the surface cos θ₀ + cos θ₁ + cos θ₂ = 0 in the
     cube (−π, π]³ (a 3D axes)."""
     theta = np.asarray(theta)
     if theta.ndim != 2 or theta.shape[1] != 3:
@@ -73,17 +73,17 @@ def plot_surface(theta, *, system=None, ax=None, title=None):
         ax.plot_surface(T1, T2, Z, color="0.75", alpha=0.35, lw=0, rstride=2, cstride=2)
     x, y, z = broken_at_wraps([theta[:, 0], theta[:, 1], theta[:, 2]])
     ax.plot(x, y, z, color="C3", lw=1.0, label="trajectory")
-    ax.set_xlabel("θ₁ (rad)")
-    ax.set_ylabel("θ₂ (rad)")
-    ax.set_zlabel("θ₃ (rad)")
+    ax.set_xlabel("θ₀ (rad)")
+    ax.set_ylabel("θ₁ (rad)")
+    ax.set_zlabel("θ₂ (rad)")
     for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         set_lim(-np.pi, np.pi)
-    ax.set_title(title or "N = 3: the path on cos θ₁ + cos θ₂ + cos θ₃ = 0", fontsize=10)
+    ax.set_title(title or "N = 3: the path on cos θ₀ + cos θ₁ + cos θ₂ = 0", fontsize=10)
     return fig, ax
 
 
 def _state_label(i, n):
-    return f"θ$_{i + 1}$ (rad)" if i < n else f"u$_{i - n + 1}$ (rad / time)"
+    return f"θ$_{i}$ (rad)" if i < n else f"u$_{i - n}$ (rad / time)"
 
 
 def plot_poincare(result, *, coords=(1, 4), event=0, select=None, ax=None, title=None,
@@ -91,8 +91,8 @@ def plot_poincare(result, *, coords=(1, 4), event=0, select=None, ax=None, title
     """The points of ``result.y_events[event]`` (an ``integrate`` run with ``events=``) in the
     plane of two state components ``coords`` (indices into [θ, u]; angles wrapped).
     ``select``: a function of the event states (m, …) returning a boolean mask, to keep one
-    sheet of a section whose event function vanishes on several (sin θ₁ = 0 holds at θ₁ ≡ 0
-    and at θ₁ ≡ π: ``select=lambda Y: np.cos(Y[:, 0]) > 0`` keeps θ₁ ≡ 0)."""
+    sheet of a section whose event function vanishes on several (sin θ₀ = 0 holds at θ₀ ≡ 0
+    and at θ₀ ≡ π: ``select=lambda Y: np.cos(Y[:, 0]) > 0`` keeps θ₀ ≡ 0)."""
     if result.y_events is None:
         raise ValueError("the result has no events: integrate with events=[...]")
     n = result.theta.shape[1]
@@ -130,7 +130,7 @@ def animate_rotors(t, theta, *, every=1, interval=40, title=None):
     for i in range(n):
         cx = 2.5 * i
         ax.plot(cx + np.cos(phi), np.sin(phi), color="0.7", lw=0.8)
-        ax.text(cx, -1.25, f"θ$_{i + 1}$", ha="center", va="top", fontsize=9)
+        ax.text(cx, -1.25, f"θ$_{i}$", ha="center", va="top", fontsize=9)
         rods.append(ax.plot([cx, cx], [0, 1], color=f"C{i}", lw=2.5, marker="o", ms=3)[0])
     label = ax.text(0.0, 1.02, "", transform=ax.transAxes, fontsize=9)
     if title:
