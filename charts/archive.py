@@ -21,6 +21,7 @@ carries the CF global attributes (``Conventions``, ``title``, ``history``, ``sou
 """
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import json
 import os
@@ -32,7 +33,7 @@ from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "attributes", "save", "load", "require_xarray",
            "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MEMBER", "member_settings",
-           "member_attributes"]
+           "member_attributes", "same_value"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
@@ -320,10 +321,60 @@ def _check_netcdf4(path: Path) -> None:
                          "charts result")
 
 
+def same_value(a, b) -> bool:
+    """Whether two result fields hold the same values: arrays by shape and elements (NaN
+    equal to NaN, as a saved and reloaded result must equal itself), mappings by keys and
+    values, sequences element by element, anything else by ``==``."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        a, b = np.asarray(a), np.asarray(b)
+        if a.shape != b.shape:
+            return False
+        if a.dtype.kind in "biufc" and b.dtype.kind in "biufc":
+            return bool(np.array_equal(a, b, equal_nan=a.dtype.kind in "fc" and b.dtype.kind in "fc"))
+        return all(same_value(x, y) for x, y in zip(a.flat, b.flat))
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(same_value(a[k], b[k]) for k in a)
+    if isinstance(a, (list, tuple)) and isinstance(b, (list, tuple)):
+        return len(a) == len(b) and all(same_value(x, y) for x, y in zip(a, b))
+    if isinstance(a, float) and isinstance(b, float) and a != a and b != b:
+        return True
+    try:
+        return bool(a == b)
+    except (TypeError, ValueError):
+        return False
+
+
+def _fields(result) -> dict:
+    """A result's fields: its dataclass fields, else its instance attributes (and its items,
+    for a result that is also a tuple)."""
+    if dataclasses.is_dataclass(result):
+        return {f.name: getattr(result, f.name) for f in dataclasses.fields(result)}
+    out = dict(vars(result))
+    if isinstance(result, tuple):
+        out["items"] = tuple(result)
+    return out
+
+
 class Archivable:
-    """Base of the result types: ``save(path)`` from their ``to_xarray()`` (module docstring)."""
+    """Base of the result types: ``save(path)`` from their ``to_xarray()`` (module docstring).
+
+    Two results are equal (``==``) when they are of one type and every field holds the same
+    values (`same_value`: arrays element by element, NaN equal to NaN); results are mutable
+    and so not hashable.  The result dataclasses are declared with ``eq=False`` so that this
+    comparison is theirs (a dataclass's own ``==`` raises on array fields)."""
 
     KIND = "abstract"
+
+    def __eq__(self, other):
+        if type(other) is not type(self):
+            return NotImplemented
+        return same_value(_fields(self), _fields(other))
+
+    def __ne__(self, other):        # its own: a tuple base would compare its arrays itself
+        equal = self.__eq__(other)
+        return equal if equal is NotImplemented else not equal
+
+    __hash__ = None
 
     def to_xarray(self):  # pragma: no cover - contract
         raise NotImplementedError

@@ -78,6 +78,39 @@ def test_round_trip_identical(results, name, tmp_path):
         assert back.params == res.params
     else:
         _same(res, back, name)
+    assert back == res and not back != res          # == compares values (arrays included)
+
+
+def test_results_compare_by_value(results):
+    import copy
+    for name, res in results.items():
+        assert res == copy.deepcopy(res), name
+    changed = copy.deepcopy(results["lyapunov"])
+    changed.exponents[0] = np.nextafter(changed.exponents[0], 1.0)
+    assert changed != results["lyapunov"]
+    ens = copy.deepcopy(results["ensemble"])
+    ens.members[1].batches[0, 0] += 1e-12                # a member's field, deep inside
+    assert ens != results["ensemble"]
+    assert results["lyapunov"] != results["angles"]      # another type: not equal, no error
+    with pytest.raises(TypeError):
+        hash(results["lyapunov"])                        # mutable results are not hashable
+
+
+def test_ensembles_plot_themselves(results):
+    from matplotlib.collections import LineCollection  # noqa: F401  (matplotlib present)
+    ens = results["ensemble"]
+    fig, ax = ens.plot()
+    dots = [ln for ln in ax.lines if ln.get_marker() == "o"]
+    assert len(dots) == ens.exponents.size and all(len(d.get_xdata()) == len(ens) for d in dots)
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["λ1", "λ2"]
+    fig, ax = ens.plot(kind="spectrum")
+    assert ax.get_xlabel() == "i / (N − 2)"
+    with pytest.raises(ValueError, match="'members' or 'spectrum'"):
+        ens.plot(kind="histogram")
+    angles = charts.hyperbolicity_ensemble(SYS4, 2, 5.0, t_transient=5.0, workers=1)
+    fig, axes = angles.plot()
+    pooled = sum(len(m.phi_full) for m in angles)
+    assert f"{pooled} samples" in axes[0].get_title() and "2 members pooled" in fig._suptitle.get_text()
 
 
 def test_datasets_have_named_dims_units_and_stamps(results):

@@ -230,7 +230,7 @@ class _Store:
             shutil.rmtree(self.folder, ignore_errors=True)
 
 
-@dataclass
+@dataclass(eq=False)
 class CovariantResult(Archivable):
     """CLV analysis along one trajectory, one variant; S samples, D = `clv_dimension` CLVs
     (index 0 the largest exponent).

@@ -22,7 +22,7 @@ __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "
            "MIN_MEMBERS_TO_JUDGE"]
 
 
-@dataclass
+@dataclass(eq=False)
 class EnsembleResult(Archivable):
     """Results of one analysis on independent trajectories (seeds seed, seed+1, …).
 
@@ -140,6 +140,33 @@ class EnsembleResult(Archivable):
             raise ValueError("plot_spectrum needs a Lyapunov ensemble")
         from ..plotting import plot_lyapunov_spectrum
         return plot_lyapunov_spectrum(self.exponents, self.stderr, self.params["n"], ax=ax, **kw)
+
+    def plot(self, ax=None, kind=None, **kw):
+        """The ensemble's picture; ``kind`` None picks the natural one.  Exponent ensembles
+        (Lyapunov, linkage): ``"members"`` (default) each member's exponents beside the mean
+        ± its standard error (``charts.plotting.plot_ensemble_exponents``), ``"spectrum"``
+        as `plot_spectrum`; angle ensembles: ``"histogram"`` (default), the members' angles
+        pooled (``charts.plotting.plot_angles``).  ``(fig, ax)`` or ``(fig, axes)``."""
+        if self.exponents is not None:
+            kind = kind or "members"
+            if kind == "spectrum":
+                return self.plot_spectrum(ax=ax, **kw)
+            if kind == "members":
+                from ..plotting import plot_ensemble_exponents
+                rows = np.array([m.exponents for m in self.members])
+                return plot_ensemble_exponents(rows, self.exponents, self.stderr, ax=ax, **kw)
+            raise ValueError(f"kind must be 'members' or 'spectrum' for an ensemble of "
+                             f"exponents, got {kind!r}")
+        if self.members and hasattr(self.members[0], "phi_full"):
+            kind = kind or "histogram"
+            if kind != "histogram":
+                raise ValueError(f"kind must be 'histogram' for an ensemble of angles, got {kind!r}")
+            from ..plotting import plot_angles
+            phis = {v: self.concatenate(f"phi_{v}") for v in ("full", "restricted")}
+            kw.setdefault("title", f"angles between $E_u$ and $E_{{cs}}$, {len(self)} members pooled")
+            return plot_angles(phis, axes=ax, **kw)
+        raise ValueError("this ensemble's members have no common picture; plot one member "
+                         "(ensemble[i].plot())")
 
     def __repr__(self):
         if self.exponents is None:

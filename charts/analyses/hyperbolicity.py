@@ -68,7 +68,7 @@ MAX_STORE = 1 << 30
 _SEGMENTS = 1000
 
 
-@dataclass
+@dataclass(eq=False)
 class AngleResult(Archivable):
     """Angles φ (rad) between E_u and E_cs at the S sample points.
 

@@ -58,7 +58,7 @@ def gauss_curvature(system, q, X, Y):
     return (ip(aX, aY) - ip(IIxy, IIxy)) / area
 
 
-@dataclass
+@dataclass(eq=False)
 class LinkageResult(Archivable):
     """One run of `linkage_run`.
 

@@ -140,7 +140,7 @@ def identify_nonphysical(system, theta, u, X):
     return 1.0 - np.linalg.norm(Xp, axis=1) / np.linalg.norm(X, axis=1)
 
 
-@dataclass
+@dataclass(eq=False)
 class LyapunovResult(Archivable):
     """Result of `lyapunov_spectrum`.
 

@@ -25,7 +25,7 @@ from .arguments import (positive_time, progress_reporter, project_steps, samples
 __all__ = ["Waveform", "PowerSpectrum", "waveform", "power_spectrum"]
 
 
-@dataclass
+@dataclass(eq=False)
 class Waveform(Archivable):
     """Sampled trajectory: t (S,), theta (S, N), u (S, N); sample spacing ``dt_sample``;
     ``params``: the system, the initial state and the settings of the call."""

@@ -12,7 +12,7 @@ import numpy as np
 
 from .style import MAX_POINTS, TIME, figure_axes, line_colors, new_figure, time_window
 
-__all__ = ["plot_lyapunov", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
+__all__ = ["plot_lyapunov", "plot_ensemble_exponents", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
            "CURVATURE_QUANTILES", "LOG_FLOOR"]
 
 #: Quantiles (in %) of the curvature samples that set the histogram limits; the share of
@@ -82,6 +82,30 @@ def plot_lyapunov_spectrum(exponents, stderr, n, *, ax=None, label=None, title=N
     ax.set_xlabel("i / (N − 2)")
     ax.set_ylabel("λᵢ (1 / time unit)")
     ax.set_title(title or "Lyapunov spectrum (positive half) ± standard error", fontsize=10)
+    ax.legend(fontsize=8, frameon=False)
+    return fig, ax
+
+
+def plot_ensemble_exponents(members, exponents, stderr, *, ax=None, title=None):
+    """Each member's exponents (``members`` (m, k), one dot per member and exponent, spread
+    sideways so that equal values stay visible) beside the ensemble's mean ± its standard
+    error (the members' spread), exponent i = 1…k on the horizontal axis."""
+    members = np.asarray(members, dtype=float)
+    m, k = members.shape
+    fig, ax = figure_axes(ax, figsize=(max(4.0, 1.1 * k + 2.5), 4.2))
+    colors = line_colors(k)
+    spread = np.linspace(-0.18, 0.18, m) if m > 1 else np.zeros(1)
+    for i in range(k):
+        ax.plot(i + 1 + spread, members[:, i], "o", ms=3, alpha=0.55, color=colors[i],
+                label="members" if i == 0 else None)
+        ax.errorbar([i + 1.32], [exponents[i]], yerr=None if stderr is None else [stderr[i]],
+                    fmt="s", ms=5, capsize=4, color="k",
+                    label="mean ± standard error" if i == 0 else None)
+    ax.set_xticks(np.arange(1, k + 1), [f"λ{i + 1}" for i in range(k)])
+    ax.set_xlim(0.5, k + 0.7)
+    ax.set_xlabel("exponent")
+    ax.set_ylabel("λ (1 / time unit)")
+    ax.set_title(title or f"Lyapunov exponents of {m} members", fontsize=10)
     ax.legend(fontsize=8, frameon=False)
     return fig, ax
 

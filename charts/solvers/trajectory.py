@@ -13,7 +13,7 @@ from .dense import DenseSolution
 __all__ = ["IntegrationResult"]
 
 
-@dataclass
+@dataclass(eq=False)
 class IntegrationResult(Archivable):
     """Samples of a geodesic, in ambient coordinates for both formulations.
 
