@@ -323,6 +323,54 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     assert np.allclose(ax.lines[0].get_xdata(), [0.5, 1.0])
 
 
+def test_a_linkage_ensemble_compiles_in_this_process_before_its_workers_start(monkeypatch):
+    """With workers, `linkage_ensemble` first runs a short `linkage_run` here, with the
+    members' dt, exponents, projection and curvature setting (so it compiles their kernels,
+    announced from this process, and the workers load them from numba's cache: on an empty
+    cache one notice, from the parent, as tests/test_compilation.py shows for
+    lyapunov_ensemble), and only then starts the pool; the members are those of workers=1.
+    The pool is replaced by one that runs its jobs here, in order, noting when it starts."""
+    import functools
+
+    from charts.analyses import ensemble, linkage
+
+    calls = []
+    real = linkage.linkage_run
+
+    @functools.wraps(real)
+    def recorded(system, q0, v0, t_final, **kw):
+        calls.append(("run", t_final, kw))
+        return real(system, q0, v0, t_final, **kw)
+
+    class Pool:
+        def __init__(self, max_workers):
+            calls.append(("pool", max_workers, {}))
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            return False
+
+        def map(self, fn, items):
+            return map(fn, items)
+
+    L = charts.LinkageSystem(0.1)
+    same = dict(dt=0.02, n_exponents=1, project_every=0.4, curvature=False)
+    settings = dict(same, t_transient=1.0, n_batches=2, reorth_every=0.2, sample_every=1.0)
+    alone = linkage.linkage_ensemble(L, 2, 2.0, workers=1, **settings)
+    monkeypatch.setattr(linkage, "linkage_run", recorded)
+    monkeypatch.setattr(ensemble, "ProcessPoolExecutor", Pool)
+    e = linkage.linkage_ensemble(L, 2, 2.0, workers=2, **settings)
+    assert [c[0] for c in calls] == ["run", "pool", "run", "run"]
+    _, t_prime, prime = calls[0]
+    assert t_prime == pytest.approx(0.4) and prime["t_transient"] == 0.0     # two reorths
+    assert prime["seed"] == 0 and {k: prime[k] for k in same} == same
+    assert [c[2]["seed"] for c in calls[2:]] == [0, 1]
+    assert all(c[1] == 2.0 and {k: c[2][k] for k in settings} == settings for c in calls[2:])
+    assert np.array_equal(e.exponents, alone.exponents)
+
+
 @pytest.mark.parametrize("branch", [0, "x", True, 2])
 def test_the_disk_branch_is_plus_or_minus_one(branch):
     with pytest.raises(ValueError, match="branch must be \\+1 or -1"):

@@ -16,6 +16,7 @@ orthonormalised against it; ``fraction_positive`` counts K > 0.
 """
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -210,10 +211,25 @@ def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     (``system.random_state(seed=s, speed=speed)``, seeds seed, seed+1, …; also the seeds of
     the tangent vectors), in ``workers`` processes (default: all cores); ``kwargs``: the
     settings of `linkage_run`.  Returns an `EnsembleResult` (mean exponents, their standard
-    error across the members, the members' error ratio), saved and loaded like every other."""
+    error across the members, the members' error ratio), saved and loaded like every other.
+
+    With several workers the kernels are compiled once, here, before the workers start (and
+    announced here): a `linkage_run` of the first seed over two re-orthonormalisations, no
+    transient, with the members' dt, exponents, projection and curvature setting, so the
+    workers load what it compiled from numba's disk cache (`run_ensemble`'s ``prime``)."""
     return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
                         workers=workers, progress=progress,
-                        desc=f"linkage eps={system.eps:g} ensemble", **kwargs)
+                        desc=f"linkage eps={system.eps:g} ensemble", prime=_prime(kwargs),
+                        **kwargs)
+
+
+def _prime(kwargs):
+    """(t_final, settings) of the short `linkage_run` that compiles the members' kernels: two
+    re-orthonormalisations, two batches, a sample at each, no transient; every other setting
+    (dt, n_exponents, project_every, curvature) the members' own."""
+    default = inspect.signature(linkage_run).parameters["reorth_every"].default
+    reorth = positive_time("reorth_every", kwargs.get("reorth_every", default))
+    return 2 * reorth, {"t_transient": 0.0, "n_batches": 2, "sample_every": reorth}
 
 
 def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,
