@@ -304,7 +304,10 @@ def test_angle_passes_converge_to_the_same_exponents():
 
 def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     """LinkageResult is a result like the others: saved and loaded (every array and setting),
+    its exponents counted from 1 with the very coordinate of a LyapunovResult's file,
     plotted, and gathered into an ensemble whose members keep their seeds in the file."""
+    import xarray as xr
+
     import charts
     L = charts.LinkageSystem(0.1)
     r = charts.linkage_run(L, *L.random_state(seed=2), 4.0, t_transient=1.0, n_batches=2)
@@ -312,6 +315,10 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     for a in ("exponents", "stderr", "batches", "t", "states", "K"):
         assert np.array_equal(getattr(back, a), getattr(r, a), equal_nan=True), a
     assert back.params == r.params and back.min_health == r.min_health
+    lyap = charts.LyapunovResult(np.zeros(2), np.zeros(2), None, np.zeros(1), np.zeros((1, 2)),
+                                 np.zeros((2, 2)))
+    xr.testing.assert_identical(r.to_xarray()["exponent"], lyap.to_xarray()["exponent"])
+    assert list(back.to_xarray()["exponent"].values) == [1, 2]
     fig, _ = r.plot()
     assert "linkage ε = 0.1" in fig._suptitle.get_text()
     e = charts.linkage_ensemble(L, 3, 4.0, workers=1, t_transient=1.0, n_batches=2)
@@ -319,6 +326,12 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     again = charts.load(e.save(tmp_path / "ensemble.nc"))
     assert [m.params["seed"] for m in again.members] == [0, 1, 2]
     assert np.array_equal(again.exponents, e.exponents)
+    with xr.open_dataset(tmp_path / "ensemble.nc", engine="h5netcdf") as ds:
+        assert list(ds["exponent"].values) == [1, 2] and ds["K"].dims[-1] == "exponent"
+    for m, n in zip(again.members, e.members):
+        for a in ("exponents", "stderr", "batches", "t", "states", "K"):
+            assert np.array_equal(getattr(m, a), getattr(n, a), equal_nan=True), a
+        assert m.params == n.params and m.min_sin2 == n.min_sin2
     _, ax = e.plot_spectrum()                   # against i/(N − 2), N = 4 rotors
     assert np.allclose(ax.lines[0].get_xdata(), [0.5, 1.0])
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
@@ -88,8 +88,9 @@ class LinkageResult(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``); the state's 14 components are q (θ₀…θ₃ and the
-        disk's three coordinates), then their velocities."""
+        attributes (``charts.archive``); the exponents counted from 1 (λ₁ the largest, as
+        `LyapunovResult`'s); the state's 14 components are q (θ₀…θ₃ and the disk's three
+        coordinates), then their velocities."""
         data = {"exponents": (("exponent",), self.exponents, "1 / time"),
                 "stderr": (("exponent",), self.stderr, "1 / time", "batch-means standard error"),
                 "batches": (("batch", "exponent"), self.batches, "1 / time"),
@@ -97,7 +98,8 @@ class LinkageResult(Archivable):
                       "sectional curvature K(unit velocity, e_i) (Gauss equation)"),
                 "states": (("sample", "component"), self.states, "rad, rad / time",
                            "the sampled state (q, v)")}
-        coords = {"t": (("sample",), self.t, "time", "after the transient")}
+        coords = {"t": (("sample",), self.t, "time", "after the transient"),
+                  "exponent": exponent_coordinate(len(self.exponents))}
         return dataset(self.KIND, data, coords=coords, attrs={
             "params": self.params, "min_sin2": self.min_sin2, "min_health": self.min_health})
 
