@@ -31,7 +31,7 @@ import numpy as np
 
 from .atomic import atomic_write
 
-__all__ = ["Archivable", "KINDS", "dataset", "attributes", "save", "load", "require_xarray",
+__all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
            "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MEMBER", "member_settings",
            "member_attributes", "same_value"]
 
@@ -180,6 +180,14 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
     ds.attrs["charts_kind"] = kind
     ds.attrs["charts_version"] = __version__
     return ds
+
+
+def exponent_coordinate(k: int):
+    """The coordinate of an ``exponent`` dimension of k Lyapunov exponents, for `dataset`'s
+    ``coords``: i of λᵢ, 1…k (λ₁ the largest), as in the paper and the field, where the
+    other dimensions count from 0."""
+    return (("exponent",), np.arange(1, int(k) + 1, dtype=np.int64), "1",
+            "i of λᵢ, from 1 as in the paper")
 
 
 def _setting(key) -> bool:

@@ -160,6 +160,7 @@ route = "both"
     assert back.result["scene"] == on_disk["scene"]
     ds = back.to_xarray()
     assert ds["lyapunov_history"].dims == ("lyapunov_record", "exponent")
+    assert list(ds["exponent"].values) == list(range(1, ds.sizes["exponent"] + 1))  # λ₁ first
     assert ds["drift_t"].attrs["units"] == "time"
     assert ds["curvature_exact"].dims == ("curvature_sample", "direction")
     back.save(tmp_path / "again.nc")

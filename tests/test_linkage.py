@@ -145,6 +145,32 @@ def test_manifold_tends_to_sum_cos_zero_at_rate_eps():
     assert np.ptp(ratios) < 0.05 * ratios[0] and ratios[0] < 10
 
 
+def test_a_seed_gives_the_rotor_angles_moved_by_order_eps():
+    """`LinkageSystem.random_state(seed=s)` is `RotorSystem(4).random_state(seed=s)` moved
+    onto the linkage's manifold (docs/linkage.md): its angles differ from the rotor's by
+    c ε + O(ε²), c set by the state, not by 0, and its velocity is drawn anew.  Measured over
+    seeds 0–19: c from 0.055 (seed 1) to 3.020 (seed 7), mean 1.186, at ε = 10⁻⁴, each c the
+    same within 0.6 % at ε = 10⁻³ (so 1 % tolerates the O(ε²) term and still fails for a
+    relation that is not first order, which would move c by a factor ten); the stated
+    constants to their last digit; velocities 0.14 to 1.69 apart at speed 1."""
+    R4 = charts.RotorSystem(4)
+    c, dv = {}, []
+    for eps in (1e-3, 1e-4):
+        L = LinkageSystem(eps)
+        c[eps] = []
+        for s in range(20):
+            th, u = R4.random_state(seed=s, speed=1.0)
+            q, v = L.random_state(seed=s, speed=1.0)
+            c[eps].append(np.max(np.abs(np.angle(np.exp(1j * (q[:4] - th))))) / eps)
+            dv.append(np.max(np.abs(v[:4] - u)))
+    c3, c4 = np.array(c[1e-3]), np.array(c[1e-4])
+    assert np.allclose(c3, c4, rtol=0.01)                       # first order in ε
+    assert np.argmax(c4) == 7 and abs(c4.max() - 3.020) < 0.0005
+    assert np.argmin(c4) == 1 and abs(c4.min() - 0.055) < 0.0005   # not 0
+    assert abs(c4.mean() - 1.186) < 0.0005
+    assert abs(min(dv) - 0.14) < 0.005 and abs(max(dv) - 1.69) < 0.005
+
+
 def test_gauss_curvature_against_shape_operator_differences(L01):
     """Route 2: II(X, Y) = ⟨dn(X), Y⟩ from central differences of the unit normal of the
     θ-projection (massless disk), with the points moved along M by projection."""
@@ -304,7 +330,10 @@ def test_angle_passes_converge_to_the_same_exponents():
 
 def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     """LinkageResult is a result like the others: saved and loaded (every array and setting),
+    its exponents counted from 1 with the very coordinate of a LyapunovResult's file,
     plotted, and gathered into an ensemble whose members keep their seeds in the file."""
+    import xarray as xr
+
     import charts
     L = charts.LinkageSystem(0.1)
     r = charts.linkage_run(L, *L.random_state(seed=2), 4.0, t_transient=1.0, n_batches=2)
@@ -312,6 +341,10 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     for a in ("exponents", "stderr", "batches", "t", "states", "K"):
         assert np.array_equal(getattr(back, a), getattr(r, a), equal_nan=True), a
     assert back.params == r.params and back.min_health == r.min_health
+    lyap = charts.LyapunovResult(np.zeros(2), np.zeros(2), None, np.zeros(1), np.zeros((1, 2)),
+                                 np.zeros((2, 2)))
+    xr.testing.assert_identical(r.to_xarray()["exponent"], lyap.to_xarray()["exponent"])
+    assert list(back.to_xarray()["exponent"].values) == [1, 2]
     fig, _ = r.plot()
     assert "linkage ε = 0.1" in fig._suptitle.get_text()
     e = charts.linkage_ensemble(L, 3, 4.0, workers=1, t_transient=1.0, n_batches=2)
@@ -319,8 +352,62 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     again = charts.load(e.save(tmp_path / "ensemble.nc"))
     assert [m.params["seed"] for m in again.members] == [0, 1, 2]
     assert np.array_equal(again.exponents, e.exponents)
+    with xr.open_dataset(tmp_path / "ensemble.nc", engine="h5netcdf") as ds:
+        assert list(ds["exponent"].values) == [1, 2] and ds["K"].dims[-1] == "exponent"
+    for m, n in zip(again.members, e.members):
+        for a in ("exponents", "stderr", "batches", "t", "states", "K"):
+            assert np.array_equal(getattr(m, a), getattr(n, a), equal_nan=True), a
+        assert m.params == n.params and m.min_sin2 == n.min_sin2
     _, ax = e.plot_spectrum()                   # against i/(N − 2), N = 4 rotors
     assert np.allclose(ax.lines[0].get_xdata(), [0.5, 1.0])
+
+
+def test_a_linkage_ensemble_compiles_in_this_process_before_its_workers_start(monkeypatch):
+    """With workers, `linkage_ensemble` first runs a short `linkage_run` here, with the
+    members' dt, exponents, projection and curvature setting (so it compiles their kernels,
+    announced from this process, and the workers load them from numba's cache: on an empty
+    cache one notice, from the parent, as tests/test_compilation.py shows for
+    lyapunov_ensemble), and only then starts the pool; the members are those of workers=1.
+    The pool is replaced by one that runs its jobs here, in order, noting when it starts."""
+    import functools
+
+    from charts.analyses import ensemble, linkage
+
+    calls = []
+    real = linkage.linkage_run
+
+    @functools.wraps(real)
+    def recorded(system, q0, v0, t_final, **kw):
+        calls.append(("run", t_final, kw))
+        return real(system, q0, v0, t_final, **kw)
+
+    class Pool:
+        def __init__(self, max_workers):
+            calls.append(("pool", max_workers, {}))
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            return False
+
+        def map(self, fn, items):
+            return map(fn, items)
+
+    L = charts.LinkageSystem(0.1)
+    same = dict(dt=0.02, n_exponents=1, project_every=0.4, curvature=False)
+    settings = dict(same, t_transient=1.0, n_batches=2, reorth_every=0.2, sample_every=1.0)
+    alone = linkage.linkage_ensemble(L, 2, 2.0, workers=1, **settings)
+    monkeypatch.setattr(linkage, "linkage_run", recorded)
+    monkeypatch.setattr(ensemble, "ProcessPoolExecutor", Pool)
+    e = linkage.linkage_ensemble(L, 2, 2.0, workers=2, **settings)
+    assert [c[0] for c in calls] == ["run", "pool", "run", "run"]
+    _, t_prime, prime = calls[0]
+    assert t_prime == pytest.approx(0.4) and prime["t_transient"] == 0.0     # two reorths
+    assert prime["seed"] == 0 and {k: prime[k] for k in same} == same
+    assert [c[2]["seed"] for c in calls[2:]] == [0, 1]
+    assert all(c[1] == 2.0 and {k: c[2][k] for k in settings} == settings for c in calls[2:])
+    assert np.array_equal(e.exponents, alone.exponents)
 
 
 @pytest.mark.parametrize("branch", [0, "x", True, 2])

@@ -16,11 +16,12 @@ orthonormalised against it; ``fraction_positive`` counts K > 0.
 """
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
@@ -87,8 +88,9 @@ class LinkageResult(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``); the state's 14 components are q (θ₀…θ₃ and the
-        disk's three coordinates), then their velocities."""
+        attributes (``charts.archive``); the exponents counted from 1 (λ₁ the largest, as
+        `LyapunovResult`'s); the state's 14 components are q (θ₀…θ₃ and the disk's three
+        coordinates), then their velocities."""
         data = {"exponents": (("exponent",), self.exponents, "1 / time"),
                 "stderr": (("exponent",), self.stderr, "1 / time", "batch-means standard error"),
                 "batches": (("batch", "exponent"), self.batches, "1 / time"),
@@ -96,7 +98,8 @@ class LinkageResult(Archivable):
                       "sectional curvature K(unit velocity, e_i) (Gauss equation)"),
                 "states": (("sample", "component"), self.states, "rad, rad / time",
                            "the sampled state (q, v)")}
-        coords = {"t": (("sample",), self.t, "time", "after the transient")}
+        coords = {"t": (("sample",), self.t, "time", "after the transient"),
+                  "exponent": exponent_coordinate(len(self.exponents))}
         return dataset(self.KIND, data, coords=coords, attrs={
             "params": self.params, "min_sin2": self.min_sin2, "min_health": self.min_health})
 
@@ -210,10 +213,25 @@ def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     (``system.random_state(seed=s, speed=speed)``, seeds seed, seed+1, …; also the seeds of
     the tangent vectors), in ``workers`` processes (default: all cores); ``kwargs``: the
     settings of `linkage_run`.  Returns an `EnsembleResult` (mean exponents, their standard
-    error across the members, the members' error ratio), saved and loaded like every other."""
+    error across the members, the members' error ratio), saved and loaded like every other.
+
+    With several workers the kernels are compiled once, here, before the workers start (and
+    announced here): a `linkage_run` of the first seed over two re-orthonormalisations, no
+    transient, with the members' dt, exponents, projection and curvature setting, so the
+    workers load what it compiled from numba's disk cache (`run_ensemble`'s ``prime``)."""
     return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
                         workers=workers, progress=progress,
-                        desc=f"linkage eps={system.eps:g} ensemble", **kwargs)
+                        desc=f"linkage eps={system.eps:g} ensemble", prime=_prime(kwargs),
+                        **kwargs)
+
+
+def _prime(kwargs):
+    """(t_final, settings) of the short `linkage_run` that compiles the members' kernels: two
+    re-orthonormalisations, two batches, a sample at each, no transient; every other setting
+    (dt, n_exponents, project_every, curvature) the members' own."""
+    default = inspect.signature(linkage_run).parameters["reorth_every"].default
+    reorth = positive_time("reorth_every", kwargs.get("reorth_every", default))
+    return 2 * reorth, {"t_transient": 0.0, "n_batches": 2, "sample_every": reorth}
 
 
 def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,

@@ -23,7 +23,7 @@ from math import gcd
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
 from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges
@@ -180,8 +180,7 @@ class LyapunovResult(Archivable):
                 "history": (("record", "exponent"), self.history, "1 / time",
                             "running estimates"),
                 "batches": (("batch", "exponent"), self.batches, "1 / time", "batch estimates")}
-        coords = {"exponent": (("exponent",), np.arange(1, k + 1), "1",
-                               "i of λᵢ, from 1 as in the paper"),
+        coords = {"exponent": exponent_coordinate(k),
                   "history_t": (("record",), self.history_t, "time", "averaging time")}
         if self.spectrum is not None:
             data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
 from .io import json_default
 
 __all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT"]
@@ -61,16 +61,19 @@ class SceneResult(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``)."""
-        data = {}
+        attributes (``charts.archive``); the exponents counted from 1, as in a
+        `LyapunovResult`'s file."""
+        data, coords = {}, {}
         for name, arr in self.arrays.items():
             dims, units = ARRAY_LAYOUT.get(name, (None, "1"))
             arr = np.asarray(arr)
             if dims is None or len(dims) != arr.ndim:
                 dims = tuple(f"{name}_dim{i}" for i in range(arr.ndim))
             data[name] = (dims, arr, units)
-        return dataset(self.KIND, data, attrs={"result": self.result,
-                                               "scene_text": self.scene_text})
+            if "exponent" in dims:
+                coords["exponent"] = exponent_coordinate(arr.shape[dims.index("exponent")])
+        return dataset(self.KIND, data, coords=coords, attrs={"result": self.result,
+                                                              "scene_text": self.scene_text})
 
     @classmethod
     def from_xarray(cls, ds):
