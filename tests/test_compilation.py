@@ -104,3 +104,15 @@ def test_an_ensemble_on_an_empty_cache_announces_one_compilation(tmp_path):
     notes = [line for line in out.stderr.splitlines() if line.startswith("charts: ")]
     assert len(notes) == 1, out.stderr
     assert notes[0].startswith("charts: lyapunov_ensemble compiled its kernels for N = 3 in ")
+
+
+def test_every_public_entry_point_that_compiles_announces_it():
+    """The README's promise: a call that compiled for more than a second says so, whichever
+    public entry point it was (the ensembles announce through their pools, tested above)."""
+    import charts
+
+    for name in ("integrate", "lyapunov_spectrum", "hyperbolicity_angles",
+                 "covariant_lyapunov_vectors", "curvature_along_trajectory", "waveform",
+                 "linkage_run", "linkage_trajectory"):
+        fn = getattr(charts, name)
+        assert getattr(fn, "__wrapped__", None) is not None, name

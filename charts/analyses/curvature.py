@@ -119,7 +119,8 @@ def curvature_frame(y, X, minv, wts, m, Xj, P):
         for i in range(2 * n):
             Xj[r, i] = X[r, i] - a * f[i]
     w = np.zeros(2 * n)
-    w[:n] = m
+    for i in range(n):          # loops, not slice copies: no shape-mismatch message to compile
+        w[i] = m[i]
     orthonormalize(Xj, w, np.zeros(k))
     un = sqrt(uu)
     for i in range(n):
@@ -130,7 +131,7 @@ def curvature_frame(y, X, minv, wts, m, Xj, P):
     return uu
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _frame_rates(zt, n, k, kp, minv, s, c, f, g, p, q, K, o):
     """The rates of eq (8), eq (17) for the k vectors and eq (19) for the kp frame vectors of
     the packed state zt = [y; X; P] into K[o:], s, c = a sin θ, a cos θ of its angles.
@@ -217,11 +218,13 @@ _BLOCK = 64
 
 @njit(cache=True)
 def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth, w,
-                      project_every, Ka, Ys, Ps):
+                      restricted, project_every, Ka, Ys, Ps):
     """Advance the tangent flow Z = [y; X] ``sample_steps`` steps per sample (re-orthonormalised
     every ``reorth`` steps, a divisor of ``sample_steps``), `_BLOCK` samples per kernel call
     with their states recorded, and at each sample store y, the frame and the route-(a)
-    matrix.  Returns (status, samples done)."""
+    matrix.  Returns (status, samples done).  ``restricted`` comes from the caller (True):
+    the literal True here would compile the tangent kernel a second time, beside the
+    signature `TangentFlow.advance` compiled for the transient (10 s at the first call)."""
     n = Z.shape[1] // 2
     k = Z.shape[0] - 1
     logs = np.zeros(k)
@@ -234,7 +237,7 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
     for a in range(0, S, _BLOCK):
         nb = min(_BLOCK, S - a)
         status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt,
-                                      nb * sample_steps, reorth, w, True, project_every, logs,
+                                      nb * sample_steps, reorth, w, restricted, project_every, logs,
                                       counter[0] + sample_steps, sample_steps, buf, no_events,
                                       buf, no_events, None)
         if status != RUNNING:
@@ -243,13 +246,16 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
             zb = buf[b].reshape((k + 1, 2 * n))
             y = zb[0]
             uu = curvature_frame(y, zb[1:], minv, wts, m, Xj, P)
-            Ys[a + b] = y
-            Ps[a + b] = P
+            for i in range(2 * n):
+                Ys[a + b, i] = y[i]
+            for r in range(k + 1):
+                for i in range(n):
+                    Ps[a + b, r, i] = P[r, i]
             numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[a + b], work)
     return RUNNING, S
 
 
-@dataclass
+@dataclass(eq=False)
 class CurvatureResult(Archivable):
     """Curvature along a trajectory.
 
@@ -367,7 +373,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
         status, done = _sample_curvature(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                                         system.weights, system.level, flow.speed, dt, sample, reorth, flow.w, project,
+                                         system.weights, system.level, flow.speed, dt, sample, reorth, flow.w,
+                                         flow.restricted, project,
                                          Ka[a:b], Ys[a:b], Ps[a:b])
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, where)

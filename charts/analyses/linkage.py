@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
@@ -143,6 +144,7 @@ def _frame(system, row, k):
     return out
 
 
+@announces_compilation
 def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=50.0,
                 n_batches=20, reorth_every=0.1, project_every=1.0, sample_every=1.0,
                 curvature=True, seed=0, progress=False) -> LinkageResult:
@@ -234,6 +236,7 @@ def _prime(kwargs):
     return 2 * reorth, {"t_transient": 0.0, "n_batches": 2, "sample_every": reorth}
 
 
+@announces_compilation
 def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,
                        project_every=1.0):
     """The trajectory from (q0, v0) sampled every ``sample_every``: (t (S + 1,), states
