@@ -74,7 +74,8 @@ for n in ns:
         del compiles[:]
         c0 = time.process_time()
         eval(code)
-        rows.append(dict(name=name, n=n, cpu=time.process_time() - c0, compiles=list(compiles)))
+        rows.append(dict(name=name, n=n, cpu=time.process_time() - c0, compiles=list(compiles),
+                         package=charts.__file__))
 print(json.dumps(rows))
 """
 
@@ -87,27 +88,35 @@ def _fresh_env(path):
     with tempfile.TemporaryDirectory(prefix="charts-first-use-") as tmp:
         env = process_env(os.path.join(tmp, "numba"), path)
         env["CHARTS_CACHE_DIR"] = os.path.join(tmp, "charts")
-        yield env
+        yield env, tmp
 
 
 def probe(names, ns, path=None) -> list[dict]:
     """`PROBE` in a new process on an empty cache: one dict per (N, analysis) call:
     {name, n, cpu, compiles: [[function, signature, own cpu s, depth]]}."""
     calls = [[k, ANALYSES[k]] for k in names]
-    with _fresh_env(path) as env:
+    with _fresh_env(path) as (env, tmp):
+        # run in the empty folder: `python -c` puts its working directory first on sys.path,
+        # so a run from a checkout's root would import that checkout instead of ``path``
         out = subprocess.run([sys.executable, "-c", PROBE, json.dumps(calls),
                               json.dumps(list(ns))], env=env, capture_output=True, text=True,
-                             check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+                             check=True, cwd=tmp)
+    rows = json.loads(out.stdout.strip().splitlines()[-1])
+    if path and not all(os.path.realpath(r["package"]).startswith(os.path.realpath(path))
+                        for r in rows):
+        raise RuntimeError(f"the probe imported charts from {rows[0]['package']}, not {path}")
+    return rows
 
 
 def command(argv, path=None, cwd=None) -> tuple[float, float, int]:
     """(CPU s of the command and its children, wall s, exit status) of ``charts ARGV`` in a new
     process on an empty cache."""
-    with _fresh_env(path) as env:
+    with _fresh_env(path) as (env, tmp):
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         w0 = time.perf_counter()
-        rc = subprocess.run([sys.executable, "-m", "charts.cli.main", *argv], env=env, cwd=cwd,
+        # `python -m` puts its working directory first on sys.path: the empty folder by default
+        rc = subprocess.run([sys.executable, "-m", "charts.cli.main", *argv], env=env,
+                            cwd=cwd or tmp,
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode
         wall = time.perf_counter() - w0
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
