@@ -71,7 +71,7 @@ def forward_member(l, Zs, scs, counters, logsums, status, stopped, Vrec, CK, arr
                 for j in range(d):
                     Vrec[l, 0, i * d + j] = Z[i, j]
     code = forward_segments(Z, sc, counter, minv, m, wts, level, speeds[l], dt, ce, reorth, w,
-                            project, logsum, rec_start, sample, Vrec[l, :S], CK[l], a, b,
+                            True, project, logsum, rec_start, sample, Vrec[l, :S], CK[l], a, b,
                             vec_end, no_events, none, work, tangent_loop)
     store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 

@@ -73,18 +73,19 @@ def adjoint_start(cfg: AngleSettings, w, block=None):
 
 
 @njit(cache=True)
-def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
-                    logsum, rec_start, rec_every, states, ck, a, b, vec_end):
+def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, restricted,
+                   project, logsum, rec_start, rec_every, states, ck, a, b, vec_end):
     """`forward_segments` on the CPU: with `tangent_kernel`, which allocates its work."""
     return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
-                            project, logsum, rec_start, rec_every, states, ck, a, b, vec_end,
-                            np.empty(0, dtype=np.int64), np.empty((0, 0)), None, tangent_kernel)
+                            restricted, project, logsum, rec_start, rec_every, states, ck, a, b,
+                            vec_end, np.empty(0, dtype=np.int64), np.empty((0, 0)), None,
+                            tangent_kernel)
 
 
 @njit(cache=True, inline="always")
-def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, project,
-                     logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events, none,
-                     work, kernel):
+def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, restricted,
+                     project, logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events,
+                     none, work, kernel):
     """Forward segments a … b−1 of ``ce`` steps of the tangent loop (restricted vectors,
     samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
     global step ``vec_end`` the state alone (its bits do not depend on the vectors).
@@ -93,9 +94,9 @@ def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth,
     which allocates nothing: in a GPU thread (``charts.analyses.angle_blocks``); no_events
     (0,), none (0, 0)."""
     y = Z[:1]
-    # the literal True (restricted) in both calls, and typed zeros, not the literal 0, which
-    # compiled the loop a second time here; `bool(True)`, the signature of
-    # TangentFlow.advance, would share that one but ran the angle test ~1 % slower (measured)
+    # ``restricted`` (True) from the caller, not the literal True, and typed zeros, not the
+    # literal 0: a literal argument compiles the loop once more (a signature of its own
+    # beside TangentFlow.advance's, which every other analysis compiles: 8 s)
     zero = np.int64(0)
     for i in range(a, b):
         left = ce
@@ -104,14 +105,14 @@ def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth,
             if ce < k:
                 k = ce
             status, _ = kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
-                                     w, True, project, logsum, rec_start, rec_every, states,
+                                     w, restricted, project, logsum, rec_start, rec_every, states,
                                      no_events, none, no_events, work)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
             status, _ = kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
-                                     reorth, w, True, project, logsum, zero, zero, none,
+                                     reorth, w, restricted, project, logsum, zero, zero, none,
                                      no_events, none, no_events, work)
             if status != RUNNING:
                 return status

@@ -217,8 +217,8 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         b = min(nseg, a + _SEGMENTS)
         status = forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
                                  system.weights, system.level, flow.speed, dt, ce, reorth,
-                                 flow.w, project, flow.logsum, n_tr, sample, states, ck, a, b,
-                                 n_tr + n_win)
+                                 flow.w, flow.restricted, project, flow.logsum, n_tr, sample,
+                                 states, ck, a, b, n_tr + n_win)
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
         rep.update((b - a) * ce * dt)
