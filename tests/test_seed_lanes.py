@@ -144,3 +144,31 @@ def test_sweep_worker_rows_are_the_points_rows(tmp_path):
         alone = evaluate_point(r)
         assert got["status"] == alone["status"] == "complete"
         _same(got["stats"], alone["stats"])
+
+
+def test_the_gpu_threads_give_the_lanes_rows(tmp_path):
+    """``flows``: the seeds advanced by the GPU's driver (``DeviceFlows``, here its CPU twin,
+    the same logic) give the lanes' results bit for bit; a sweep asked for a GPU that is not
+    there says what is missing before any work."""
+    from functools import partial
+
+    from charts.runs.sweep import load_sweep
+    from charts.runs.sweep.execute import SweepError, run_sweep
+    from charts.solvers.device import DeviceFlows, cuda_available
+
+    effects = {"lyapunov": {"n_batches": 2, "reorth_every": 0.1}, "drift": {"sample_every": 0.5}}
+    scenes = [parse_scene(raw(s, effects=effects), source=f"s{s}") for s in (3, 4)]
+    lanes = run_seed_lanes(scenes, [tmp_path / f"lanes{i}" for i in range(2)])
+    twin = run_seed_lanes(scenes, [tmp_path / f"twin{i}" for i in range(2)],
+                          partial(DeviceFlows.of_flows, backend="cpu"))
+    for a, b in zip(lanes, twin):
+        for key in ("results", "final_state", "drift"):
+            _same(a[key], b[key], key)
+    if not cuda_available():
+        sweep_file = tmp_path / "s.toml"
+        sweep_file.write_text('name = "s"\n[scene.run]\nt_final = 1.0\n[scene.effects.lyapunov]\n'
+                              '[sweep]\nmode = "grid"\nseeds = [1, 2]\n'
+                              '[sweep.parameters]\nn = [3]\n')
+        with pytest.raises(SweepError, match="--device cuda needs"):
+            run_sweep(load_sweep(sweep_file), tmp_path / "out", device="cuda", quiet=True)
+        assert not (tmp_path / "out").exists()

@@ -31,6 +31,10 @@ def add_parser(sub) -> None:
                    help="address of an existing Dask scheduler (e.g. tcp://host:8786)")
     p.add_argument("--workers", type=positive_count, metavar="N",
                    help="worker processes of the local cluster (default: every core)")
+    p.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu",
+                   help="where the seeds of a point advance together: the CPU's vector lanes "
+                   "(default), one GPU thread per seed (cuda; pip install 'charts[gpu]'), or "
+                   "the GPU when there is one (auto)")
     p.add_argument("--resume", action="store_true",
                    help="continue the table in DIR without recomputing finished points")
     p.add_argument("--no-plots", action="store_true", help="skip DIR/figures")
@@ -70,13 +74,15 @@ def cmd_sweep(args) -> int:
     try:
         sweep = load_sweep(resolve_sweep(args.sweep))
         info = run_sweep(sweep, args.output, scheduler=args.scheduler, workers=args.workers,
-                         resume=args.resume, quiet=args.quiet, plots=not args.no_plots)
+                         resume=args.resume, quiet=args.quiet, plots=not args.no_plots,
+                         device=args.device)
     except SweepError as exc:
         return _fail(str(exc))
     except KeyboardInterrupt:
+        device = "" if args.device == "cpu" else f" --device {args.device}"
         print(f"\ninterrupted: the finished points are in {args.output / TABLE}; continue "
               f"with:\n  charts sweep {shlex.quote(str(args.sweep))} -o "
-              f"{shlex.quote(str(args.output))} --resume", file=sys.stderr)
+              f"{shlex.quote(str(args.output))} --resume{device}", file=sys.stderr)
         return EXIT_INTERRUPTED
     if not args.quiet:
         _report(sweep.name, info, args.output)

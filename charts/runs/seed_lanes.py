@@ -24,7 +24,7 @@ from .runner import SceneRun
 from .scene import Scene, scene_to_dict
 from .scene_linkage import is_linkage
 
-__all__ = ["seed_family", "run_seed_lanes"]
+__all__ = ["seed_family", "run_seed_lanes", "lane_flows"]
 
 
 def seed_family(scene: Scene):
@@ -43,10 +43,23 @@ def seed_family(scene: Scene):
     return json.dumps(d, sort_keys=True, default=str)
 
 
-def run_seed_lanes(scenes, outdirs) -> list:
+def lane_flows(device: str = "cpu"):
+    """What advances the seeds' flows together: ``"cpu"`` the vector lanes of one kernel
+    (``charts.solvers.lanes.LaneFlows``), ``"cuda"`` one GPU thread per seed
+    (``charts.solvers.device.DeviceFlows``; `DeviceUnavailable` without a GPU or without the
+    extra ``charts[gpu]``), ``"auto"`` the GPU when there is one."""
+    from ..solvers.device import DeviceFlows, resolve_device
+
+    if resolve_device(device) == "cuda":
+        return lambda flows: DeviceFlows.of_flows(flows, backend="cuda")
+    return LaneFlows
+
+
+def run_seed_lanes(scenes, outdirs, flows=LaneFlows) -> list:
     """Run ``scenes`` (one `seed_family`) into ``outdirs`` (one each, checked and locked as
-    `run_scene` does), quietly.  Returns, per scene, its result dict or the `RunError` that
-    `run_scene` would have raised for it (its finished part written)."""
+    `run_scene` does), quietly, their main passes advanced together by ``flows`` (a function
+    of the scenes' `TangentFlow` s, `lane_flows`).  Returns, per scene, its result dict or
+    the `RunError` that `run_scene` would have raised for it (its finished part written)."""
     scenes = list(scenes)
     keys = {seed_family(sc) for sc in scenes}
     if not scenes or None in keys or len(keys) != 1:
@@ -64,7 +77,7 @@ def run_seed_lanes(scenes, outdirs) -> list:
                 r.st.add_compile_time(seconds)
 
         with compile_timer(add_compile_time):
-            live = _main_pass(runs, outcome)
+            live = _main_pass(runs, outcome, flows)
             for i in live:
                 try:
                     runs[i].run_chunks(None, _NO_BAR)
@@ -79,11 +92,12 @@ def run_seed_lanes(scenes, outdirs) -> list:
         return results
 
 
-def _main_pass(runs, outcome) -> list[int]:
-    """Every main chunk of every run in one `LaneFlows`: the lanes advance to each recording
-    stop, then each running lane's state goes back into its run's flow for its recorders,
-    the end of chunk bookkeeping and its checkpoint.  Returns the runs still running."""
-    lanes = LaneFlows([r.st.flow for r in runs])
+def _main_pass(runs, outcome, flows) -> list[int]:
+    """Every main chunk of every run in one ``flows`` (`LaneFlows` or the GPU's
+    ``DeviceFlows``, the same interface): the lanes advance to each recording stop, then each
+    running lane's state goes back into its run's flow for its recorders, the end of chunk
+    bookkeeping and its checkpoint.  Returns the runs still running."""
+    lanes = flows([r.st.flow for r in runs])
     lead = runs[0]
     unit = record_interval(lead.plan) or None
     live = list(range(len(runs)))

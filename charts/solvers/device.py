@@ -323,6 +323,13 @@ class DeviceFlows:
         """Member l's stacked state Z, shape (1 + k, 2N) (a copy)."""
         return np.array(self._host("Zs")[l])
 
+    def store(self, l, flow) -> None:
+        """Member l's whole state (stacked state, sin/cos, step counter, log-norm sums, energy
+        shares) into the `TangentFlow` ``flow``, as ``LaneFlows.store`` does."""
+        flow.load_state({"Z": self.lane(l), "sc": np.array(self._host("scs")[l]),
+                         "counter": np.array(self._host("counters")[l:l + 1]),
+                         "logsum": self.logsum[l].copy(), "shares": self.shares[l].copy()})
+
     def advance(self, nsteps, *, events=None, event_logs=None) -> int:
         """Advance every running member ``nsteps`` steps; at the global steps ``events``
         (sorted), store its log-norm sums in ``event_logs`` (E, L, k).  Returns the number

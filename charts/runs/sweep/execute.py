@@ -54,7 +54,7 @@ def check_scheduler_address(scheduler) -> str:
 
 
 def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=False,
-              quiet=False, plots=True, on_point=None) -> dict:
+              quiet=False, plots=True, on_point=None, device="cpu") -> dict:
     """Evaluate every point of ``sweep`` on Dask into ``outdir`` (see
     :mod:`charts.runs.sweep`).
 
@@ -69,6 +69,11 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
         Continue the table in ``outdir``: finished points are not recomputed.
     on_point : callable(done, total), optional
         Called after each row is written (tests raise KeyboardInterrupt from it).
+    device : {"cpu", "cuda", "auto"}
+        Where the seeds of a point advance together (``charts.runs.seed_lanes.lane_flows``):
+        the CPU's vector lanes, or one GPU thread per seed ("auto": the GPU when there is
+        one).  Checked here for a local cluster (``SweepError`` naming what is missing);
+        the rows are the same up to the GPU's rounding (docs/gpu.md).
 
     Returns
     -------
@@ -82,15 +87,31 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
         check_scheduler_address(scheduler)
     if workers is not None:
         positive_int("workers", workers)
+    device = _sweep_device(device, scheduler)
     points = sweep_points(sweep)          # every point's scene validated before any file
     outdir = prepare_output(outdir)
     with OutputLock(outdir, f"charts sweep {sweep.name}"):
         return _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
-                           on_point)
+                           on_point, device)
+
+
+def _sweep_device(device, scheduler) -> str:
+    """``device`` checked: "cpu" or "cuda" ("auto" resolved here for a local cluster; with
+    ``scheduler`` the workers' machines decide, so "auto" and "cuda" are passed on)."""
+    from ...solvers.device import DeviceUnavailable, resolve_device
+
+    if device not in ("cpu", "cuda", "auto"):
+        raise SweepError(f"--device must be cpu, cuda or auto, got {device!r}")
+    if scheduler:
+        return device
+    try:
+        return resolve_device(device)
+    except DeviceUnavailable as exc:
+        raise SweepError(str(exc).replace("device='cuda'", "--device cuda")) from None
 
 
 def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
-                on_point) -> dict:
+                on_point, device) -> dict:
     columns = point_columns(points)
     done = prepare_table(outdir, columns, points, resume, sweep.source)
     todo = [p for p in points if p.point_id not in done]
@@ -102,7 +123,7 @@ def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
             "lost": [], "run_id": run_id, "table": str(outdir / TABLE)}
     if todo:
         _compute(sweep, todo, len(points), len(done), columns, outdir, info, scheduler,
-                 workers, quiet, on_point)
+                 workers, quiet, on_point, device)
     table = finish_table(outdir / TABLE, len(points))
     if table is not None:           # every row written: no point in progress is left
         shutil.rmtree(outdir / POINTS, ignore_errors=True)
@@ -172,7 +193,7 @@ def _silence_dask_logs():
 
 
 def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, workers, quiet,
-             on_point):
+             on_point, device):
     """Submit ``todo`` and write each row as its point finishes (with a progress bar)."""
     from dask.distributed import as_completed
     from tqdm.auto import tqdm
@@ -197,7 +218,8 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
             keep = [str(outdir / POINTS / g[0].point_id) for g in block] if len(block) == 1 \
                 else None
             fut = client.submit(evaluate_points, [group[0].raw for group in block], keep,
-                                key=f"charts-sweep-{block[0][0].point_id}", pure=False)
+                                device, key=f"charts-sweep-{block[0][0].point_id}",
+                                pure=False)
             futures[fut] = block
         for fut in as_completed(list(futures)):
             block = futures[fut]

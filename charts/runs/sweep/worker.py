@@ -17,7 +17,7 @@ from ...analyses.lyapunov_members import MIN_LANES
 from .. import runner
 from ..outdir import OutputError
 from ..scene import parse_scene
-from ..seed_lanes import run_seed_lanes, seed_family
+from ..seed_lanes import lane_flows, run_seed_lanes, seed_family
 from .statistics import result_statistics
 
 __all__ = ["evaluate_point", "evaluate_points"]
@@ -79,11 +79,12 @@ def _run(scene, folder, resume):
         return exc
 
 
-def evaluate_points(raws: list, keep=None) -> list:
+def evaluate_points(raws: list, keep=None, device="cpu") -> list:
     """`evaluate_point` of each of ``raws`` (in the folders ``keep``, one per point, if
     given); points of one seed family
     (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
-    one kernel (the same rows, bit for bit; each point's wall time is the block's share)."""
+    one kernel (the same rows, bit for bit; each point's wall time is the block's share), or
+    with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``)."""
     scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
     families = {seed_family(sc) for sc in scenes}
     if len(scenes) < MIN_LANES or None in families or len(families) != 1:
@@ -92,7 +93,7 @@ def evaluate_points(raws: list, keep=None) -> list:
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
         dirs = [Path(td) / f"point-{i}" for i in range(len(scenes))]
-        outcomes = run_seed_lanes(scenes, dirs)
+        outcomes = run_seed_lanes(scenes, dirs, lane_flows(device))
         share = (time.perf_counter() - t0) / len(scenes)
         return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
 
