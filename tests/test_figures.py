@@ -77,6 +77,11 @@ def test_analysis_plots():
         check_axes(a)
     w = charts.waveform(system, th, u, 100.0)
     check_axes(w.plot()[1])
+    assert w.plot()[1].get_title() == "angles against time"      # no charts: no switch count
+    assert lyap.plot()[1].get_title().startswith("Lyapunov exponents, N = 4\n")
+    masses = charts.lyapunov_spectrum(charts.RotorSystem(4, masses=[1, 2, 3, 1]), th, u, 4.0,
+                                      t_transient=1.0, n_batches=2)
+    assert "N = 4, masses (1, 2, 3, 1)" in masses.plot_spectrum()[1].get_legend().get_texts()[0].get_text()
     fig, ax = charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=20.0).plot()
     check_axes(ax)
     assert "rad" in ax.get_xlabel()

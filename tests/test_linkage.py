@@ -360,6 +360,40 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
         assert m.params == n.params and m.min_sin2 == n.min_sin2
     _, ax = e.plot_spectrum()                   # against i/(N − 2), N = 4 rotors
     assert np.allclose(ax.lines[0].get_xdata(), [0.5, 1.0])
+    assert ax.get_legend().get_texts()[0].get_text() == "linkage ε = 0.1 (3 members)"
+    _, ax = e.plot()
+    assert ax.get_title() == "Lyapunov exponents, linkage ε = 0.1: 3 members"
+    # a reader of the file knows each component and its unit; the run is repeatable from it
+    with xr.open_dataset(tmp_path / "run.nc", engine="h5netcdf") as ds:
+        assert list(ds["component"].values[4:7]) == ["x", "y", "alpha"]
+        assert ds["component_units"].values[4] == "length"
+        assert ds["component_units"].values[11] == "length / time"
+        q0, v0 = np.array(ds.attrs["params_q0"]), np.array(ds.attrs["params_v0"])
+    assert np.array_equal(q0, L.random_state(seed=2)[0]) and np.array_equal(v0, L.random_state(seed=2)[1])
+
+
+def test_the_linkage_spectrum_entropy_and_dimension():
+    """The relevant spectrum of the linkage is the rotors' N = 4 shape (λ₁, λ₂, 0, 0, −λ₂,
+    −λ₁), so Pesin's entropy is λ₁ + λ₂ exactly and the Kaplan–Yorke dimension 6 (the whole
+    space: a check); one exponent is not enough and says so; ensembles too."""
+    import charts
+    L = charts.LinkageSystem(0.1)
+    q, v = L.random_state(seed=1)
+    r = charts.linkage_run(L, q, v, 4.0, t_transient=1.0, n_batches=2, n_exponents=3,
+                           curvature=False)
+    h, h_se = r.kolmogorov_sinai_entropy()
+    assert h == r.exponents[0] + r.exponents[1] and h_se > 0
+    assert r.kaplan_yorke_dimension() == (6.0, 0.0)
+    assert np.array_equal(r.spectrum, [r.exponents[0], r.exponents[1], 0, 0,
+                                       -r.exponents[1], -r.exponents[0]])
+    one = charts.linkage_run(L, q, v, 4.0, t_transient=1.0, n_batches=2, n_exponents=1,
+                             curvature=False)
+    with pytest.raises(ValueError, match="n_exponents >= 2"):
+        one.kolmogorov_sinai_entropy()
+    e = charts.linkage_ensemble(L, 2, 4.0, workers=1, t_transient=1.0, n_batches=2,
+                                curvature=False)
+    h, h_se = e.kolmogorov_sinai_entropy()
+    assert np.isclose(h, e.exponents.sum(), rtol=0, atol=1e-15) and h_se > 0
 
 
 def test_a_linkage_ensemble_compiles_in_this_process_before_its_workers_start(monkeypatch):

@@ -14,7 +14,7 @@ from ..compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
-from .spectrum_quantities import kaplan_yorke_dimension, kolmogorov_sinai_entropy, with_error
+from .spectrum_quantities import SpectrumQuantities
 from .statistics import standard_error
 
 __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result",
@@ -23,7 +23,7 @@ __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "
 
 
 @dataclass(eq=False)
-class EnsembleResult(Archivable):
+class EnsembleResult(SpectrumQuantities, Archivable):
     """Results of one analysis on independent trajectories (seeds seed, seed+1, …).
 
     members : list of the analysis' results, in seed order.
@@ -124,21 +124,13 @@ class EnsembleResult(Archivable):
         rows = np.array(spectra)
         return rows.mean(axis=0), rows
 
-    def kolmogorov_sinai_entropy(self):
-        """(h_KS, standard error): Pesin's sum of the positive exponents of the mean spectrum,
-        its error from the spread of the members (``charts.analyses.spectrum_quantities``)."""
-        return with_error(kolmogorov_sinai_entropy, *self._spectra())
-
-    def kaplan_yorke_dimension(self):
-        """(D_KY, standard error) of the mean spectrum, the error from the members."""
-        return with_error(kaplan_yorke_dimension, *self._spectra())
-
     def plot_spectrum(self, ax=None, **kw):
         """The mean exponents ± their standard error (the members' spread) against i/(N − 2)
         (``charts.plotting.plot_lyapunov_spectrum``); ``(fig, ax)``."""
         if self.exponents is None:
             raise ValueError("plot_spectrum needs a Lyapunov ensemble")
-        from ..plotting import plot_lyapunov_spectrum
+        from ..plotting import plot_lyapunov_spectrum, system_label
+        kw.setdefault("label", f"{system_label(self.params)} ({len(self)} members)")
         return plot_lyapunov_spectrum(self.exponents, self.stderr, self.params["n"], ax=ax, **kw)
 
     def plot(self, ax=None, kind=None, **kw):
@@ -152,8 +144,10 @@ class EnsembleResult(Archivable):
             if kind == "spectrum":
                 return self.plot_spectrum(ax=ax, **kw)
             if kind == "members":
-                from ..plotting import plot_ensemble_exponents
+                from ..plotting import plot_ensemble_exponents, system_label
                 rows = np.array([m.exponents for m in self.members])
+                kw.setdefault("title", f"Lyapunov exponents, {system_label(self.params)}: "
+                                       f"{len(self)} members")
                 return plot_ensemble_exponents(rows, self.exponents, self.stderr, ax=ax, **kw)
             raise ValueError(f"kind must be 'members' or 'spectrum' for an ensemble of "
                              f"exponents, got {kind!r}")

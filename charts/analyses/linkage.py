@@ -30,9 +30,20 @@ from ..solvers.linkage import LinkageFlow
 from .arguments import positive_int, positive_time, progress_reporter, project_steps, steps_of
 from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
+from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends
 
 __all__ = ["LinkageResult", "linkage_run", "linkage_ensemble", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
+
+#: The 14 components of the linkage's state (q, v): the rotors' angles, the disk's centre and
+#: angle, then their velocities, with their units.
+COMPONENTS = ("theta_0", "theta_1", "theta_2", "theta_3", "x", "y", "alpha", "u_0", "u_1",
+              "u_2", "u_3", "x_dot", "y_dot", "alpha_dot")
+COMPONENT_UNITS = ("rad",) * 4 + ("length", "length", "rad") + ("rad / time",) * 4 + (
+    "length / time", "length / time", "rad / time")
+#: Positive exponents of the linkage's geodesic flow (its configuration space is 3-dimensional,
+#: as the rotors' N = 4 manifold: N − 2 = 2), and the relevant spectrum's size (2 · 3).
+POSITIVE_EXPONENTS, SPECTRUM_SIZE = 2, 6
 
 #: The six cone points of Σ cos θ = 0 (N = 4): two angles 0, two π.
 CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
@@ -61,7 +72,7 @@ def gauss_curvature(system, q, X, Y):
 
 
 @dataclass(eq=False)
-class LinkageResult(Archivable):
+class LinkageResult(SpectrumQuantities, Archivable):
     """One run of `linkage_run`.
 
     exponents, stderr : (k,)  Lyapunov exponents (1/time) with batch-means standard errors.
@@ -70,6 +81,10 @@ class LinkageResult(Archivable):
     K : (S, k)  sectional curvatures K(v̂, eᵢ) (module doc).
     min_sin2 : float  smallest Σ sin²θᵢ at the samples (0 at a cone point of Σ cos θ = 0).
     min_health : float  smallest det(C̃ᵀC̃) seen (``charts.flows.linkage.disk_gram``).
+
+    The relevant spectrum (`spectrum`), the Kolmogorov–Sinai entropy and the Kaplan–Yorke
+    dimension are those of the rotors' N = 4 (the same pairs ±λ and two zeros), from the two
+    leading exponents (``n_exponents`` ≥ 2).
     """
     exponents: np.ndarray
     stderr: np.ndarray
@@ -85,6 +100,21 @@ class LinkageResult(Archivable):
         """Fraction of samples with K(v̂, eᵢ) > 0, shape (k,)."""
         return (self.K > 0).mean(axis=0)
 
+    @property
+    def spectrum(self):
+        """(6,): the relevant spectrum λ₁, λ₂, 0, 0, −λ₂, −λ₁ from the two leading exponents
+        (None when fewer were computed)."""
+        if len(self.exponents) < POSITIVE_EXPONENTS:
+            return None
+        return reconstructed_spectra(self.exponents, POSITIVE_EXPONENTS, SPECTRUM_SIZE)[0]
+
+    def _spectra(self):
+        if self.spectrum is None:
+            raise ValueError(f"this result holds {len(self.exponents)} exponent, not the two "
+                             "positive ones; run linkage_run with n_exponents >= 2")
+        return self.spectrum, reconstructed_spectra(self.batches, POSITIVE_EXPONENTS,
+                                                    SPECTRUM_SIZE)
+
     KIND = "linkage"
 
     def to_xarray(self):
@@ -97,10 +127,14 @@ class LinkageResult(Archivable):
                 "batches": (("batch", "exponent"), self.batches, "1 / time"),
                 "K": (("sample", "exponent"), self.K, "1 / rad^2",
                       "sectional curvature K(unit velocity, e_i) (Gauss equation)"),
-                "states": (("sample", "component"), self.states, "rad, rad / time",
+                "states": (("sample", "component"), self.states, "see component_units",
                            "the sampled state (q, v)")}
         coords = {"t": (("sample",), self.t, "time", "after the transient"),
-                  "exponent": exponent_coordinate(len(self.exponents))}
+                  "exponent": exponent_coordinate(len(self.exponents)),
+                  "component": (("component",), np.array(COMPONENTS), "1",
+                                "θ₀…θ₃, the disk's x, y, α, then their velocities"),
+                  "component_units": (("component",), np.array(COMPONENT_UNITS), "1",
+                                      "the unit of each component of states")}
         return dataset(self.KIND, data, coords=coords, attrs={
             "params": self.params, "min_sin2": self.min_sin2, "min_health": self.min_health})
 
@@ -178,8 +212,9 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
         raise ValueError(f"t_final={t_final:g} is too short for {n_batches} batches")
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     seed = positive_int("seed", seed, 0)
-    flow = LinkageFlow(system, q0, v0, k, dt=dt, reorth_every=reorth,
-                       project_every=project_steps(project_every, dt), seed=seed)
+    project = project_steps(project_every, dt)
+    flow = LinkageFlow(system, q0, v0, k, dt=dt, reorth_every=reorth, project_every=project,
+                       seed=seed)
     rep = progress_reporter(progress, (transient + total) * dt, f"linkage eps={system.eps:g}")
     where = "linkage_run (RK4)"
     flow.advance(transient, where=where)
@@ -202,9 +237,12 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
             K[i] = frame_curvatures(system, rows[i], k)
     states = rows[:, :NY].copy()
     min_sin2 = float(np.min(np.sum(np.sin(states[:, :4]) ** 2, axis=1)))
+    # the settings as run, and the initial state: enough to repeat the call from a saved file
     params = dict(**system.describe(), t_final=total * dt, dt=dt,
                   t_transient=transient * dt, n_batches=n_batches, reorth_every=reorth * dt,
-                  sample_every=sample * dt, speed=flow.speed, seed=seed)
+                  sample_every=sample * dt, project_every=project * dt if project else None,
+                  n_exponents=k, curvature=bool(curvature), speed=flow.speed, seed=seed,
+                  q0=q0.tolist(), v0=v0.tolist())
     return LinkageResult(exps, stderr, batches, np.arange(1, S + 1) * sample * dt, states, K,
                          min_sin2, float(flow.health[0]), params)
 

@@ -31,8 +31,7 @@ from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         start_state, steps_of, Documented)
-from .spectrum_quantities import (kaplan_yorke_dimension, kolmogorov_sinai_entropy,
-                                  reconstructed_spectra, with_error)
+from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends, batch_estimates
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
@@ -141,7 +140,7 @@ def identify_nonphysical(system, theta, u, X):
 
 
 @dataclass(eq=False)
-class LyapunovResult(Archivable):
+class LyapunovResult(SpectrumQuantities, Archivable):
     """Result of `lyapunov_spectrum`.
 
     exponents : (k,)  the computed exponents (1/time), in the order of eq (18)'s
@@ -214,13 +213,15 @@ class LyapunovResult(Archivable):
         """Running estimates against the averaging time (log axis) with the final estimate ±
         its standard error as bands; ``(fig, ax)`` (``charts.plotting.plot_lyapunov``;
         ``paper=[...]`` adds reference values)."""
-        from ..plotting import plot_lyapunov
+        from ..plotting import plot_lyapunov, system_label
+        kw.setdefault("system", system_label(self.params))
         return plot_lyapunov(self.history_t, self.history, self.exponents, self.stderr, ax=ax, **kw)
 
     def plot_spectrum(self, ax=None, **kw):
         """λᵢ ± standard error against i/(N − 2), so that spectra of several N share one axis
         (``charts.plotting.plot_lyapunov_spectrum``); ``(fig, ax)``."""
-        from ..plotting import plot_lyapunov_spectrum
+        from ..plotting import plot_lyapunov_spectrum, system_label
+        kw.setdefault("label", system_label(self.params))
         return plot_lyapunov_spectrum(self.exponents, self.stderr, self.params["n"], ax=ax, **kw)
 
     def _spectra(self):
@@ -233,16 +234,6 @@ class LyapunovResult(Archivable):
         k, total = len(self.exponents), len(self.spectrum)
         rows = self.batches if k == total else reconstructed_spectra(self.batches, k, total)
         return self.spectrum, rows
-
-    def kolmogorov_sinai_entropy(self):
-        """(h_KS, standard error): the sum of the positive exponents (Pesin's formula), its
-        error from the batches (``charts.analyses.spectrum_quantities``)."""
-        return with_error(kolmogorov_sinai_entropy, *self._spectra())
-
-    def kaplan_yorke_dimension(self):
-        """(D_KY, standard error) of the relevant spectrum (for a geodesic flow, whose
-        exponents sum to zero, the dimension of the whole space: a check)."""
-        return with_error(kaplan_yorke_dimension, *self._spectra())
 
     def __repr__(self):
         pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))

@@ -15,7 +15,7 @@ import numpy as np
 from .statistics import standard_error
 
 __all__ = ["kolmogorov_sinai_entropy", "kaplan_yorke_dimension", "with_error",
-           "reconstructed_spectra"]
+           "reconstructed_spectra", "SpectrumQuantities"]
 
 
 def kolmogorov_sinai_entropy(spectrum) -> float:
@@ -53,3 +53,21 @@ def with_error(quantity, spectrum, rows):
     rows = np.atleast_2d(np.asarray(rows, dtype=float))
     values = np.array([quantity(row) for row in rows])
     return float(quantity(spectrum)), float(standard_error(values))
+
+
+class SpectrumQuantities:
+    """The entropy and the dimension as methods of a result: a result class supplies
+    ``_spectra()`` -> (its spectrum, the independent estimates behind it as spectra)."""
+
+    def _spectra(self):  # pragma: no cover - contract
+        raise NotImplementedError
+
+    def kolmogorov_sinai_entropy(self):
+        """(h_KS, standard error): Pesin's sum of the positive exponents (1/time), its error
+        from the independent estimates (a run's batches, an ensemble's members)."""
+        return with_error(kolmogorov_sinai_entropy, *self._spectra())
+
+    def kaplan_yorke_dimension(self):
+        """(D_KY, standard error) of the relevant spectrum (for a geodesic flow, whose
+        exponents sum to zero, the dimension of the whole space: a check)."""
+        return with_error(kaplan_yorke_dimension, *self._spectra())

@@ -24,10 +24,11 @@ LOG_FLOOR = 1e-18
 
 
 def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="paper (dotted)",
-                  ax=None, title=None):
+                  ax=None, title=None, system=None):
     """Running estimates ``H`` (m, k) of the exponents against the averaging time ``T`` (m,)
     on a log axis; the final ``exponents`` ± ``stderr`` as bands and error bars (when there
-    are standard errors); ``paper`` values as dotted lines (only when given)."""
+    are standard errors); ``paper`` values as dotted lines (only when given); ``system`` (e.g.
+    `system_label`'s words) in the title."""
     T = np.asarray(T, dtype=float)
     H = np.asarray(H, dtype=float).reshape(len(T), -1)
     fig, ax = figure_axes(ax, figsize=(7, 4.6))
@@ -62,7 +63,8 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
     if stderr is not None:
         how += "; band and bar: final estimate ± standard error"
     # the title in two lines: one line of this length was clipped at the figure's edge
-    ax.set_title(title or f"Lyapunov exponents\n({how})", fontsize=10)
+    what = f"Lyapunov exponents, {system}" if system else "Lyapunov exponents"
+    ax.set_title(title or f"{what}\n({how})", fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
               ncol=1 if H.shape[1] <= 12 else 2)
     return fig, ax

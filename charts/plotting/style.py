@@ -10,7 +10,7 @@ import numpy as np
 from ..atomic import atomic_write
 
 __all__ = ["new_figure", "png_bytes", "save_png", "DPI", "figure_axes", "wrap", "broken_at_wraps",
-           "TIME", "time_window", "MAX_POINTS"]
+           "TIME", "time_window", "MAX_POINTS", "system_label"]
 
 #: Most samples drawn per line of a time series (a longer series is thinned evenly).
 MAX_POINTS = 20000
@@ -95,3 +95,19 @@ def broken_at_wraps(angles, extra=()):
     where = np.flatnonzero(jump) + 1
     return ([np.insert(w, where, np.nan) for w in W] +
             [np.insert(np.asarray(e, dtype=float), where, np.nan) for e in extra])
+
+
+def system_label(params) -> str:
+    """The system of a result's ``params`` in a few words, for titles and legends:
+    "linkage ε = 0.1", "N = 4", with masses, weights and level where they are not the
+    paper's (all 1, level 0)."""
+    if params.get("eps") is not None:
+        return f"linkage ε = {params['eps']:g}"
+    out = f"N = {params.get('n')}"
+    for key in ("masses", "weights"):
+        vals = params.get(key)
+        if vals is not None and any(float(x) != 1.0 for x in vals):
+            out += f", {key} (" + ", ".join(f"{float(x):g}" for x in vals) + ")"
+    if params.get("level"):
+        out += f", level {params['level']:g}"
+    return out

@@ -12,14 +12,16 @@ __all__ = ["plot_angles_time", "plot_surface", "plot_poincare", "animate_rotors"
            "plot_trajectory", "save_animation"]
 
 
-def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINTS, ax=None,
+def plot_angles_time(t, theta, *, switches=None, window=None, max_points=MAX_POINTS, ax=None,
                      title=None):
     """θᵢ(t) wrapped to (−π, π], one line per rotor; chart switches ``(t, from, to)`` as
-    thin vertical lines.  ``window`` = (t0, t1): only that span (the whole of a long run
+    thin vertical lines, counted in the title (None: a route without charts, nothing said).  ``window`` = (t0, t1): only that span (the whole of a long run
     smears into a block); at most ``max_points`` samples per line (every k-th: the title
     says so)."""
     fig, ax = figure_axes(ax, figsize=(7.5, 3.6))
     t, theta, stride = time_window(t, theta, window, max_points)
+    charts_ = switches is not None
+    switches = list(switches or ())
     if window is not None:
         switches = [sw for sw in switches if window[0] <= sw[0] <= window[1]]
     for i in range(theta.shape[1]):
@@ -32,9 +34,9 @@ def plot_angles_time(t, theta, *, switches=(), window=None, max_points=MAX_POINT
     ax.set_ylabel("θᵢ (rad, wrapped to (−π, π])")
     ax.set_ylim(-np.pi * 1.05, np.pi * 1.05)
     ax.set_yticks([-np.pi, -np.pi / 2, 0, np.pi / 2, np.pi], ["−π", "−π/2", "0", "π/2", "π"])
-    every = f", every {stride}th sample" if stride > 1 else ""
-    ax.set_title(title or f"angles against time ({len(switches)} chart switches{every})",
-                 fontsize=10)
+    every = f"every {stride}th sample" if stride > 1 else ""
+    notes = ", ".join(x for x in (f"{len(switches)} chart switches" if charts_ else "", every) if x)
+    ax.set_title(title or ("angles against time" + (f" ({notes})" if notes else "")), fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     return fig, ax
 
@@ -165,7 +167,8 @@ def plot_trajectory(result, kind="angles", **kw):
     """``IntegrationResult.plot``: ``kind`` = ``"angles"``, ``"surface"`` (N = 3),
     ``"poincare"`` or ``"animation"``."""
     if kind == "angles":
-        return plot_angles_time(result.t, result.theta, switches=result.switches, **kw)
+        switches = result.switches if result.formulation == "chart" else None
+        return plot_angles_time(result.t, result.theta, switches=switches, **kw)
     if kind == "surface":
         return plot_surface(result.theta, **kw)
     if kind == "poincare":
