@@ -17,6 +17,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[1]))          # the checkout's charts, also uninstalled
 
 import charts  # noqa: E402
+from charts.archive import Archivable  # noqa: E402
 
 project = "charts"
 author = "the charts developers"
@@ -45,11 +46,24 @@ def api_page() -> str:
         for name in names:
             obj = getattr(charts, name)
             if inspect.isclass(obj):
-                lines += [f".. autoclass:: charts.{name}", "   :members:", ""]
+                lines += [f".. autoclass:: charts.{name}", "   :members:"]
+                if issubclass(obj, Archivable):        # save, ==, the entropy and dimension
+                    lines += ["   :inherited-members: tuple"]
+                lines += [""]
             elif callable(obj):
                 lines += [f".. autofunction:: charts.{name}", ""]
             else:
                 lines += [f".. autodata:: charts.{name}", "   :annotation:", ""]
+    lines += ["Every result", "------------", "",
+              "Each result class above is an ``Archivable``: ``save(path)`` writes it as NetCDF,",
+              "``charts.load(path)`` reads it back, and ``==`` compares two results by value.", "",
+              ".. autoclass:: charts.archive.Archivable", "   :members: save",
+              "   :special-members: __eq__", "",
+              "``charts.runs.netcdf_results``", "-" * 34, "",
+              ".. autoclass:: charts.runs.netcdf_results.SceneResult", "   :members:", "",
+              ".. autoclass:: charts.runs.netcdf_results.SweepTable", "   :members:", "",
+              "``charts.plotting``", "-" * 22, "",
+              ".. automodule:: charts.plotting", "   :members:", ""]
     return "\n".join(lines) + "\n"
 
 
