@@ -41,7 +41,7 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
         if se is None:
             lab = f"λ{i + 1} = {lam:.4g} (one batch: no error bar)"
         else:
-            lab = f"λ{i + 1} = {lam:.4g} ± {se:.2g}"
+            lab = f"λ{i + 1} = {lam:#.4g} ± {se:#.2g}"   # "#": 0.010, not 0.01
             ax.axhspan(lam - se, lam + se, color=color, alpha=0.18, lw=0)
             if keep.any():
                 ax.errorbar([T[keep][-1]], [lam], yerr=[se], color=color, capsize=4, lw=1.4)

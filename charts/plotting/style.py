@@ -70,11 +70,16 @@ def figure_axes(ax=None, **new_kw):
 
 
 def line_colors(k):
-    """``k`` distinct line colours: matplotlib's ten-colour cycle up to ten lines, beyond
-    that evenly spaced colours of the viridis map (the cycle would repeat its colours)."""
+    """``k`` distinct line colours: matplotlib's ten-colour cycle up to ten lines; up to 20
+    the ten hues of ``tab20`` dark, then the same ten light (so that neighbours differ in hue,
+    where a continuous map made λ₁ and λ₂ look alike); beyond that evenly spaced colours of
+    the viridis map (the cycle would repeat its colours)."""
     if k <= 10:
         return [f"C{i}" for i in range(k)]
     from matplotlib import colormaps
+    if k <= 20:
+        tab = colormaps["tab20"].colors
+        return [tab[2 * i] for i in range(10)] + [tab[2 * i + 1] for i in range(k - 10)]
     cmap = colormaps["viridis"]
     return [cmap(x) for x in np.linspace(0.0, 0.92, k)]
 

@@ -127,6 +127,28 @@ def _label(stat: str) -> str:
     return stat
 
 
+def _axis_label(stat: str) -> str:
+    """The value axis of ``stat``, with its unit."""
+    if stat.startswith("lambda_"):
+        return f"{_label(stat)} (1 / time unit)"
+    if stat.startswith(("Kpos_", "phi_full_frac", "phi_restricted_frac")):
+        return "fraction of samples"
+    if stat.startswith("phi_"):
+        return "φ (rad)"
+    return stat
+
+
+def _fixed(rows, params) -> str:
+    """The parameters that keep one value over the rows ("n=4, pattern=(1,m,1,m)")."""
+    out = []
+    for p in params:
+        vals = {str(r[p]) for r in rows}
+        if len(vals) == 1:
+            v = rows[0][p]
+            out.append(f"{p}={v:g}" if isinstance(v, float) else f"{p}={v}")
+    return ", ".join(out)
+
+
 def plot_sweep(summary: dict, folder, title="") -> list[str]:
     """One PNG per statistic: curves over the one numeric swept parameter (one line per
     value of the others, error bars = ``_se``), a heat map over the first two numeric
@@ -159,6 +181,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
             fig, ax = new_figure(figsize=(5.2, 3.6))
             _curves(ax, have, stat, x, groups, gkey, glabel, ms=3.5, capsize=2.5)
             ax.set_xlabel(x)
+            ax.set_ylabel(_axis_label(stat), fontsize=8)
             if len(groups) > 1:
                 ax.legend(fontsize=7)
         elif len(numeric) >= 2:
@@ -183,7 +206,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
                 ax.set_xlabel(x)
                 ax.set_ylabel(y)
                 ax.set_title(glabel(g), fontsize=8)
-            fig.colorbar(im, ax=axs[0].tolist(), shrink=0.9)
+            fig.colorbar(im, ax=axs[0].tolist(), shrink=0.9, label=_axis_label(stat))
             ax = axs[0][0]
         else:
             fig, ax = new_figure(figsize=(5.2, 3.6))
@@ -191,9 +214,11 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
                    yerr=[r.get(stat + "_se", 0.0) or 0.0 for r in have])
             ax.set_xticks(range(len(have)), [glabel(gkey(r)) for r in have], rotation=30,
                           fontsize=7)
+            ax.set_ylabel(_axis_label(stat), fontsize=8)
         if logy and len(numeric) < 2:
             ax.set_yscale("log")
-        fig.suptitle(f"{title}: {_label(stat)}", fontsize=9)
+        fixed = _fixed(rows, params)
+        fig.suptitle(f"{title}: {_label(stat)}" + (f"\n({fixed})" if fixed else ""), fontsize=9)
         path = folder / f"{stat}.png"
         save_png(fig, path)
         files.append(str(path))
