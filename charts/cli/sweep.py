@@ -80,7 +80,8 @@ def cmd_sweep(args) -> int:
         return _fail(str(exc))
     except KeyboardInterrupt:
         device = "" if args.device == "cpu" else f" --device {args.device}"
-        print(f"\ninterrupted: the finished points are in {args.output / TABLE}; continue "
+        print(f"\ninterrupted: the finished points are in {args.output / TABLE} (and the "
+              f"checkpoints of a long point in {args.output / 'points'}); continue "
               f"with:\n  charts sweep {shlex.quote(str(args.sweep))} -o "
               f"{shlex.quote(str(args.output))} --resume{device}", file=sys.stderr)
         return EXIT_INTERRUPTED
