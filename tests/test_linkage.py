@@ -288,7 +288,7 @@ def test_bad_arguments_are_refused(L01):
     with pytest.raises(ValueError, match="shape"):
         L01.check_state(q[:4], v)
     with pytest.raises(ValueError, match="multiple"):
-        linkage_run(L01, q, v, 10.05)
+        linkage_run(L01, q, v, 10.05, reorth_every=0.1)
     with pytest.raises(ValueError, match="n_exponents"):
         linkage_run(L01, q, v, 10.0, n_exponents=4)
 
@@ -442,6 +442,44 @@ def test_a_linkage_ensemble_compiles_in_this_process_before_its_workers_start(mo
     assert [c[2]["seed"] for c in calls[2:]] == [0, 1]
     assert all(c[1] == 2.0 and {k: c[2][k] for k in settings} == settings for c in calls[2:])
     assert np.array_equal(e.exponents, alone.exponents)
+
+
+def test_linkage_defaults_follow_dt_where_written_times_must_be_whole(L01):
+    """At dt = 0.04 and 0.03, where 0.1 and 1.0 are no whole number of steps, the times
+    left to the signatures follow dt (the nearest whole number of steps, dividing t_final
+    where they must: over t_final = 6, reorth_every 0.08 / 0.06 and sample_every 0.4 / 0.6,
+    multiples of it); the same times written are refused, naming the nearest allowed value."""
+    from charts.analyses.arguments import Documented
+    from charts.analyses.linkage import _prime
+    from charts.analyses.linkage_angles import angle_steps
+
+    q, v = L01.random_state(seed=0)
+    for dt, reorth, sample, near in ((0.04, 0.08, 0.4, "0.08"), (0.03, 0.06, 0.6, "0.09")):
+        r = linkage_run(L01, q, v, 6.0, dt=dt, t_transient=0.0, n_batches=2, curvature=False)
+        assert r.params["reorth_every"] == pytest.approx(reorth)
+        assert r.params["sample_every"] == pytest.approx(sample)
+        with pytest.raises(ValueError, match=f"reorth_every=0.1 is not a whole number of "
+                                             f"steps dt={dt:g}; .*e.g. {near}"):
+            linkage_run(L01, q, v, 6.0, dt=dt, reorth_every=0.1)
+        t, _ = charts.linkage_trajectory(L01, q, v, 1.2, dt=dt)
+        assert t[1] == pytest.approx(reorth)
+        with pytest.raises(ValueError, match="sample_every=0.1 is not a whole number"):
+            charts.linkage_trajectory(L01, q, v, 1.2, dt=dt, sample_every=0.1)
+        with pytest.raises(ValueError, match="project_every=0.1 is not a whole number"):
+            charts.linkage_trajectory(L01, q, v, 1.2, dt=dt, project_every=0.1)
+        e = charts.linkage_ensemble(L01, 2, 1.2, dt=dt, workers=1, t_transient=0.0,
+                                    n_batches=2, curvature=False)
+        assert e.members[0].params["reorth_every"] == pytest.approx(reorth)
+        # the ensemble's compiling run: two re-orthonormalisations of the members' default
+        t_prime, prime = _prime({"dt": dt})
+        assert t_prime == pytest.approx(2 * dt * round(0.1 / dt))
+        assert prime["sample_every"] == pytest.approx(dt * round(0.1 / dt))
+    # linkage_angles: t_final and t_transient are multiples of sample_every; a default
+    # sample_every divides both, a default t_transient is the nearest multiple of it
+    assert angle_steps(0.03, 3.0, Documented(50.0), Documented(0.1)) == (100, 1666, 2)
+    assert angle_steps(0.03, 3.0, 1.2, Documented(0.1)) == (100, 40, 2)
+    with pytest.raises(ValueError, match="t_transient=50 is not a whole number of steps"):
+        angle_steps(0.03, 3.0, 50.0, Documented(0.1))
 
 
 @pytest.mark.parametrize("branch", [0, "x", True, 2])

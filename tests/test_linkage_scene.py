@@ -65,6 +65,53 @@ def test_linkage_scene_equals_the_api_bit_for_bit(tmp_path):
         assert np.array_equal(back.arrays["curvature_exact"], api.K)
 
 
+@pytest.mark.parametrize("dt", [0.04, 0.03])
+def test_linkage_scene_that_only_sets_dt_is_the_api_call(tmp_path, dt):
+    """At dt = 0.04 and 0.03, where the documented 0.1 and 1.0 are no whole number of steps,
+    a linkage scene that writes dt and the times only and the API calls that leave the same
+    defaults take the same steps (reorth_every, the samples, project_every 1.0 / 0.99) and
+    give the same numbers bit for bit.  (The scene's curvature samples are those of
+    curvature_along_trajectory's sample_every 0.1, given to linkage_run as written.)"""
+    sc = parse_scene({"system": {"kind": "linkage", "eps": EPS}, "integrator": {"dt": dt},
+                      "run": {"t_final": 6.0, "t_transient": 1.2},
+                      "effects": {"lyapunov": {"n_batches": 4}, "curvature": {}, "angles": {}}})
+    assert sc.integrator["project_every"] == pytest.approx(dt * round(1.0 / dt))
+    res = run_scene(sc, tmp_path / "out", quiet=True)
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        K, phi, t_phi = a["curvature_exact"], a["angles_restricted"], a["angles_t"]
+    L = charts.LinkageSystem(EPS)
+    q, v = L.random_state(seed=0)
+    api = charts.linkage_run(L, q, v, 6.0, dt=dt, t_transient=1.2, n_batches=4,
+                             sample_every=sc.effects["curvature"]["sample_every"])
+    assert api.params["reorth_every"] == sc.effects["lyapunov"]["reorth_every"]
+    assert res["results"]["lyapunov"]["exponents"] == api.exponents.tolist()
+    assert res["results"]["lyapunov"]["stderr"] == api.stderr.tolist()
+    assert np.array_equal(K, api.K)
+    alone = charts.linkage_run(L, q, v, 6.0, dt=dt, t_transient=1.2, n_batches=4,
+                               curvature=False)          # every time setting left to dt
+    assert np.array_equal(alone.exponents, api.exponents)
+    ang = linkage_angles(L, q, v, 6.0, dt=dt, t_transient=1.2)
+    assert np.array_equal(phi, ang.phi) and np.array_equal(t_phi, ang.t)
+
+
+def test_linkage_scene_angle_defaults_are_linkage_angles_at_dt_003():
+    """Nothing but dt = 0.03 written: the angle pass's transient and samples are those
+    `linkage_angles` takes for its defaults (a transient that is a multiple of the samples;
+    the scene was refused: t_transient = 50.01 is not a multiple of sample_every = 0.06)."""
+    from charts.analyses.arguments import Documented
+    from charts.analyses.linkage_angles import angle_steps
+
+    sc = parse_scene({"system": {"kind": "linkage", "eps": EPS}, "integrator": {"dt": 0.03},
+                      "run": {"t_final": 3.0}, "effects": {"angles": {}}})
+    default = linkage_angles.__kwdefaults__
+    _, transient, sample = angle_steps(0.03, 3.0, default["t_transient"],
+                                       default["sample_every"])
+    a = sc.effects["angles"]
+    assert isinstance(default["t_transient"], Documented)
+    assert (a["t_transient"], a["sample_every"]) == (transient * 0.03, sample * 0.03)
+    assert (transient, sample) == (1666, 2)
+
+
 def test_linkage_scene_interrupted_and_resumed_equals_uninterrupted(tmp_path):
     def stop(idx, total):
         if idx == 2:

@@ -134,3 +134,35 @@ def test_scene_that_only_sets_dt_is_the_api_call(tmp_path):
     system = RotorSystem(4)
     api = lyapunov_spectrum(system, *system.random_state(seed=0), 40.0, dt=0.04)
     assert res["exponents"] == api.exponents.tolist()
+
+
+def test_rotor_scene_that_only_sets_dt_003_is_the_api_call(tmp_path):
+    """dt = 0.03 and nothing else but the times: [integrator] project_every is left to the
+    API's 1.0, which follows dt as the API's does (0.99; it was refused: 1.0 is not a
+    multiple of 0.03); the exponents, curvatures and angles equal the API calls' bit for
+    bit.  A project_every written in the scene is still checked strictly."""
+    masses = [1.0, 2.0, 3.0, 1.0]
+    scene = {"system": {"n": 4, "masses": masses}, "integrator": {"dt": 0.03},
+             "run": {"t_final": 3.0, "t_transient": 0.6},
+             "effects": {"lyapunov": {}, "curvature": {}, "angles": {}}}
+    sc = parse_scene(scene)
+    assert sc.integrator["project_every"] == pytest.approx(0.99)
+    res = run_scene(sc, tmp_path / "r", quiet=True)["results"]
+    system = RotorSystem(4, masses)
+    theta0, u0 = system.random_state(seed=0)
+    times = dict(dt=0.03, t_transient=0.6)
+    ly = lyapunov_spectrum(system, theta0, u0, 3.0, **times)
+    assert res["lyapunov"]["exponents"] == ly.exponents.tolist()
+    assert res["lyapunov"]["stderr"] == ly.stderr.tolist()
+    cu = curvature_along_trajectory(system, theta0, u0, 3.0, **times)
+    an = hyperbolicity_angles(system, theta0, u0, 3.0, **times)
+    with np.load(tmp_path / "r" / "arrays.npz") as a:
+        assert np.array_equal(a["curvature_t"], cu.t + 0.6)
+        assert np.array_equal(a["curvature_exact"], cu.diagonal("exact"))
+        assert np.array_equal(a["curvature_numerical"], cu.diagonal("numerical"))
+        assert np.array_equal(a["angles_t"], an.t)
+        assert np.array_equal(a["angles_full"], an.phi_full, equal_nan=True)
+        assert np.array_equal(a["angles_restricted"], an.phi_restricted, equal_nan=True)
+    scene["integrator"]["project_every"] = 1.0
+    with pytest.raises(ValueError, match=r"project_every = 1.0 is not allowed.*nearest: 0.99"):
+        parse_scene(scene)

@@ -336,7 +336,9 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     variant : {'restricted', 'full'}
         CLVs in T_r (D = 2N−2) or in R^{2N} (D = 2N).
     dt : float
-        RK4 step; every other time is a whole number of steps.
+        RK4 step.  A time written below must be a whole number of steps;
+        a default left is the nearest whole number of steps at other dt (README,
+        "Conventions").
     n_unstable : int, optional
         m, the dimension of E_u (default N−2).
     t_transient : float

@@ -333,13 +333,16 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     dt : float
         RK4 step of the trajectory, the Lyapunov vectors and the ±Δt frame steps.
     sample_every : float
-        Time between sample points (a multiple of dt).
+        Time between sample points (a multiple of dt; default 0.1, the nearest whole
+        number of steps at other dt that divides t_final: README, "Conventions").
     t_transient : float
-        Time for the Lyapunov vectors to converge before sampling.
+        Time for the Lyapunov vectors to converge before sampling (default 50, the nearest
+        whole number of steps at other dt).
     exact : bool
         Also evaluate route (b) at the same points and frames.
     project_every : float or None
-        Time between projections of the state onto the invariants (None: never).
+        Time between projections of the state onto the invariants (default 1.0, the nearest
+        whole number of steps at other dt; None: never).
     seed : int
         Seed of the random initial tangent vectors.
     progress : bool or callable(t_done, t_total)

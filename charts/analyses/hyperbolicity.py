@@ -175,17 +175,22 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         Length of the analysed window; the trajectory runs t_transient + t_final +
         t_transient so that V (forward) and W (backward) converge before it.
     dt : float
-        RK4 step of both passes.  Every other time below is a whole number of steps.
+        RK4 step of both passes.  A time written below must be a whole number of steps;
+        a default left is the nearest whole number of steps at other dt (README,
+        "Conventions").
     n_unstable : int, optional
         m, the dimension of E_u (default N−2, the number of positive exponents).
     t_transient : float
         Convergence time of each pass (>= 0).
     sample_every : float
-        Time between sample points (memory S·m·2N·8 bytes for the forward vectors).
+        Time between sample points (memory S·m·2N·8 bytes for the forward vectors; default
+        0.1, the nearest whole number of steps at other dt that divides t_final).
     checkpoint_every : float
-        Time between stored trajectory checkpoints of the forward pass.
+        Time between stored trajectory checkpoints of the forward pass (default 1.0, the
+        nearest whole number of steps at other dt).
     project_every : float or None
-        Time between projections of the forward state onto the invariants (None: never).
+        Time between projections of the forward state onto the invariants (default 1.0, the
+        nearest whole number of steps at other dt; None: never).
     seed : int
         Seed of the random initial vectors of both passes.
     progress : bool or callable(t_done, t_total)

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import inspect
 from dataclasses import dataclass, field
+from math import gcd
 
 import numpy as np
 
@@ -27,7 +28,8 @@ from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
-from .arguments import positive_int, positive_time, progress_reporter, project_steps, steps_of
+from .arguments import (Documented, positive_int, positive_time, progress_reporter,
+                        project_steps, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
@@ -179,16 +181,23 @@ def _frame(system, row, k):
 
 
 @announces_compilation
-def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=50.0,
-                n_batches=20, reorth_every=0.1, project_every=1.0, sample_every=1.0,
-                curvature=True, seed=0, progress=False) -> LinkageResult:
+def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
+                t_transient=Documented(50.0), n_batches=20, reorth_every=Documented(0.1),
+                project_every=Documented(1.0), sample_every=Documented(1.0), curvature=True,
+                seed=0, progress=False) -> LinkageResult:
     """Lyapunov exponents and curvature samples of the linkage from (q0, v0).
 
-    Parameters as in ``lyapunov_spectrum`` (times in time units, whole multiples of dt):
-    ``t_final`` averaging time after ``t_transient``; ``n_exponents`` (≤ 3, the dimension)
-    leading exponents in the product of the kinetic metric on positions; ``sample_every``
-    time between curvature samples (a multiple of ``reorth_every``); ``curvature=False``
-    skips the Gauss-equation evaluations.
+    Parameters as in ``lyapunov_spectrum`` (times in time units): ``t_final`` averaging time
+    after ``t_transient`` (default 50); ``n_exponents`` (≤ 3, the dimension) leading
+    exponents in the product of the kinetic metric on positions; ``reorth_every`` time
+    between re-orthonormalisations (default 0.1); ``project_every`` time between
+    projections onto the invariants (default 1.0, None: never); ``sample_every`` time
+    between curvature samples (a multiple of ``reorth_every``, default 1.0);
+    ``curvature=False`` skips the Gauss-equation evaluations.  A time you write must be a
+    whole number of steps dt (or is refused); a default you leave is the nearest whole
+    number of steps at other dt (README, "Conventions"): a default ``reorth_every`` the
+    largest count at most that which divides t_final (and a written ``sample_every``), a
+    default ``sample_every`` the nearest multiple of ``reorth_every`` that divides t_final.
     """
     if not isinstance(curvature, (bool, np.bool_)):
         raise ValueError(f"curvature must be True or False, got {curvature!r}")
@@ -199,9 +208,17 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2, t_transient=
     k = positive_int("n_exponents", n_exponents)
     if k > system.dim:
         raise ValueError(f"n_exponents={k} is out of range 1..{system.dim}")
-    reorth = steps_of("reorth_every", reorth_every, dt)
     total = steps_of("t_final", t_final, dt)
+    # as lyapunov_spectrum's record_every: a default reorth_every divides t_final (and a
+    # sample_every that is written); a default sample_every is then the nearest multiple of
+    # reorth that divides t_final
+    documented_sample = isinstance(sample_every, Documented)
     sample = steps_of("sample_every", sample_every, dt)
+    reorth = steps_of("reorth_every", reorth_every, dt,
+                      divides=total if documented_sample else gcd(total, sample))
+    if documented_sample:
+        sample = reorth * steps_of("sample_every", sample_every, reorth * dt,
+                                   divides=total // reorth)
     if total % reorth or sample % reorth:
         raise ValueError(f"t_final={t_final:g} and sample_every={sample_every:g} must be "
                          f"multiples of reorth_every={reorth_every:g}")
@@ -269,20 +286,25 @@ def _prime(kwargs):
     """(t_final, settings) of the short `linkage_run` that compiles the members' kernels: two
     re-orthonormalisations, two batches, a sample at each, no transient; every other setting
     (dt, n_exponents, project_every, curvature) the members' own."""
-    default = inspect.signature(linkage_run).parameters["reorth_every"].default
-    reorth = positive_time("reorth_every", kwargs.get("reorth_every", default))
+    default = inspect.signature(linkage_run).parameters
+    dt = positive_time("dt", kwargs.get("dt", default["dt"].default))
+    reorth = dt * steps_of("reorth_every", kwargs.get("reorth_every",
+                                                      default["reorth_every"].default), dt)
     return 2 * reorth, {"t_transient": 0.0, "n_batches": 2, "sample_every": reorth}
 
 
 @announces_compilation
-def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=0.1,
-                       project_every=1.0):
-    """The trajectory from (q0, v0) sampled every ``sample_every``: (t (S + 1,), states
-    (S + 1, 14)), row 0 the initial state (RK4 of ``charts.flows.linkage``)."""
+def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=Documented(0.1),
+                       project_every=Documented(1.0)):
+    """The trajectory from (q0, v0) sampled every ``sample_every`` (default 0.1, dividing
+    t_final), projected onto the invariants every ``project_every`` (default 1.0, None:
+    never): (t (S + 1,), states (S + 1, 14)), row 0 the initial state (RK4 of
+    ``charts.flows.linkage``).  Times written must be whole numbers of steps dt; a default
+    left is the nearest whole number of steps at other dt (README, "Conventions")."""
     q0, v0 = system.check_state(q0, v0)
     dt = positive_time("dt", dt)
-    sample = steps_of("sample_every", sample_every, dt)
     total = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt, divides=total)
     if total % sample:
         raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
     flow = LinkageFlow(system, q0, v0, 0, dt=dt, project_every=project_steps(project_every, dt))

@@ -18,6 +18,7 @@ product of the rotors' (θ, u) of the restricted variant of ``charts.analyses.hy
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from math import gcd
 
 import numpy as np
 
@@ -25,10 +26,10 @@ from ..flows.linkage import NY, acceleration
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from ..solvers.tangent import orthonormalize
-from .arguments import positive_time, project_steps, steps_of
+from .arguments import Documented, positive_time, project_steps, steps_of
 from .hyperbolicity import angle_statistics
 
-__all__ = ["LinkageAngles", "linkage_angles", "sin_angle"]
+__all__ = ["LinkageAngles", "linkage_angles", "angle_steps", "sin_angle"]
 
 
 @dataclass
@@ -45,6 +46,20 @@ class LinkageAngles:
         return angle_statistics(self.phi, small)
 
 
+def angle_steps(dt, t_final, t_transient, sample_every):
+    """(t_final, t_transient, sample_every) of `linkage_angles` in steps dt: a written time
+    a whole number of steps or ValueError; a `Documented` default placed as the signature's
+    docstring says (as ``lyapunov_spectrum`` places reorth_every and record_every)."""
+    total = steps_of("t_final", t_final, dt)
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    documented_transient = isinstance(t_transient, Documented)
+    sample = steps_of("sample_every", sample_every, dt,
+                      divides=total if documented_transient else gcd(total, transient))
+    if documented_transient and transient:
+        transient = sample * steps_of("t_transient", t_transient, sample * dt)
+    return total, transient, sample
+
+
 def sin_angle(y, U, S, system, w):
     """sin φ between span U (2, 14) and span(S (2, 14), E_0 at y) in the product w."""
     a = np.empty(NQ)
@@ -58,16 +73,21 @@ def sin_angle(y, U, S, system, w):
     return np.sqrt(max(np.linalg.eigvalsh(G)[0], 0.0))
 
 
-def linkage_angles(system, q0, v0, t_final, *, dt=0.01, t_transient=50.0, sample_every=0.1,
-                   project_every=1.0, seed=0) -> LinkageAngles:
+def linkage_angles(system, q0, v0, t_final, *, dt=0.01, t_transient=Documented(50.0),
+                   sample_every=Documented(0.1), project_every=Documented(1.0),
+                   seed=0) -> LinkageAngles:
     """Angles φ between E_u and E_cs along the linkage's trajectory from (q0, v0) at every
-    ``sample_every`` over ``t_final`` (module doc); the trajectory runs t_transient + t_final
-    + t_transient so that both passes converge."""
+    ``sample_every`` (default 0.1) over ``t_final`` (module doc); the trajectory runs
+    t_transient + t_final + t_transient (default 50) so that both passes converge; the
+    state is projected onto the invariants every ``project_every`` (default 1.0, None:
+    never).  t_final and t_transient are multiples of sample_every.  A time written must be
+    a whole number of steps dt; a default left is the nearest whole number of steps at
+    other dt (README, "Conventions"): a default ``sample_every`` the largest count at most
+    that which divides t_final (and a written t_transient), a default ``t_transient`` the
+    nearest multiple of ``sample_every``."""
     q0, v0 = system.check_state(q0, v0)
     dt = positive_time("dt", dt)
-    sample = steps_of("sample_every", sample_every, dt)
-    total = steps_of("t_final", t_final, dt)
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    total, transient, sample = angle_steps(dt, t_final, t_transient, sample_every)
     if total % sample or transient % sample:
         raise ValueError(f"t_final={t_final:g} and t_transient={t_transient:g} must be "
                          f"multiples of sample_every={sample_every:g}")

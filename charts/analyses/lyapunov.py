@@ -257,7 +257,9 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     t_final : float
         Averaging time after the transient (a multiple of ``reorth_every``).
     dt : float
-        RK4 step.  Every other time below is a whole number of steps.
+        RK4 step.  A time written below must be a whole number of steps;
+        a default left is the nearest whole number of steps at other dt (README,
+        "Conventions").
     n_exponents : int, optional
         Number of exponents (default N−2, the leading ones; at most 2N−2 in the
         restricted space, 2N in the full space, N−1 with ``inner='theta'``).
@@ -273,13 +275,16 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     n_batches : int
         Number of blocks for the batch-means standard error.
     reorth_every : float
-        Time between re-orthonormalisations.  The trajectory does not depend on it and the
+        Time between re-orthonormalisations (default 0.1, the nearest whole number of steps
+        at other dt that divides t_final).  The trajectory does not depend on it and the
         log-norm sums of eq (18) telescope, so 0.1 (10 steps) gives the exponents of every
         step to ~1e-10 (tests/test_lyapunov.py) at a quarter less cost.
     project_every : float or None
-        Time between projections of the state onto the invariants (None: never).
+        Time between projections of the state onto the invariants (default 1.0, the nearest
+        whole number of steps at other dt; None: never).
     record_every : float
-        Time between rows of the convergence history (a multiple of ``reorth_every``).
+        Time between rows of the convergence history (a multiple of ``reorth_every``;
+        default 1.0, the nearest such multiple at other dt).
     seed : int
         Seed of the random initial tangent vectors.
     progress : bool or callable(t_done, t_total)

@@ -105,7 +105,9 @@ class PowerSpectrum(Archivable, tuple):
 def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=Documented(0.05),
              t_transient=0.0, project_every=Documented(1.0), progress=False) -> Waveform:
     """θ(t) and u(t) from (theta0, u0) every ``sample_every`` up to ``t_final`` after
-    discarding ``t_transient`` (all times whole numbers of RK4 steps ``dt``); ``progress``:
+    discarding ``t_transient`` (times written whole numbers of RK4 steps ``dt``; a default
+    left, ``sample_every`` 0.05 and ``project_every`` 1.0, the nearest whole number of steps
+    at other dt: README, "Conventions"); ``progress``:
     True or callable(t_done, t_total)."""
     dt = positive_time("dt", dt)
     total = steps_of("t_final", t_final, dt)

@@ -22,11 +22,19 @@ from dataclasses import dataclass, field
 
 from .scene import Scene
 
-__all__ = ["Plan", "plan_scene", "ticks", "linkage_angles_plan", "ANGLES_CHECKPOINT_STEPS"]
+__all__ = ["Plan", "plan_scene", "ticks", "linkage_angles_plan",
+           "angles_checkpoint_steps"]
 
-#: Steps between the stored trajectory checkpoints of the angles pass (its memory bound:
-#: one state per checkpoint; the backward pass re-integrates each segment from it).
-ANGLES_CHECKPOINT_STEPS = 100
+
+def angles_checkpoint_steps(dt) -> int:
+    """Steps between the stored trajectory checkpoints of the angles pass (its memory bound:
+    one state per checkpoint; the backward pass re-integrates each segment from it): the
+    default checkpoint_every of `hyperbolicity_angles`, which the scene does not set, on the
+    grid of ``dt`` as the API places it (100 steps at dt = 0.01)."""
+    from ..analyses.arguments import steps_of
+    from .scene_schema import api_default
+
+    return steps_of("checkpoint_every", api_default("angles", "checkpoint_every"), dt)
 
 
 @dataclass
@@ -142,7 +150,7 @@ def plan_scene(scene: Scene) -> Plan:
         dt = integ["dt"]
         m = a["n_vectors"]
         n_tr = ticks(a["t_transient"], dt)
-        ce = ANGLES_CHECKPOINT_STEPS
+        ce = angles_checkpoint_steps(dt)
         nseg = -(-(2 * n_tr + ticks(run["t_final"], dt)) // ce)
         plan.adjoint_vectors = m
         plan.needs_trajectory_store = True

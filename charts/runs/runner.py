@@ -43,11 +43,12 @@ from .io import atomic_write, npz_bytes
 from .netcdf_results import SCENE_NETCDF
 from .outdir import OutputLock, prepare_output
 from .paper import PAPER_EXPONENTS
-from .plan import ANGLES_CHECKPOINT_STEPS, Plan, plan_scene, ticks
+from .plan import Plan, plan_scene, ticks
 from .recorders import make_recorders
 from .run_state import CHECKPOINT, RunError, RunState, scene_hash, scene_system, units_done
 from .linkage_run import linkage_angles_pass
 from .scene_linkage import is_linkage
+from .scene_schema import api_default
 from .scene import Scene
 from .scene_results import (FTLE_STATS, finalize, result_header, resume_command,
                             write_result)
@@ -293,7 +294,7 @@ def _angles_pass(st: RunState):
     res = hyperbolicity_angles(sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
                                n_unstable=a["n_vectors"], t_transient=a["t_transient"],
                                sample_every=a["sample_every"],
-                               checkpoint_every=ANGLES_CHECKPOINT_STEPS * dt,
+                               checkpoint_every=api_default("angles", "checkpoint_every"),
                                project_every=st.flow.project_every * dt or None,
                                seed=sc.initial["seed"] or 0)
     st.rec["angles"] = [list(r) for r in np.column_stack([res.t, res.phi_full,

@@ -138,7 +138,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
 
     _transients(linkage, run, "t_transient" in raw_run, effects)
     if method == "rk4":
-        _follow_dt(run, effects, integ["dt"])
+        _follow_dt(linkage, run, integ, effects, integ["dt"])
 
     # -- run: times on the grids ---------------------------------------------------------------
     grid = integ["dt"] if method == "rk4" else None
@@ -174,13 +174,29 @@ _DIVIDE_T_FINAL = {"lyapunov": ("reorth_every",), "curvature": ("sample_every",)
                    "clv": ("sample_every",), "angles": ("sample_every",)}
 
 
-def _follow_dt(run, effects, dt):
+def _follow_dt(linkage, run, integ, effects, dt):
     """Each duration the scene leaves to the API's default (a `Documented` value of its
-    signature) put on the step grid as the API puts it (``charts.analyses.arguments.
-    steps_of``): the nearest whole number of steps, dividing t_final where it must — so that
-    a scene that only sets dt runs where the API call does, with the same steps."""
+    signature: ``[integrator] project_every``, the transients, reorth_every, the
+    sample_every of the effects) put on the step grid as the API puts it
+    (``charts.analyses.arguments.steps_of``): the nearest whole number of steps, dividing
+    t_final where it must — so that a scene that only sets dt runs where the API call does,
+    with the same steps.  A value the scene writes is left as written (checked strictly
+    below).  A linkage's angle pass places its defaults as `linkage_angles` does (its
+    t_transient a multiple of its sample_every: `angle_steps`)."""
     total = int(round(run["t_final"] / dt)) if run["t_final"] else 0   # checked below
-    tables = [("run", run)] + list(effects.items())
+    if linkage and "angles" in effects:
+        from ..analyses.linkage_angles import angle_steps
+        a = effects["angles"]
+        try:
+            _, transient, sample = angle_steps(dt, run["t_final"], a["t_transient"],
+                                               a["sample_every"])
+        except ValueError:
+            pass                        # a written value off the grid: refused below, by key
+        else:
+            for key, steps in (("t_transient", transient), ("sample_every", sample)):
+                if isinstance(a[key], Documented):
+                    a[key] = steps * dt
+    tables = [("run", run), ("integrator", integ)] + list(effects.items())
     for name, table in tables:
         for key, value in table.items():
             if isinstance(value, Documented):

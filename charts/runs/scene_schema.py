@@ -166,7 +166,8 @@ SCHEMA: dict[str, dict[str, Key]] = {
                        "(overrides project_every)."),
         "project_every": Key("float", FromAPI("lyapunov", "project_every"), "Time between projections of the state onto the "
                              "invariants (constraint, tangency, energy) for ambient RK4, as "
-                             "project_every of the analyses; 0 = never. A multiple of dt.",
+                             "project_every of the analyses; 0 = never. A multiple of dt where written; left "
+                             "out, the API's default on the grid of dt (README, \"Conventions\").",
                              check=_ge(0)),
     },
     "run": {
@@ -208,7 +209,8 @@ EFFECTS: dict[str, dict[str, Key]] = {
         "n_batches": Key("int", FromAPI("lyapunov", "n_batches"), "Batches for the batch-means standard error.",
                          check=_ge(2)),
         "reorth_every": Key("float", FromAPI("lyapunov", "reorth_every"), "Time between re-orthonormalisations (eq 18); a "
-                            "multiple of dt that divides t_final.", check=_gt(0)),
+                            "multiple of dt that divides t_final (left out: the API's default "
+                            "on the grid of dt).", check=_gt(0)),
     },
     "curvature": {
         "route": Key("str", "both", "\"numerical\": eqs (19)–(21); \"exact\": from the "
