@@ -16,8 +16,9 @@ Attributes: numbers and strings are stored as they are; anything else (dicts, li
 booleans) as JSON text prefixed ``json:`` — exact for floats (shortest round-trip repr) and
 integers, so settings come back equal.  For readers without this package every file also
 carries the CF global attributes (``Conventions``, ``title``, ``history``, ``source``,
-``references``) and the entries of its ``params`` and ``options`` as native attributes
-(``params_masses = [1.0, 2.0, 3.0]``, ``params_level = 0.0``, ...).
+``references``) and the entries of its ``params``, ``options`` and ``drift`` as native
+attributes (``params_masses = [1.0, 2.0, 3.0]``, ``params_level = 0.0``, ...; a boolean as
+the integer 1 or 0, ``options_project = 0``; an entry that is None is left out).
 """
 from __future__ import annotations
 
@@ -108,17 +109,20 @@ TITLES = {
 }
 #: CF global attributes every file carries (not settings: `attributes` leaves them out).
 GLOBALS = ("Conventions", "title", "history", "source", "references", "institution")
-#: Settings dicts that are also written entry by entry as native NetCDF attributes
-#: (``params_masses = [1, 2, 3]``), for readers without this package; the JSON copy stays the
-#: exact one that ``load`` reads.
-FLATTENED = ("params", "options")
+#: Settings dicts (and the trajectory's ``drift``) that are also written entry by entry as
+#: native NetCDF attributes (``params_masses = [1, 2, 3]``, ``drift_energy = 1e-13``), for
+#: readers without this package; the JSON copy stays the exact one that ``load`` reads.
+FLATTENED = ("params", "options", "drift")
 REFERENCE = ("S. P. Kuznetsov, Chaos and hyperchaos of geodesic flows on curved manifolds "
              "corresponding to mechanically coupled rotators")
 
 
 def _native(v):
-    """v as a native NetCDF attribute value (a number, a string, a 1-D numeric array), or None."""
-    if isinstance(v, (bool, np.bool_)) or v is None:
+    """v as a native NetCDF attribute value (a number, a string, a 1-D numeric array), or None;
+    a boolean as the integer 1 or 0 (NetCDF attributes have no booleans)."""
+    if isinstance(v, (bool, np.bool_)):
+        return int(v)
+    if v is None:
         return None
     if isinstance(v, (str, int, float, np.integer, np.floating)):
         return v
