@@ -201,7 +201,9 @@ def _setting(key) -> bool:
 
 #: Prefix of the members' settings in a file of several results (an ensemble): a setting
 #: every member shares is one attribute ``member.params.n``; one that differs is a variable
-#: along ``member`` (``member.params.seed``), native where the values are numbers or strings.
+#: along ``member`` (``member.params.seed``), native where the values are numbers or strings,
+#: and a 2-D array where they are lists of numbers (``member.params.theta0`` over
+#: (member, rotor)).
 MEMBER = "member."
 
 
@@ -237,10 +239,30 @@ def member_settings(settings: list) -> tuple[dict, dict]:
             attrs[name] = _native_list(values[0]) if isinstance(values[0], list) else first
         elif all(_scalar(v) for v in values) and len({type(v) for v in values}) == 1:
             data[name] = (("member",), np.asarray(values), "1", f"each member's {'.'.join(path)}")
+        elif _number_rows(values):
+            data[name] = (("member", MEMBER_DIMS.get(path[-1], f"{path[-1]}_entry")),
+                          np.asarray(values), MEMBER_UNITS.get(path[-1], "1"),
+                          f"each member's {'.'.join(path)}")
         else:
             data[name] = (("member",), np.asarray([_encode(v) for v in values], dtype=str), "1",
                           f"each member's {'.'.join(path)} (JSON after 'json:')")
     return attrs, data
+
+
+#: The second dimension of a setting that is a list of numbers per member (the initial
+#: state: one number per rotor), and its units; other lists: ``<name>_entry``, units "1".
+MEMBER_DIMS = {"theta0": "rotor", "u0": "rotor", "masses": "rotor", "weights": "rotor"}
+MEMBER_UNITS = {"theta0": "rad", "u0": "rad / time"}
+
+
+def _number_rows(values) -> bool:
+    """Whether ``values`` (one per member) are lists of one length whose entries are all
+    floats or all integers (a 2-D native array that `member_attributes` reads back as the
+    same lists)."""
+    if not all(isinstance(v, list) and v for v in values) or len({len(v) for v in values}) != 1:
+        return False
+    kinds = {type(x) for v in values for x in v}
+    return kinds == {float} or kinds == {int}
 
 
 def _native_list(v):
@@ -261,7 +283,9 @@ def member_attributes(ds, i) -> dict:
             flat[tuple(key[len(MEMBER):].split("."))] = value
     for key in ds.data_vars:
         if key.startswith(MEMBER):
-            flat[tuple(key[len(MEMBER):].split("."))] = _decode(ds[key].values[i])
+            value = ds[key].values[i]
+            value = value.tolist() if ds[key].ndim == 2 else _decode(value)
+            flat[tuple(key[len(MEMBER):].split("."))] = value
     nested = {}
     for path, value in flat.items():
         if len(path) == 1:

@@ -35,6 +35,7 @@ def results():
         "waveform": w,
         "spectrum": charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=10.0),
         "ensemble": charts.lyapunov_ensemble(SYS4, 2, 10.0, t_transient=1.0, workers=1),
+        "angle_ensemble": charts.hyperbolicity_ensemble(SYS4, 2, 5.0, t_transient=5.0, workers=1),
     }
 
 
@@ -60,7 +61,8 @@ def _same(a, b, where):
 
 
 @pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "covariant", "waveform", "spectrum", "ensemble"])
+                                  "angles", "covariant", "waveform", "spectrum", "ensemble",
+                                  "angle_ensemble"])
 def test_round_trip_identical(results, name, tmp_path):
     res = results[name]
     path = res.save(tmp_path / f"{name}.nc")
@@ -69,7 +71,7 @@ def test_round_trip_identical(results, name, tmp_path):
     if name == "spectrum":
         _same(tuple(res), tuple(back), name)
         assert back.params == res.params
-    elif name == "ensemble":
+    elif name.endswith("ensemble"):
         assert len(back) == len(res)
         for i, (m, mb) in enumerate(zip(res, back)):
             _same(m, mb, f"member {i}")
@@ -107,7 +109,7 @@ def test_ensembles_plot_themselves(results):
     assert ax.get_xlabel() == "i / (N − 2)"
     with pytest.raises(ValueError, match="'members' or 'spectrum'"):
         ens.plot(kind="histogram")
-    angles = charts.hyperbolicity_ensemble(SYS4, 2, 5.0, t_transient=5.0, workers=1)
+    angles = results["angle_ensemble"]
     fig, axes = angles.plot()
     pooled = sum(len(m.phi_full) for m in angles)
     assert f"{pooled} samples" in axes[0].get_title() and "2 members pooled" in fig._suptitle.get_text()
@@ -202,10 +204,21 @@ def _plain(a, key, cast=float):
     return cast(a[key]) if key in a else None
 
 
-def _rebuild(ds, name):
-    """The call that made the file ``ds``, repeated from its plain attributes alone (no
-    charts reading): the system, the initial state and every setting."""
-    a = ds.attrs
+def _member_view(ds, i):
+    """Member ``i``'s settings in an ensemble file as a member's own file names them
+    (``params_dt``): the shared attributes ``member.params.*`` and row i of the variables."""
+    prefix = "member.params."
+    a = {f"params_{k[len(prefix):]}": v for k, v in ds.attrs.items() if k.startswith(prefix)}
+    a.update({f"params_{k[len(prefix):]}": ds[k].values[i] for k in ds.data_vars
+              if k.startswith(prefix)})
+    return a
+
+
+def _rebuild(ds, name, a=None):
+    """The call that made the file ``ds`` (or its member of settings ``a``), repeated from its
+    plain attributes alone (no charts reading): the system, the initial state and every
+    setting."""
+    a = ds.attrs if a is None else a
     system = charts.RotorSystem(int(a["params_n"]), masses=np.atleast_1d(a["params_masses"]).tolist(),
                                 weights=np.atleast_1d(a["params_weights"]).tolist(),
                                 level=float(a["params_level"]))
@@ -259,7 +272,8 @@ REBUILT = {"trajectory": "theta", "trajectory_plain": "theta", "lyapunov": "expo
 
 
 @pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "covariant", "waveform", "ensemble"])
+                                  "angles", "covariant", "waveform", "ensemble",
+                                  "angle_ensemble"])
 def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
     """Opened with plain xarray (no charts): CF global attributes, every dimension labelled,
     units on every variable, and the system (N, masses, weights, level) as native attributes;
@@ -288,6 +302,25 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
         if name == "lyapunov":
             assert np.array_equal(again["energy_share_counts"].values,
                                   ds["energy_share_counts"].values)
+        if name.endswith("ensemble"):       # each member from its row, the whole from the top
+            member = "lyapunov" if name == "ensemble" else "angles"
+            for i in range(ds.sizes["member"]):
+                again = _rebuild(ds, member, _member_view(ds, i)).to_xarray()
+                assert np.array_equal(again[REBUILT[member]].values,
+                                      ds[REBUILT[member]].values[i]), (name, i)
+            a = ds.attrs
+            system = charts.RotorSystem(n, masses=masses.tolist(), weights=weights.tolist())
+            top = dict(t_transient=float(a["params_t_transient"]), dt=float(a["params_dt"]),
+                       seed=int(a["params_seed"]), speed=float(a["params_speed"]), workers=1,
+                       sample_every=float(a["params_sample_every"]),
+                       n_unstable=int(a["params_n_unstable"])) if member == "angles" else dict(
+                       t_transient=float(a["params_t_transient"]), dt=float(a["params_dt"]),
+                       seed=int(a["params_seed"]), speed=float(a["params_speed"]), workers=1,
+                       n_exponents=int(a["params_n_exponents"]),
+                       reorth_every=float(a["params_reorth_every"]))
+            run = charts.lyapunov_ensemble if member == "lyapunov" else charts.hyperbolicity_ensemble
+            again = run(system, int(a["params_n_trajectories"]), float(a["params_t_final"]), **top)
+            assert again == results[name]
 
 
 def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
@@ -305,6 +338,47 @@ def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
         assert not any(isinstance(v, str) and v.startswith("json:[{") for v in ds.attrs.values())
     back = load(path)
     assert [m.params for m in back.members] == [m.params for m in ens.members]
+
+
+@pytest.mark.parametrize("name", ["ensemble", "angle_ensemble"])
+def test_an_ensemble_file_keeps_units_and_states_as_numbers(results, name, tmp_path):
+    """Every variable and coordinate of an ensemble file has the units and the description of
+    the same variable in a member's file; the members' initial states are float arrays over
+    (member, rotor), not JSON text; files that held them as JSON still load."""
+    import xarray as xr
+    ens = results[name]
+    with xr.open_dataset(ens.save(tmp_path / "e.nc"), engine="h5netcdf") as ds, \
+            xr.open_dataset(ens.members[0].save(tmp_path / "m.nc"), engine="h5netcdf") as one:
+        for k, v in one.variables.items():
+            assert ds[k].attrs == v.attrs, (name, k, ds[k].attrs, v.attrs)
+        theta0 = ds["member.params.theta0"]
+        assert theta0.dims == ("member", "rotor") and theta0.dtype == np.float64
+        assert theta0.attrs["units"] == "rad" and ds["member.params.u0"].attrs["units"] == "rad / time"
+        assert np.array_equal(theta0.values, [m.params["theta0"] for m in ens.members])
+        assert not any(v.dtype.kind in "OUS" for v in ds.data_vars.values()), name
+        ds = ds.load()
+    old = ds.copy()                       # the earlier form: JSON text along member
+    for key in ("member.params.theta0", "member.params.u0"):
+        old[key] = ("member", ["json:" + json.dumps(row.tolist()) for row in ds[key].values])
+    from charts.analyses.ensemble import EnsembleResult
+    assert EnsembleResult.from_xarray(old) == ens
+
+
+def test_an_ensemble_records_its_resolved_settings(results, tmp_path):
+    """The ensemble's params are the settings as resolved (defaults filled in): a call that
+    writes a default gives an equal result, and the file's top level names every setting."""
+    ens = results["ensemble"]
+    written = charts.lyapunov_ensemble(SYS4, 2, 10, t_transient=1.0, workers=1, dt=0.01,
+                                       n_batches=20, inner="theta")
+    assert written == ens and written.params == ens.params
+    for key in ("dt", "reorth_every", "n_exponents", "inner", "space", "record_every",
+                "n_batches", "project_every"):
+        assert key in ens.params, key
+    assert ens.params["dt"] == 0.01 and ens.params["t_final"] == 10.0
+    assert ens.params["speed"] == 1.0 and ens.params["seed"] == 0
+    assert "theta0" not in ens.params
+    ds = ens.to_xarray()
+    assert ds.attrs["params_dt"] == 0.01 and ds.attrs["params_n_trajectories"] == 2
 
 
 @pytest.mark.parametrize("content, says", [
