@@ -124,6 +124,8 @@ def test_datasets_have_named_dims_units_and_stamps(results):
             assert not any(d.startswith("dim_") for d in v.dims), (name, v.dims)
     ds = results["lyapunov"].to_xarray()
     assert ds["exponents"].attrs["units"] == "1 / time"
+    assert list(ds["spectrum_index"].values) == list(range(1, ds.sizes["spectrum_index"] + 1))
+    assert "from 1" in ds["spectrum_index"].attrs["long_name"]          # as exponent
     assert json.loads(ds.attrs["params"][5:])["t_final"] == 20.0
 
 
@@ -181,6 +183,25 @@ def test_sweep_table_round_trip(tmp_path):
     assert isinstance(back, SweepTable) and list(back.columns) == list(table.columns)
     _same(table.columns, back.columns, "columns")
     assert back.attrs == table.attrs
+
+
+def test_sweep_table_columns_have_units_and_empty_text_stays_text(tmp_path):
+    csv = tmp_path / "sweep.csv"
+    csv.write_text("index,status,lambda_1,lambda_1_se,Kmean_exact_1,phi_full_min,t_final,"
+                   "lambda_2,error\n0,ok,0.5,0.01,-0.2,0.03,20.0,,\n1,ok,0.4,0.02,-0.1,0.02,20.0,,\n")
+    table = SweepTable.from_csv(csv)
+    assert table.columns["error"].tolist() == ["", ""]                 # text, not NaN
+    assert np.isnan(table.columns["lambda_2"]).all()                   # a number column, empty
+    import xarray as xr
+    with xr.open_dataset(table.save(tmp_path / "sweep.nc"), engine="h5netcdf") as ds:
+        units = {k: v.attrs["units"] for k, v in ds.data_vars.items()}
+        assert ds["error"].values.tolist() == ["", ""]
+    assert units == {"index": "1", "status": "1", "lambda_1": "1 / time",
+                     "lambda_1_se": "1 / time", "Kmean_exact_1": "1 / rad^2",
+                     "phi_full_min": "rad", "t_final": "time", "lambda_2": "1 / time",
+                     "error": "1"}
+    back = load(tmp_path / "sweep.nc")
+    assert back.columns["error"].tolist() == ["", ""] and back.columns["error"].dtype.kind == "U"
 
 
 def test_missing_extra_is_named(monkeypatch, results, tmp_path):
