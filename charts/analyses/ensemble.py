@@ -292,7 +292,7 @@ def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleRe
     file's top level names every setting."""
     res = EnsembleResult(members, params={**resolved_settings(members, kwargs),
                                           **system.describe(), "n_trajectories": len(members),
-                                          "seed": seed, "speed": speed,
+                                          "seed": seed, "speed": float(speed),
                                           "t_final": float(t_final)})
     if all(hasattr(m, "exponents") for m in members):
         E = np.array([m.exponents for m in members])
