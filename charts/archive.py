@@ -16,8 +16,9 @@ Attributes: numbers and strings are stored as they are; anything else (dicts, li
 booleans) as JSON text prefixed ``json:`` — exact for floats (shortest round-trip repr) and
 integers, so settings come back equal.  For readers without this package every file also
 carries the CF global attributes (``Conventions``, ``title``, ``history``, ``source``,
-``references``) and the entries of its ``params`` and ``options`` as native attributes
-(``params_masses = [1.0, 2.0, 3.0]``, ``params_level = 0.0``, ...).
+``references``) and the entries of its ``params``, ``options`` and ``drift`` as native
+attributes (``params_masses = [1.0, 2.0, 3.0]``, ``params_level = 0.0``, ...; a boolean as
+the integer 1 or 0, ``options_project = 0``; an entry that is None is left out).
 """
 from __future__ import annotations
 
@@ -108,17 +109,20 @@ TITLES = {
 }
 #: CF global attributes every file carries (not settings: `attributes` leaves them out).
 GLOBALS = ("Conventions", "title", "history", "source", "references", "institution")
-#: Settings dicts that are also written entry by entry as native NetCDF attributes
-#: (``params_masses = [1, 2, 3]``), for readers without this package; the JSON copy stays the
-#: exact one that ``load`` reads.
-FLATTENED = ("params", "options")
+#: Settings dicts (and the trajectory's ``drift``) that are also written entry by entry as
+#: native NetCDF attributes (``params_masses = [1, 2, 3]``, ``drift_energy = 1e-13``), for
+#: readers without this package; the JSON copy stays the exact one that ``load`` reads.
+FLATTENED = ("params", "options", "drift")
 REFERENCE = ("S. P. Kuznetsov, Chaos and hyperchaos of geodesic flows on curved manifolds "
              "corresponding to mechanically coupled rotators")
 
 
 def _native(v):
-    """v as a native NetCDF attribute value (a number, a string, a 1-D numeric array), or None."""
-    if isinstance(v, (bool, np.bool_)) or v is None:
+    """v as a native NetCDF attribute value (a number, a string, a 1-D numeric array), or None;
+    a boolean as the integer 1 or 0 (NetCDF attributes have no booleans)."""
+    if isinstance(v, (bool, np.bool_)):
+        return int(v)
+    if v is None:
         return None
     if isinstance(v, (str, int, float, np.integer, np.floating)):
         return v
@@ -197,7 +201,9 @@ def _setting(key) -> bool:
 
 #: Prefix of the members' settings in a file of several results (an ensemble): a setting
 #: every member shares is one attribute ``member.params.n``; one that differs is a variable
-#: along ``member`` (``member.params.seed``), native where the values are numbers or strings.
+#: along ``member`` (``member.params.seed``), native where the values are numbers or strings,
+#: and a 2-D array where they are lists of numbers (``member.params.theta0`` over
+#: (member, rotor)).
 MEMBER = "member."
 
 
@@ -233,10 +239,30 @@ def member_settings(settings: list) -> tuple[dict, dict]:
             attrs[name] = _native_list(values[0]) if isinstance(values[0], list) else first
         elif all(_scalar(v) for v in values) and len({type(v) for v in values}) == 1:
             data[name] = (("member",), np.asarray(values), "1", f"each member's {'.'.join(path)}")
+        elif _number_rows(values):
+            data[name] = (("member", MEMBER_DIMS.get(path[-1], f"{path[-1]}_entry")),
+                          np.asarray(values), MEMBER_UNITS.get(path[-1], "1"),
+                          f"each member's {'.'.join(path)}")
         else:
             data[name] = (("member",), np.asarray([_encode(v) for v in values], dtype=str), "1",
                           f"each member's {'.'.join(path)} (JSON after 'json:')")
     return attrs, data
+
+
+#: The second dimension of a setting that is a list of numbers per member (the initial
+#: state: one number per rotor), and its units; other lists: ``<name>_entry``, units "1".
+MEMBER_DIMS = {"theta0": "rotor", "u0": "rotor", "masses": "rotor", "weights": "rotor"}
+MEMBER_UNITS = {"theta0": "rad", "u0": "rad / time"}
+
+
+def _number_rows(values) -> bool:
+    """Whether ``values`` (one per member) are lists of one length whose entries are all
+    floats or all integers (a 2-D native array that `member_attributes` reads back as the
+    same lists)."""
+    if not all(isinstance(v, list) and v for v in values) or len({len(v) for v in values}) != 1:
+        return False
+    kinds = {type(x) for v in values for x in v}
+    return kinds == {float} or kinds == {int}
 
 
 def _native_list(v):
@@ -257,7 +283,9 @@ def member_attributes(ds, i) -> dict:
             flat[tuple(key[len(MEMBER):].split("."))] = value
     for key in ds.data_vars:
         if key.startswith(MEMBER):
-            flat[tuple(key[len(MEMBER):].split("."))] = _decode(ds[key].values[i])
+            value = ds[key].values[i]
+            value = value.tolist() if ds[key].ndim == 2 else _decode(value)
+            flat[tuple(key[len(MEMBER):].split("."))] = value
     nested = {}
     for path, value in flat.items():
         if len(path) == 1:

@@ -35,6 +35,7 @@ def results():
         "waveform": w,
         "spectrum": charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=10.0),
         "ensemble": charts.lyapunov_ensemble(SYS4, 2, 10.0, t_transient=1.0, workers=1),
+        "angle_ensemble": charts.hyperbolicity_ensemble(SYS4, 2, 5.0, t_transient=5.0, workers=1),
     }
 
 
@@ -60,7 +61,8 @@ def _same(a, b, where):
 
 
 @pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "covariant", "waveform", "spectrum", "ensemble"])
+                                  "angles", "covariant", "waveform", "spectrum", "ensemble",
+                                  "angle_ensemble"])
 def test_round_trip_identical(results, name, tmp_path):
     res = results[name]
     path = res.save(tmp_path / f"{name}.nc")
@@ -69,7 +71,7 @@ def test_round_trip_identical(results, name, tmp_path):
     if name == "spectrum":
         _same(tuple(res), tuple(back), name)
         assert back.params == res.params
-    elif name == "ensemble":
+    elif name.endswith("ensemble"):
         assert len(back) == len(res)
         for i, (m, mb) in enumerate(zip(res, back)):
             _same(m, mb, f"member {i}")
@@ -107,7 +109,7 @@ def test_ensembles_plot_themselves(results):
     assert ax.get_xlabel() == "i / (N − 2)"
     with pytest.raises(ValueError, match="'members' or 'spectrum'"):
         ens.plot(kind="histogram")
-    angles = charts.hyperbolicity_ensemble(SYS4, 2, 5.0, t_transient=5.0, workers=1)
+    angles = results["angle_ensemble"]
     fig, axes = angles.plot()
     pooled = sum(len(m.phi_full) for m in angles)
     assert f"{pooled} samples" in axes[0].get_title() and "2 members pooled" in fig._suptitle.get_text()
@@ -122,6 +124,8 @@ def test_datasets_have_named_dims_units_and_stamps(results):
             assert not any(d.startswith("dim_") for d in v.dims), (name, v.dims)
     ds = results["lyapunov"].to_xarray()
     assert ds["exponents"].attrs["units"] == "1 / time"
+    assert list(ds["spectrum_index"].values) == list(range(1, ds.sizes["spectrum_index"] + 1))
+    assert "from 1" in ds["spectrum_index"].attrs["long_name"]          # as exponent
     assert json.loads(ds.attrs["params"][5:])["t_final"] == 20.0
 
 
@@ -181,6 +185,25 @@ def test_sweep_table_round_trip(tmp_path):
     assert back.attrs == table.attrs
 
 
+def test_sweep_table_columns_have_units_and_empty_text_stays_text(tmp_path):
+    csv = tmp_path / "sweep.csv"
+    csv.write_text("index,status,lambda_1,lambda_1_se,Kmean_exact_1,phi_full_min,t_final,"
+                   "lambda_2,error\n0,ok,0.5,0.01,-0.2,0.03,20.0,,\n1,ok,0.4,0.02,-0.1,0.02,20.0,,\n")
+    table = SweepTable.from_csv(csv)
+    assert table.columns["error"].tolist() == ["", ""]                 # text, not NaN
+    assert np.isnan(table.columns["lambda_2"]).all()                   # a number column, empty
+    import xarray as xr
+    with xr.open_dataset(table.save(tmp_path / "sweep.nc"), engine="h5netcdf") as ds:
+        units = {k: v.attrs["units"] for k, v in ds.data_vars.items()}
+        assert ds["error"].values.tolist() == ["", ""]
+    assert units == {"index": "1", "status": "1", "lambda_1": "1 / time",
+                     "lambda_1_se": "1 / time", "Kmean_exact_1": "1 / rad^2",
+                     "phi_full_min": "rad", "t_final": "time", "lambda_2": "1 / time",
+                     "error": "1"}
+    back = load(tmp_path / "sweep.nc")
+    assert back.columns["error"].tolist() == ["", ""] and back.columns["error"].dtype.kind == "U"
+
+
 def test_missing_extra_is_named(monkeypatch, results, tmp_path):
     monkeypatch.setitem(sys.modules, "xarray", None)
     with pytest.raises(ImportError, match=r"charts\[io\]"):
@@ -196,13 +219,87 @@ def test_load_refuses_foreign_files(tmp_path):
         load(tmp_path / "missing.nc")
 
 
+def _plain(a, key, cast=float):
+    """The native attribute ``key`` of a plain file as ``cast`` (None where it is absent:
+    a setting that was None, e.g. ``project_every``)."""
+    return cast(a[key]) if key in a else None
+
+
+def _member_view(ds, i):
+    """Member ``i``'s settings in an ensemble file as a member's own file names them
+    (``params_dt``): the shared attributes ``member.params.*`` and row i of the variables."""
+    prefix = "member.params."
+    a = {f"params_{k[len(prefix):]}": v for k, v in ds.attrs.items() if k.startswith(prefix)}
+    a.update({f"params_{k[len(prefix):]}": ds[k].values[i] for k in ds.data_vars
+              if k.startswith(prefix)})
+    return a
+
+
+def _rebuild(ds, name, a=None):
+    """The call that made the file ``ds`` (or its member of settings ``a``), repeated from its
+    plain attributes alone (no charts reading): the system, the initial state and every
+    setting."""
+    a = ds.attrs if a is None else a
+    system = charts.RotorSystem(int(a["params_n"]), masses=np.atleast_1d(a["params_masses"]).tolist(),
+                                weights=np.atleast_1d(a["params_weights"]).tolist(),
+                                level=float(a["params_level"]))
+    state = (np.atleast_1d(a["params_theta0"]), np.atleast_1d(a["params_u0"]))
+    if name.startswith("trajectory"):
+        rk4 = a["method"] == "rk4"
+        assert ("options_dt" in a) == rk4 and ("options_rtol" in a) != rk4  # only what applies
+        span = np.atleast_1d(a["options_t_span"])
+        return charts.integrate(
+            system, *state, float(span[1]), method=a["method"], formulation=a["formulation"],
+            dt=_plain(a, "options_dt"), rtol=_plain(a, "options_rtol"),
+            atol=_plain(a, "options_atol"), project=bool(a["options_project"]),
+            **({"tau": float(a["options_tau"])} if "options_tau" in a else {}),
+            transport=ds["transported"].values[0] if "transported" in ds else None,
+            t_eval=ds["t"].values if a["options_output"] == "t_eval" else None)
+    common = dict(dt=float(a["params_dt"]), t_transient=float(a["params_t_transient"]),
+                  project_every=_plain(a, "params_project_every"),
+                  seed=_plain(a, "params_seed", int))
+    t_final = float(a["params_t_final"])
+    if name == "lyapunov":
+        return charts.lyapunov_spectrum(
+            system, *state, t_final, n_exponents=int(a["params_n_exponents"]),
+            inner=str(a["params_inner"]), space=str(a["params_space"]),
+            n_batches=int(a["params_n_batches"]), reorth_every=float(a["params_reorth_every"]),
+            record_every=float(a["params_record_every"]), **common)
+    if name == "curvature":
+        return charts.curvature_along_trajectory(
+            system, *state, t_final, sample_every=float(a["params_sample_every"]),
+            exact=bool(a["params_exact"]), **common)
+    if name == "angles":
+        return charts.hyperbolicity_angles(
+            system, *state, t_final, n_unstable=int(a["params_n_unstable"]),
+            sample_every=float(a["params_sample_every"]),
+            checkpoint_every=float(a["params_checkpoint_every"]), **common)
+    if name == "covariant":
+        return charts.covariant_lyapunov_vectors(
+            system, *state, t_final, variant=str(a["params_variant"]),
+            n_unstable=int(a["params_n_unstable"]), sample_every=float(a["params_sample_every"]),
+            keep_vectors=bool(a["params_keep_vectors"]), **common)
+    if name == "waveform":
+        common.pop("seed")
+        return charts.waveform(system, *state, t_final, sample_every=float(a["dt_sample"]),
+                               **common)
+    raise AssertionError(name)
+
+
+#: A variable of each result type that the repeated call must give bit for bit.
+REBUILT = {"trajectory": "theta", "trajectory_plain": "theta", "lyapunov": "exponents",
+           "curvature": "K_numeric", "angles": "phi_restricted", "covariant": "vectors",
+           "waveform": "u"}
+
+
 @pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "covariant", "waveform", "ensemble"])
+                                  "angles", "covariant", "waveform", "ensemble",
+                                  "angle_ensemble"])
 def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
     """Opened with plain xarray (no charts): CF global attributes, every dimension labelled,
     units on every variable, and the system (N, masses, weights, level) as native attributes;
-    for a trajectory also the initial state, from which the same call gives the same
-    samples."""
+    for every rotor result also the initial state and the settings, from which the same call
+    gives the same numbers."""
     import xarray as xr
     path = results[name].save(tmp_path / f"{name}.nc")
     with xr.open_dataset(path, engine="h5netcdf") as ds:
@@ -219,35 +316,32 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
         assert float(ds.attrs["params_level"]) == 0.0
         if name.startswith("trajectory"):
             assert list(ds["rotor"].values) == list(range(n))          # from 0, as scenes
-            system = charts.RotorSystem(n, masses=masses.tolist())
-            theta0 = np.atleast_1d(ds.attrs["params_theta0"])
-            u0 = np.atleast_1d(ds.attrs["params_u0"])
-            span = np.atleast_1d(ds.attrs["options_t_span"])
-            rk4 = ds.attrs["method"] == "rk4"
-            again = charts.integrate(
-                system, theta0, u0, float(span[1]), method=ds.attrs["method"],
-                formulation=ds.attrs["formulation"],
-                dt=float(ds.attrs["options_dt"]) if rk4 else None,
-                rtol=None if rk4 else float(ds.attrs["options_rtol"]),
-                atol=None if rk4 else float(ds.attrs["options_atol"]),
-                **({"tau": float(ds.attrs["options_tau"])} if "options_tau" in ds.attrs else {}),
-                transport=ds["transported"].values[0] if "transported" in ds else None,
-                t_eval=ds["t"].values if ds.attrs["options_output"] == "t_eval" else None)
-            assert np.array_equal(again.theta, ds["theta"].values)
-        if name == "lyapunov":          # the initial state and every setting: the same call
+        if name in REBUILT:
+            again = _rebuild(ds, name).to_xarray()
+            var = REBUILT[name]
+            assert np.array_equal(again[var].values, ds[var].values), name
+        if name == "lyapunov":
+            assert np.array_equal(again["energy_share_counts"].values,
+                                  ds["energy_share_counts"].values)
+        if name.endswith("ensemble"):       # each member from its row, the whole from the top
+            member = "lyapunov" if name == "ensemble" else "angles"
+            for i in range(ds.sizes["member"]):
+                again = _rebuild(ds, member, _member_view(ds, i)).to_xarray()
+                assert np.array_equal(again[REBUILT[member]].values,
+                                      ds[REBUILT[member]].values[i]), (name, i)
             a = ds.attrs
-            system = charts.RotorSystem(n, masses=masses.tolist(), weights=weights.tolist(),
-                                        level=float(a["params_level"]))
-            again = charts.lyapunov_spectrum(
-                system, np.atleast_1d(a["params_theta0"]), np.atleast_1d(a["params_u0"]),
-                float(a["params_t_final"]), dt=float(a["params_dt"]),
-                n_exponents=int(a["params_n_exponents"]), inner=str(a["params_inner"]),
-                space=str(a["params_space"]), t_transient=float(a["params_t_transient"]),
-                n_batches=int(a["params_n_batches"]), reorth_every=float(a["params_reorth_every"]),
-                project_every=float(a["params_project_every"]),
-                record_every=float(a["params_record_every"]), seed=int(a["params_seed"]))
-            assert np.array_equal(again.exponents, ds["exponents"].values)
-            assert np.array_equal(again.energy_shares, ds["energy_share_counts"].values)
+            system = charts.RotorSystem(n, masses=masses.tolist(), weights=weights.tolist())
+            top = dict(t_transient=float(a["params_t_transient"]), dt=float(a["params_dt"]),
+                       seed=int(a["params_seed"]), speed=float(a["params_speed"]), workers=1,
+                       sample_every=float(a["params_sample_every"]),
+                       n_unstable=int(a["params_n_unstable"])) if member == "angles" else dict(
+                       t_transient=float(a["params_t_transient"]), dt=float(a["params_dt"]),
+                       seed=int(a["params_seed"]), speed=float(a["params_speed"]), workers=1,
+                       n_exponents=int(a["params_n_exponents"]),
+                       reorth_every=float(a["params_reorth_every"]))
+            run = charts.lyapunov_ensemble if member == "lyapunov" else charts.hyperbolicity_ensemble
+            again = run(system, int(a["params_n_trajectories"]), float(a["params_t_final"]), **top)
+            assert again == results[name]
 
 
 def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
@@ -265,6 +359,47 @@ def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
         assert not any(isinstance(v, str) and v.startswith("json:[{") for v in ds.attrs.values())
     back = load(path)
     assert [m.params for m in back.members] == [m.params for m in ens.members]
+
+
+@pytest.mark.parametrize("name", ["ensemble", "angle_ensemble"])
+def test_an_ensemble_file_keeps_units_and_states_as_numbers(results, name, tmp_path):
+    """Every variable and coordinate of an ensemble file has the units and the description of
+    the same variable in a member's file; the members' initial states are float arrays over
+    (member, rotor), not JSON text; files that held them as JSON still load."""
+    import xarray as xr
+    ens = results[name]
+    with xr.open_dataset(ens.save(tmp_path / "e.nc"), engine="h5netcdf") as ds, \
+            xr.open_dataset(ens.members[0].save(tmp_path / "m.nc"), engine="h5netcdf") as one:
+        for k, v in one.variables.items():
+            assert ds[k].attrs == v.attrs, (name, k, ds[k].attrs, v.attrs)
+        theta0 = ds["member.params.theta0"]
+        assert theta0.dims == ("member", "rotor") and theta0.dtype == np.float64
+        assert theta0.attrs["units"] == "rad" and ds["member.params.u0"].attrs["units"] == "rad / time"
+        assert np.array_equal(theta0.values, [m.params["theta0"] for m in ens.members])
+        assert not any(v.dtype.kind in "OUS" for v in ds.data_vars.values()), name
+        ds = ds.load()
+    old = ds.copy()                       # the earlier form: JSON text along member
+    for key in ("member.params.theta0", "member.params.u0"):
+        old[key] = ("member", ["json:" + json.dumps(row.tolist()) for row in ds[key].values])
+    from charts.analyses.ensemble import EnsembleResult
+    assert EnsembleResult.from_xarray(old) == ens
+
+
+def test_an_ensemble_records_its_resolved_settings(results, tmp_path):
+    """The ensemble's params are the settings as resolved (defaults filled in): a call that
+    writes a default gives an equal result, and the file's top level names every setting."""
+    ens = results["ensemble"]
+    written = charts.lyapunov_ensemble(SYS4, 2, 10, speed=1, t_transient=1.0, workers=1,
+                                       dt=0.01, n_batches=20, inner="theta")
+    assert written == ens and written.params == ens.params
+    for key in ("dt", "reorth_every", "n_exponents", "inner", "space", "record_every",
+                "n_batches", "project_every"):
+        assert key in ens.params, key
+    assert ens.params["dt"] == 0.01 and ens.params["t_final"] == 10.0
+    assert type(written.params["speed"]) is float and ens.params["seed"] == 0
+    assert "theta0" not in ens.params
+    ds = ens.to_xarray()
+    assert ds.attrs["params_dt"] == 0.01 and ds.attrs["params_n_trajectories"] == 2
 
 
 @pytest.mark.parametrize("content, says", [

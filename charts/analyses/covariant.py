@@ -382,7 +382,10 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     params = dict(**system.describe(), variant=variant, dt=cfg.dt, m=cfg.m, D=cfg.D,
                   t_final=cfg.n_win * cfg.dt, t_transient=cfg.n_tr * cfg.dt, sample_every=tau,
                   speed=flow.speed, project_every=cfg.project * cfg.dt or None, seed=cfg.seed,
-                  bytes_per_sample=sample_bytes(system.n, variant), stored_samples=cfg.total)
+                  bytes_per_sample=sample_bytes(system.n, variant), stored_samples=cfg.total,
+                  n_unstable=cfg.m, keep_vectors=bool(keep_vectors),
+                  theta0=np.asarray(theta0, dtype=float).tolist(),
+                  u0=np.asarray(u0, dtype=float).tolist())
     return CovariantResult(t, variant, phi, phi_v, -lost[1:S + 1] / tau, gs[1:S + 1], states,
                            vectors, params)
 

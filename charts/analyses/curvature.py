@@ -389,5 +389,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     t = (np.arange(1, S + 1) * sample) * dt
     params = dict(**system.describe(), dt=dt, sample_every=sample * dt,
                   t_transient=transient * dt, project_every=project * dt or None,
-                  speed=flow.speed, t_final=float(t[-1]), seed=seed)
+                  speed=flow.speed, t_final=float(t[-1]), seed=seed, exact=bool(exact),
+                  theta0=np.asarray(theta0, dtype=float).tolist(),
+                  u0=np.asarray(u0, dtype=float).tolist())
     return CurvatureResult(t, Ys[:, :n], Ys[:, n:], Ps, Ka, Kb, params)

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..archive import (MEMBER, Archivable, attributes, dataset, member_attributes,
-                       member_settings, require_xarray)
+                       member_settings, require_xarray, same_value)
 from ..compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
@@ -18,7 +18,8 @@ from .spectrum_quantities import SpectrumQuantities
 from .statistics import standard_error
 
 __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result",
-           "error_ratio_of", "warn_understated", "member_states_of", "ErrorBarWarning", "UNDERSTATED_RATIO",
+           "error_ratio_of", "warn_understated", "member_states_of", "resolved_settings",
+           "OWN_SETTINGS", "ErrorBarWarning", "UNDERSTATED_RATIO",
            "MIN_MEMBERS_TO_JUDGE"]
 
 
@@ -76,8 +77,14 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         if len(kinds) != 1:
             raise ValueError(f"members of different kinds cannot be saved together: {sorted(kinds)}")
         stacked = xr.concat(parts, dim="member", combine_attrs="drop")
-        data = {k: (v.dims, v.values, v.attrs.get("units", "1")) for k, v in stacked.data_vars.items()}
-        coords = {k: (v.dims, v.values, v.attrs.get("units", "1")) for k, v in stacked.coords.items()}
+
+        def spec(name, v):          # the members' units and description, kept
+            a = parts[0][name].attrs if name in parts[0].variables else {}
+            out = (v.dims, v.values, a.get("units", "1"))
+            return out + (a["long_name"],) if "long_name" in a else out
+
+        data = {k: spec(k, v) for k, v in stacked.data_vars.items()}
+        coords = {k: spec(k, v) for k, v in stacked.coords.items()}
         if self.exponents is not None:
             data["ensemble_exponents"] = (("exponent",), self.exponents, "1 / time", "mean")
             data["ensemble_stderr"] = (("exponent",), self.stderr, "1 / time",
@@ -252,11 +259,35 @@ def _announced(timed, name, n):
         yield result
 
 
+#: Members' settings that are each member's own (its initial state, its measured speed),
+#: never the ensemble's even where the members happen to share them.
+OWN_SETTINGS = ("seed", "speed", "theta0", "u0")
+
+
+def resolved_settings(members, kwargs) -> dict:
+    """The settings of the call as the members resolved them: every setting the members
+    share (defaults filled in, durations on the step grid: ``dt=0.01`` written or left out
+    gives the same), over ``kwargs`` (the keywords written; those the members do not record,
+    such as ``device``, kept as written); `OWN_SETTINGS` excluded."""
+    shared = {}
+    params = [getattr(m, "params", None) or {} for m in members]
+    if params:
+        for key, value in params[0].items():
+            if key not in OWN_SETTINGS and all(
+                    key in p and same_value(p[key], value) for p in params[1:]):
+                shared[key] = value
+    return {**kwargs, **shared}
+
+
 def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleResult:
-    """The `EnsembleResult` of ``members`` (seeds seed, seed+1, …)."""
-    res = EnsembleResult(members, params=dict(**system.describe(), n_trajectories=len(members),
-                                              seed=seed, speed=speed, t_final=t_final,
-                                              **kwargs))
+    """The `EnsembleResult` of ``members`` (seeds seed, seed+1, …); its ``params``: the
+    system, the ensemble's own arguments and the members' resolved settings
+    (`resolved_settings`), so that equal calls typed differently give equal results and a
+    file's top level names every setting."""
+    res = EnsembleResult(members, params={**resolved_settings(members, kwargs),
+                                          **system.describe(), "n_trajectories": len(members),
+                                          "seed": seed, "speed": float(speed),
+                                          "t_final": float(t_final)})
     if all(hasattr(m, "exponents") for m in members):
         E = np.array([m.exponents for m in members])
         res.exponents, res.stderr = E.mean(axis=0), standard_error(E)

@@ -239,18 +239,24 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     rep.update(nsteps * dt)
     rep.close()
     return angle_result(system, cfg, sf, sr, flow.logsum, blog / ((nsteps - n_tr) * dt),
-                        flow.speed)
+                        flow.speed, (theta0, u0))
 
 
-def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_exponents, speed):
+def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_exponents, speed,
+                 start=None):
     """The `AngleResult` of a run from the sines at its samples (full, restricted), the
-    forward pass's log-norm sums over [0, t_transient + t_final] and the adjoint's rates."""
+    forward pass's log-norm sums over [0, t_transient + t_final] and the adjoint's rates;
+    ``start``: the initial state (theta0, u0), recorded so that a saved result can repeat
+    its call."""
     dt = cfg.dt
     t = (cfg.n_tr + np.arange(cfg.samples) * cfg.sample) * dt
-    params = dict(**system.describe(), dt=dt, m=cfg.m, t_final=cfg.n_win * dt,
+    params = dict(**system.describe(), dt=dt, m=cfg.m, n_unstable=cfg.m, t_final=cfg.n_win * dt,
                   t_transient=cfg.n_tr * dt, sample_every=cfg.sample * dt, speed=speed,
                   checkpoint_every=cfg.ce * dt, project_every=cfg.project * dt or None,
                   seed=cfg.seed)
+    if start is not None:
+        params.update(theta0=np.asarray(start[0], dtype=float).tolist(),
+                      u0=np.asarray(start[1], dtype=float).tolist())
     return AngleResult(t, _sin_to_angle(sf), _sin_to_angle(sr),
                        forward_logs / ((cfg.n_tr + cfg.n_win) * dt), adjoint_exponents, params)
 
@@ -293,4 +299,5 @@ def angle_members(system, cfg: AngleSettings, seeds, speed, **kw):
     speed=speed)`` would return it (bit for bit with one block)."""
     sf, sr, logs, adjoint, speeds = angles_on_device(system, cfg, seeds, speed, **kw)
     return [angle_result(system, replace(cfg, seed=s), sf[l], sr[l], logs[l], adjoint[l],
-                         float(speeds[l])) for l, s in enumerate(seeds)]
+                         float(speeds[l]), system.random_state(seed=s, speed=speed))
+            for l, s in enumerate(seeds)]

@@ -184,6 +184,10 @@ class LyapunovResult(SpectrumQuantities, Archivable):
         if self.spectrum is not None:
             data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",
                                      "the relevant spectrum (reconstructed or computed)")
+            coords["spectrum_index"] = (("spectrum_index",),
+                                        np.arange(1, len(self.spectrum) + 1, dtype=np.int64), "1",
+                                        "i of λᵢ in the relevant spectrum, from 1 as in the "
+                                        "paper (as exponent)")
         if self.energy_shares is not None:
             data["energy_share_counts"] = (("share_bin",), self.energy_shares, "1",
                                            "samples of the largest kinetic-energy share of one "

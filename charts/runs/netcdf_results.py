@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -12,7 +13,7 @@ import numpy as np
 from ..archive import Archivable, attributes, dataset, exponent_coordinate
 from .io import json_default
 
-__all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT"]
+__all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS", "column_units"]
 
 #: The file a scene run writes its arrays to, beside result.json.
 SCENE_NETCDF = "results.nc"
@@ -85,8 +86,27 @@ class SceneResult(Archivable):
                 f"status={self.result.get('status')!r}, arrays={sorted(self.arrays)})")
 
 
-def _column(values):
-    """A table column as an array: integers, floats (empty cells NaN) or strings."""
+#: Units of the sweep table's known columns (``charts.runs.sweep``: the exponents and their
+#: errors, the times, the mean curvatures, the angles), by pattern; every other column "1".
+COLUMN_UNITS = ((r"lambda_\d+(_se)?", "1 / time"), (r"t_final", "time"),
+                (r"Kmean_\w+", "1 / rad^2"),
+                (r"(clv_)?phi_[a-z]+_(min|p001|median)", "rad"), (r"cone_distance_min", "rad"))
+
+
+def column_units(name: str) -> str | None:
+    """The units of the sweep column ``name`` (`COLUMN_UNITS`), None for a column of none."""
+    for pattern, units in COLUMN_UNITS:
+        if re.fullmatch(pattern, name):
+            return units
+    return None
+
+
+def _column(values, name=""):
+    """A table column as an array: integers, floats (empty cells NaN) or strings; a column
+    of empty cells only is text (e.g. ``error`` when no point failed), unless ``name`` is a
+    column of numbers with units (`column_units`)."""
+    if all(v == "" for v in values) and column_units(name) is None:
+        return np.array(values, dtype=str)
     for kind in (int, float):
         try:
             return np.array([kind(v) if v != "" else (np.nan if kind is float else None)
@@ -114,13 +134,13 @@ class SweepTable(Archivable):
         if not rows:
             raise ValueError(f"{path} is empty: not a sweep table")
         header, body = rows[0], [r for r in rows[1:] if len(r) == len(rows[0])]
-        cols = {h: _column([r[i] for r in body]) for i, h in enumerate(header)}
+        cols = {h: _column([r[i] for r in body], h) for i, h in enumerate(header)}
         return cls(cols, {"source": str(path)})
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
         attributes (``charts.archive``)."""
-        data = {k: (("point",), v, "1") for k, v in self.columns.items()}
+        data = {k: (("point",), v, column_units(k) or "1") for k, v in self.columns.items()}
         return dataset(self.KIND, data, attrs={"table": self.attrs,
                                                "column_order": list(self.columns)})
 

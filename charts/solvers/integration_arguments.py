@@ -96,8 +96,12 @@ class IntegrationArguments:
                     u0=np.asarray(self.u0, float).tolist(), n_transported=int(self.P.shape[0]))
 
     def options(self) -> dict:
-        """The settings a result records (``IntegrationResult.options``)."""
-        return dict(dt=self.dt, rtol=self.rtol, atol=self.atol, project=self.project,
+        """The settings a result records (``IntegrationResult.options``): RK4's ``dt`` or
+        DOP853's ``rtol``, ``atol`` (None for the method's other settings, which mean nothing
+        to it, so that a saved file carries only those that apply)."""
+        rk4 = self.method == "rk4"
+        return dict(dt=self.dt if rk4 else None, rtol=None if rk4 else self.rtol,
+                    atol=None if rk4 else self.atol, project=self.project,
                     tau=self.tau if self.formulation == "chart" else None,
                     chunk_steps=self.chunk_steps, t_span=[self.t0, self.t1],
                     output="t_eval" if self.use_eval else "steps")
