@@ -233,6 +233,27 @@ def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypa
     assert calls[2:] == [True, False] and resumed_other["status"] == "complete"
 
 
+def test_a_point_asks_dask_for_no_client_of_the_cluster(monkeypatch):
+    """A point runs with Dask's synchronous scheduler.  Writing its NetCDF file, xarray asks
+    Dask for a scheduler; without that setting the question reaches distributed's
+    ``get_client``, which on a worker connects a new client of the worker to the scheduler,
+    and that client's finalizer reports ``Exception ignored in: <function Client.__del__>``
+    when an interrupted sweep shuts the cluster down."""
+    from charts.archive import require_xarray
+    try:
+        require_xarray()
+    except ImportError:
+        pytest.skip("no NetCDF file without charts[io]")
+    import distributed
+    from charts.runs.sweep.worker import evaluate_points
+    calls, real = [], distributed.get_client
+    monkeypatch.setattr(distributed, "get_client",
+                        lambda *a, **k: calls.append(a) or real(*a, **k))
+    out = evaluate_points([_light_point().raw])
+    assert out[0]["status"] == "complete"
+    assert calls == []
+
+
 def test_a_point_whose_folder_is_held_runs_in_a_temporary_one(tmp_path):
     """Dask may run a point twice (a worker it took for lost still runs it): the second run
     finds points/<id> locked by a live process and computes the point in a temporary folder,
