@@ -254,6 +254,39 @@ def test_a_point_asks_dask_for_no_client_of_the_cluster(monkeypatch):
     assert calls == []
 
 
+@pytest.mark.skipif(not hasattr(signal, "pthread_sigmask"), reason="POSIX signal masks")
+def test_a_ctrl_c_while_the_local_cluster_starts_interrupts_once_it_has(monkeypatch):
+    """The worker processes start with Ctrl-C held back from them; a Ctrl-C that reaches
+    the sweep meanwhile is not lost: once the cluster has started it is raised, and the
+    cluster and its client are closed.  The handler and the signal mask are as before."""
+    import dask.distributed
+    from charts.runs.sweep.execute import dask_client
+    closed = []
+
+    class Cluster:
+        def __init__(self, **kwargs):
+            os.kill(os.getpid(), signal.SIGINT)         # Ctrl-C while the workers start
+
+        def close(self):
+            closed.append("cluster")
+
+    class Client:
+        def __init__(self, cluster):
+            pass
+
+        def close(self):
+            closed.append("client")
+
+    monkeypatch.setattr(dask.distributed, "LocalCluster", Cluster)
+    monkeypatch.setattr(dask.distributed, "Client", Client)
+    handler = signal.getsignal(signal.SIGINT)
+    with pytest.raises(KeyboardInterrupt):
+        dask_client(None, 1)
+    assert closed == ["client", "cluster"]
+    assert signal.getsignal(signal.SIGINT) is handler
+    assert signal.SIGINT not in signal.pthread_sigmask(signal.SIG_BLOCK, [])
+
+
 def test_a_point_whose_folder_is_held_runs_in_a_temporary_one(tmp_path):
     """Dask may run a point twice (a worker it took for lost still runs it): the second run
     finds points/<id> locked by a live process and computes the point in a temporary folder,
