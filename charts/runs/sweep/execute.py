@@ -151,9 +151,13 @@ def dask_client(scheduler, workers):
             # the workers' own logs only when critical: an interrupted sweep's teardown made
             # them print a semaphore release's traceback ("Is the connection unstable?") at
             # ERROR; a point that fails reaches the table through its future, with the
-            # error's text
+            # error's text.  No dashboard; the scheduler's HTTP server (health, metrics) on
+            # a free port of this host: without an address it tries 8787 and warns "Port
+            # 8787 is already in use" whenever another Dask cluster runs here
             cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                   dashboard_address=None, silence_logs=logging.CRITICAL)
+                                   dashboard_address="127.0.0.1:0",
+                                   scheduler_kwargs={"dashboard": False},
+                                   silence_logs=logging.CRITICAL)
             client = Client(cluster)
     except BaseException:           # a Ctrl-C while the cluster started: nothing left open
         if client is not None:
