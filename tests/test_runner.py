@@ -31,6 +31,20 @@ def run(sc, tmp_path, name="out", **kw):
     return run_scene(sc, tmp_path / name, quiet=True, **kw)
 
 
+def test_a_quiet_run_makes_no_progress_bar(tmp_path, monkeypatch):
+    """A quiet run (every sweep point on a worker) builds no tqdm bar: even a disabled one
+    creates tqdm's lock, a named multiprocessing semaphore; a worker killed while it holds
+    one (an interrupted sweep) leaves Python's resource tracker to report "There appear to
+    be 1 leaked semaphore objects" as the sweep exits."""
+    import tqdm.auto
+
+    def bar(*args, **kwargs):
+        raise AssertionError("a quiet run built a tqdm bar")
+
+    monkeypatch.setattr(tqdm.auto, "tqdm", bar)
+    assert run(scene(), tmp_path)["status"] == "complete"
+
+
 # ----------------------------------------------------------------- only what is asked for
 def test_waveform_only_n5_integrates_10_variables_no_tangent_vectors(tmp_path):
     sc = scene(n=5, effects={"waveforms": {"rotors": [0, 2], "t_window": 1.0}}, t_final=3.0,

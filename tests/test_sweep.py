@@ -233,6 +233,60 @@ def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypa
     assert calls[2:] == [True, False] and resumed_other["status"] == "complete"
 
 
+def test_a_point_asks_dask_for_no_client_of_the_cluster(monkeypatch):
+    """A point runs with Dask's synchronous scheduler.  Writing its NetCDF file, xarray asks
+    Dask for a scheduler; without that setting the question reaches distributed's
+    ``get_client``, which on a worker connects a new client of the worker to the scheduler,
+    and that client's finalizer reports ``Exception ignored in: <function Client.__del__>``
+    when an interrupted sweep shuts the cluster down."""
+    from charts.archive import require_xarray
+    try:
+        require_xarray()
+    except ImportError:
+        pytest.skip("no NetCDF file without charts[io]")
+    import distributed
+    from charts.runs.sweep.worker import evaluate_points
+    calls, real = [], distributed.get_client
+    monkeypatch.setattr(distributed, "get_client",
+                        lambda *a, **k: calls.append(a) or real(*a, **k))
+    out = evaluate_points([_light_point().raw])
+    assert out[0]["status"] == "complete"
+    assert calls == []
+
+
+@pytest.mark.skipif(not hasattr(signal, "pthread_sigmask"), reason="POSIX signal masks")
+def test_a_ctrl_c_while_the_local_cluster_starts_interrupts_once_it_has(monkeypatch):
+    """The worker processes start with Ctrl-C held back from them; a Ctrl-C that reaches
+    the sweep meanwhile is not lost: once the cluster has started it is raised, and the
+    cluster and its client are closed.  The handler and the signal mask are as before."""
+    import dask.distributed
+    from charts.runs.sweep.execute import dask_client
+    closed = []
+
+    class Cluster:
+        def __init__(self, **kwargs):
+            os.kill(os.getpid(), signal.SIGINT)         # Ctrl-C while the workers start
+
+        def close(self):
+            closed.append("cluster")
+
+    class Client:
+        def __init__(self, cluster):
+            pass
+
+        def close(self):
+            closed.append("client")
+
+    monkeypatch.setattr(dask.distributed, "LocalCluster", Cluster)
+    monkeypatch.setattr(dask.distributed, "Client", Client)
+    handler = signal.getsignal(signal.SIGINT)
+    with pytest.raises(KeyboardInterrupt):
+        dask_client(None, 1)
+    assert closed == ["client", "cluster"]
+    assert signal.getsignal(signal.SIGINT) is handler
+    assert signal.SIGINT not in signal.pthread_sigmask(signal.SIG_BLOCK, [])
+
+
 def test_a_point_whose_folder_is_held_runs_in_a_temporary_one(tmp_path):
     """Dask may run a point twice (a worker it took for lost still runs it): the second run
     finds points/<id> locked by a live process and computes the point in a temporary folder,

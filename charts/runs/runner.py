@@ -122,6 +122,23 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         return run.finish(status, failure)
 
 
+class _QuietBar:
+    """The progress bar of a quiet run: nothing.  Not a disabled tqdm bar, which still
+    creates tqdm's lock, a named multiprocessing semaphore, in the process: a quiet run on a
+    sweep's worker that is then killed (an interrupted sweep) would leave it to Python's
+    resource tracker, which reports "There appear to be 1 leaked semaphore objects" when the
+    sweep exits."""
+
+    def update(self, _):
+        pass
+
+    def close(self):
+        pass
+
+
+QUIET_BAR = _QuietBar()
+
+
 class SceneRun:
     """One scene's run into its output folder (checked and locked by the caller): the run
     state, the chunk ends, the recorders and the checkpoint.  `run_scene` drives one;
@@ -167,7 +184,10 @@ class SceneRun:
         return KernelEngine(self.st) if self.plan.engine == "kernel" else IntegrateEngine(self.st)
 
     def progress_bar(self, quiet: bool):
-        """A tqdm bar over the run's time units (main pass and separate passes)."""
+        """A tqdm bar over the run's time units (main pass and separate passes); `QUIET_BAR`
+        if ``quiet``."""
+        if quiet:
+            return QUIET_BAR
         from tqdm.auto import tqdm
 
         sc, plan = self.scene, self.plan

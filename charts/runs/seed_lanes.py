@@ -20,7 +20,7 @@ from ..solvers.status import RUNNING
 from .engines import KERNEL_ROUTE, count_kernel_steps, kernel_failure, record_interval, recording_stops
 from .outdir import OutputLock, prepare_output
 from .run_state import RunError
-from .runner import SceneRun
+from .runner import QUIET_BAR, SceneRun
 from .scene import Scene, scene_to_dict
 from .scene_linkage import is_linkage
 
@@ -80,7 +80,7 @@ def run_seed_lanes(scenes, outdirs, flows=LaneFlows) -> list:
             live = _main_pass(runs, outcome, flows)
             for i in live:
                 try:
-                    runs[i].run_chunks(None, _NO_BAR)
+                    runs[i].run_chunks(None, QUIET_BAR)
                 except RunError as exc:
                     outcome[i] = runs[i].stop(exc)
         results = []
@@ -126,13 +126,3 @@ def _main_pass(runs, outcome, flows) -> list[int]:
             lanes.shares[i] = runs[i].st.flow.shares  # as are the shares
             runs[i].checkpoint(idx, wall)
     return live
-
-
-class _NoBar:
-    """The progress bar of a quiet run."""
-
-    def update(self, _):
-        pass
-
-
-_NO_BAR = _NoBar()

@@ -3,6 +3,7 @@ its point finishes, a progress bar, and at the end the table in point order, the
 and the figures."""
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import os
@@ -165,21 +166,72 @@ def dask_client(scheduler, workers):
                              "one with `dask scheduler`, workers with `dask worker ADDRESS`)") \
                 from None
     n = (os.cpu_count() or 1) if workers is None else positive_int("workers", workers)
-    # the worker processes start with Ctrl-C ignored (a disposition that survives their
-    # spawn): the main process reports the interrupt and closes the cluster, instead of
-    # every worker printing a KeyboardInterrupt traceback
-    main = threading.current_thread() is threading.main_thread()
-    old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+    client = cluster = None
     try:
-        # the workers' own logs only when critical: an interrupted sweep's teardown made them
-        # print a semaphore release's traceback ("Is the connection unstable?") at ERROR;
-        # a point that fails reaches the table through its future, with the error's text
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=logging.CRITICAL)
-    finally:
-        if main:
+        with _sigint_held():
+            # the workers' own logs only when critical: an interrupted sweep's teardown made
+            # them print a semaphore release's traceback ("Is the connection unstable?") at
+            # ERROR; a point that fails reaches the table through its future, with the
+            # error's text.  No dashboard; the scheduler's HTTP server (health, metrics) on
+            # a free port of this host: without an address it tries 8787 and warns "Port
+            # 8787 is already in use" whenever another Dask cluster runs here
+            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                   dashboard_address="127.0.0.1:0",
+                                   scheduler_kwargs={"dashboard": False},
+                                   silence_logs=logging.CRITICAL)
+            client = Client(cluster)
+    except BaseException:           # a Ctrl-C while the cluster started: nothing left open
+        if client is not None:
+            client.close()
+        if cluster is not None:
+            cluster.close()
+        raise
+    return client, cluster
+
+
+@contextlib.contextmanager
+def _sigint_held():
+    """Ctrl-C held back while the local cluster starts, and delivered when it has.
+
+    The worker processes must not take Ctrl-C (every one would print a KeyboardInterrupt
+    traceback): the main process reports the interrupt and closes the cluster.  So SIGINT
+    is blocked in this thread while the cluster starts, and with it in the threads started
+    meanwhile and in the processes those spawn (a signal mask survives both), the workers
+    among them.  A Ctrl-C pressed meanwhile reaches the process anyway, as pending or by a
+    thread that was already running (e.g. the one NumPy's OpenBLAS starts at import): the
+    handler installed here notes it, and once the previous handler is back the signal is
+    raised again, so a Ctrl-C during the start interrupts the sweep instead of being lost.
+    Without ``pthread_sigmask`` (Windows) SIGINT is ignored meanwhile instead, a disposition
+    the workers inherit.  Outside the main thread nothing changes (no handler can be set)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    if not hasattr(signal, "pthread_sigmask"):
+        old = signal.signal(signal.SIGINT, signal.SIG_IGN)
+        try:
+            yield
+        finally:
             signal.signal(signal.SIGINT, old)
-    return Client(cluster), cluster
+        return
+    # multiprocessing's resource tracker, started by the first semaphore of a worker's
+    # queue, unblocks SIGINT in the thread that starts it (the cluster's event loop, whose
+    # threads spawn the workers): started here, before, it leaves the mask alone
+    from multiprocessing import resource_tracker
+
+    resource_tracker.ensure_running()
+    caught = []
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    old = signal.signal(signal.SIGINT, lambda signum, frame: caught.append(signum))
+    try:
+        yield
+    finally:
+        try:
+            signal.signal(signal.SIGINT, old)
+        finally:
+            # a Ctrl-C pending for this thread is delivered (to ``old``) by this call
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+        if caught:
+            signal.raise_signal(signal.SIGINT)
 
 
 def _silence_dask_logs():

@@ -3,6 +3,7 @@ scenes quietly in a temporary folder and return one row of statistics per point 
 that fails to integrate is a row too)."""
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import os
@@ -84,7 +85,29 @@ def evaluate_points(raws: list, keep=None, device="cpu") -> list:
     given); points of one seed family
     (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
     one kernel (the same rows, bit for bit; each point's wall time is the block's share), or
-    with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``)."""
+    with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``).
+
+    The points run with Dask's synchronous scheduler: a point never talks to the cluster
+    it runs on."""
+    with _own_scheduler():
+        return _evaluate_points(raws, keep, device)
+
+
+def _own_scheduler():
+    """Dask's synchronous scheduler for what runs inside (a no-op where Dask is not
+    installed).  Without it, asking Dask for a scheduler on a worker -- xarray does, to write
+    a point's NetCDF file -- connects a new client of the worker to the scheduler; when the
+    cluster then shuts down under that client (an interrupted sweep), the client's
+    finalizer finds its event loop closed and prints ``Exception ignored in: <function
+    Client.__del__ ...> RuntimeError: IOLoop is closed`` from the worker process."""
+    try:
+        import dask
+    except ImportError:
+        return contextlib.nullcontext()
+    return dask.config.set(scheduler="synchronous")
+
+
+def _evaluate_points(raws: list, keep=None, device="cpu") -> list:
     scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
     families = {seed_family(sc) for sc in scenes}
     if len(scenes) < MIN_LANES or None in families or len(families) != 1:
