@@ -191,7 +191,7 @@ def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, 
     hp = dt / planned
     h = hp
     left = dt
-    adaptive = False
+    adaptive = np.bool_(False)      # not the literal: next_substep compiled once
     for sub in range(MAX_SUBSTEPS):
         S = sum_squares(s0, 0, n)
         if S < singular_floor(c0, wts, n, level):
@@ -305,7 +305,7 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
         planned = 0
         hp = adt
         left = adt
-        adaptive = False
+        adaptive = np.bool_(False)  # not the literal: next_substep compiled once
         if nsub > 1:
             planned = substep_count(adt, hc)
             h = dt / planned
