@@ -2,6 +2,7 @@
 import numpy as np
 import pytest
 
+import charts
 from charts import lyapunov_spectrum
 from charts.analyses.hyperbolicity import (SMALL_ANGLE, AngleResult, angle_statistics,
                                            hyperbolicity_angles, hyperbolicity_ensemble)
@@ -165,3 +166,22 @@ def test_unequal_masses_angles_and_exponents():
     assert np.all(r.forward_exponents > 0.1)
     assert np.all(np.abs(r.forward_exponents - lyap.exponents) < N_SIGMA * lyap.stderr), (r, lyap)
     np.testing.assert_allclose(r.forward_exponents, r.adjoint_exponents, rtol=0, atol=EXPONENT_TOL)
+
+
+def test_an_ensemble_primes_on_its_members_grid_at_any_dt(monkeypatch):
+    """The short call that compiles the kernels before the workers start runs on the
+    members' own step grid: at dt = 0.03 (where the default sampling becomes 0.06) it is
+    accepted, as the members are (it was 0.2 time units, refused at that dt)."""
+    from charts.analyses import hyperbolicity
+
+    seen = {}
+    monkeypatch.setattr(hyperbolicity, "run_ensemble",
+                        lambda fn, *a, prime=None, **kw: seen.update(prime=prime, kw=kw))
+    system = charts.RotorSystem(4)
+    hyperbolicity.hyperbolicity_ensemble(system, 2, 6.0, dt=0.03, workers=2)
+    t_short, settings = seen["prime"]
+    assert np.isclose(t_short, 0.12) and settings == {"t_transient": 0.0, "sample_every": 0.06}
+    th, u = system.random_state(seed=0)
+    assert seen["kw"]["dt"] == 0.03
+    short = charts.hyperbolicity_angles(system, th, u, t_short, dt=0.03, **settings)
+    assert len(short.phi_full) == 2

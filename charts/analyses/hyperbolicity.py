@@ -286,7 +286,9 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
                                 workers=workers or os.cpu_count() or 1, update=rep.update)
         rep.close()
         return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
-    short = (2 * kwargs.get("sample_every", 0.1), {"t_transient": 0.0})
+    # the priming call: two samples on the members' own grid (whole steps of their dt)
+    every = cfg.sample * cfg.dt
+    short = (2 * every, {"t_transient": 0.0, "sample_every": every})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
                         seed=seed, workers=workers, progress=progress,
                         desc=f"angles N={system.n} ensemble", prime=short, **kwargs)
