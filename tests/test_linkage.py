@@ -490,8 +490,16 @@ def test_the_disk_branch_is_plus_or_minus_one(branch):
 
 def test_curvature_must_be_a_boolean():
     L = charts.LinkageSystem(0.1)
-    with pytest.raises(ValueError, match="curvature must be True or False, got 'no'"):
+    with pytest.raises(ValueError, match=r"curvature must be True or False \(or 1 or 0\), got 'no'"):
         charts.linkage_run(L, *L.random_state(seed=1), 2.0, curvature="no")
+    with pytest.raises(ValueError, match="got 2"):
+        charts.linkage_run(L, *L.random_state(seed=1), 2.0, curvature=2)
+    # 1 and 0, as a saved file's plain attributes hold yes/no settings, repeat the call
+    a = charts.linkage_run(L, *L.random_state(seed=1), 2.0, t_transient=0.5, n_batches=2,
+                           curvature=np.int64(0))
+    b = charts.linkage_run(L, *L.random_state(seed=1), 2.0, t_transient=0.5, n_batches=2,
+                           curvature=False)
+    assert a == b
 
 
 def test_the_smallest_eps_still_tracks_the_rotor_limit():

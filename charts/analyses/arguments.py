@@ -9,12 +9,14 @@ another duration, the largest count at most that which does (docs/reliability.md
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..geometry.checks import integer, number
 from ..solvers.progress import progress_reporter
 from ..solvers.status import MAX_STEPS, check_step
 from ..solvers.tangent import largest_divisor
 
-__all__ = ["positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
+__all__ = ["flag", "positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
            "project_steps", "samples_of", "start_state", "unstable_dimension", "Documented"]
 
 
@@ -31,6 +33,17 @@ class Documented(float):
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
 #: decimal inputs such as 0.1 / 0.01 = 9.999999999999998).
 GRID_RTOL = 1e-9
+
+
+def flag(name, x) -> bool:
+    """A yes/no setting: True or False, or 1 or 0 as a saved file's plain attributes hold
+    them (``charts.archive``), so that a call repeated from a file runs; ValueError for
+    anything else."""
+    if isinstance(x, (bool, np.bool_)):
+        return bool(x)
+    if isinstance(x, (int, np.integer)) and x in (0, 1):
+        return bool(x)
+    raise ValueError(f"{name} must be True or False (or 1 or 0), got {x!r}")
 
 
 def positive_time(name, x) -> float:

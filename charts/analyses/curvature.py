@@ -43,7 +43,7 @@ from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
                                tangent_kernel)
-from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
+from .arguments import (flag, positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
 
@@ -359,8 +359,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
-    if not isinstance(exact, (bool, np.bool_)):
-        raise ValueError(f"exact must be True or False, got {exact!r}")
+    exact = flag("exact", exact)
     theta0, u0 = start_state(system, theta0, u0, dt)
     k = n - 2
     reorth = reorth_steps(dt, sample, transient)  # orthonormal (and in T_r) at every sample

@@ -28,7 +28,7 @@ from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
-from .arguments import (Documented, positive_int, positive_time, progress_reporter,
+from .arguments import (Documented, flag, positive_int, positive_time, progress_reporter,
                         project_steps, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
@@ -199,8 +199,7 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     largest count at most that which divides t_final (and a written ``sample_every``), a
     default ``sample_every`` the nearest multiple of ``reorth_every`` that divides t_final.
     """
-    if not isinstance(curvature, (bool, np.bool_)):
-        raise ValueError(f"curvature must be True or False, got {curvature!r}")
+    curvature = flag("curvature", curvature)
     q0, v0 = system.check_state(q0, v0)
     if not system.speed(v0) > 0:
         raise ValueError("v0 has zero kinetic speed: the geodesic flow needs a nonzero speed")
