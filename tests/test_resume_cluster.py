@@ -272,6 +272,6 @@ def test_sweep_interrupted_by_ctrl_c_prints_only_how_to_resume(tmp_path):
     assert err.strip().splitlines() == [
         f"interrupted: the finished points are in {out / TABLE} (and the checkpoints of a "
         f"long point in {out / 'points'}); continue with:",
-        f"  charts sweep {shlex.quote(str(spec))} -o {shlex.quote(str(out))} --resume"], err
+        f"  charts sweep {shlex.quote(str(spec))} -o {shlex.quote(str(out))} --resume --workers 2"], err
     assert len(read_table(out / TABLE)[1]) == 1
     assert not (out / ".charts.lock").exists()

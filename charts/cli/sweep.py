@@ -79,11 +79,13 @@ def cmd_sweep(args) -> int:
     except SweepError as exc:
         return _fail(str(exc))
     except KeyboardInterrupt:
-        device = "" if args.device == "cpu" else f" --device {args.device}"
+        extra = ("" if args.device == "cpu" else f" --device {args.device}") + (
+            f" --workers {args.workers}" if args.workers else "") + (
+            f" --scheduler {shlex.quote(args.scheduler)}" if args.scheduler else "")
         print(f"\ninterrupted: the finished points are in {args.output / TABLE} (and the "
               f"checkpoints of a long point in {args.output / 'points'}); continue "
               f"with:\n  charts sweep {shlex.quote(str(args.sweep))} -o "
-              f"{shlex.quote(str(args.output))} --resume{device}", file=sys.stderr)
+              f"{shlex.quote(str(args.output))} --resume{extra}", file=sys.stderr)
         return EXIT_INTERRUPTED
     if not args.quiet:
         _report(sweep.name, info, args.output)

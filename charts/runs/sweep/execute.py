@@ -108,7 +108,8 @@ def _sweep_device(device, scheduler) -> str:
     try:
         return resolve_device(device)
     except DeviceUnavailable as exc:
-        raise SweepError(str(exc).replace("device='cuda'", "--device cuda")) from None
+        raise SweepError(str(exc).replace("device='cuda'", "--device cuda")
+                         .replace("device='cpu' (or 'auto')", "--device cpu (or auto)")) from None
 
 
 def _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
