@@ -34,7 +34,7 @@ from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
            "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MEMBER", "member_settings",
-           "member_attributes", "same_value"]
+           "member_attributes", "index_coordinate", "same_value"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
@@ -190,8 +190,14 @@ def exponent_coordinate(k: int):
     """The coordinate of an ``exponent`` dimension of k Lyapunov exponents, for `dataset`'s
     ``coords``: i of λᵢ, 1…k (λ₁ the largest), as in the paper and the field, where the
     other dimensions count from 0."""
-    return (("exponent",), np.arange(1, int(k) + 1, dtype=np.int64), "1",
-            "i of λᵢ, from 1 as in the paper")
+    return index_coordinate("exponent", k, "i of λᵢ, from 1 as in the paper")
+
+
+def index_coordinate(dim: str, k: int, long_name: str):
+    """A coordinate 1…k of dimension ``dim`` for `dataset`'s ``coords``: the indices that the
+    paper and the field count from 1 (exponents, the frame vectors of K₁₁, K₂₂, tangent and
+    covariant vectors); rotors count from 0."""
+    return ((dim,), np.arange(1, int(k) + 1, dtype=np.int64), "1", long_name)
 
 
 def _setting(key) -> bool:

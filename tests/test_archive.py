@@ -122,6 +122,13 @@ def test_datasets_have_named_dims_units_and_stamps(results):
         for v in list(ds.data_vars.values()) + list(ds.coords.values()):
             assert "units" in v.attrs, (name, v.name)
             assert not any(d.startswith("dim_") for d in v.dims), (name, v.dims)
+    # indices the paper counts from 1 are 1…k in the files; rotors count from 0
+    assert list(results["curvature"].to_xarray()["direction"].values) == [1, 2]
+    assert list(results["angles"].to_xarray()["vector"].values)[0] == 1
+    cov = results["covariant"].to_xarray()
+    assert cov["clv"].values[0] == 1 and cov["component"].values[0] == "theta_0"
+    assert list(cov["component_units"].values[[0, -1]]) == ["rad", "rad / time"]
+    assert list(results["trajectory"].to_xarray()["rotor"].values) == [0, 1, 2]
     ds = results["lyapunov"].to_xarray()
     assert ds["exponents"].attrs["units"] == "1 / time"
     assert list(ds["spectrum_index"].values) == list(range(1, ds.sizes["spectrum_index"] + 1))

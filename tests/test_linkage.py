@@ -362,7 +362,7 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     assert np.allclose(ax.lines[0].get_xdata(), [0.5, 1.0])
     assert ax.get_legend().get_texts()[0].get_text() == "linkage ε = 0.1 (3 members)"
     _, ax = e.plot()
-    assert ax.get_title() == "Lyapunov exponents, linkage ε = 0.1: 3 members"
+    assert ax.get_title() == "Lyapunov exponents, linkage ε = 0.1\n3 members"
     # a reader of the file knows each component and its unit; the run is repeatable from it
     with xr.open_dataset(tmp_path / "run.nc", engine="h5netcdf") as ds:
         assert list(ds["component"].values[4:7]) == ["x", "y", "alpha"]

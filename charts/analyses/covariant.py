@@ -41,7 +41,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, index_coordinate
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
@@ -293,11 +293,22 @@ class CovariantResult(Archivable):
             "growth": (("t", "clv"), self.growth, "1 / time", "growth rate along each CLV"),
             "gs_rates": (("t", "clv"), self.gs_rates, "1 / time",
                          "growth rate of each Gram-Schmidt vector"),
-            "states": (("t", "component"), self.states, "rad | rad / time",
+            "states": (("t", "component"), self.states, "see component_units",
                        "state (theta, u) at the samples")}
+        n = self.states.shape[1] // 2
+        coords = {"t": (("t",), self.t, "time"),
+                  "clv": index_coordinate("clv", self.growth.shape[1],
+                                          "i of the i-th covariant vector, from 1"),
+                  "component": (("component",),
+                                np.array([f"theta_{i}" for i in range(n)]
+                                         + [f"u_{i}" for i in range(n)]), "1",
+                                "θ₀…θ_{N−1}, then u₀…u_{N−1}"),
+                  "component_units": (("component",),
+                                      np.array(["rad"] * n + ["rad / time"] * n), "1",
+                                      "the unit of each component of states")}
         if self.vectors is not None:
             data["vectors"] = (("t", "clv", "component"), self.vectors, "1", "unit CLVs")
-        return dataset(self.KIND, data, coords={"t": (("t",), self.t, "time")},
+        return dataset(self.KIND, data, coords=coords,
                        attrs={"variant": self.variant, "params": self.params})
 
     @classmethod

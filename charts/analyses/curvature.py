@@ -32,7 +32,7 @@ from math import sqrt
 import numpy as np
 from numba import njit
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, index_coordinate
 from ..compilation import announces_compilation
 from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
                              tangent_rate, transport_rate)
@@ -300,8 +300,13 @@ class CurvatureResult(Archivable):
                 "K_numeric": (dims, self.K_numeric, "1 / rad²", "route (a), eqs (19)–(21)")}
         if self.K_exact is not None:
             data["K_exact"] = (dims, self.K_exact, "1 / rad²", "route (b), Riemann tensor")
+        k = self.K_numeric.shape[1]
         return dataset(self.KIND, data, attrs={"params": self.params},
-                       coords={"t": (("t",), self.t, "time")})
+                       coords={"t": (("t",), self.t, "time"),
+                               "direction": index_coordinate("direction", k,
+                                                             "i of K_ij, from 1 as in the paper"),
+                               "direction2": index_coordinate("direction2", k,
+                                                              "j of K_ij, from 1 as in the paper")})
 
     @classmethod
     def from_xarray(cls, ds):

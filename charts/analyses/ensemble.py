@@ -153,7 +153,7 @@ class EnsembleResult(SpectrumQuantities, Archivable):
             if kind == "members":
                 from ..plotting import plot_ensemble_exponents, system_label
                 rows = np.array([m.exponents for m in self.members])
-                kw.setdefault("title", f"Lyapunov exponents, {system_label(self.params)}: "
+                kw.setdefault("title", f"Lyapunov exponents, {system_label(self.params)}\n"
                                        f"{len(self)} members")
                 return plot_ensemble_exponents(rows, self.exponents, self.stderr, ax=ax, **kw)
             raise ValueError(f"kind must be 'members' or 'spectrum' for an ensemble of "
@@ -162,9 +162,10 @@ class EnsembleResult(SpectrumQuantities, Archivable):
             kind = kind or "histogram"
             if kind != "histogram":
                 raise ValueError(f"kind must be 'histogram' for an ensemble of angles, got {kind!r}")
-            from ..plotting import plot_angles
+            from ..plotting import plot_angles, system_label
             phis = {v: self.concatenate(f"phi_{v}") for v in ("full", "restricted")}
-            kw.setdefault("title", f"angles between $E_u$ and $E_{{cs}}$, {len(self)} members pooled")
+            kw.setdefault("title", f"angles between $E_u$ and $E_{{cs}}$, "
+                                   f"{system_label(self.params)}: {len(self)} members pooled")
             return plot_angles(phis, axes=ax, **kw)
         raise ValueError("this ensemble's members have no common picture; plot one member "
                          "(ensemble[i].plot())")

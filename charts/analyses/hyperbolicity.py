@@ -40,7 +40,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, index_coordinate
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device
@@ -104,7 +104,10 @@ class AngleResult(Archivable):
                                "angle, constraint-preserving tangent space"),
             "forward_exponents": (("vector",), self.forward_exponents, "1 / time"),
             "adjoint_exponents": (("vector",), self.adjoint_exponents, "1 / time")},
-            coords={"t": (("t",), self.t, "time")}, attrs={"params": self.params})
+            coords={"t": (("t",), self.t, "time"),
+                    "vector": index_coordinate("vector", len(self.forward_exponents),
+                                               "i of the i-th tangent / adjoint vector, from 1")},
+            attrs={"params": self.params})
 
     @classmethod
     def from_xarray(cls, ds):

@@ -23,6 +23,15 @@ CURVATURE_QUANTILES = (2.0, 99.5)
 LOG_FLOOR = 1e-18
 
 
+def value_error(value, error) -> str:
+    """"value ± error" with the error to two significant digits and the value to the same
+    decimal place (0.1269 ± 0.0080, 0.022 ± 0.011)."""
+    if not (np.isfinite(error) and error > 0):
+        return f"{value:.4g} ± {error:.2g}"
+    places = max(0, 1 - int(np.floor(np.log10(error))))
+    return f"{value:.{places}f} ± {error:.{places}f}"
+
+
 def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="paper (dotted)",
                   ax=None, title=None, system=None):
     """Running estimates ``H`` (m, k) of the exponents against the averaging time ``T`` (m,)
@@ -41,7 +50,7 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
         if se is None:
             lab = f"λ{i + 1} = {lam:.4g} (one batch: no error bar)"
         else:
-            lab = f"λ{i + 1} = {lam:#.4g} ± {se:#.2g}"   # "#": 0.010, not 0.01
+            lab = f"λ{i + 1} = {value_error(lam, se)}"
             ax.axhspan(lam - se, lam + se, color=color, alpha=0.18, lw=0)
             if keep.any():
                 ax.errorbar([T[keep][-1]], [lam], yerr=[se], color=color, capsize=4, lw=1.4)
@@ -107,7 +116,7 @@ def plot_ensemble_exponents(members, exponents, stderr, *, ax=None, title=None):
     ax.set_xlim(0.5, k + 0.7)
     ax.set_xlabel("exponent")
     ax.set_ylabel("λ (1 / time unit)")
-    ax.set_title(title or f"Lyapunov exponents of {m} members", fontsize=10)
+    ax.set_title(title or f"Lyapunov exponents\n{m} members", fontsize=10)
     ax.legend(fontsize=8, frameon=False)
     return fig, ax
 

@@ -128,6 +128,8 @@ class SweepTable(Archivable):
 
     @classmethod
     def from_csv(cls, path):
+        """The table of a sweep's ``sweep.csv``, one column per statistic along ``point``
+        (integers stay integers): ``SweepTable.from_csv("DIR/sweep.csv").save("DIR/sweep.nc")``."""
         path = Path(path)
         with open(path, newline="", encoding="utf-8") as fh:
             rows = list(csv.reader(fh))

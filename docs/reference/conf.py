@@ -60,8 +60,10 @@ def api_page() -> str:
               ".. autoclass:: charts.archive.Archivable", "   :members: save",
               "   :special-members: __eq__", "",
               "``charts.runs.netcdf_results``", "-" * 34, "",
-              ".. autoclass:: charts.runs.netcdf_results.SceneResult", "   :members:", "",
-              ".. autoclass:: charts.runs.netcdf_results.SweepTable", "   :members:", "",
+              ".. autoclass:: charts.runs.netcdf_results.SceneResult", "   :members:",
+              "   :inherited-members:", "",
+              ".. autoclass:: charts.runs.netcdf_results.SweepTable", "   :members:",
+              "   :inherited-members:", "",
               "``charts.plotting``", "-" * 22, "",
               ".. automodule:: charts.plotting", "   :members:", ""]
     return "\n".join(lines) + "\n"

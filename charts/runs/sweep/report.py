@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ...analyses.hyperbolicity import SMALL_ANGLE
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ...plotting.style import new_figure, save_png
@@ -123,7 +124,10 @@ def _label(stat: str) -> str:
             return f"fraction of samples with {d} > 0 ({parts[1]})"
         return f"mean {d} ({parts[1]})"
     if parts[0] == "phi":
-        return f"φ {'_'.join(parts[2:])} ({parts[1]} space) [rad]"
+        what = "_".join(parts[2:])
+        if what == "frac_small":
+            return f"fraction of angles φ < {SMALL_ANGLE:g} rad ({parts[1]} space)"
+        return f"φ {what} ({parts[1]} space) [rad]"
     return stat
 
 
@@ -280,11 +284,13 @@ def _overview(summary, folder, title, x, groups, gkey, glabel) -> str:
             ax.set_yscale("log")
         ax.set_title(_label(stat), fontsize=8)
         ax.set_xlabel(x, fontsize=8)
+        ax.set_ylabel(_axis_label(stat), fontsize=7)
     for ax in list(axs.flat)[len(stats):]:
         ax.set_visible(False)
     if len(groups) > 1:
         axs.flat[0].legend(fontsize=7)
-    fig.suptitle(title, fontsize=10)
+    fixed = _fixed(summary["rows"], summary["params"])
+    fig.suptitle(title + (f" ({fixed})" if fixed else ""), fontsize=10)
     path = folder / "overview.png"
     save_png(fig, path)
     return str(path)
