@@ -7,6 +7,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -265,7 +266,9 @@ def test_a_ctrl_c_while_the_local_cluster_starts_interrupts_once_it_has(monkeypa
 
     class Cluster:
         def __init__(self, **kwargs):
-            os.kill(os.getpid(), signal.SIGINT)         # Ctrl-C while the workers start
+            # Ctrl-C while the workers start, to the main thread: sent to the process, under
+            # pytest-xdist a thread of its own took it and ended the worker
+            signal.pthread_kill(threading.main_thread().ident, signal.SIGINT)
 
         def close(self):
             closed.append("cluster")
