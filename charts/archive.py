@@ -244,7 +244,8 @@ def member_settings(settings: list) -> tuple[dict, dict]:
         if all(_encode(v) == first for v in values[1:]):
             attrs[name] = _native_list(values[0]) if isinstance(values[0], list) else first
         elif all(_scalar(v) for v in values) and len({type(v) for v in values}) == 1:
-            data[name] = (("member",), np.asarray(values), "1", f"each member's {'.'.join(path)}")
+            data[name] = (("member",), np.asarray(values), MEMBER_UNITS.get(path[-1], "1"),
+                          f"each member's {'.'.join(path)}")
         elif _number_rows(values):
             data[name] = (("member", MEMBER_DIMS.get(path[-1], f"{path[-1]}_entry")),
                           np.asarray(values), MEMBER_UNITS.get(path[-1], "1"),
@@ -257,8 +258,11 @@ def member_settings(settings: list) -> tuple[dict, dict]:
 
 #: The second dimension of a setting that is a list of numbers per member (the initial
 #: state: one number per rotor), and its units; other lists: ``<name>_entry``, units "1".
-MEMBER_DIMS = {"theta0": "rotor", "u0": "rotor", "masses": "rotor", "weights": "rotor"}
-MEMBER_UNITS = {"theta0": "rad", "u0": "rad / time"}
+MEMBER_DIMS = {"theta0": "rotor", "u0": "rotor", "masses": "rotor", "weights": "rotor",
+               "q0": "q_component", "v0": "q_component"}
+MEMBER_UNITS = {"theta0": "rad", "u0": "rad / time", "speed": "rad / time",
+                "q0": "rad (θ₀…θ₃, α), length (x, y): component_units[:7]",
+                "v0": "rad / time, length / time (x, y): component_units[7:]"}
 
 
 def _number_rows(values) -> bool:
