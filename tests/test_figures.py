@@ -77,7 +77,11 @@ def test_analysis_plots():
         check_axes(a)
     w = charts.waveform(system, th, u, 100.0)
     check_axes(w.plot()[1])
-    assert w.plot()[1].get_title() == "angles against time"      # no charts: no switch count
+    assert w.plot()[1].get_title() == "angles against time, N = 4"   # no charts: no switch count
+    fig, axes = w.plot(kind="velocities", rotors=[0, 2], window=(10.0, 60.0))
+    assert [a.get_ylabel() for a in axes] == ["$u_{0}$ (rad/time)", "$u_{2}$ (rad/time)"]
+    assert np.array_equal(axes[1].lines[0].get_ydata(), w.u[(w.t >= 10) & (w.t <= 60), 2])
+    check_axes(axes[-1])                                 # the panels share the time axis
     assert lyap.plot()[1].get_title().startswith("Lyapunov exponents, N = 4\n")
     masses = charts.lyapunov_spectrum(charts.RotorSystem(4, masses=[1, 2, 3, 1]), th, u, 4.0,
                                       t_transient=1.0, n_batches=2)

@@ -53,9 +53,19 @@ class Waveform(Archivable):
         return cls(ds["t"].values, ds["theta"].values, ds["u"].values, a["dt_sample"],
                    a.get("params", {}))
 
-    def plot(self, ax=None, **kw):
-        """θᵢ(t) wrapped to (−π, π]; ``(fig, ax)`` (``charts.plotting.plot_angles_time``)."""
-        from ..plotting import plot_angles_time
+    def plot(self, ax=None, kind="angles", **kw):
+        """``kind="angles"``: θᵢ(t) wrapped to (−π, π], ``(fig, ax)``
+        (``charts.plotting.plot_angles_time``); ``"velocities"``: uᵢ(t), one panel per rotor
+        (``rotors=[...]`` to choose), the paper's figure 2, ``(fig, axes)``
+        (``charts.plotting.plot_velocities_time``); ``window=(t0, t1)`` for a span; the title
+        names the system."""
+        from ..plotting import plot_angles_time, plot_velocities_time, system_label
+        if kind == "velocities":
+            kw.setdefault("title", f"angular velocities, {system_label(self.params)}")
+            return plot_velocities_time(self.t, self.u, axes=ax, **kw)
+        if kind != "angles":
+            raise ValueError(f"kind must be 'angles' or 'velocities', got {kind!r}")
+        kw.setdefault("title", f"angles against time, {system_label(self.params)}")
         return plot_angles_time(self.t, self.theta, ax=ax, **kw)
 
 

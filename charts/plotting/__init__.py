@@ -9,11 +9,11 @@ from .analyses import (CURVATURE_QUANTILES, LOG_FLOOR, plot_angles, plot_angles_
                        plot_lyapunov_spectrum, plot_spectrum)
 from .style import DPI, TIME, new_figure, png_bytes, save_png, system_label
 from .trajectory import (animate_rotors, plot_angles_time, plot_poincare, plot_surface,
-                         plot_trajectory, save_animation)
+                         plot_trajectory, plot_velocities_time, save_animation)
 
 __all__ = ["plot_lyapunov", "plot_lyapunov_spectrum", "plot_ensemble_exponents", "plot_curvature",
            "plot_angles",
            "plot_angles_series", "plot_spectrum", "plot_drift",
-           "plot_angles_time", "plot_surface", "plot_poincare", "animate_rotors", "save_animation",
+           "plot_angles_time", "plot_velocities_time", "plot_surface", "plot_poincare", "animate_rotors", "save_animation",
            "plot_trajectory", "new_figure", "png_bytes", "save_png", "system_label", "DPI", "TIME",
            "CURVATURE_QUANTILES", "LOG_FLOOR"]

@@ -8,7 +8,7 @@ import numpy as np
 
 from .style import MAX_POINTS, TIME, broken_at_wraps, figure_axes, new_figure, time_window, wrap
 
-__all__ = ["plot_angles_time", "plot_surface", "plot_poincare", "animate_rotors",
+__all__ = ["plot_angles_time", "plot_velocities_time", "plot_surface", "plot_poincare", "animate_rotors",
            "plot_trajectory", "save_animation"]
 
 
@@ -39,6 +39,30 @@ def plot_angles_time(t, theta, *, switches=None, window=None, max_points=MAX_POI
     ax.set_title(title or ("angles against time" + (f" ({notes})" if notes else "")), fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     return fig, ax
+
+
+def plot_velocities_time(t, u, rotors=None, *, window=None, max_points=MAX_POINTS, axes=None,
+                         title=None):
+    """The angular velocities uᵢ(t) (rad per unit time; the paper's figure 2), one panel per
+    rotor of ``rotors`` (default all; ``u`` (S, N), or (S, len(rotors)) with ``rotors``
+    naming its columns when ``u`` holds only those); ``window`` = (t0, t1) and at most
+    ``max_points`` samples per line as `plot_angles_time`.  ``(fig, axes)``."""
+    u = np.asarray(u)
+    rotors = list(range(u.shape[1])) if rotors is None else list(rotors)
+    cols = u if u.shape[1] == len(rotors) else u[:, rotors]
+    t, cols, stride = time_window(np.asarray(t), cols, window, max_points)
+    if axes is None:
+        fig, grid = new_figure(len(rotors), 1, figsize=(8, 1.3 * len(rotors) + 0.9),
+                               sharex=True, squeeze=False)
+        axes = list(grid[:, 0])
+    fig = axes[0].figure
+    for ax, r, col in zip(axes, rotors, cols.T):
+        ax.plot(t, col, lw=0.7)
+        ax.set_ylabel(f"$u_{{{r}}}$ (rad/time)")
+    axes[-1].set_xlabel(TIME)
+    every = f", every {stride}th sample" if stride > 1 else ""
+    fig.suptitle(title or f"angular velocities (rad per unit time){every}", fontsize=10)
+    return fig, axes
 
 
 def _surface_sheets(system, m=61):

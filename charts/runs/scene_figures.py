@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..plotting import (CURVATURE_QUANTILES, TIME, plot_angles, plot_curvature, plot_drift,
-                        plot_lyapunov, plot_spectrum)
+from ..plotting import (CURVATURE_QUANTILES, plot_angles, plot_curvature, plot_drift,
+                        plot_lyapunov, plot_spectrum, plot_velocities_time)
 from ..plotting.style import new_figure, png_bytes
 
 __all__ = ["waveforms_png", "spectrum_png", "drift_png", "lyapunov_png", "angles_png", "clv_png",
@@ -26,13 +26,8 @@ def _title(sc, what):
 def waveforms_png(sc, t, U) -> bytes:
     """The angular velocities uᵢ(t) of the stored window, one panel per rotor."""
     rotors = sc.effects["waveforms"]["rotors"]
-    fig, axes = new_figure(len(rotors), 1, figsize=(8, 1.3 * len(rotors) + 0.9), sharex=True,
-                           squeeze=False)
-    for ax, r, col in zip(axes[:, 0], rotors, U.T):
-        ax.plot(t, col, lw=0.7)
-        ax.set_ylabel(f"$u_{{{r}}}$ (rad/time)")
-    axes[-1, 0].set_xlabel(TIME)
-    fig.suptitle(_title(sc, "angular velocities (rad per unit time)"))
+    fig, _ = plot_velocities_time(t, U, rotors, max_points=max(1, len(t)),
+                                  title=_title(sc, "angular velocities (rad per unit time)"))
     return png_bytes(fig)
 
 
