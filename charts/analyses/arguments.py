@@ -9,6 +9,8 @@ another duration, the largest count at most that which does (docs/reliability.md
 """
 from __future__ import annotations
 
+from math import gcd
+
 import numpy as np
 
 from ..geometry.checks import integer, number
@@ -16,7 +18,7 @@ from ..solvers.progress import progress_reporter
 from ..solvers.status import MAX_STEPS, check_step
 from ..solvers.tangent import largest_divisor
 
-__all__ = ["flag", "positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
+__all__ = ["flag", "inner_steps", "positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
            "project_steps", "samples_of", "start_state", "unstable_dimension", "Documented"]
 
 
@@ -85,6 +87,15 @@ def steps_of(name, t, dt, *, allow_zero=False, divides=0) -> int:
         raise ValueError(f"{name}={t:g} is not a whole number of steps dt={dt:g}; use a multiple "
                          f"of dt (e.g. {max(k, 1) * dt:g})")
     return int(k)
+
+
+def inner_steps(name, t, dt, total, outer, outer_steps) -> int:
+    """`steps_of` ``t`` for a period that must divide both the run (``total`` steps) and a
+    coarser period ``outer`` (``outer_steps`` steps; e.g. reorth_every inside record_every):
+    a default ``t`` divides ``total``, and also ``outer_steps`` when ``outer`` was written (a
+    default ``outer`` is then placed on this period's multiples by the caller)."""
+    return steps_of(name, t, dt, divides=total if isinstance(outer, Documented)
+                    else gcd(total, outer_steps))
 
 
 def positive_int(name, x, minimum=1) -> int:

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import inspect
 from dataclasses import dataclass, field
-from math import gcd
 
 import numpy as np
 
@@ -29,7 +28,7 @@ from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from .arguments import (Documented, flag, positive_int, positive_time, progress_reporter,
-                        project_steps, steps_of)
+                        inner_steps, project_steps, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
@@ -211,11 +210,9 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     # as lyapunov_spectrum's record_every: a default reorth_every divides t_final (and a
     # sample_every that is written); a default sample_every is then the nearest multiple of
     # reorth that divides t_final
-    documented_sample = isinstance(sample_every, Documented)
     sample = steps_of("sample_every", sample_every, dt)
-    reorth = steps_of("reorth_every", reorth_every, dt,
-                      divides=total if documented_sample else gcd(total, sample))
-    if documented_sample:
+    reorth = inner_steps("reorth_every", reorth_every, dt, total, sample_every, sample)
+    if isinstance(sample_every, Documented):
         sample = reorth * steps_of("sample_every", sample_every, reorth * dt,
                                    divides=total // reorth)
     if total % reorth or sample % reorth:

@@ -18,7 +18,6 @@ product of the rotors' (θ, u) of the restricted variant of ``charts.analyses.hy
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from math import gcd
 
 import numpy as np
 
@@ -26,7 +25,7 @@ from ..flows.linkage import NY, acceleration
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from ..solvers.tangent import orthonormalize
-from .arguments import Documented, positive_time, project_steps, steps_of
+from .arguments import Documented, inner_steps, positive_time, project_steps, steps_of
 from .hyperbolicity import angle_statistics
 
 __all__ = ["LinkageAngles", "linkage_angles", "angle_steps", "sin_angle"]
@@ -52,10 +51,8 @@ def angle_steps(dt, t_final, t_transient, sample_every):
     docstring says (as ``lyapunov_spectrum`` places reorth_every and record_every)."""
     total = steps_of("t_final", t_final, dt)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
-    documented_transient = isinstance(t_transient, Documented)
-    sample = steps_of("sample_every", sample_every, dt,
-                      divides=total if documented_transient else gcd(total, transient))
-    if documented_transient and transient:
+    sample = inner_steps("sample_every", sample_every, dt, total, t_transient, transient)
+    if isinstance(t_transient, Documented) and transient:
         transient = sample * steps_of("t_transient", t_transient, sample * dt)
     return total, transient, sample
 

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import partial
-from math import gcd
 
 import numpy as np
 
@@ -30,7 +29,7 @@ from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_frac
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
-                        start_state, steps_of, Documented)
+                        start_state, steps_of, inner_steps, Documented)
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends, batch_estimates
 
@@ -86,10 +85,8 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
     record = steps_of("record_every", record_every, dt)
     # a default reorth_every divides t_final (and a record_every that is written); a default
     # record_every is then the nearest multiple of reorth
-    documented_record = isinstance(record_every, Documented)
-    reorth = steps_of("reorth_every", reorth_every, dt,
-                      divides=total if documented_record else gcd(total, record))
-    if documented_record:
+    reorth = inner_steps("reorth_every", reorth_every, dt, total, record_every, record)
+    if isinstance(record_every, Documented):
         record = max(1, round(record / reorth)) * reorth
     project = project_steps(project_every, dt)
     if record % reorth:
