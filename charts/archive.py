@@ -12,13 +12,38 @@ The contract of a result type (a class with ``Archivable`` among its bases):
 ``save(path)`` and :func:`load` come with it.  A new result type adds its class to
 :data:`KINDS` — one line — so that ``charts.load`` returns it.
 
-Attributes: numbers and strings are stored as they are; anything else (dicts, lists, None,
-booleans) as JSON text prefixed ``json:`` — exact for floats (shortest round-trip repr) and
-integers, so settings come back equal.  For readers without this package every file also
-carries the CF global attributes (``Conventions``, ``title``, ``history``, ``source``,
-``references``) and the entries of its ``params``, ``options`` and ``drift`` as native
-attributes (``params_masses = [1.0, 2.0, 3.0]``, ``params_level = 0.0``, ...; a boolean as
-the integer 1 or 0, ``options_project = 0``; an entry that is None is left out).
+Attributes: the settings as NetCDF holds them natively, so that a reader without this
+package (``ncdump -h``, plain xarray) reads every number as a number; the same attributes
+are what `load` reads back, equal to the settings saved (an int stays an int, a list a list):
+
+* a number or a string: itself (``method = "rk4"``, ``min_sin2 = 0.93``);
+* a list of numbers all integers or all floats, or a list of strings: a 1-D array
+  (``params_masses = 1., 2., 3.``), its name listed in ``charts_lists`` (NetCDF reads a
+  list of one entry as that entry);
+* a boolean: the integer 1 or 0, its name listed in ``charts_booleans``;
+* None: no attribute, its name listed in ``charts_none``;
+* the dicts of `FLATTENED` (``params``, ``options``, ``drift``): one attribute per entry,
+  ``params_<key>`` (``params_t_final = 20.``), each written by these rules; an entry that
+  is itself a dict one level further, joined by ``.`` (``params_curvature.sample_every``);
+* anything else, which NetCDF has no native form for (an empty list or dict, a list of
+  lists or of mixed types, a dict with a key holding ``.`` or a space, a dict outside
+  `FLATTENED` such as a scene's ``result``, a string that itself starts with ``json:``):
+  JSON text prefixed ``json:`` — exact for floats (shortest round-trip repr) and integers.
+
+``charts_lists``, ``charts_booleans`` and ``charts_none`` are plain text, the names
+separated by spaces, present only when they name something.  A trajectory's file
+(``ncdump -h``)::
+
+    :method = "dop853" ;  :n_steps = 10 ;  :drift_energy = 1.04e-10 ;
+    :options_rtol = 1.e-10 ;  :options_project = 0 ;  :options_t_span = 0., 2. ;
+    :params_n = 3 ;  :params_masses = 1., 1., 1. ;  :params_theta0 = 0.786, 2.496, 1.479 ;
+    :charts_lists = "options_t_span params_masses params_weights params_theta0 params_u0" ;
+    :charts_booleans = "options_project" ;  :charts_none = "options_dt" ;
+
+Every file also carries the CF global attributes (``Conventions``, ``title``, ``history``,
+``source``, ``references``).  Files written before this encoding hold each settings dict
+also as one JSON text (``params = "json:{...}"``, its entries beside it with booleans as 1 or
+0 and no lists of names): where that text is present, `attributes` reads it.
 """
 from __future__ import annotations
 
@@ -33,7 +58,7 @@ import numpy as np
 from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
-           "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MEMBER", "member_settings",
+           "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
            "member_attributes", "index_coordinate", "same_value"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
@@ -78,17 +103,20 @@ def _json_default(o):
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")
 
 
-def _encode(v):
-    if isinstance(v, (str, int, float, np.integer, np.floating)) and not isinstance(v, (bool, np.bool_)):
-        return v
+def _json(v) -> str:
+    """v as JSON text prefixed ``json:`` (the form of a value NetCDF cannot hold natively)."""
     return _JSON + json.dumps(v, default=_json_default)
 
 
 def _decode(v):
+    """An attribute's value as Python: JSON text decoded, numpy numbers and arrays as Python
+    numbers and lists."""
     if isinstance(v, str) and v.startswith(_JSON):
         return json.loads(v[len(_JSON):])
     if isinstance(v, np.generic):
         return v.item()
+    if isinstance(v, np.ndarray):
+        return v.tolist()
     return v
 
 
@@ -109,28 +137,128 @@ TITLES = {
 }
 #: CF global attributes every file carries (not settings: `attributes` leaves them out).
 GLOBALS = ("Conventions", "title", "history", "source", "references", "institution")
-#: Settings dicts (and the trajectory's ``drift``) that are also written entry by entry as
-#: native NetCDF attributes (``params_masses = [1, 2, 3]``, ``drift_energy = 1e-13``), for
-#: readers without this package; the JSON copy stays the exact one that ``load`` reads.
+#: Settings dicts (and the trajectory's ``drift``) written entry by entry as native NetCDF
+#: attributes, ``params_masses = [1, 2, 3]``, ``drift_energy = 1e-13`` (module docstring).
 FLATTENED = ("params", "options", "drift")
+#: Plain-text attributes naming (space-separated) the attributes whose values NetCDF has no
+#: type for: lists (written as 1-D arrays), booleans (written 1 or 0), None (left out).
+LISTS, BOOLEANS, NONE = "charts_lists", "charts_booleans", "charts_none"
+MARKS = (LISTS, BOOLEANS, NONE)
+_INT64 = (-2 ** 63, 2 ** 63 - 1)
 REFERENCE = ("S. P. Kuznetsov, Chaos and hyperchaos of geodesic flows on curved manifolds "
              "corresponding to mechanically coupled rotators")
 
 
-def _native(v):
-    """v as a native NetCDF attribute value (a number, a string, a 1-D numeric array), or None;
-    a boolean as the integer 1 or 0 (NetCDF attributes have no booleans)."""
+def _kind(v):
+    """'i', 'f' or 's' for a value NetCDF holds natively as it is (an integer within int64, a
+    float, a string not starting ``json:``); None for any other (booleans included)."""
     if isinstance(v, (bool, np.bool_)):
-        return int(v)
-    if v is None:
         return None
-    if isinstance(v, (str, int, float, np.integer, np.floating)):
-        return v
-    if isinstance(v, (list, tuple, np.ndarray)):
-        a = np.asarray(v)
-        if a.ndim == 1 and a.size and a.dtype.kind in "if":
-            return a
+    if isinstance(v, (int, np.integer)):
+        return "i" if _INT64[0] <= v <= _INT64[1] else None
+    if isinstance(v, (float, np.floating)):
+        return "f"
+    if isinstance(v, str):
+        return None if v.startswith(_JSON) else "s"
     return None
+
+
+def _native_list(v):
+    """A list (tuple, 1-D array) of integers, of floats or of strings as a native attribute
+    value (an int64 or float64 array, a list of strings); None for any other value."""
+    if not isinstance(v, (list, tuple, np.ndarray)) or np.ndim(v) != 1 or not len(v):
+        return None
+    kinds = {_kind(x) for x in v}
+    if kinds == {"i"}:
+        return np.asarray(v, dtype=np.int64)
+    if kinds == {"f"}:
+        return np.asarray(v, dtype=np.float64)
+    if kinds == {"s"}:
+        return [str(x) for x in v]
+    return None
+
+
+def _by_entries(value) -> bool:
+    """Whether ``value`` is a dict written entry by entry: not empty, its keys strings that can
+    be parts of an attribute name (no ``.``, no spaces: names are joined by ``.`` and listed
+    space-separated)."""
+    return isinstance(value, dict) and bool(value) and all(
+        isinstance(k, str) and k and "." not in k and k.split() == [k] for k in value)
+
+
+def _flat(settings: dict, path: tuple = ()) -> dict:
+    """{path: value}: the entries of ``settings``, those of dicts (`_by_entries`) one level
+    down per level, so that no value is a dict that could be written entry by entry."""
+    out = {}
+    for key, value in settings.items():
+        if _by_entries(value):
+            out.update(_flat(value, path + (key,)))
+        else:
+            out[path + (key,)] = value
+    return out
+
+
+def _nest(flat: dict) -> dict:
+    """The inverse of `_flat`."""
+    out = {}
+    for path, value in flat.items():
+        node = out
+        for part in path[:-1]:
+            node = node.setdefault(part, {})
+        node[path[-1]] = value
+    return out
+
+
+def _put(out: dict, marks: dict, name: str, value) -> None:
+    """Write the setting ``value`` as the attribute ``name`` of ``out``, listing its name in
+    ``marks`` where the attribute alone does not say what it was (module docstring)."""
+    listable = name.split() == [name]
+    native = _native_list(value)
+    if _kind(value):
+        out[name] = value
+    elif isinstance(value, (bool, np.bool_)) and listable:
+        out[name] = int(value)
+        marks[BOOLEANS].append(name)
+    elif value is None and listable:
+        marks[NONE].append(name)
+    elif native is not None and listable:
+        out[name] = native
+        marks[LISTS].append(name)
+    else:
+        out[name] = _json(value)
+
+
+def encode(settings: dict) -> dict:
+    """The attributes that hold ``settings`` (name → value), `FLATTENED` dicts entry by
+    entry, with the lists of names `MARKS` (module docstring); `attributes` reads them back."""
+    out, marks = {}, {m: [] for m in MARKS}
+    for key, value in settings.items():
+        if key in FLATTENED and _by_entries(value):
+            for path, v in _flat(value).items():
+                _put(out, marks, f"{key}_{'.'.join(path)}", v)
+        else:
+            _put(out, marks, key, value)
+    out.update({m: " ".join(names) for m, names in marks.items() if names})
+    return out
+
+
+def _values(attrs) -> dict:
+    """Every attribute of ``attrs`` (the marks excepted) decoded by the marks, and the names
+    in ``charts_none`` as None."""
+    marks = {m: str(attrs.get(m, "")).split() for m in MARKS}
+    lists, booleans = set(marks[LISTS]), set(marks[BOOLEANS])
+    out = {}
+    for key, value in attrs.items():
+        if key in MARKS:
+            continue
+        if key in booleans:
+            out[key] = bool(value)
+        elif key in lists:
+            out[key] = np.atleast_1d(value).tolist()
+        else:
+            out[key] = _decode(value)
+    out.update(dict.fromkeys(marks[NONE]))
+    return out
 
 
 def _global_attributes(kind: str) -> dict:
@@ -156,8 +284,8 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
     global attributes (`GLOBALS`: conventions, title, history, source, references).
 
     ``data_vars`` and ``coords``: name → ``(dims, array, units)`` or
-    ``(dims, array, units, description)``; ``attrs``: settings (encoded as above; the entries
-    of the `FLATTENED` dicts also as native attributes ``params_<key>``)."""
+    ``(dims, array, units, description)``; ``attrs``: settings (name → value, written by
+    `encode`: the entries of the `FLATTENED` dicts as ``params_<key>``)."""
     xr = require_xarray()
     from .version import __version__
 
@@ -175,12 +303,7 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
             ds = ds.assign_coords({dim: xr.Variable((dim,), np.arange(size, dtype=np.int64),
                                                     {"units": "1", "long_name": f"{dim} index, from 0"})})
     ds.attrs.update(_global_attributes(kind))
-    ds.attrs.update({k: _encode(v) for k, v in (attrs or {}).items()})
-    for name in FLATTENED:
-        for key, value in ((attrs or {}).get(name) or {}).items():
-            native = _native(value)
-            if native is not None:
-                ds.attrs[f"{name}_{key}"] = native
+    ds.attrs.update(encode(attrs or {}))
     ds.attrs["charts_kind"] = kind
     ds.attrs["charts_version"] = __version__
     return ds
@@ -206,44 +329,30 @@ def _setting(key) -> bool:
 
 
 #: Prefix of the members' settings in a file of several results (an ensemble): a setting
-#: every member shares is one attribute ``member.params.n``; one that differs is a variable
-#: along ``member`` (``member.params.seed``), native where the values are numbers or strings,
-#: and a 2-D array where they are lists of numbers (``member.params.theta0`` over
+#: every member shares is one attribute ``member.params.n`` (written by `encode`'s rules:
+#: ``member.params.masses`` native and listed in ``charts_lists``, a nested dict's entries
+#: ``member.params.curvature.sample_every``); one that differs is a variable along
+#: ``member`` (``member.params.seed``), native where the values are numbers or strings, and
+#: a 2-D array where they are lists of numbers (``member.params.theta0`` over
 #: (member, rotor)).
 MEMBER = "member."
 
 
-def _flat(settings: dict) -> dict:
-    """{path: value}: the entries of dict-valued settings one level down."""
-    out = {}
-    for key, value in settings.items():
-        if isinstance(value, dict) and value:
-            for sub, v in value.items():
-                out[(key, sub)] = v
-        else:
-            out[(key,)] = value
-    return out
-
-
-def _scalar(v) -> bool:
-    return isinstance(v, (str, int, float, np.integer, np.floating)) and not isinstance(
-        v, (bool, np.bool_))
-
-
 def member_settings(settings: list) -> tuple[dict, dict]:
     """(attributes, data variables) that hold the members' decoded settings (a list of dicts,
-    one per member): the shared ones once, encoded as attributes are, the differing ones
-    along ``member`` (`MEMBER`)."""
+    one per member): the shared ones once, as settings for `dataset`'s ``attrs``
+    (``member.params.n`` → 4), the differing ones as data variables along ``member``
+    (`MEMBER`)."""
     flats = [_flat(a) for a in settings]
     paths = list(dict.fromkeys(p for f in flats for p in f))
     attrs, data = {}, {}
     for path in paths:
         name = MEMBER + ".".join(path)
         values = [f.get(path) for f in flats]
-        first = _encode(values[0])
-        if all(_encode(v) == first for v in values[1:]):
-            attrs[name] = _native_list(values[0]) if isinstance(values[0], list) else first
-        elif all(_scalar(v) for v in values) and len({type(v) for v in values}) == 1:
+        first = _json(values[0])
+        if all(_json(v) == first for v in values[1:]):
+            attrs[name] = values[0]
+        elif len({_kind(v) for v in values}) == 1 and _kind(values[0]):
             data[name] = (("member",), np.asarray(values), MEMBER_UNITS.get(path[-1], "1"),
                           f"each member's {'.'.join(path)}")
         elif _number_rows(values):
@@ -251,7 +360,7 @@ def member_settings(settings: list) -> tuple[dict, dict]:
                           np.asarray(values), MEMBER_UNITS.get(path[-1], "1"),
                           f"each member's {'.'.join(path)}")
         else:
-            data[name] = (("member",), np.asarray([_encode(v) for v in values], dtype=str), "1",
+            data[name] = (("member",), np.asarray([_json(v) for v in values], dtype=str), "1",
                           f"each member's {'.'.join(path)} (JSON after 'json:')")
     return attrs, data
 
@@ -275,40 +384,30 @@ def _number_rows(values) -> bool:
     return kinds == {float} or kinds == {int}
 
 
-def _native_list(v):
-    """A list of numbers of one type as a native 1-D attribute (`_native`; read back by
-    `member_attributes` as the same list), else its JSON encoding."""
-    kinds = {type(x) for x in v}
-    native = _native(v) if kinds == {int} or kinds == {float} else None
-    return _encode(v) if native is None else native
-
-
 def member_attributes(ds, i) -> dict:
-    """Member ``i``'s settings from a file written with `member_settings`, encoded as a
-    member's own file would hold them (``attributes`` decodes them)."""
-    flat = {}
-    for key, value in ds.attrs.items():
-        if key.startswith(MEMBER):
-            value = value.tolist() if isinstance(value, np.ndarray) else _decode(value)
-            flat[tuple(key[len(MEMBER):].split("."))] = value
+    """Member ``i``'s settings from a file written with `member_settings`, as a member's own
+    file holds them (`encode`; ``attributes`` decodes them)."""
+    flat = {tuple(k[len(MEMBER):].split(".")): v for k, v in _values(ds.attrs).items()
+            if k.startswith(MEMBER)}
     for key in ds.data_vars:
         if key.startswith(MEMBER):
             value = ds[key].values[i]
-            value = value.tolist() if ds[key].ndim == 2 else _decode(value)
-            flat[tuple(key[len(MEMBER):].split("."))] = value
-    nested = {}
-    for path, value in flat.items():
-        if len(path) == 1:
-            nested[path[0]] = value
-        else:
-            nested.setdefault(path[0], {})[path[1]] = value
-    return {k: _encode(v) for k, v in nested.items()}
+            flat[tuple(key[len(MEMBER):].split("."))] = _decode(value)
+    return encode(_nest(flat))
 
 
 def attributes(ds) -> dict:
-    """The dataset's settings, decoded (without the ``charts_*`` stamps, the CF globals and
-    the native copies of the `FLATTENED` dicts)."""
-    return {k: _decode(v) for k, v in ds.attrs.items() if _setting(k)}
+    """The dataset's settings as they were saved (the inverse of `encode`): the `FLATTENED`
+    dicts gathered from their entries (or, in a file written before, read from their JSON
+    text); without the ``charts_*`` stamps, the CF globals and the members' settings."""
+    values = _values(ds.attrs)
+    out = {k: v for k, v in values.items() if _setting(k)}
+    for name in FLATTENED:
+        entries = {tuple(k[len(name) + 1:].split(".")): v for k, v in values.items()
+                   if k.startswith(f"{name}_")}
+        if name not in out and entries:
+            out[name] = _nest(entries)
+    return out
 
 
 def save(ds, path) -> Path:

@@ -133,7 +133,7 @@ def test_datasets_have_named_dims_units_and_stamps(results):
     assert ds["exponents"].attrs["units"] == "1 / time"
     assert list(ds["spectrum_index"].values) == list(range(1, ds.sizes["spectrum_index"] + 1))
     assert "from 1" in ds["spectrum_index"].attrs["long_name"]          # as exponent
-    assert json.loads(ds.attrs["params"][5:])["t_final"] == 20.0
+    assert ds.attrs["params_t_final"] == 20.0 and "params" not in ds.attrs   # no JSON copy
 
 
 def test_scene_writes_netcdf_beside_result_json(tmp_path):
@@ -354,7 +354,10 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
 def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
     """No JSON inside JSON: the members' shared settings are one attribute each
     (``member.params.n``; lists of numbers native), the differing ones (the seed) a variable
-    along ``member``; loading gives every member its own settings back."""
+    along ``member``, a nested setting entry by entry (``member.params.curvature.route``);
+    loading gives every member its own settings back."""
+    import copy
+
     import xarray as xr
     ens = results["ensemble"]
     path = ens.save(tmp_path / "ensemble.nc")
@@ -363,9 +366,21 @@ def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
         assert int(ds.attrs["member.params.n"]) == ens.params["n"]
         assert np.array_equal(ds.attrs["member.params.masses"], ens.members[0].params["masses"])
         assert list(ds["member.params.seed"].values) == [m.params["seed"] for m in ens.members]
-        assert not any(isinstance(v, str) and v.startswith("json:[{") for v in ds.attrs.values())
+        assert not any(isinstance(v, str) and v.startswith("json:") for v in ds.attrs.values())
     back = load(path)
     assert [m.params for m in back.members] == [m.params for m in ens.members]
+    nested = copy.deepcopy(ens)             # a nested setting: its entries, native, one level down
+    for m, every in zip(nested.members, (0.1, 0.2)):
+        m.params["curvature"] = {"sample_every": every, "exact": True, "route": "both"}
+    with xr.open_dataset(nested.save(tmp_path / "nested.nc"), engine="h5netcdf") as ds:
+        assert ds["member.params.curvature.sample_every"].values.tolist() == [0.1, 0.2]
+        assert ds.attrs["member.params.curvature.route"] == "both"
+        assert ds.attrs["member.params.curvature.exact"] == 1
+        assert "member.params.curvature.exact" in ds.attrs["charts_booleans"].split()
+        assert not any(isinstance(v, str) and v.startswith("json:") for v in ds.attrs.values())
+    back = load(tmp_path / "nested.nc")
+    for m, mb in zip(nested.members, back.members):
+        _same(mb.params, m.params, "member params")
 
 
 @pytest.mark.parametrize("name", ["ensemble", "angle_ensemble"])
@@ -423,3 +438,134 @@ def test_load_refuses_a_folder_by_name(tmp_path):
     (tmp_path / "d.nc").mkdir()
     with pytest.raises(ValueError, match=r"d\.nc is not a regular file"):
         load(tmp_path / "d.nc")
+
+
+def _native_form(value) -> bool:
+    """Whether NetCDF holds a decoded setting natively (written here apart from the package):
+    a number, a string, a non-empty list of integers only, of floats only or of strings only;
+    a boolean or None (an integer, no attribute: their names are listed)."""
+    if value is None or isinstance(value, (bool, float)):
+        return True
+    if isinstance(value, int):
+        return -2 ** 63 <= value < 2 ** 63
+    if isinstance(value, str):
+        return not value.startswith("json:")
+    if isinstance(value, list) and value:
+        return any(all(type(x) is t for x in value) for t in (int, float, str))
+    return False                            # a dict, an empty list, ...
+
+
+def test_no_attribute_is_json_where_netcdf_has_a_native_form(results, tmp_path):
+    """Every result file (a linkage run's too) holds its settings as native attributes, the
+    settings dicts entry by entry with no JSON copy; ``json:`` text only for a value NetCDF
+    has no form for; and the file loads equal to the result."""
+    import xarray as xr
+    L = charts.LinkageSystem(0.1)
+    files = dict(results, linkage=charts.linkage_run(L, *L.random_state(seed=2), 2.0,
+                                                     t_transient=0.0, n_batches=2))
+    for name, res in files.items():
+        path = res.save(tmp_path / f"{name}.nc")
+        with xr.open_dataset(path, engine="h5netcdf") as ds:
+            assert not {"params", "options", "drift"} & set(ds.attrs), name
+            for key, value in ds.attrs.items():
+                if isinstance(value, str) and value.startswith("json:"):
+                    assert not _native_form(json.loads(value[5:])), (name, key, value)
+            assert any(k.startswith("params_") for k in ds.attrs), name
+        assert load(path) == res, name
+
+
+#: Settings of every kind a file must give back as they were: a boolean stays a boolean, an
+#: int an int, a list of one entry a list, None None; nested dicts (a member's curvature
+#: settings); and what NetCDF cannot hold natively (an empty list or dict, lists of lists or
+#: of mixed types, keys that cannot be parts of names, a string that looks like JSON, an
+#: integer beyond int64), which stays JSON.
+AWKWARD = dict(n=4, dt=0.01, seed=7, exact=True, project=False, project_every=None,
+               masses=[1.0], counts=[3], names=["theta"], label="θ₀ ≤ π", empty=[],
+               mixed=[1, "a", None], rows=[[1.0, 2.0]], dotted={"a.b": 1},
+               text="json:not json", huge=2 ** 70,
+               curvature={"sample_every": 0.1, "exact": False, "none": {},
+                          "route": {"numeric": True, "every": [2]}})
+
+
+def _tiny_lyapunov(params):
+    return charts.LyapunovResult(np.zeros(2), np.zeros(2), None, np.zeros(1), np.zeros((1, 2)),
+                                 np.zeros((2, 2)), params=params)
+
+
+def test_settings_of_every_type_come_back_with_their_types(tmp_path):
+    """Booleans, None, lists (of one entry too) and nested dicts are native attributes named
+    in ``charts_booleans``, ``charts_none`` and ``charts_lists``; what has no native form is
+    JSON; a result and an ensemble of such results load with every type as saved."""
+    import xarray as xr
+
+    from charts.analyses.ensemble import EnsembleResult
+    lyap = _tiny_lyapunov(AWKWARD)
+    with xr.open_dataset(lyap.save(tmp_path / "l.nc"), engine="h5netcdf") as ds:
+        a = ds.attrs
+        assert a["params_exact"] == 1 and a["params_curvature.sample_every"] == 0.1
+        assert a["params_curvature.route.every"] == 2 and "params_project_every" not in a
+        assert set(a["charts_booleans"].split()) == {"params_exact", "params_project",
+                                                     "params_curvature.exact",
+                                                     "params_curvature.route.numeric"}
+        assert a["charts_none"].split() == ["params_project_every"]
+        assert set(a["charts_lists"].split()) == {"params_masses", "params_counts", "params_names",
+                                                  "params_curvature.route.every"}
+        assert {k for k, v in a.items() if isinstance(v, str) and v.startswith("json:")} == {
+            "params_empty", "params_mixed", "params_rows", "params_dotted", "params_text",
+            "params_huge", "params_curvature.none"}
+    _same(load(tmp_path / "l.nc").params, AWKWARD, "params")
+    members = [_tiny_lyapunov({**AWKWARD, "seed": seed, "curvature": {
+        **AWKWARD["curvature"], "sample_every": every}}) for seed, every in ((1, 0.1), (2, 0.2))]
+    ens = EnsembleResult(members, params={"n": 4, "exact": True, "masses": [1.0]})
+    with xr.open_dataset(ens.save(tmp_path / "e.nc"), engine="h5netcdf") as ds:
+        assert ds["member.params.curvature.sample_every"].values.tolist() == [0.1, 0.2]
+        assert "member.params.curvature.route.numeric" in ds.attrs["charts_booleans"].split()
+        assert "member.params.counts" in ds.attrs["charts_lists"].split()
+        assert "member.params.project_every" in ds.attrs["charts_none"].split()
+    back = load(tmp_path / "e.nc")
+    _same(back.params, ens.params, "params")
+    for m, mb in zip(members, back.members):
+        _same(mb.params, m.params, "member params")
+
+
+def _as_written_before(ds):
+    """``ds`` (read from a file) as the code before the native settings wrote it: each
+    settings dict also as one JSON text, the copy that load read, beside its entries
+    (booleans 1 or 0, None left out, no lists of names); other values that are not numbers
+    or strings, and the members' shared booleans, None and lists of strings, as JSON."""
+    from charts.archive import MARKS, attributes
+    old = ds.copy()
+    marks = {m: str(ds.attrs.get(m, "")).split() for m in MARKS}
+    old.attrs = {k: v for k, v in ds.attrs.items() if k not in MARKS}
+    for key, value in attributes(ds).items():
+        if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+            old.attrs[key] = "json:" + json.dumps(value)
+    for key in marks["charts_booleans"] + marks["charts_none"] + marks["charts_lists"]:
+        if key.startswith("member."):
+            value = (None if key in marks["charts_none"] else bool(ds.attrs[key])
+                     if key in marks["charts_booleans"] else np.atleast_1d(ds.attrs[key]).tolist())
+            if not isinstance(value, list) or isinstance(value[0], str):
+                old.attrs[key] = "json:" + json.dumps(value)
+    return old
+
+
+def test_files_with_the_json_copy_of_the_settings_still_load(results, tmp_path):
+    """A file written before the native attributes became the copy that load reads (each
+    settings dict also as JSON text, booleans among its entries as 1 or 0) loads equal."""
+    import xarray as xr
+
+    from charts.archive import save
+    for name, res in results.items():
+        ds = xr.load_dataset(res.save(tmp_path / f"{name}.nc"), engine="h5netcdf")
+        old = _as_written_before(ds)
+        assert old.attrs["params"].startswith("json:{"), name
+        assert not any(k.startswith("charts_") and k != "charts_kind" and k != "charts_version"
+                       for k in old.attrs), name
+        back = load(save(old, tmp_path / f"old_{name}.nc"))
+        assert back == res, name
+        for field in ("params", "options", "drift"):       # types too: a boolean stays one
+            if hasattr(res, field):
+                _same(getattr(back, field), getattr(res, field), f"{name}.{field}")
+        for i, (m, mb) in enumerate(zip(getattr(res, "members", []), back.members if
+                                        hasattr(res, "members") else [])):
+            _same(mb.params, m.params, f"{name} member {i}")

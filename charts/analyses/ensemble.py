@@ -95,10 +95,8 @@ class EnsembleResult(SpectrumQuantities, Archivable):
                                          "exponents (std)")
         shared, varying = member_settings([attributes(p) for p in parts])
         data.update(varying)
-        ds = dataset(self.KIND, data, coords=coords,
-                     attrs={"params": self.params, "member_kind": kinds.pop()})
-        ds.attrs.update(shared)
-        return ds
+        return dataset(self.KIND, data, coords=coords,
+                       attrs={"params": self.params, "member_kind": kinds.pop(), **shared})
 
     @classmethod
     def from_xarray(cls, ds):
