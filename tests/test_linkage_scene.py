@@ -69,9 +69,8 @@ def test_linkage_scene_equals_the_api_bit_for_bit(tmp_path):
 def test_linkage_scene_that_only_sets_dt_is_the_api_call(tmp_path, dt):
     """At dt = 0.04 and 0.03, where the documented 0.1 and 1.0 are no whole number of steps,
     a linkage scene that writes dt and the times only and the API calls that leave the same
-    defaults take the same steps (reorth_every, the samples, project_every 1.0 / 0.99) and
-    give the same numbers bit for bit.  (The scene's curvature samples are those of
-    curvature_along_trajectory's sample_every 0.1, given to linkage_run as written.)"""
+    defaults take the same steps (reorth_every, the curvature samples of linkage_run's
+    sample_every, project_every 1.0 / 0.99) and give the same numbers bit for bit."""
     sc = parse_scene({"system": {"kind": "linkage", "eps": EPS}, "integrator": {"dt": dt},
                       "run": {"t_final": 6.0, "t_transient": 1.2},
                       "effects": {"lyapunov": {"n_batches": 4}, "curvature": {}, "angles": {}}})
@@ -81,9 +80,9 @@ def test_linkage_scene_that_only_sets_dt_is_the_api_call(tmp_path, dt):
         K, phi, t_phi = a["curvature_exact"], a["angles_restricted"], a["angles_t"]
     L = charts.LinkageSystem(EPS)
     q, v = L.random_state(seed=0)
-    api = charts.linkage_run(L, q, v, 6.0, dt=dt, t_transient=1.2, n_batches=4,
-                             sample_every=sc.effects["curvature"]["sample_every"])
+    api = charts.linkage_run(L, q, v, 6.0, dt=dt, t_transient=1.2, n_batches=4)
     assert api.params["reorth_every"] == sc.effects["lyapunov"]["reorth_every"]
+    assert api.params["sample_every"] == sc.effects["curvature"]["sample_every"]
     assert res["results"]["lyapunov"]["exponents"] == api.exponents.tolist()
     assert res["results"]["lyapunov"]["stderr"] == api.stderr.tolist()
     assert np.array_equal(K, api.K)

@@ -210,6 +210,9 @@ def test_reference_page_gives_the_schemas_defaults():
             assert cell.startswith(fmt(key.value)), (line, fmt(key.value))
             if isinstance(key.default, FromAPI):
                 assert f"`{API[key.default.effect].split(':')[1]}`" in cell, line
+            if key.linkage is not None:         # a linkage scene's own default, and its call
+                assert (f"linkage: {fmt(key.linkage.value)} "
+                        f"(`{API[key.linkage.effect].split(':')[1]}`)") in cell, line
         seen += 1
     assert seen == sum(len(t) for t in SCHEMA.values()) + sum(len(t) for t in EFFECTS.values())
 

@@ -48,12 +48,34 @@ def test_schema_defaults_are_the_apis(where):
         assert k.value == default(fn, name), (where, fn.__name__)
 
 
+#: (section, key) of a linkage scene whose default is another call's than a rotor scene's.
+LINKAGE_FORWARDED = {("effects.curvature", "sample_every"): (linkage_run, "sample_every")}
+
+
+@pytest.mark.parametrize("where", sorted(LINKAGE_FORWARDED))
+def test_a_linkage_scenes_defaults_are_its_apis(where):
+    """Read from linkage_run's signature, not copied; a linkage scene that leaves the key
+    out gets it (at the default dt as written there), a rotor scene the rotors' call's."""
+    k = _key(*where)
+    fn, name = LINKAGE_FORWARDED[where]
+    assert isinstance(k.linkage, FromAPI) and k.linkage.value == default(fn, name)
+    section, effect = where[0].split(".")
+    sc = parse_scene({"system": {"kind": "linkage", "eps": 0.05}, "run": {"t_final": 10.0},
+                      "effects": {effect: {}}})
+    assert sc.effects[effect][where[1]] == default(fn, name)
+    assert _resolved({effect: {}}).effects[effect][where[1]] == k.value != k.linkage.value
+    written = parse_scene({"system": {"kind": "linkage", "eps": 0.05}, "run": {"t_final": 10.0},
+                           "effects": {effect: {where[1]: 0.5}}})
+    assert written.effects[effect][where[1]] == 0.5
+
+
 def test_every_api_default_in_the_schema_resolves():
     for table in list(SCHEMA.values()) + list(EFFECTS.values()):
         for k in table.values():
-            if isinstance(k.default, FromAPI):
-                fn = API[k.default.effect].split(":")[1]
-                assert fn in str(k.default) and k.value is not inspect.Parameter.empty
+            for d in (k.default, k.linkage):
+                if isinstance(d, FromAPI):
+                    fn = API[d.effect].split(":")[1]
+                    assert fn in str(d) and d.value is not inspect.Parameter.empty
 
 
 def _resolved(effects, **run):

@@ -34,7 +34,7 @@ from .lyapunov import exponents_from_marks
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends
 
-__all__ = ["LinkageResult", "linkage_run", "linkage_ensemble", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
+__all__ = ["LinkageResult", "linkage_run", "run_steps", "linkage_ensemble", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
 
 #: The 14 components of the linkage's state (q, v): the rotors' angles, the disk's centre and
 #: angle, then their velocities, with their units.
@@ -180,6 +180,22 @@ def _frame(system, row, k):
 
 
 @announces_compilation
+def run_steps(dt, t_final, reorth_every, sample_every):
+    """(t_final, reorth_every, sample_every) of `linkage_run` in steps dt: a written time a
+    whole number of steps or ValueError; a `Documented` default placed as the signature's
+    docstring says — as lyapunov_spectrum's record_every: a default reorth_every divides
+    t_final (and a sample_every that is written); a default sample_every is then the nearest
+    multiple of reorth_every that divides t_final.  A linkage scene places its defaults
+    with it (``charts.runs.scene``)."""
+    total = steps_of("t_final", t_final, dt)
+    sample = steps_of("sample_every", sample_every, dt)
+    reorth = inner_steps("reorth_every", reorth_every, dt, total, sample_every, sample)
+    if isinstance(sample_every, Documented):
+        sample = reorth * steps_of("sample_every", sample_every, reorth * dt,
+                                   divides=total // reorth)
+    return total, reorth, sample
+
+
 def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
                 t_transient=Documented(50.0), n_batches=20, reorth_every=Documented(0.1),
                 project_every=Documented(1.0), sample_every=Documented(1.0), curvature=True,
@@ -206,15 +222,7 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     k = positive_int("n_exponents", n_exponents)
     if k > system.dim:
         raise ValueError(f"n_exponents={k} is out of range 1..{system.dim}")
-    total = steps_of("t_final", t_final, dt)
-    # as lyapunov_spectrum's record_every: a default reorth_every divides t_final (and a
-    # sample_every that is written); a default sample_every is then the nearest multiple of
-    # reorth that divides t_final
-    sample = steps_of("sample_every", sample_every, dt)
-    reorth = inner_steps("reorth_every", reorth_every, dt, total, sample_every, sample)
-    if isinstance(sample_every, Documented):
-        sample = reorth * steps_of("sample_every", sample_every, reorth * dt,
-                                   divides=total // reorth)
+    total, reorth, sample = run_steps(dt, t_final, reorth_every, sample_every)
     if total % reorth or sample % reorth:
         raise ValueError(f"t_final={t_final:g} and sample_every={sample_every:g} must be "
                          f"multiples of reorth_every={reorth_every:g}")

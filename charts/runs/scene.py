@@ -31,7 +31,7 @@ from ..geometry.checks import shown
 from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
                            where)
 from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
-                            system_kind_problems)
+                            linkage_defaults, system_kind_problems)
 from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError, api_default
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
@@ -110,6 +110,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     linkage = system["kind"] == "linkage"
     if linkage:                       # the exact linkage of the Appendix (docs/linkage.md)
         check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_int)
+        linkage_defaults(effects, raw_eff)
     else:
         _check_rotors(source, system, raw_sys, initial, raw_init)
     n = system["n"]
@@ -181,9 +182,24 @@ def _follow_dt(linkage, run, integ, effects, dt):
     (``charts.analyses.arguments.steps_of``): the nearest whole number of steps, dividing
     t_final where it must — so that a scene that only sets dt runs where the API call does,
     with the same steps.  A value the scene writes is left as written (checked strictly
-    below).  A linkage's angle pass places its defaults as `linkage_angles` does (its
-    t_transient a multiple of its sample_every: `angle_steps`)."""
+    below).  A linkage places its defaults as its calls do: reorth_every and the curvature's
+    sample_every as `linkage_run` (`run_steps`: the samples a multiple of reorth_every, with
+    linkage_run's reorth_every where the scene has no Lyapunov effect), the angle pass as
+    `linkage_angles` (its t_transient a multiple of its sample_every: `angle_steps`)."""
     total = int(round(run["t_final"] / dt)) if run["t_final"] else 0   # checked below
+    if linkage and ("lyapunov" in effects or "curvature" in effects):
+        from ..analyses.linkage import run_steps
+        ly, c = effects.get("lyapunov", {}), effects.get("curvature", {})
+        try:
+            _, reorth, sample = run_steps(
+                dt, run["t_final"], ly.get("reorth_every", api_default("linkage", "reorth_every")),
+                c.get("sample_every", api_default("linkage", "sample_every")))
+        except ValueError:
+            pass                        # a written value off the grid: refused below, by key
+        else:
+            for table, key, steps in ((ly, "reorth_every", reorth), (c, "sample_every", sample)):
+                if isinstance(table.get(key), Documented):
+                    table[key] = steps * dt
     if linkage and "angles" in effects:
         from ..analyses.linkage_angles import angle_steps
         a = effects["angles"]

@@ -21,7 +21,8 @@ from .scene_checks import where
 from .scene_schema import SceneError
 
 __all__ = ["LINKAGE_KEYS", "ROTOR_KEYS", "is_linkage", "system_kind_problems",
-           "check_linkage_system", "check_linkage_effects", "LINKAGE_EFFECTS"]
+           "check_linkage_system", "check_linkage_effects", "linkage_defaults",
+           "LINKAGE_EFFECTS"]
 
 #: [system] keys of the linkage only / of the rotors only.
 LINKAGE_KEYS = ("eps", "rho", "disk_mass", "disk_inertia")
@@ -82,6 +83,19 @@ def check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_
                              f"allowed with kind = 'linkage': the linkage is integrated by "
                              f"multipliers in its 7 coordinates with fixed-step RK4 "
                              f"({key} = {shown(only)}; docs/linkage.md)")
+
+
+def linkage_defaults(effects, raw_eff) -> None:
+    """Fill the keys a linkage scene leaves out whose default is another call's than a rotor
+    scene's (the schema's ``Key.linkage``: curvature's ``sample_every`` is `linkage_run`'s),
+    before the defaults are placed on the grid of dt."""
+    from .scene_schema import EFFECTS
+
+    for name, table in effects.items():
+        written = raw_eff.get(name) if isinstance(raw_eff.get(name), dict) else {}
+        for key, spec in EFFECTS[name].items():
+            if spec.linkage is not None and key not in written:
+                table[key] = spec.linkage.value
 
 
 def check_linkage_effects(source, run, effects, raw_eff) -> None:

@@ -4,7 +4,8 @@ help text that ``docs/scenes.md`` documents (the tests check the page against it
 A key that a scene forwards to an API call takes that call's default (:class:`FromAPI`: read
 from the function's signature, never copied here), so a scene that leaves it out and the API
 call that leaves it out compute the same numbers.  :data:`API` names the call each effect
-mirrors."""
+mirrors; where a linkage scene's call has another default (curvature's ``sample_every`` is
+``linkage_run``'s), the key names it too (``Key.linkage``)."""
 from __future__ import annotations
 
 import importlib
@@ -73,6 +74,7 @@ class Key:
     choices: tuple = ()
     check: Callable[[Any], str | None] | None = None
     required: bool = False
+    linkage: FromAPI | None = None  # a linkage scene's default where its call's differs
 
     @property
     def value(self):
@@ -220,7 +222,8 @@ EFFECTS: dict[str, dict[str, Key]] = {
                             "Lyapunov vector) to record (default N−2, at most N−2).",
                             check=_ge(1)),
         "sample_every": Key("float", FromAPI("curvature", "sample_every"), "Simulated time between curvature samples; a "
-                            "multiple of dt.", check=_gt(0)),
+                            "multiple of dt.", check=_gt(0),
+                            linkage=FromAPI("linkage", "sample_every")),
     },
     "angles": {
         "variant": Key("str", "both", "\"full\": the paper's 2N-dimensional tangent space; "
