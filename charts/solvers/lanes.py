@@ -40,7 +40,8 @@ from ..geometry.projection import project_state, project_tangent_lanes
 from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
-from .tangent import countdowns, orthonormalize_lanes, shift_sincos_lanes, substeps
+from .driver import countdowns
+from .tangent import orthonormalize_lanes, shift_sincos_lanes, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows"]
 

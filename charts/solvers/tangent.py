@@ -21,6 +21,7 @@ bit-identical numbers.  That makes a scene, resumed or not, equal to the API cal
 from __future__ import annotations
 
 import os
+from collections import namedtuple
 from math import cos, gcd, isfinite, sin
 
 import numpy as np
@@ -31,6 +32,7 @@ from ..geometry.energy_shares import record_share
 from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
 from ..geometry.projection import project_state_into, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
+from .driver import Phases, borrowed, phased_loop
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
                      fixed_step_status, next_substep, singular_floor, substep_count,
@@ -39,8 +41,9 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
            "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
-           "tangent_vectors_rate", "reorth_steps", "substeps", "countdowns", "REORTH_TIME", "largest_divisor", "check_memory",
-           "memory_budget", "stacked_bytes"]
+           "tangent_vectors_rate", "reorth_steps", "substeps", "REORTH_TIME", "largest_divisor", "check_memory",
+           "memory_budget", "stacked_bytes", "RotorStack", "stacked_step", "stacked_project",
+           "stacked_reorth", "stacked_log_event", "stacked_record"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -206,19 +209,6 @@ def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, 
     return True
 
 
-@njit(cache=True, inline="always")
-def countdowns(i0, project_every, reorth_every, events):
-    """(steps to the next projection (−1: never), to the next re-orthonormalisation, index
-    of the next event) after global step i0: the phases follow the global step counter, so
-    they do not depend on how the steps are chunked."""
-    to_proj = project_every - i0 % project_every if project_every > 0 else -1
-    to_reorth = reorth_every - i0 % reorth_every
-    ev = 0
-    while ev < events.size and events[ev] <= i0:
-        ev += 1
-    return to_proj, to_reorth, ev
-
-
 @njit(cache=True)
 def stacked_work(R, d):
     """The work arrays of `stacked_loop` for R rows of d = 2N."""
@@ -228,15 +218,122 @@ def stacked_work(R, d):
     return (np.empty(L), np.empty(4 * L), np.empty(n), np.empty(n), s, c, f, g, p, q)
 
 
+#: The named state of a stacked flow of the rotors in the time loop (`stacked_loop`): the
+#: flat Z = [y; X] and its views, the weighted sin/cos s0, c0 of y's angles, the system, the
+#: step, the inner product's weights, the sums and records, the work arrays of the step
+#: (`stacked_work`), and the sizes (N, rows, row length, length of Z; unsigned, see `stacked_rk4_step`).
+RotorStack = namedtuple("RotorStack", [
+    "Zf", "y", "X", "s0", "c0", "minv", "m", "wts", "level", "speed", "dt", "w", "restricted",
+    "logsum", "states", "event_logs", "shares", "work", "n", "R", "nu", "Ru", "du", "Lu", "nz",
+    "nsc"])
+
+
+@njit(cache=True, inline="always")
+def stacked_step(fl, vectors_rate):
+    """One step dt of the stacked flow ``fl`` (`RotorStack`) by `stacked_rk4_step` with the
+    vectors hook ``vectors_rate``, following the policy of ``charts.solvers.status`` (for
+    |dt|): a step longer than the cap near a singular point is cut into sub-steps
+    (`next_substep`: equal ones as planned from the cap at the step's start, each within its
+    own cap once the point comes closer), each from a point that passes the singular-point
+    test (`singular_floor`).  Returns RUNNING, or SINGULAR / NONFINITE with the state at the
+    start of the failing step (SINGULAR inside a cut step: where its sub-steps reached the
+    singular point).  One inlined step in a loop: no second copy of it to compile (a
+    separately compiled sub-step function cost every first call 3.7 s of compiling, the
+    backward pass's another 3.8 s), and no slower (measured; the largest weight computed
+    once before the loop instead made the whole kernel 2× slower, docs/performance.md)."""
+    n = fl.n
+    s0 = fl.s0
+    c0 = fl.c0
+    Zf = fl.Zf
+    dt = fl.dt
+    Zt, K, th, dl, s, c, f, g, p, q = fl.work
+    adt = abs(dt)
+    code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), adt, _CAP)
+    if code != RUNNING:
+        return code
+    nsub = 1 if hc >= adt else MAX_SUBSTEPS
+    h = dt
+    planned = 0
+    hp = adt
+    left = adt
+    adaptive = np.bool_(False)      # not the literal: next_substep compiled once
+    if nsub > 1:
+        planned = substep_count(adt, hc)
+        h = dt / planned
+        hp = abs(h)
+    for sub in range(nsub):
+        if nsub > 1:
+            S = sum_squares(s0, 0, n)
+            if S < singular_floor(c0, fl.wts, n, fl.level):
+                return SINGULAR
+            hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
+            if adaptive:
+                h = hs if dt > 0.0 else -hs
+        stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, fl.minv, fl.wts, h, fl.nu,
+                         fl.Ru, fl.du, fl.Lu, vectors_rate)
+        left -= abs(h)
+        if nsub > 1 and (left <= 0.0 if adaptive else sub + 1 == planned):
+            break
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def stacked_project(fl):
+    """The state y of ``fl`` onto the invariants (`project_state_into`), its sin/cos anew."""
+    work = fl.work
+    project_state_into(fl.y, fl.m, fl.wts, fl.level, fl.speed, work[4], work[6])  # s, f
+    sincos(fl.Zf, 0, fl.n, fl.wts, fl.s0, fl.c0)
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def stacked_reorth(fl):
+    """The vectors X of ``fl`` onto T_r (if restricted) and re-orthonormalised (eq 18, logs
+    added to its sums; NONFINITE where they overflow); the largest kinetic-energy share into
+    its histogram."""
+    if fl.R > 1:
+        if fl.restricted:
+            project_tangent_sc(fl.y, fl.X, fl.minv, fl.s0, fl.c0)
+        orthonormalize(fl.X, fl.w, fl.logsum)
+        if not isfinite(fl.logsum[fl.R - 2]):
+            return NONFINITE
+    record_share(fl.Zf, fl.n, fl.m, fl.shares)
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def stacked_log_event(fl, ev):
+    """The log-norm sums of ``fl`` into its event logs, row ``ev``."""
+    for r in range(fl.R - 1):
+        fl.event_logs[ev, r] = fl.logsum[r]
+
+
+@njit(cache=True, inline="always")
+def stacked_record(fl, row):
+    """Z's first nz entries, then (where asked) the weighted sines and cosines, into the
+    record row ``row`` of ``fl`` (if the records have that row)."""
+    states = fl.states
+    if row < states.shape[0]:
+        Zf = fl.Zf
+        nz = fl.nz
+        n = fl.n
+        for j in range(nz):
+            states[row, j] = Zf[j]
+        for j in range(fl.nsc):
+            states[row, nz + j] = fl.s0[j]
+            states[row, nz + n + j] = fl.c0[j]
+
+
 @njit(cache=True, inline="always")
 def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
                  restricted, project_every, logsum, rec_start, rec_every, states, events,
                  event_logs, shares, vectors_rate, work):
-    """The time loop of every stacked flow: advance Z = [y; X], shape (1 + k, 2N), by
-    ``nsteps`` RK4 steps of eq (8) and of the vectors' linear flow ``vectors_rate`` (the hook
-    of `stacked_rk4_step`: eq (17) in `tangent_kernel`, the adjoint flow in the backward pass
-    of ``charts.analyses.adjoint_pass``) on the constraint Σ wtsᵢ cos θᵢ = level; dt < 0
-    steps backward in time.
+    """Every stacked flow of the rotors in the one time loop (``charts.solvers.driver``):
+    advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eq (8) and of the
+    vectors' linear flow ``vectors_rate`` (the hook of `stacked_rk4_step`: eq (17) in
+    `tangent_kernel`, the adjoint flow in the backward pass of
+    ``charts.analyses.adjoint_pass``) on the constraint Σ wtsᵢ cos θᵢ = level; dt < 0 steps
+    backward in time.
 
     ``sc`` (2, N): a sin θ, a cos θ of y's angles (a = wts), kept current; ``counter`` (1,):
     global step count.  After global step i: project y onto the invariants (`project_state`)
@@ -248,16 +345,12 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     row = (i − rec_start) // rec_every (if ``states`` has that row); when i = events[e] (a
     sorted array of global steps), store ``logsum`` in ``event_logs[e]``; at every
     re-orthonormalisation step add the largest kinetic-energy share to the histogram
-    ``shares`` (``charts.geometry.energy_shares``; size 0: none).
+    ``shares`` (``charts.geometry.energy_shares``; size 0: none).  Each step follows the
+    policy near singular points (`stacked_step`).  Returns (status, steps done): RUNNING, or
+    SINGULAR / NONFINITE with Z at the start of the failing step.
 
-    Steps follow the policy of ``charts.solvers.status`` (for |dt|): a step longer than the
-    cap near a singular point is cut into sub-steps (`next_substep`).
-    Returns (status, steps done): RUNNING, or SINGULAR / NONFINITE with Z at the start of the
-    failing step (SINGULAR inside a cut step: Z where its sub-steps reached the singular
-    point).
-
-    The time loop is one function on purpose: the equations are inlined, and an array-valued
-    call or view inside the loop would cost reference-count updates per step (see
+    The loop and its hooks are inlined into one function on purpose: an array-valued call or
+    view inside the loop would cost reference-count updates per step (see
     docs/performance.md).  Per stage, sin/cos come from the start of the step shifted by
     `shift_sincos`: one libm sin/cos pair per angle per projection, not four per step.
 
@@ -267,93 +360,22 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     (``charts.solvers.device``).  (A tuple: a call of more than 30 arguments compiles to a
     call with ``*args``, which Numba cannot inline.)
     """
-    Zt, K, th, dl, s, c, f, g, p, q = work
     R, d = Z.shape
     n = d // 2
     L = R * d
-    nu, Ru, du, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L)  # see _rk4_step
-    Zf = Z.reshape(L)
-    y_ = Z[0]
-    X_ = Z[1:]
-    s0 = sc[0]
-    c0 = sc[1]
     nrec = states.shape[1]
     nz = nrec if nrec < L else L        # the record: Z's first nz entries, then where
     nsc = n if nrec > L else 0          # asked s0 and c0 (nsc each)
-    # countdowns to the next projection / re-orthonormalisation / record, from the global
-    # step counter (so that the phases do not depend on how the steps are chunked)
-    i0 = counter[0]
-    to_proj, to_reorth, ev = countdowns(i0, project_every, reorth_every, events)
-    to_rec = -1
-    if rec_every > 0:
-        to_rec = rec_start - i0 if i0 < rec_start else rec_every - (i0 - rec_start) % rec_every
-    adt = abs(dt)
-    for it in range(nsteps):
-        code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), adt, _CAP)
-        if code != RUNNING:
-            return code, it
-        # near a singular point: sub-steps (`next_substep`: equal ones as planned from the cap
-        # at the step's start, each within its own cap once the point comes closer), each
-        # from a point that passes the singular-point test (`singular_floor`: the policy,
-        # charts.solvers.status); else one step.  One inlined step in a loop: no second copy
-        # of it to compile (a separately compiled sub-step function cost every first call
-        # 3.7 s of compiling, the backward pass's another 3.8 s), and no slower (measured;
-        # the largest weight computed once before the loop instead made the whole kernel
-        # 2× slower, docs/performance.md)
-        nsub = 1 if hc >= adt else MAX_SUBSTEPS
-        h = dt
-        planned = 0
-        hp = adt
-        left = adt
-        adaptive = np.bool_(False)  # not the literal: next_substep compiled once
-        if nsub > 1:
-            planned = substep_count(adt, hc)
-            h = dt / planned
-            hp = abs(h)
-        for sub in range(nsub):
-            if nsub > 1:
-                S = sum_squares(s0, 0, n)
-                if S < singular_floor(c0, wts, n, level):
-                    return SINGULAR, it
-                hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
-                if adaptive:
-                    h = hs if dt > 0.0 else -hs
-            stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru, du,
-                             Lu, vectors_rate)
-            left -= abs(h)
-            if nsub > 1 and (left <= 0.0 if adaptive else sub + 1 == planned):
-                break
-        counter[0] += 1
-        to_proj -= 1
-        if to_proj == 0:
-            to_proj = project_every
-            project_state_into(y_, m, wts, level, speed, s, f)
-            sincos(Zf, 0, n, wts, s0, c0)
-        to_reorth -= 1
-        if to_reorth == 0:
-            to_reorth = reorth_every
-            if R > 1:
-                if restricted:
-                    project_tangent_sc(y_, X_, minv, s0, c0)
-                orthonormalize(X_, w, logsum)
-                if not isfinite(logsum[R - 2]):
-                    return NONFINITE, it + 1
-            record_share(Zf, n, m, shares)
-        if ev < events.size and counter[0] == events[ev]:
-            for r in range(R - 1):
-                event_logs[ev, r] = logsum[r]
-            ev += 1
-        to_rec -= 1
-        if to_rec == 0:
-            to_rec = rec_every
-            row = (counter[0] - rec_start) // rec_every
-            if row < states.shape[0]:
-                for j in range(nz):
-                    states[row, j] = Zf[j]
-                for j in range(nsc):          # then s0, c0 where asked
-                    states[row, nz + j] = s0[j]
-                    states[row, nz + n + j] = c0[j]
-    return RUNNING, nsteps
+    Zt, K, th, dl, s, c, f, g, p, q = work
+    b = borrowed
+    fl = RotorStack(b(Z.reshape(L)), b(Z[0]), b(Z[1:]), b(sc[0]), b(sc[1]), b(minv), b(m), b(wts),
+                    level, speed, dt, b(w), restricted, b(logsum), b(states), b(event_logs),
+                    b(shares), (b(Zt), b(K), b(th), b(dl), b(s), b(c), b(f), b(g), b(p), b(q)), n,
+                    R, np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L), nz, nsc)
+    return phased_loop(fl, nsteps, counter,
+                       Phases(project_every, reorth_every, rec_start, rec_every), events,
+                       stacked_step, vectors_rate, stacked_project, stacked_reorth,
+                       stacked_log_event, stacked_record)
 
 
 @njit(cache=True)
