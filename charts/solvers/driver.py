@@ -27,13 +27,14 @@ from __future__ import annotations
 
 from collections import namedtuple
 
-from numba import njit
+from numba import njit, types
 from numba.core import cgutils
 from numba.extending import intrinsic
 
 from .status import RUNNING
 
-__all__ = ["phased_loop", "Phases", "countdowns", "no_record", "borrowed"]
+__all__ = ["phased_loop", "Phases", "countdowns", "no_record", "borrowed", "keep_alive",
+           "log_sums"]
 
 
 @intrinsic
@@ -41,8 +42,9 @@ def borrowed(typingctx, a):
     """A view of the array ``a`` that holds no reference to its memory (no meminfo): reading
     it from a named state costs no reference count (an atomic increment and decrement per
     read: where the code branches, Numba's pruning leaves them in the loop).  Valid while
-    ``a`` lives: only for the named state of a loop, built by the kernel that owns the
-    arrays."""
+    ``a`` lives: Numba frees an array right after the last use of its variable, so the
+    function that builds a named state of borrowed views of arrays it allocated itself
+    passes them to `keep_alive` after the loop."""
     def codegen(context, builder, sig, args):
         src = context.make_array(a)(context, builder, value=args[0])
         out = context.make_array(a)(context, builder)
@@ -55,6 +57,15 @@ def borrowed(typingctx, a):
         out.strides = src.strides
         return out._getvalue()
     return a(a), codegen
+
+
+@intrinsic
+def keep_alive(typingctx, owners):
+    """A use of ``owners`` (an array or a tuple of them) that compiles to nothing: placed
+    after a loop over `borrowed` views, it keeps their memory allocated until then."""
+    def codegen(context, builder, sig, args):
+        return context.get_dummy_value()
+    return types.none(owners), codegen
 
 #: Steps between projections of the state (0: never) and between re-orthonormalisations;
 #: the first recorded global step and the steps between records (0: no records).
@@ -72,6 +83,16 @@ def countdowns(i0, project_every, reorth_every, events):
     while ev < events.size and events[ev] <= i0:
         ev += 1
     return to_proj, to_reorth, ev
+
+
+@njit(cache=True, inline="always")
+def log_sums(flow, e):
+    """The log-event hook of a flow whose vectors keep log-norm sums: ``flow.logsum`` into
+    row e of ``flow.event_logs``."""
+    logsum = flow.logsum
+    event_logs = flow.event_logs
+    for r in range(logsum.size):
+        event_logs[e, r] = logsum[r]
 
 
 @njit(cache=True, inline="always")

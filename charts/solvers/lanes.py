@@ -27,6 +27,7 @@ arithmetic never mixes with its: a NaN stays in its lane).
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from math import isfinite, log
 
 import numpy as np
@@ -40,7 +41,7 @@ from ..geometry.projection import project_state, project_tangent_lanes
 from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
-from .driver import countdowns
+from .driver import Phases, borrowed, keep_alive, no_record, phased_loop
 from .tangent import orthonormalize_lanes, shift_sincos_lanes, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows"]
@@ -132,114 +133,186 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
     return running
 
 
-@njit(cache=True, pipeline_class=LanesCompiler)
-def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
-               nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
-               shares, work, n_tag, k_tag):
-    """The time loop of `lanes_kernel` on the flat lanes Zf, s0, c0 (element i of lane l at
-    i·Lp + l, Lp a multiple of `LANE_WIDTH`; lanes ≥ L = status.size are padding, copied
-    from lane 0 after each re-orthonormalisation); ``work``: the step's work arrays and the
-    weights per lane; ``n_tag``, ``k_tag``: tuples of N and k elements, so that each (N, k)
-    has its own compilation.  Every array argument distinct (``noalias``)."""
-    n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
-    k = len(k_tag)
-    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = work
+#: The named state of the lanes in the time loop (``charts.solvers.driver.phased_loop``):
+#: the flat lanes Zf, s0, c0, the step counter, each lane's status, stop step and frozen
+#: state, the system, each lane's speed, the step, the inner product's weights, the sums and
+#: histograms, the step's work arrays (``lane_layout.lane_arrays``), one lane's work arrays
+#: in the one-trajectory layout (``one``: z, its sin/cos, the RK4 work and stage work), the
+#: work of the policy (``subs``: each lane's status and cap, the lanes that take sub-steps,
+#: their caps, states and sin/cos), and N and k as the lengths of the tuples ``n_tag``,
+#: ``k_tag`` (compile-time constants: the loops over rotors and rows have constant lengths).
+LaneStack = namedtuple("LaneStack", [
+    "Zf", "s0", "c0", "counter", "status", "stopped", "frozen", "minv", "m", "wts", "level",
+    "speed", "dt", "w", "restricted", "logsum", "event_logs", "shares", "work", "one", "subs",
+    "n_tag", "k_tag"])
+
+
+@njit(cache=True, inline="always")
+def _lanes_policy_step(fl, rate):
+    """One step dt of every lane: the policy across the lanes (padding too); a lane at a
+    singular point or with a non-finite state stops (`_stop`), one nearer a singular point
+    than the step allows takes its step alone in sub-steps (`substeps`, in the
+    one-trajectory layout) after the lanes' step (`_lanes_step`) has moved the others.
+    ``rate`` is unused (the lanes' step has eq (17) written in)."""
+    n = len(fl.n_tag)
+    k = len(fl.k_tag)
+    Zf, s0, c0, status, counter, dt = fl.Zf, fl.s0, fl.c0, fl.status, fl.counter, fl.dt
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = fl.work
+    z, zs0, zc0, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1 = fl.one
+    code, sub, subcap, subZ, subS = fl.subs
     L = status.size
     Lp = lam.size
     d = 2 * n
     R = k + 1
     D = R * d
-    M = D * Lp
-    nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(M), np.uint64(Lp)
+    nu, Ru, du, Mu, Lu = np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(D * Lp), np.uint64(Lp)
     W = LANE_WIDTH
-    code = np.empty(Lp, dtype=np.int64)
-    # one lane in the one-trajectory layout (projections, eq 18, sub-steps)
+    for l0 in range(Lu - Lu, Lu, W):  # the policy, across the lanes (padding too)
+        for t in range(W):
+            S[l0 + t] = 0.0
+            U[l0 + t] = 0.0
+        for j in range(nu):
+            a = j * Lu + l0
+            b = (nu + j) * Lu + l0
+            for t in range(W):
+                S[l0 + t] += s0[a + t] * s0[a + t]
+                U[l0 + t] += Zf[b + t] * Zf[b + t]
+        for t in range(W):
+            code[l0 + t], cap[l0 + t] = fixed_step_status(S[l0 + t], U[l0 + t], dt, _CAP)
+    nsub = 0
+    for l in range(L):
+        if status[l] != RUNNING or (code[l] == RUNNING and cap[l] >= dt):
+            continue
+        st, hc = code[l], cap[l]
+        if st != RUNNING:
+            _stop(l, st, counter[0], Zf, s0, c0, Lp, status, fl.stopped, fl.frozen)
+        elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
+            sub[nsub] = l
+            subcap[nsub] = hc
+            gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
+            nsub += 1
+    _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, fl.minv, wl, dt,
+                nu, Ru, du, Mu, Lu)
+    for t in range(nsub):
+        l = sub[t]
+        zz = subZ[t]
+        ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
+                      fl.minv, fl.wts, fl.level, dt, subcap[t], nu, Ru, du, np.uint64(D))
+        scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
+        if not ok:
+            _stop(l, SINGULAR, counter[0], Zf, s0, c0, Lp, status, fl.stopped, fl.frozen)
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def _lanes_project(fl):
+    """Every running lane's state onto the invariants (`project_state`, in the one-trajectory
+    layout), its sin/cos anew."""
+    n = len(fl.n_tag)
+    z, zs0, zc0 = fl.one[0], fl.one[1], fl.one[2]
+    Zf, s0, c0, status = fl.Zf, fl.s0, fl.c0, fl.status
+    Lp = fl.work[10].size
+    y1 = z[:2 * n]
+    for l in range(status.size):
+        if status[l] == RUNNING:
+            gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
+            project_state(y1, fl.m, fl.wts, fl.level, fl.speed[l])
+            sincos(z, 0, n, fl.wts, zs0, zc0)
+            scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def _lanes_reorth(fl):
+    """Across all lanes (a stopped lane's copy is restored at the end): the vectors onto T_r
+    (if restricted) and re-orthonormalised (eq 18), each running lane's logs added to its
+    sums (it stops where they overflow: NONFINITE); the largest kinetic-energy shares into
+    the histograms; the padding and stopped lanes refreshed (`_refresh`)."""
+    n = len(fl.n_tag)
+    k = len(fl.k_tag)
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = fl.work
+    z, zs0, zc0 = fl.one[0], fl.one[1], fl.one[2]
+    Zf, s0, c0, status, logsum, shares = fl.Zf, fl.s0, fl.c0, fl.status, fl.logsum, fl.shares
+    L = status.size
+    Lp = lam.size
+    R = k + 1
+    nu, ku, du, Lu = np.uint64(n), np.uint64(k), np.uint64(2 * n), np.uint64(Lp)
+    if R > 1:
+        if fl.restricted:
+            project_tangent_lanes(Zf, nu, ku, Lu, fl.minv, s0, c0, v1, v2, v3)
+        orthonormalize_lanes(Zf, du * Lu, ku, du, Lu, fl.w, v1, nrm)
+        for l in range(L):
+            if status[l] != RUNNING:
+                continue
+            for r in range(k):
+                logsum[l, r] += log(nrm[r * Lp + l])
+            if not isfinite(logsum[l, R - 2]):
+                _stop(l, NONFINITE, fl.counter[0], Zf, s0, c0, Lp, status, fl.stopped,
+                      fl.frozen)
+    if shares.shape[1] > 0:       # S, U: free until the next step's policy
+        energies_lanes(Zf, n, fl.m, Lp, S, U)
+        for l in range(L):
+            if status[l] == RUNNING:
+                record_share_of(U[l], S[l], shares, l)
+    _refresh(Zf, s0, c0, Lp, status, z, zs0, zc0)
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def _lanes_log_event(fl, ev):
+    """Every running lane's log-norm sums into its event logs, row ``ev``."""
+    status, logsum, event_logs = fl.status, fl.logsum, fl.event_logs
+    for l in range(status.size):
+        if status[l] == RUNNING:
+            for r in range(len(fl.k_tag)):
+                event_logs[ev, l, r] = logsum[l, r]
+
+
+@njit(cache=True, pipeline_class=LanesCompiler)
+def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
+               nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
+               shares, work, n_tag, k_tag):
+    """`lanes_kernel`'s steps on the flat lanes Zf, s0, c0 (element i of lane l at
+    i·Lp + l, Lp a multiple of `LANE_WIDTH`; lanes ≥ L = status.size are padding, copied
+    from lane 0 after each re-orthonormalisation), in the one time loop of the stacked flows
+    (``charts.solvers.driver.phased_loop``) with the lanes' hooks; ``work``: the step's work
+    arrays and the weights per lane; ``n_tag``, ``k_tag``: tuples of N and k elements, so
+    that each (N, k) has its own compilation.  Every array argument distinct (``noalias``).
+    Returns the number of running lanes, the stopped ones restored to their frozen state."""
+    n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
+    k = len(k_tag)
+    L = status.size
+    Lp = work[10].size
+    D = (k + 1) * 2 * n
+    # one lane in the one-trajectory layout (projections, eq 18, sub-steps), the policy's work
     z = np.empty(D)
     zs0 = np.empty(n)
     zc0 = np.empty(n)
-    y1 = z[:d]
     Zt1 = np.empty(D)
     K1 = np.empty(4 * D)
     th1 = np.empty(n)
     dl1 = np.empty(n)
     s1, c1, f1, g1, p1, q1 = stage_work(n)
-    ku = np.uint64(k)
+    code = np.empty(Lp, dtype=np.int64)
     sub = np.empty(L, dtype=np.int64)
     subcap = np.empty(L)
     subZ = np.empty((L, D))
     subS = np.empty((L, 2, n))
-    to_proj, to_reorth, ev = countdowns(counter[0], project_every, reorth_every, events)
-    for it in range(nsteps):
-        for l0 in range(Lu - Lu, Lu, W):  # the policy, across the lanes (padding too)
-            for t in range(W):
-                S[l0 + t] = 0.0
-                U[l0 + t] = 0.0
-            for j in range(nu):
-                a = j * Lu + l0
-                b = (nu + j) * Lu + l0
-                for t in range(W):
-                    S[l0 + t] += s0[a + t] * s0[a + t]
-                    U[l0 + t] += Zf[b + t] * Zf[b + t]
-            for t in range(W):
-                code[l0 + t], cap[l0 + t] = fixed_step_status(S[l0 + t], U[l0 + t], dt, _CAP)
-        nsub = 0
-        for l in range(L):
-            if status[l] != RUNNING or (code[l] == RUNNING and cap[l] >= dt):
-                continue
-            st, hc = code[l], cap[l]
-            if st != RUNNING:
-                _stop(l, st, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
-            elif hc < dt:  # near a singular point: this lane takes the sub-steps alone
-                sub[nsub] = l
-                subcap[nsub] = hc
-                gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
-                nsub += 1
-        _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv, wl, dt,
-                    nu, Ru, du, Mu, Lu)
-        for t in range(nsub):
-            l = sub[t]
-            zz = subZ[t]
-            ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
-                          minv, wts, level, dt, subcap[t], nu, Ru, du, np.uint64(D))
-            scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
-            if not ok:
-                _stop(l, SINGULAR, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
-        counter[0] += 1
-        to_proj -= 1
-        if to_proj == 0:
-            to_proj = project_every
-            for l in range(L):
-                if status[l] == RUNNING:
-                    gather(Zf, s0, c0, Lp, l, z, zs0, zc0)
-                    project_state(y1, m, wts, level, speed[l])
-                    sincos(z, 0, n, wts, zs0, zc0)
-                    scatter(z, zs0, zc0, Zf, s0, c0, Lp, l)
-        to_reorth -= 1
-        if to_reorth == 0:
-            to_reorth = reorth_every
-            if R > 1:  # across all lanes (a stopped lane's copy is restored at the end)
-                if restricted:
-                    project_tangent_lanes(Zf, nu, ku, Lu, minv, s0, c0, v1, v2, v3)
-                orthonormalize_lanes(Zf, du * Lu, ku, du, Lu, w, v1, nrm)
-                for l in range(L):
-                    if status[l] != RUNNING:
-                        continue
-                    for r in range(k):
-                        logsum[l, r] += log(nrm[r * Lp + l])
-                    if not isfinite(logsum[l, R - 2]):
-                        _stop(l, NONFINITE, counter[0], Zf, s0, c0, Lp, status, stopped, frozen)
-            if shares.shape[1] > 0:       # S, U: free until the next step's policy
-                energies_lanes(Zf, n, m, Lp, S, U)
-                for l in range(L):
-                    if status[l] == RUNNING:
-                        record_share_of(U[l], S[l], shares, l)
-            _refresh(Zf, s0, c0, Lp, status, z, zs0, zc0)
-        if ev < events.size and counter[0] == events[ev]:
-            for l in range(L):
-                if status[l] == RUNNING:
-                    for r in range(k):
-                        event_logs[ev, l, r] = logsum[l, r]
-            ev += 1
+    b = borrowed
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = work
+    fl = LaneStack(b(Zf), b(s0), b(c0), b(counter), b(status), b(stopped), b(frozen), b(minv),
+                   b(m), b(wts), level, b(speed), dt, b(w), restricted, b(logsum),
+                   b(event_logs), b(shares),
+                   (b(Zt), b(K), b(th), b(dl), b(s), b(c), b(f), b(g), b(p), b(q), b(lam),
+                    b(iB), b(dlam), b(wl), b(S), b(U), b(cap), b(v1), b(v2), b(v3), b(nrm)),
+                   (b(z), b(zs0), b(zc0), b(Zt1), b(K1), b(th1), b(dl1), b(s1), b(c1), b(f1),
+                    b(g1), b(p1), b(q1)),
+                   (b(code), b(sub), b(subcap), b(subZ), b(subS)), n_tag, k_tag)
+    phased_loop(fl, nsteps, counter, Phases(project_every, reorth_every, 0, 0), events,
+                _lanes_policy_step, 0, _lanes_project, _lanes_reorth, _lanes_log_event,
+                no_record)
+    keep_alive((z, zs0, zc0, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, code, sub, subcap,
+                subZ, subS))            # the work arrays, borrowed above, live until here
     running = 0
     for l in range(L):
         if status[l] == RUNNING:

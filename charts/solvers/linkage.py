@@ -1,7 +1,8 @@
 """The linkage's flow and tangent vectors advanced together: RK4 (``charts.solvers.rk``) of
 ``charts.flows.linkage``, projection onto the invariants, Gram–Schmidt re-orthonormalisation
-(``charts.solvers.tangent.orthonormalize``, eq 18) and log-norm sums — the linkage's
-counterpart of `TangentFlow`, built from the same pieces.
+(``charts.solvers.tangent.orthonormalize``, eq 18) and log-norm sums in the one time loop
+of the stacked flows (``charts.solvers.driver``) — the linkage's counterpart of
+`TangentFlow`, built from the same pieces.
 
 Stacked state Z = [y; ξ¹; …; ξᵏ], shape (1 + k, 14).  After global step i: y is projected
 onto F = 0, J v = 0 and the energy (``project_state_linkage``) when i % project_every == 0
@@ -12,6 +13,7 @@ bit-identical numbers.
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from functools import cache
 
 import numpy as np
@@ -20,6 +22,7 @@ from numba import njit, types
 from ..flows.linkage import NY, linkage_rates
 from ..geometry.linkage import PROJ_OK, project_state_linkage, project_tangent_linkage
 from .rk import RHS_SIG, RHS_TYPE, rk4_step
+from .driver import Phases, borrowed, keep_alive, log_sums, no_record, phased_loop
 from .status import NONFINITE, RUNNING, IntegrationError
 from .tangent import StackedFlow, orthonormalize
 
@@ -47,50 +50,77 @@ class DegenerateMetricError(IntegrationError):
     """The pulled-back metric degenerated (the disk could move with the rotors at rest)."""
 
 
+#: The named state of the linkage's stacked flow in the time loop
+#: (``charts.solvers.driver.phased_loop``): the flat Z = [y; X] and its views, the linkage's
+#: parameters and masses, the speed, the step, the inner product's weights, the log-norm sums
+#: and their event logs, the smallest health seen, whether the disk is massless, the RK4 work
+#: arrays, the rows and the length of Z.
+LinkageStack = namedtuple("LinkageStack", [
+    "Zf", "y", "X", "par", "mass", "speed", "dt", "w", "logsum", "event_logs", "health",
+    "massless", "K", "zt", "zn", "R", "L"])
+
+
+@njit(cache=True, inline="always")
+def linkage_step(fl, f):
+    """One RK4 step of the linkage's rates ``f`` (`linkage_rhs`); NONFINITE, or DEGENERATE
+    where the step's health (the smallest det(C̃ᵀC̃) of its stages) is not above 0 (`GRAM_MIN`
+    with a massless disk), leaving Z at the step's start; the smallest health into
+    ``fl.health[0]``."""
+    zn = fl.zn
+    hmin = rk4_step(f, fl.Zf, fl.dt, fl.par, fl.K, fl.zt, zn)
+    if not np.isfinite(hmin) or not np.isfinite(zn[0] + zn[NY - 1]):
+        return NONFINITE
+    if not hmin > (GRAM_MIN if fl.massless else 0.0):
+        return DEGENERATE
+    Zf = fl.Zf
+    for i in range(fl.L):
+        Zf[i] = zn[i]
+    fl.health[0] = min(fl.health[0], hmin)
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def linkage_project(fl):
+    """The state onto F = 0, J v = 0 and its energy (`project_state_linkage`); DEPENDENT
+    where J Jᵀ is singular."""
+    if project_state_linkage(fl.y, fl.par, fl.mass, fl.speed) != PROJ_OK:
+        return DEPENDENT
+    return RUNNING
+
+
+@njit(cache=True, inline="always")
+def linkage_reorth(fl):
+    """The vectors onto T_r (`project_tangent_linkage`; DEPENDENT where J Jᵀ is singular) and
+    re-orthonormalised in the kinetic metric (eq 18, logs added to the sums; NONFINITE where
+    they overflow)."""
+    if fl.R > 1:
+        if project_tangent_linkage(fl.y, fl.X, fl.par) != PROJ_OK:
+            return DEPENDENT
+        orthonormalize(fl.X, fl.w, fl.logsum)
+        if not np.isfinite(fl.logsum[fl.R - 2]):
+            return NONFINITE
+    return RUNNING
+
+
 def _kernel(f, Z, par, mass, speed, dt, nsteps, counter, reorth_every, project_every, w, logsum,
             events, event_logs, health, massless):
-    """Advance Z, shape (1 + k, 14), by ``nsteps`` RK4 steps of ``f`` (`linkage_rhs`).  Stores
-    ``logsum`` in ``event_logs[e]`` at global step ``events[e]``; health[0] keeps the smallest
-    health seen (``massless``: stop where it drops below `GRAM_MIN`).  Returns (status, steps
-    done); Z is then at the start of a failing step."""
+    """Advance Z, shape (1 + k, 14), by ``nsteps`` RK4 steps of ``f`` (`linkage_rhs`) in the
+    one time loop of the stacked flows (``charts.solvers.driver.phased_loop``) with the
+    linkage's hooks.  Stores ``logsum`` in ``event_logs[e]`` at global step ``events[e]``;
+    health[0] keeps the smallest health seen (``massless``: stop where it drops below
+    `GRAM_MIN`).  Returns (status, steps done); Z is then at the start of a failing step."""
     R = Z.shape[0]
     L = R * NY
-    Zf = Z.reshape(L)
-    y = Z[0]
-    X = Z[1:]
     K = np.empty((4, L))
     zt = np.empty(L)
     zn = np.empty(L)
-    ev = 0
-    while ev < events.size and events[ev] <= counter[0]:
-        ev += 1
-    for it in range(nsteps):
-        hmin = rk4_step(f, Zf, dt, par, K, zt, zn)
-        if not np.isfinite(hmin):
-            return NONFINITE, it
-        if not hmin > (GRAM_MIN if massless else 0.0):
-            return DEGENERATE, it
-        for i in range(L):
-            Zf[i] = zn[i]
-        health[0] = min(health[0], hmin)
-        counter[0] += 1
-        i = counter[0]
-        if project_every > 0 and i % project_every == 0:
-            if project_state_linkage(y, par, mass, speed) != PROJ_OK:
-                return DEPENDENT, it + 1
-        if R > 1 and i % reorth_every == 0:
-            if project_tangent_linkage(y, X, par) != PROJ_OK:
-                return DEPENDENT, it + 1
-            orthonormalize(X, w, logsum)
-            if not np.isfinite(logsum[R - 2]):
-                return NONFINITE, it + 1
-        if not np.isfinite(Zf[0] + Zf[NY - 1]):
-            return NONFINITE, it + 1
-        if ev < events.size and i == events[ev]:
-            for r in range(R - 1):
-                event_logs[ev, r] = logsum[r]
-            ev += 1
-    return RUNNING, nsteps
+    b = borrowed
+    fl = LinkageStack(b(Z.reshape(L)), b(Z[0]), b(Z[1:]), b(par), b(mass), speed, dt, b(w),
+                      b(logsum), b(event_logs), b(health), massless, b(K), b(zt), b(zn), R, L)
+    code = phased_loop(fl, nsteps, counter, Phases(project_every, reorth_every, 0, 0), events,
+                       linkage_step, f, linkage_project, linkage_reorth, log_sums, no_record)
+    keep_alive((K, zt, zn))             # the work arrays, borrowed above, live until here
+    return code
 
 
 _f8, _i8 = types.float64, types.int64

@@ -32,7 +32,7 @@ from ..geometry.energy_shares import record_share
 from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
 from ..geometry.projection import project_state_into, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
-from .driver import Phases, borrowed, phased_loop
+from .driver import Phases, borrowed, keep_alive, log_sums, phased_loop
 from .rk import rk4_combine, rk4_node, rk4_point
 from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
                      fixed_step_status, next_substep, singular_floor, substep_count,
@@ -43,7 +43,7 @@ __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "or
            "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes", "RotorStack", "stacked_step", "stacked_project",
-           "stacked_reorth", "stacked_log_event", "stacked_record"]
+           "stacked_reorth", "stacked_record"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -302,13 +302,6 @@ def stacked_reorth(fl):
 
 
 @njit(cache=True, inline="always")
-def stacked_log_event(fl, ev):
-    """The log-norm sums of ``fl`` into its event logs, row ``ev``."""
-    for r in range(fl.R - 1):
-        fl.event_logs[ev, r] = fl.logsum[r]
-
-
-@njit(cache=True, inline="always")
 def stacked_record(fl, row):
     """Z's first nz entries, then (where asked) the weighted sines and cosines, into the
     record row ``row`` of ``fl`` (if the records have that row)."""
@@ -372,10 +365,12 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
                     level, speed, dt, b(w), restricted, b(logsum), b(states), b(event_logs),
                     b(shares), (b(Zt), b(K), b(th), b(dl), b(s), b(c), b(f), b(g), b(p), b(q)), n,
                     R, np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L), nz, nsc)
-    return phased_loop(fl, nsteps, counter,
+    code = phased_loop(fl, nsteps, counter,
                        Phases(project_every, reorth_every, rec_start, rec_every), events,
                        stacked_step, vectors_rate, stacked_project, stacked_reorth,
-                       stacked_log_event, stacked_record)
+                       log_sums, stacked_record)
+    keep_alive(work)                    # the work arrays, borrowed above, live until here
+    return code
 
 
 @njit(cache=True)
