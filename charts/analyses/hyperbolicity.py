@@ -167,8 +167,12 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
                          t_transient=Documented(100.0), sample_every=Documented(0.1),
                          checkpoint_every=Documented(1.0), project_every=Documented(1.0),
                          seed=0, progress=False) -> AngleResult:
-    """Angles between the expanding subspace and the zero-and-contracting subspace along
-    the trajectory from (theta0, u0), both variants (see module docstring).
+    """Angles between the expanding subspace E_u and the zero-and-contracting subspace E_cs
+    along the trajectory from (theta0, u0), in both variants of section 4: ``full`` (the
+    paper's: E_cs in all of R^{2N}, with the two directions that break the constraint) and
+    ``restricted`` (E_cs within the constraint-preserving tangent space T_r); the method,
+    the memory and the backward pass: the docstring of ``charts.analyses.hyperbolicity``,
+    the two variants compared: docs/reproduce.md.
 
     Parameters
     ----------
