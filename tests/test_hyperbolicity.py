@@ -107,6 +107,19 @@ def test_statistics_count_angles_strictly_below_the_threshold():
     assert r.statistics()["min"] == pytest.approx(0.11)          # default: restricted
 
 
+def test_a_result_prints_as_one_short_line():
+    """The repr names N, the samples and the two minima, not the arrays (a run of 3000
+    samples printed its arrays before); a lost (non-finite) sample is left out."""
+    phi = np.array([0.3, np.nan, 0.02, 0.5])
+    r = AngleResult(np.arange(4.0) * 0.1 + 100.0, phi, phi + 0.1, np.ones(2), np.ones(2),
+                    {"n": 4})
+    text = repr(r)
+    assert text == ("AngleResult(N=4, 4 samples, t = 100…100.3, min φ: full 0.02, "
+                    "restricted 0.12 rad)")
+    empty = AngleResult(np.zeros(0), np.zeros(0), np.zeros(0), np.ones(2), np.ones(2), {"n": 4})
+    assert repr(empty) == "AngleResult(N=4, 0 samples, min φ: full none, restricted none rad)"
+
+
 def test_rejects_bad_arguments():
     s = RotorSystem(3)
     th, u = s.random_state(seed=0)

@@ -84,6 +84,15 @@ class AngleResult(Archivable):
     adjoint_exponents: np.ndarray
     params: dict
 
+    def __repr__(self):
+        def smallest(phi):
+            finite = np.asarray(phi)[np.isfinite(phi)]
+            return f"{finite.min():.3g}" if finite.size else "none"
+        span = f", t = {self.t[0]:g}…{self.t[-1]:g}" if len(self.t) else ""
+        return (f"AngleResult(N={self.params.get('n')}, {len(self.t)} samples{span}, min φ: "
+                f"full {smallest(self.phi_full)}, restricted {smallest(self.phi_restricted)} "
+                f"rad)")
+
     def statistics(self, variant="restricted", small=SMALL_ANGLE):
         """`angle_statistics` of the angles of ``variant`` ("restricted" or "full"): a dict
         with the keys ``min``, ``median``, ``p001``, ``p01``, ``n``, ``small``,
