@@ -370,6 +370,7 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
         assert list(ds["component"].values[4:7]) == ["x", "y", "alpha"]
         assert ds["component_units"].values[4] == "length"
         assert ds["component_units"].values[11] == "length / time"
+        assert all("long_name" in ds[v].attrs for v in ds.data_vars), list(ds.data_vars)
         q0, v0 = np.array(ds.attrs["params_q0"]), np.array(ds.attrs["params_v0"])
     assert np.array_equal(q0, L.random_state(seed=2)[0]) and np.array_equal(v0, L.random_state(seed=2)[1])
 

@@ -123,9 +123,10 @@ class LinkageResult(SpectrumQuantities, Archivable):
         attributes (``charts.archive``); the exponents counted from 1 (λ₁ the largest, as
         `LyapunovResult`'s); the state's 14 components are q (θ₀…θ₃ and the disk's three
         coordinates), then their velocities."""
-        data = {"exponents": (("exponent",), self.exponents, "1 / time"),
+        data = {"exponents": (("exponent",), self.exponents, "1 / time",
+                              "Lyapunov exponents λᵢ, λ₁ the largest"),
                 "stderr": (("exponent",), self.stderr, "1 / time", "batch-means standard error"),
-                "batches": (("batch", "exponent"), self.batches, "1 / time"),
+                "batches": (("batch", "exponent"), self.batches, "1 / time", "batch estimates"),
                 "K": (("sample", "exponent"), self.K, "1 / rad^2",
                       "sectional curvature K(unit velocity, e_i) (Gauss equation)"),
                 "states": (("sample", "component"), self.states, "see component_units",

@@ -171,7 +171,8 @@ class LyapunovResult(SpectrumQuantities, Archivable):
         """Dataset: exponents, stderr (exponent); history (record, exponent) at history_t;
         batches (batch, exponent); full_spectrum (spectrum_index); the settings as attributes."""
         k = len(self.exponents)
-        data = {"exponents": (("exponent",), self.exponents, "1 / time"),
+        data = {"exponents": (("exponent",), self.exponents, "1 / time",
+                              "Lyapunov exponents λᵢ (eq 18), λ₁ the largest"),
                 "stderr": (("exponent",), self.stderr, "1 / time", "two-sided standard error"),
                 "history": (("record", "exponent"), self.history, "1 / time",
                             "running estimates"),
@@ -180,7 +181,9 @@ class LyapunovResult(SpectrumQuantities, Archivable):
                   "history_t": (("record",), self.history_t, "time", "averaging time")}
         if self.spectrum is not None:
             data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",
-                                     "the relevant spectrum (reconstructed or computed)")
+                                     "the whole spectrum of the 2N−2 dimensional phase "
+                                     "space, (λ…, 0, 0, −λ…): reconstructed from the "
+                                     "leading N−2, or computed")
             coords["spectrum_index"] = (("spectrum_index",),
                                         np.arange(1, len(self.spectrum) + 1, dtype=np.int64), "1",
                                         "i of λᵢ in the relevant spectrum, from 1 as in the "
