@@ -41,9 +41,10 @@ separated by spaces, present only when they name something.  A trajectory's file
     :charts_booleans = "options_project" ;  :charts_none = "options_dt" ;
 
 Every file also carries the CF global attributes (``Conventions``, ``title``, ``history``,
-``source``, ``references``).  Files written before this encoding hold each settings dict
-also as one JSON text (``params = "json:{...}"``, its entries beside it with booleans as 1 or
-0 and no lists of names): where that text is present, `attributes` reads it.
+``source``, ``references``, and ``comment``: the units of the settings, `COMMENT`).  Files
+written before this encoding hold each settings dict also as one JSON text
+(``params = "json:{...}"``, its entries beside it with booleans as 1 or 0 and no lists of
+names): where that text is present, `attributes` reads it.
 """
 from __future__ import annotations
 
@@ -58,7 +59,7 @@ import numpy as np
 from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
-           "ENGINE", "TITLES", "GLOBALS", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
+           "ENGINE", "TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
            "member_attributes", "index_coordinate", "same_value"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
@@ -136,7 +137,15 @@ TITLES = {
     "sweep": "sweep table (charts sweep)",
 }
 #: CF global attributes every file carries (not settings: `attributes` leaves them out).
-GLOBALS = ("Conventions", "title", "history", "source", "references", "institution")
+GLOBALS = ("Conventions", "title", "history", "source", "references", "institution", "comment")
+#: CF ``comment`` of every file: the units of the settings, which NetCDF attributes cannot
+#: carry themselves (every variable has its own ``units``), and what ``params_seed`` seeds.
+COMMENT = ("Units of the settings (params_*, options_*, member.params.*): times (t_final, "
+           "t_transient, dt, t_span, every *_every) in time units of the flow; angles (theta0) "
+           "in rad; velocities (u0) and speed in rad / time (the linkage's q0, v0: see "
+           "component_units).  params_seed seeds the random tangent vectors; in an ensemble, "
+           "member i has seed + i for its initial state and its tangent vectors.  Every "
+           "variable carries its own units.")
 #: Settings dicts (and the trajectory's ``drift``) written entry by entry as native NetCDF
 #: attributes, ``params_masses = [1, 2, 3]``, ``drift_energy = 1e-13`` (module docstring).
 FLATTENED = ("params", "options", "drift")
@@ -276,12 +285,13 @@ def _global_attributes(kind: str) -> dict:
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     return {"Conventions": "CF-1.10", "title": f"charts: {TITLES.get(kind, kind)}",
             "history": f"{now}: written by charts {__version__}",
-            "source": ", ".join(versions), "references": REFERENCE}
+            "source": ", ".join(versions), "references": REFERENCE, "comment": COMMENT}
 
 
 def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict | None = None):
     """An ``xarray.Dataset`` stamped with ``charts_kind`` and ``charts_version`` and the CF
-    global attributes (`GLOBALS`: conventions, title, history, source, references).
+    global attributes (`GLOBALS`: conventions, title, history, source, references, and the
+    ``comment`` `COMMENT` on the settings' units).
 
     ``data_vars`` and ``coords``: name → ``(dims, array, units)`` or
     ``(dims, array, units, description)``; ``attrs``: settings (name → value, written by

@@ -131,6 +131,8 @@ def test_datasets_have_named_dims_units_and_stamps(results):
     assert list(results["trajectory"].to_xarray()["rotor"].values) == [0, 1, 2]
     ds = results["lyapunov"].to_xarray()
     assert ds["exponents"].attrs["units"] == "1 / time"
+    assert "λ₁ the largest" in ds["exponents"].attrs["long_name"]
+    assert "2N−2" in ds["full_spectrum"].attrs["long_name"]
     assert list(ds["spectrum_index"].values) == list(range(1, ds.sizes["spectrum_index"] + 1))
     assert "from 1" in ds["spectrum_index"].attrs["long_name"]          # as exponent
     assert ds.attrs["params_t_final"] == 20.0 and "params" not in ds.attrs   # no JSON copy
@@ -313,6 +315,9 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
         assert ds.attrs["Conventions"].startswith("CF-")
         for key in ("title", "history", "source", "references"):
             assert ds.attrs[key], key
+        # the settings' units, which attributes cannot carry, are said once in the CF comment
+        assert "time units of the flow" in ds.attrs["comment"]
+        assert "params_seed seeds the random tangent vectors" in ds.attrs["comment"]
         assert all(dim in ds.coords for dim in ds.sizes), (name, set(ds.sizes) - set(ds.coords))
         for v in list(ds.data_vars.values()) + list(ds.coords.values()):
             assert "units" in v.attrs, (name, v.name)
