@@ -233,3 +233,16 @@ def test_sweep_prints_a_bundled_sweep(capsys):
     text = capsys.readouterr().out
     assert "[sweep" in text and "masses" in text
     assert main(["sweep", "--print", "no-such-sweep"]) == 2
+
+
+def test_a_sweep_run_without_plots_does_not_count_figures(capsys, tmp_path):
+    """The closing lines name the figures only where they were drawn: with --no-plots they
+    say so, instead of "figures: 0 in DIR/figures" for a folder that does not exist."""
+    from charts.cli.sweep import _report
+    info = {"points": 2, "skipped": 1, "computed": [1], "failed": [], "lost": [],
+            "table": tmp_path / "sweep.csv", "summary": tmp_path / "summary.csv"}
+    _report("s", info, tmp_path, plots=False)
+    out = capsys.readouterr().out
+    assert "no figures (--no-plots)" in out and "figures: 0" not in out
+    _report("s", {**info, "figures": ["a.png", "b.png"]}, tmp_path)
+    assert f"figures: 2 in {tmp_path / 'figures'}" in capsys.readouterr().out

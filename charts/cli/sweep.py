@@ -88,16 +88,17 @@ def cmd_sweep(args) -> int:
               f"{shlex.quote(str(args.output))} --resume{extra}", file=sys.stderr)
         return EXIT_INTERRUPTED
     if not args.quiet:
-        _report(sweep.name, info, args.output)
+        _report(sweep.name, info, args.output, plots=not args.no_plots)
     return 1 if info["lost"] else 0
 
 
-def _report(name: str, info: dict, outdir: Path) -> None:
+def _report(name: str, info: dict, outdir: Path, plots: bool = True) -> None:
     print(f"{name}: {info['points']} points, {info['skipped']} finished before, "
           f"{len(info['computed'])} computed now, {len(info['failed'])} failed -> "
           f"{info['table']}")
     for idx, err in info["failed"] + info["lost"]:
         print(f"  point {idx}: {err}")
     if "summary" in info:
-        print(f"  summary: {info['summary']}; figures: {len(info.get('figures', []))} in "
-              f"{outdir / 'figures'}")
+        figures = (f"figures: {len(info.get('figures', []))} in {outdir / 'figures'}" if plots
+                   else "no figures (--no-plots)")
+        print(f"  summary: {info['summary']}; {figures}")
