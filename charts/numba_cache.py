@@ -16,6 +16,8 @@ import glob
 import os
 import sys
 
+from .numba_inliner import ours
+
 __all__ = ["install", "HEALED"]
 
 #: Functions healed in this process: qualified name -> the error that was read.
@@ -45,8 +47,7 @@ def install() -> None:
 
 
 def _ours(cache) -> bool:
-    module = getattr(getattr(cache, "_py_func", None), "__module__", "") or ""
-    return module == "charts" or module.startswith(("charts.", "charts_ondemand_"))
+    return ours(getattr(getattr(cache, "_py_func", None), "__module__", ""))
 
 
 def _heal(cache, exc) -> None:
