@@ -180,7 +180,6 @@ def _frame(system, row, k):
     return out
 
 
-@announces_compilation
 def run_steps(dt, t_final, reorth_every, sample_every):
     """(t_final, reorth_every, sample_every) of `linkage_run` in steps dt: a written time a
     whole number of steps or ValueError; a `Documented` default placed as the signature's
@@ -197,6 +196,7 @@ def run_steps(dt, t_final, reorth_every, sample_every):
     return total, reorth, sample
 
 
+@announces_compilation
 def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
                 t_transient=Documented(50.0), n_batches=20, reorth_every=Documented(0.1),
                 project_every=Documented(1.0), sample_every=Documented(1.0), curvature=True,

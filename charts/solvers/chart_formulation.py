@@ -90,7 +90,7 @@ def switch_rule(s_local, s_k, k, tau):
     j, smax = best_sine(s_local, s_k, k)
     if should_leave(abs(s_k), smax, tau):
         return j, smax
-    return -1, smax
+    return np.int64(-1), smax   # not the literal: enter_chart would compile once more for it
 
 
 @njit(cache=True)
