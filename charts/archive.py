@@ -60,7 +60,8 @@ from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
            "ENGINE", "TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
-           "member_attributes", "index_coordinate", "same_value"]
+           "member_attributes", "index_coordinate", "same_value", "one_line", "system_label",
+           "counted", "span_words", "exponent_words", "smallest_words", "REPR_WIDTH"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
@@ -510,8 +511,84 @@ def _fields(result) -> dict:
     return out
 
 
+#: Longest one-line repr of a result (`one_line`): a longer one is cut with "…".
+REPR_WIDTH = 240
+#: Most exponents a repr lists (`exponent_words`); the others are counted.
+REPR_EXPONENTS = 4
+
+
+def system_label(params) -> str:
+    """The system of a result's ``params`` in a few words, for reprs, titles and legends:
+    "linkage ε = 0.1", "N = 4", with masses, weights and level where they are not the
+    paper's (all 1, level 0)."""
+    if params.get("eps") is not None:
+        return f"linkage ε = {params['eps']:g}"
+    out = f"N = {params.get('n')}"
+    for key in ("masses", "weights"):
+        vals = params.get(key)
+        if vals is not None and any(float(x) != 1.0 for x in vals):
+            out += f", {key} (" + ", ".join(f"{float(x):g}" for x in vals) + ")"
+    if params.get("level"):
+        out += f", level {params['level']:g}"
+    return out
+
+
+def counted(k: int, noun: str, plural: str | None = None) -> str:
+    """"1 sample", "3 samples": ``k`` and the noun in the number it takes (``plural``: the
+    noun's plural where it is not ``noun + "s"``)."""
+    return f"{k} {noun if k == 1 else plural or noun + 's'}"
+
+
+def span_words(t) -> str:
+    """"S samples, t = t₀…t₁" of sample times ``t`` (S,)."""
+    t = np.asarray(t)
+    return counted(t.size, "sample") + (f", t = {t[0]:g}…{t[-1]:g}" if t.size else "")
+
+
+def exponent_words(exponents, stderr=None) -> str:
+    """"λ = 0.3842±0.0009, 0.2291±0.0006": the first `REPR_EXPONENTS` exponents (± their
+    standard errors where given), the others counted."""
+    lam = np.asarray(exponents, dtype=float).ravel()
+    se = None if stderr is None else np.asarray(stderr, dtype=float).ravel()
+    shown = [f"{x:.4f}" + (f"±{se[i]:.4f}" if se is not None and i < se.size else "")
+             for i, x in enumerate(lam[:REPR_EXPONENTS])]
+    more = lam.size - len(shown)
+    return "λ = " + (", ".join(shown) or "none") + (f", … ({more} more)" if more > 0 else "")
+
+
+def smallest_words(values, units="rad") -> str:
+    """The smallest finite value of ``values`` to 3 digits with its ``units`` ("0.02 rad"),
+    "none" if there is none."""
+    v = np.asarray(values, dtype=float)
+    v = v[np.isfinite(v)]
+    return f"{v.min():.3g} {units}" if v.size else "none"
+
+
+def one_line(result) -> str:
+    """The repr of every result type: ``Type(system, samples and time span, main numbers)`` —
+    the system from ``params`` (`system_label`), the span from a field ``t`` of sample times,
+    then the kind's own numbers (``Archivable.summary_parts``: exponents, minima, counts);
+    never the arrays, and at most `REPR_WIDTH` characters."""
+    fields = _fields(result)
+    params = fields.get("params")
+    parts = []
+    if isinstance(params, dict) and ("n" in params or "eps" in params):
+        parts.append(system_label(params))
+    t = fields.get("t")
+    if isinstance(t, np.ndarray) and t.ndim == 1:
+        parts.append(span_words(t))
+    parts += [p for p in result.summary_parts() if p]
+    text = f"{type(result).__name__}({', '.join(parts)})"
+    return text if len(text) <= REPR_WIDTH else text[:REPR_WIDTH - 2] + "…)"
+
+
 class Archivable:
     """Base of the result types: ``save(path)`` from their ``to_xarray()`` (module docstring).
+
+    Every result prints as one line (`one_line`): the system, the samples' time span and
+    ``summary_parts()``, the kind's main numbers, which a result type supplies (its
+    dataclass declared with ``repr=False``, so that the generated repr does not replace
+    this one).
 
     Two results are equal (``==``) when they are of one type and every field holds the same
     values (`same_value`: arrays element by element, NaN equal to NaN); results are mutable
@@ -530,6 +607,14 @@ class Archivable:
         return equal if equal is NotImplemented else not equal
 
     __hash__ = None
+
+    def summary_parts(self) -> list:
+        """The kind's main numbers as short phrases ("λ = 0.3842±0.0009", "min φ 0.02
+        rad") for the one-line repr, after the system and the time span (`one_line`)."""
+        return []
+
+    def __repr__(self):
+        return one_line(self)
 
     def to_xarray(self):  # pragma: no cover - contract
         raise NotImplementedError

@@ -83,6 +83,38 @@ def test_round_trip_identical(results, name, tmp_path):
     assert back == res and not back != res          # == compares values (arrays included)
 
 
+def test_every_result_type_prints_as_one_short_line(results):
+    """Every type of `KINDS` prints as one line that names it and its main numbers (the
+    system, the span, the exponents or minima), never its arrays: a run of many samples, a
+    spectrum of 62 exponents, a scene of many arrays or a table of many columns too."""
+    import importlib
+
+    from charts.analyses.hyperbolicity import AngleResult
+    L = charts.LinkageSystem(0.1)
+    every = dict(results, linkage=charts.linkage_run(L, *L.random_state(seed=2), 2.0,
+                                                     t_transient=0.0, n_batches=2),
+                 wide=_tiny_lyapunov({"n": 64, "t_final": 10.0}),
+                 scene=SceneResult({"scene": {"name": "tiny"}, "status": "complete"},
+                                   {f"array_{i}": np.zeros(3) for i in range(40)}, "name = 'tiny'"),
+                 sweep=SweepTable({f"column_{i}": np.arange(5) for i in range(40)}))
+    every["wide"].exponents, every["wide"].stderr = np.linspace(0.3, 0.01, 62), np.full(62, 1e-3)
+    classes = {getattr(importlib.import_module(m), c) for m, c in
+               (path.split(":") for path in KINDS.values())}
+    assert classes == {type(r) for r in every.values()}       # one of each kind
+    for name, res in every.items():
+        text = repr(res)
+        assert len(text) < 300 and "\n" not in text and text.startswith(f"{type(res).__name__}("), \
+            (name, text)
+        assert "array(" not in text and "[[" not in text, (name, text)
+    assert repr(results["lyapunov"]).startswith("LyapunovResult(N = 4, T = 20, λ = ")
+    assert "(58 more)" in repr(every["wide"])
+    assert "2 AngleResult members" in repr(results["angle_ensemble"])
+    assert repr(every["sweep"]) == "SweepTable(5 points, 40 columns)"
+    angles = results["angles"]
+    assert f"{angles.t.size} samples, t = {angles.t[0]:g}…{angles.t[-1]:g}" in repr(angles)
+    assert AngleResult.__repr__ is charts.LyapunovResult.__repr__     # one home
+
+
 def test_results_compare_by_value(results):
     import copy
     for name, res in results.items():

@@ -114,10 +114,10 @@ def test_a_result_prints_as_one_short_line():
     r = AngleResult(np.arange(4.0) * 0.1 + 100.0, phi, phi + 0.1, np.ones(2), np.ones(2),
                     {"n": 4})
     text = repr(r)
-    assert text == ("AngleResult(N=4, 4 samples, t = 100…100.3, min φ: full 0.02, "
+    assert text == ("AngleResult(N = 4, 4 samples, t = 100…100.3, min φ full 0.02 rad, "
                     "restricted 0.12 rad)")
     empty = AngleResult(np.zeros(0), np.zeros(0), np.zeros(0), np.ones(2), np.ones(2), {"n": 4})
-    assert repr(empty) == "AngleResult(N=4, 0 samples, min φ: full none, restricted none rad)"
+    assert repr(empty) == "AngleResult(N = 4, 0 samples, min φ full none, restricted none)"
 
 
 def test_rejects_bad_arguments():

@@ -41,7 +41,8 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ..archive import Archivable, attributes, dataset, index_coordinate
+from ..archive import (Archivable, attributes, dataset, exponent_words, index_coordinate,
+                       smallest_words)
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
@@ -230,7 +231,7 @@ class _Store:
             shutil.rmtree(self.folder, ignore_errors=True)
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class CovariantResult(Archivable):
     """CLV analysis along one trajectory, one variant; S samples, D = `clv_dimension` CLVs
     (index 0 the largest exponent).
@@ -280,6 +281,12 @@ class CovariantResult(Archivable):
     def domination(self, windows):
         """`domination` test of the growth rates along the CLVs."""
         return domination(self.growth, self.params["m"], self.params["sample_every"], windows)
+
+    def summary_parts(self):
+        """The variant, the smallest angles and the growth rates along the CLVs."""
+        return [f"{self.variant} variant", f"min φ {smallest_words(self.phi)}",
+                f"between CLVs {smallest_words(self.phi_vectors)}",
+                exponent_words(self.exponents) if len(self.t) else ""]
 
     KIND = "covariant"
 

@@ -255,7 +255,7 @@ def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_ste
     return RUNNING, S
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class CurvatureResult(Archivable):
     """Curvature along a trajectory.
 
@@ -287,6 +287,12 @@ class CurvatureResult(Archivable):
     def fraction_positive(self, route="numerical"):
         """Fraction of positive values of each K_ii, shape (N−2,)."""
         return (self.diagonal(route) > 0).mean(axis=0)
+
+    def summary_parts(self):
+        """The share of positive K_ii of each direction (the exact route where computed)."""
+        route = "numerical" if self.K_exact is None else "exact"
+        shares = ", ".join(f"{100 * f:.0f} %" for f in self.fraction_positive(route)[:4])
+        return [f"K_ii > 0 in {shares} of samples ({route})"]
 
     KIND = "curvature"
 

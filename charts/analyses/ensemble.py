@@ -8,8 +8,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (MEMBER, Archivable, attributes, dataset, member_attributes,
-                       member_settings, require_xarray, same_value)
+from ..archive import (MEMBER, Archivable, attributes, counted, dataset, exponent_words,
+                       member_attributes, member_settings, require_xarray, same_value,
+                       smallest_words)
 from ..compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
@@ -23,7 +24,7 @@ __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "
            "MIN_MEMBERS_TO_JUDGE"]
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class EnsembleResult(SpectrumQuantities, Archivable):
     """Results of one analysis on independent trajectories (seeds seed, seed+1, …).
 
@@ -168,11 +169,17 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         raise ValueError("this ensemble's members have no common picture; plot one member "
                          "(ensemble[i].plot())")
 
-    def __repr__(self):
-        if self.exponents is None:
-            return f"EnsembleResult({len(self)} members)"
-        pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
-        return f"EnsembleResult([{pm}], {len(self)} members)"
+    def summary_parts(self):
+        """The members (their kind), the time of each, and the mean exponents ± their
+        standard error, or for angle members the smallest restricted angle of all."""
+        kind = type(self.members[0]).__name__ if self.members else "no"
+        T = self.params.get("t_final")
+        parts = [counted(len(self), f"{kind} member"), f"T = {T:g} each" if T is not None else ""]
+        if self.exponents is not None:
+            parts.append(exponent_words(self.exponents, self.stderr))
+        elif self.members and hasattr(self.members[0], "phi_restricted"):
+            parts.append(f"min φ restricted {smallest_words(self.concatenate('phi_restricted'))}")
+        return parts
 
 
 def _member(job):

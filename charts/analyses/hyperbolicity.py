@@ -40,7 +40,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, index_coordinate
+from ..archive import Archivable, attributes, dataset, index_coordinate, smallest_words
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device
@@ -68,7 +68,7 @@ MAX_STORE = 1 << 30
 _SEGMENTS = 1000
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class AngleResult(Archivable):
     """Angles φ (rad) between E_u and E_cs at the S sample points.
 
@@ -84,14 +84,10 @@ class AngleResult(Archivable):
     adjoint_exponents: np.ndarray
     params: dict
 
-    def __repr__(self):
-        def smallest(phi):
-            finite = np.asarray(phi)[np.isfinite(phi)]
-            return f"{finite.min():.3g}" if finite.size else "none"
-        span = f", t = {self.t[0]:g}…{self.t[-1]:g}" if len(self.t) else ""
-        return (f"AngleResult(N={self.params.get('n')}, {len(self.t)} samples{span}, min φ: "
-                f"full {smallest(self.phi_full)}, restricted {smallest(self.phi_restricted)} "
-                f"rad)")
+    def summary_parts(self):
+        """The smallest angle of each variant (a lost, non-finite sample left out)."""
+        return [f"min φ full {smallest_words(self.phi_full)}",
+                f"restricted {smallest_words(self.phi_restricted)}"]
 
     def statistics(self, variant="restricted", small=SMALL_ANGLE):
         """`angle_statistics` of the angles of ``variant`` ("restricted" or "full"): a dict

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..archive import Archivable, attributes, dataset, exponent_coordinate, exponent_words
 from ..compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
@@ -72,7 +72,7 @@ def gauss_curvature(system, q, X, Y):
     return (ip(aX, aY) - ip(IIxy, IIxy)) / area
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class LinkageResult(SpectrumQuantities, Archivable):
     """One run of `linkage_run`.
 
@@ -155,9 +155,9 @@ class LinkageResult(SpectrumQuantities, Archivable):
         kw.setdefault("title", f"linkage ε = {self.params.get('eps'):g}: exponents {pm}")
         return plot_curvature({"Gauss equation": self.K}, axes=ax, **kw)
 
-    def __repr__(self):
-        pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
-        return f"LinkageResult([{pm}], eps={self.params.get('eps')})"
+    def summary_parts(self):
+        """The exponents ± their standard errors and the smallest Σ sin²θᵢ met."""
+        return [exponent_words(self.exponents, self.stderr), f"min Σ sin²θ {self.min_sin2:.3g}"]
 
 
 def frame_curvatures(system, row, k):

@@ -22,7 +22,7 @@ from functools import partial
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..archive import Archivable, attributes, dataset, exponent_coordinate, exponent_words
 from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges
@@ -136,7 +136,7 @@ def identify_nonphysical(system, theta, u, X):
     return 1.0 - np.linalg.norm(Xp, axis=1) / np.linalg.norm(X, axis=1)
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class LyapunovResult(SpectrumQuantities, Archivable):
     """Result of `lyapunov_spectrum`.
 
@@ -239,9 +239,10 @@ class LyapunovResult(SpectrumQuantities, Archivable):
         rows = self.batches if k == total else reconstructed_spectra(self.batches, k, total)
         return self.spectrum, rows
 
-    def __repr__(self):
-        pm = ", ".join(f"{e:.4f}±{s:.4f}" for e, s in zip(self.exponents, self.stderr))
-        return f"LyapunovResult([{pm}], T={self.params.get('t_final')})"
+    def summary_parts(self):
+        """The averaging time and the exponents ± their standard errors."""
+        T = self.params.get("t_final")
+        return [f"T = {T:g}" if T is not None else "", exponent_words(self.exponents, self.stderr)]
 
 
 @announces_compilation

@@ -18,14 +18,14 @@ import numpy as np
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, counted, dataset
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
                         start_state, steps_of, Documented)
 
 __all__ = ["Waveform", "PowerSpectrum", "waveform", "power_spectrum"]
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class Waveform(Archivable):
     """Sampled trajectory: t (S,), theta (S, N), u (S, N); sample spacing ``dt_sample``;
     ``params``: the system, the initial state and the settings of the call."""
@@ -34,6 +34,11 @@ class Waveform(Archivable):
     u: np.ndarray
     dt_sample: float
     params: dict = field(default_factory=dict)
+
+    def summary_parts(self):
+        """The sample spacing and the largest |uᵢ|."""
+        top = f"max |u| {np.abs(self.u).max():.3g} rad / time" if self.u.size else ""
+        return [f"every {self.dt_sample:g}", top]
 
     KIND = "waveform"
 
@@ -72,6 +77,14 @@ class Waveform(Archivable):
 class PowerSpectrum(Archivable, tuple):
     """``(omega, density)`` of :func:`power_spectrum` — still unpacks as that pair — with
     ``params`` (dt_sample, segment_time), ``to_xarray``/``save`` and ``plot``."""
+
+    def summary_parts(self):
+        """The frequencies, the segment length and the frequency of the largest density."""
+        om, S = self.omega, self.density
+        peak = f"peak at ω = {om[np.argmax(S)]:.3g}" if S.size else ""
+        seg = self.params.get("segment_time")
+        return [counted(om.size, "frequency", "frequencies") + (f" up to ω = {om.max():.3g} rad / time" if om.size else ""),
+                f"segments of {seg:g}" if seg is not None else "", peak]
 
     KIND = "spectrum"
 

@@ -1,12 +1,14 @@
 """The one figure style of the project: pyplot-free figures (no global state, no GUI
 backend is ever selected), PNG bytes or files written atomically, axes given or new, angle
-wrapping for plots.  No imports from the package's layers but the atomic write."""
+wrapping for plots.  No imports from the package's layers but the atomic write and the words
+for a system that the results' reprs use too (``charts.archive.system_label``)."""
 from __future__ import annotations
 
 import io
 
 import numpy as np
 
+from ..archive import system_label
 from ..atomic import atomic_write
 
 __all__ = ["new_figure", "png_bytes", "save_png", "DPI", "figure_axes", "wrap", "broken_at_wraps",
@@ -100,19 +102,3 @@ def broken_at_wraps(angles, extra=()):
     where = np.flatnonzero(jump) + 1
     return ([np.insert(w, where, np.nan) for w in W] +
             [np.insert(np.asarray(e, dtype=float), where, np.nan) for e in extra])
-
-
-def system_label(params) -> str:
-    """The system of a result's ``params`` in a few words, for titles and legends:
-    "linkage ε = 0.1", "N = 4", with masses, weights and level where they are not the
-    paper's (all 1, level 0)."""
-    if params.get("eps") is not None:
-        return f"linkage ε = {params['eps']:g}"
-    out = f"N = {params.get('n')}"
-    for key in ("masses", "weights"):
-        vals = params.get(key)
-        if vals is not None and any(float(x) != 1.0 for x in vals):
-            out += f", {key} (" + ", ".join(f"{float(x):g}" for x in vals) + ")"
-    if params.get("level"):
-        out += f", level {params['level']:g}"
-    return out

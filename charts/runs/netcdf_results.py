@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..archive import Archivable, attributes, counted, dataset, exponent_coordinate
 from .io import json_default
 
 __all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS", "column_units"]
@@ -81,9 +81,10 @@ class SceneResult(Archivable):
         a = attributes(ds)
         return cls(a["result"], {k: v.values for k, v in ds.data_vars.items()}, a["scene_text"])
 
-    def __repr__(self):
-        return (f"SceneResult({self.result.get('scene', {}).get('name')!r}, "
-                f"status={self.result.get('status')!r}, arrays={sorted(self.arrays)})")
+    def summary_parts(self):
+        """The scene's name, the run's status and how many arrays it holds."""
+        return [repr(self.result.get("scene", {}).get("name")),
+                f"status={self.result.get('status')!r}", counted(len(self.arrays), "array")]
 
 
 #: Units of the sweep table's known columns (``charts.runs.sweep``: the exponents and their
@@ -151,6 +152,7 @@ class SweepTable(Archivable):
         a = attributes(ds)
         return cls({k: ds[k].values for k in a["column_order"]}, a["table"])
 
-    def __repr__(self):
+    def summary_parts(self):
+        """The points and the columns of the table."""
         n = len(next(iter(self.columns.values()))) if self.columns else 0
-        return f"SweepTable({n} points, columns={list(self.columns)})"
+        return [counted(n, "point"), counted(len(self.columns), "column")]

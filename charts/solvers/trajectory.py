@@ -7,13 +7,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, counted, dataset
 from .dense import DenseSolution
 
 __all__ = ["IntegrationResult"]
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class IntegrationResult(Archivable):
     """Samples of a geodesic, in ambient coordinates for both formulations.
 
@@ -132,7 +132,13 @@ class IntegrationResult(Archivable):
         from .. import plotting
         return plotting.plot_trajectory(self, kind, **kw)
 
-    def __repr__(self):
-        return (f"IntegrationResult({self.formulation}/{self.method}, {self.t.size} samples, "
-                f"t = {self.t[-1] if self.t.size else 0.0:g}, {len(self.switches)} switches, "
-                f"{self.n_steps} steps, status={self.status!r})")
+    def summary_parts(self):
+        """Formulation and method, steps, chart switches, events, energy drift, status."""
+        events = sum(len(te) for te in self.t_events) if self.t_events is not None else None
+        energy = self.drift.get("energy")
+        return [f"{self.formulation}/{self.method}", counted(self.n_steps, "step"),
+                counted(len(self.switches), "chart switch", "chart switches")
+                if self.formulation == "chart" else "",
+                counted(events, "event") if events is not None else "",
+                f"energy drift {energy:.1e}" if energy is not None else "",
+                f"status={self.status!r}"]
