@@ -36,9 +36,10 @@ separated by spaces, present only when they name something.  A trajectory's file
 
     :method = "dop853" ;  :n_steps = 10 ;  :drift_energy = 1.04e-10 ;
     :options_rtol = 1.e-10 ;  :options_project = 0 ;  :options_t_span = 0., 2. ;
+    :options_output = "steps" ;  :options_tau = 0.9 ;
     :params_n = 3 ;  :params_masses = 1., 1., 1. ;  :params_theta0 = 0.786, 2.496, 1.479 ;
     :charts_lists = "options_t_span params_masses params_weights params_theta0 params_u0" ;
-    :charts_booleans = "options_project" ;  :charts_none = "options_dt" ;
+    :charts_booleans = "options_project" ;  :charts_none = "options_chart" ;
 
 Every file also carries the CF global attributes (``Conventions``, ``title``, ``history``,
 ``source``, ``references``, and ``comment``: the units of the settings, `COMMENT`).  Files

@@ -27,6 +27,9 @@ def results():
         "trajectory": charts.integrate(SYS3, TH3, U3, 12.0, events=[_section, lambda t, y: y[3]],
                                        transport=SYS3.project_tangent(TH3, np.array([1.0, 0, 0]))),
         "trajectory_plain": charts.integrate(SYS4, TH4, U4, 2.0, method="rk4", formulation="ambient"),
+        # a starting chart that the best one (3) replaces at t = 1.17: the switches tell them apart
+        "trajectory_chart": charts.integrate(SYS4, TH4, U4, 2.0, method="rk4", chart=2,
+                                             t_eval=np.linspace(0.0, 2.0, 21)),
         "lyapunov": charts.lyapunov_spectrum(SYS4, TH4, U4, 20.0, t_transient=1.0),
         "curvature": charts.curvature_along_trajectory(SYS4, TH4, U4, 3.0, t_transient=1.0),
         "angles": charts.hyperbolicity_angles(SYS4, TH4, U4, 5.0, t_transient=5.0),
@@ -60,9 +63,9 @@ def _same(a, b, where):
         assert a == b and type(a) is type(b), (where, a, b)
 
 
-@pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "covariant", "waveform", "spectrum", "ensemble",
-                                  "angle_ensemble"])
+@pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "trajectory_chart", "lyapunov",
+                                  "curvature", "angles", "covariant", "waveform", "spectrum",
+                                  "ensemble", "angle_ensemble"])
 def test_round_trip_identical(results, name, tmp_path):
     res = results[name]
     path = res.save(tmp_path / f"{name}.nc")
@@ -286,14 +289,23 @@ def _rebuild(ds, name, a=None):
                                 level=float(a["params_level"]))
     state = (np.atleast_1d(a["params_theta0"]), np.atleast_1d(a["params_u0"]))
     if name.startswith("trajectory"):
-        rk4 = a["method"] == "rk4"
-        assert ("options_dt" in a) == rk4 and ("options_rtol" in a) != rk4  # only what applies
+        rk4, chart = a["method"] == "rk4", a["formulation"] == "chart"
+        # only what applies, not even as None: the method's own options, the chart's for it
+        named = {k for k in a if k.startswith("options_")} | {
+            k for k in a.get("charts_none", "").split() if k.startswith("options_")}
+        assert {"options_dt"} & named == ({"options_dt"} if rk4 else set())
+        assert {"options_rtol", "options_atol"} & named == (set() if rk4 else {"options_rtol",
+                                                                               "options_atol"})
+        assert {"options_tau", "options_chart"} & named == (
+            {"options_tau", "options_chart"} if chart else set())
+        assert set(a.get("charts_none", "").split()) & named <= {"options_chart"}
         span = np.atleast_1d(a["options_t_span"])
         return charts.integrate(
             system, *state, float(span[1]), method=a["method"], formulation=a["formulation"],
             dt=_plain(a, "options_dt"), rtol=_plain(a, "options_rtol"),
             atol=_plain(a, "options_atol"), project=bool(a["options_project"]),
-            **({"tau": float(a["options_tau"])} if "options_tau" in a else {}),
+            **({"tau": float(a["options_tau"]), "chart": _plain(a, "options_chart", int)}
+               if chart else {}),
             transport=ds["transported"].values[0] if "transported" in ds else None,
             t_eval=ds["t"].values if a["options_output"] == "t_eval" else None)
     common = dict(dt=float(a["params_dt"]), t_transient=float(a["params_t_transient"]),
@@ -328,13 +340,14 @@ def _rebuild(ds, name, a=None):
 
 
 #: A variable of each result type that the repeated call must give bit for bit.
-REBUILT = {"trajectory": "theta", "trajectory_plain": "theta", "lyapunov": "exponents",
+REBUILT = {"trajectory": "theta", "trajectory_plain": "theta", "trajectory_chart": "theta",
+           "lyapunov": "exponents",
            "curvature": "K_numeric", "angles": "phi_restricted", "covariant": "vectors",
            "waveform": "u"}
 
 
-@pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "lyapunov", "curvature",
-                                  "angles", "covariant", "waveform", "ensemble",
+@pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "trajectory_chart", "lyapunov",
+                                  "curvature", "angles", "covariant", "waveform", "ensemble",
                                   "angle_ensemble"])
 def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
     """Opened with plain xarray (no charts): CF global attributes, every dimension labelled,
@@ -364,6 +377,9 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
             again = _rebuild(ds, name).to_xarray()
             var = REBUILT[name]
             assert np.array_equal(again[var].values, ds[var].values), name
+            if name.startswith("trajectory"):            # and the same chart switches
+                for key in ("switch_t", "switch_from", "switch_to", "t"):
+                    assert np.array_equal(again[key].values, ds[key].values), (name, key)
         if name == "lyapunov":
             assert np.array_equal(again["energy_share_counts"].values,
                                   ds["energy_share_counts"].values)

@@ -96,15 +96,19 @@ class IntegrationArguments:
                     u0=np.asarray(self.u0, float).tolist(), n_transported=int(self.P.shape[0]))
 
     def options(self) -> dict:
-        """The settings a result records (``IntegrationResult.options``): RK4's ``dt`` or
-        DOP853's ``rtol``, ``atol`` (None for the method's other settings, which mean nothing
-        to it, so that a saved file carries only those that apply)."""
-        rk4 = self.method == "rk4"
-        return dict(dt=self.dt if rk4 else None, rtol=None if rk4 else self.rtol,
-                    atol=None if rk4 else self.atol, project=self.project,
-                    tau=self.tau if self.formulation == "chart" else None,
-                    chunk_steps=self.chunk_steps, t_span=[self.t0, self.t1],
-                    output="t_eval" if self.use_eval else "steps")
+        """The settings a result records (``IntegrationResult.options``), only those that
+        apply, so that a saved file carries nothing that meant nothing to the run: RK4's
+        ``dt`` or DOP853's ``rtol`` and ``atol``; ``project``; the chart formulation's
+        ``tau`` and ``chart`` (the starting chart asked for; None: the best conditioned
+        one); ``chunk_steps``, ``t_span`` and ``output`` ("t_eval": the samples are at the
+        times ``t_eval`` asked for, which the file's ``t`` holds; "steps": at every step)."""
+        out = dict(dt=self.dt) if self.method == "rk4" else dict(rtol=self.rtol, atol=self.atol)
+        out["project"] = self.project
+        if self.formulation == "chart":
+            out.update(tau=self.tau, chart=None if self.chart is None else int(self.chart))
+        out.update(chunk_steps=self.chunk_steps, t_span=[self.t0, self.t1],
+                   output="t_eval" if self.use_eval else "steps")
+        return out
 
 
 def check_arguments(system, theta0, u0, t_final, *, t_span, formulation, method, dt, rtol, atol,
