@@ -60,7 +60,7 @@ import numpy as np
 from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
-           "ENGINE", "TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
+           "ENGINE", "TITLES", "ENSEMBLE_TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
            "member_attributes", "index_coordinate", "same_value", "one_line", "system_label",
            "counted", "span_words", "exponent_words", "smallest_words", "REPR_WIDTH"]
 
@@ -133,10 +133,20 @@ TITLES = {
     "covariant": "covariant Lyapunov vectors (charts.covariant_lyapunov_vectors)",
     "waveform": "waveforms theta(t), u(t) (charts.waveform)",
     "spectrum": "power spectrum (charts.power_spectrum)",
-    "ensemble": "ensemble of independent trajectories (charts ensembles)",
+    "ensemble": "ensemble of independent trajectories (an EnsembleResult)",
     "linkage": "Lyapunov exponents and curvature of the Appendix's linkage (charts.linkage_run)",
     "scene": "scene results (charts run)",
     "sweep": "sweep table (charts sweep)",
+}
+#: Titles of the ensembles' files by the kind of their members: what each member holds and the
+#: function that runs them (`TITLES` ``"ensemble"`` for members of any other kind).
+ENSEMBLE_TITLES = {
+    "lyapunov": "ensemble of Lyapunov spectra of independent trajectories "
+                "(charts.lyapunov_ensemble)",
+    "angles": "ensemble of hyperbolicity angle tests of independent trajectories "
+              "(charts.hyperbolicity_ensemble)",
+    "linkage": "ensemble of runs of the Appendix's linkage, Lyapunov exponents and curvature "
+               "(charts.linkage_ensemble)",
 }
 #: CF global attributes every file carries (not settings: `attributes` leaves them out).
 GLOBALS = ("Conventions", "title", "history", "source", "references", "institution", "comment")
@@ -272,7 +282,7 @@ def _values(attrs) -> dict:
     return out
 
 
-def _global_attributes(kind: str) -> dict:
+def _global_attributes(kind: str, title: str | None = None) -> dict:
     import datetime
     import platform
 
@@ -285,15 +295,17 @@ def _global_attributes(kind: str) -> dict:
     except ImportError:                      # pragma: no cover - numba is a dependency
         pass
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    return {"Conventions": "CF-1.10", "title": f"charts: {TITLES.get(kind, kind)}",
+    return {"Conventions": "CF-1.10", "title": f"charts: {title or TITLES.get(kind, kind)}",
             "history": f"{now}: written by charts {__version__}",
             "source": ", ".join(versions), "references": REFERENCE, "comment": COMMENT}
 
 
-def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict | None = None):
+def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict | None = None,
+            title: str | None = None):
     """An ``xarray.Dataset`` stamped with ``charts_kind`` and ``charts_version`` and the CF
     global attributes (`GLOBALS`: conventions, title, history, source, references, and the
-    ``comment`` `COMMENT` on the settings' units).
+    ``comment`` `COMMENT` on the settings' units).  ``title``: the CF title where the kind's
+    (`TITLES`) says too little (an ensemble's names its members, `ENSEMBLE_TITLES`).
 
     ``data_vars`` and ``coords``: name → ``(dims, array, units)`` or
     ``(dims, array, units, description)``; ``attrs``: settings (name → value, written by
@@ -314,7 +326,7 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
         if dim not in ds.coords:                   # the result has no coordinate of its own
             ds = ds.assign_coords({dim: xr.Variable((dim,), np.arange(size, dtype=np.int64),
                                                     {"units": "1", "long_name": f"{dim} index, from 0"})})
-    ds.attrs.update(_global_attributes(kind))
+    ds.attrs.update(_global_attributes(kind, title))
     ds.attrs.update(encode(attrs or {}))
     ds.attrs["charts_kind"] = kind
     ds.attrs["charts_version"] = __version__

@@ -171,6 +171,11 @@ def test_datasets_have_named_dims_units_and_stamps(results):
     assert list(ds["spectrum_index"].values) == list(range(1, ds.sizes["spectrum_index"] + 1))
     assert "from 1" in ds["spectrum_index"].attrs["long_name"]          # as exponent
     assert ds.attrs["params_t_final"] == 20.0 and "params" not in ds.attrs   # no JSON copy
+    # an ensemble's title names what its members hold and the function that ran them
+    assert results["ensemble"].to_xarray().attrs["title"] == (
+        "charts: ensemble of Lyapunov spectra of independent trajectories "
+        "(charts.lyapunov_ensemble)")
+    assert "(charts.hyperbolicity_ensemble)" in results["angle_ensemble"].to_xarray().attrs["title"]
 
 
 def test_scene_writes_netcdf_beside_result_json(tmp_path):

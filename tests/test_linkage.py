@@ -354,6 +354,7 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     assert np.array_equal(again.exponents, e.exponents)
     with xr.open_dataset(tmp_path / "ensemble.nc", engine="h5netcdf") as ds:
         assert list(ds["exponent"].values) == [1, 2] and ds["K"].dims[-1] == "exponent"
+        assert "linkage" in ds.attrs["title"] and "(charts.linkage_ensemble)" in ds.attrs["title"]
         q0 = ds["member.params.q0"]           # the members' states: numbers with their units
         assert q0.dims == ("member", "q_component") and "component_units" in q0.attrs["units"]
     for m, n in zip(again.members, e.members):

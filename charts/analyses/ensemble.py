@@ -8,9 +8,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (MEMBER, Archivable, attributes, counted, dataset, exponent_words,
-                       member_attributes, member_settings, require_xarray, same_value,
-                       smallest_words)
+from ..archive import (ENSEMBLE_TITLES, MEMBER, Archivable, attributes, counted, dataset,
+                       exponent_words, member_attributes, member_settings, require_xarray,
+                       same_value, smallest_words)
 from ..compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
@@ -96,8 +96,9 @@ class EnsembleResult(SpectrumQuantities, Archivable):
                                          "exponents (std)")
         shared, varying = member_settings([attributes(p) for p in parts])
         data.update(varying)
-        return dataset(self.KIND, data, coords=coords,
-                       attrs={"params": self.params, "member_kind": kinds.pop(), **shared})
+        member_kind = kinds.pop()
+        return dataset(self.KIND, data, coords=coords, title=ENSEMBLE_TITLES.get(member_kind),
+                       attrs={"params": self.params, "member_kind": member_kind, **shared})
 
     @classmethod
     def from_xarray(cls, ds):
