@@ -155,7 +155,7 @@ GLOBALS = ("Conventions", "title", "history", "source", "references", "instituti
 COMMENT = ("Units of the settings (params_*, options_*, member.params.*): times (t_final, "
            "t_transient, dt, t_span, every *_every) in time units of the flow; angles (theta0) "
            "in rad; velocities (u0) and speed in rad / time (the linkage's q0, v0: see "
-           "component_units).  params_seed seeds the random tangent vectors; in an ensemble, "
+           "q_component_units).  params_seed seeds the random tangent vectors; in an ensemble, "
            "member i has seed + i for its initial state and its tangent vectors.  Every "
            "variable carries its own units.")
 #: Settings dicts (and the trajectory's ``drift``) written entry by entry as native NetCDF
@@ -394,8 +394,8 @@ def member_settings(settings: list) -> tuple[dict, dict]:
 MEMBER_DIMS = {"theta0": "rotor", "u0": "rotor", "masses": "rotor", "weights": "rotor",
                "q0": "q_component", "v0": "q_component"}
 MEMBER_UNITS = {"theta0": "rad", "u0": "rad / time", "speed": "rad / time",
-                "q0": "rad (θ₀…θ₃, α), length (x, y): component_units[:7]",
-                "v0": "rad / time, length / time (x, y): component_units[7:]"}
+                "q0": "rad (θ₀…θ₃, α), length (x, y): q_component_units",
+                "v0": "rad / time, length / time (x, y): q_component_units per time"}
 
 
 def _number_rows(values) -> bool:

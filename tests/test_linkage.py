@@ -357,6 +357,11 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
         assert "linkage" in ds.attrs["title"] and "(charts.linkage_ensemble)" in ds.attrs["title"]
         q0 = ds["member.params.q0"]           # the members' states: numbers with their units
         assert q0.dims == ("member", "q_component") and "component_units" in q0.attrs["units"]
+        # its components named as a run's: the first 7 of component, with their units
+        assert list(ds["q_component"].values) == list(ds["component"].values[:7]) == [
+            "theta_0", "theta_1", "theta_2", "theta_3", "x", "y", "alpha"]
+        assert list(ds["q_component_units"].values) == list(ds["component_units"].values[:7])
+        assert ds["member.params.v0"].dims == ("member", "q_component")
     for m, n in zip(again.members, e.members):
         for a in ("exponents", "stderr", "batches", "t", "states", "K"):
             assert np.array_equal(getattr(m, a), getattr(n, a), equal_nan=True), a

@@ -21,7 +21,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate, exponent_words
+from ..archive import (MEMBER_DIMS, Archivable, attributes, dataset, exponent_coordinate,
+                       exponent_words)
 from ..compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
@@ -136,7 +137,8 @@ class LinkageResult(SpectrumQuantities, Archivable):
                   "component": (("component",), np.array(COMPONENTS), "1",
                                 "θ₀…θ₃, the disk's x, y, α, then their velocities"),
                   "component_units": (("component",), np.array(COMPONENT_UNITS), "1",
-                                      "the unit of each component of states")}
+                                      "the unit of each component of states"),
+                  **q_component_coordinates()}
         return dataset(self.KIND, data, coords=coords, attrs={
             "params": self.params, "min_sin2": self.min_sin2, "min_health": self.min_health})
 
@@ -158,6 +160,18 @@ class LinkageResult(SpectrumQuantities, Archivable):
     def summary_parts(self):
         """The exponents ± their standard errors and the smallest Σ sin²θᵢ met."""
         return [exponent_words(self.exponents, self.stderr), f"min Σ sin²θ {self.min_sin2:.3g}"]
+
+
+def q_component_coordinates() -> dict:
+    """The coordinates that name the 7 components of q (θ₀…θ₃, x, y, α: the first of
+    `COMPONENTS`) and their units, along the dimension of the settings q0 and v0 (v0 holds
+    their rates) in an ensemble's file (``charts.archive.MEMBER_DIMS``), for `dataset`'s
+    ``coords``: a run's file has them too, naming the entries of ``params_q0``, ``params_v0``."""
+    dim = MEMBER_DIMS["q0"]
+    return {dim: ((dim,), np.array(COMPONENTS[:NQ]), "1",
+                  "component of q (q0; v0 holds their rates), as component"),
+            f"{dim}_units": ((dim,), np.array(COMPONENT_UNITS[:NQ]), "1",
+                             "the unit of each component of q0 (of v0: the same per time)")}
 
 
 def frame_curvatures(system, row, k):
