@@ -60,7 +60,7 @@ import numpy as np
 from .atomic import atomic_write
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
-           "ENGINE", "TITLES", "ENSEMBLE_TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
+           "ENGINE", "RATE", "ANGULAR_VELOCITY", "TITLES", "ENSEMBLE_TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
            "member_attributes", "index_coordinate", "same_value", "one_line", "system_label",
            "counted", "span_words", "exponent_words", "smallest_words", "REPR_WIDTH"]
 
@@ -122,6 +122,11 @@ def _decode(v):
         return v.tolist()
     return v
 
+
+#: Units as the files write them and the figures' labels say them, one spelling (time in time
+#: units of the flow): exponents and growth rates, and angular velocities and frequencies.
+RATE = "1 / time"
+ANGULAR_VELOCITY = "rad / time"
 
 #: Titles of the files of each kind (CF ``title``).
 TITLES = {
@@ -393,7 +398,7 @@ def member_settings(settings: list) -> tuple[dict, dict]:
 #: state: one number per rotor), and its units; other lists: ``<name>_entry``, units "1".
 MEMBER_DIMS = {"theta0": "rotor", "u0": "rotor", "masses": "rotor", "weights": "rotor",
                "q0": "q_component", "v0": "q_component"}
-MEMBER_UNITS = {"theta0": "rad", "u0": "rad / time", "speed": "rad / time",
+MEMBER_UNITS = {"theta0": "rad", "u0": ANGULAR_VELOCITY, "speed": ANGULAR_VELOCITY,
                 "q0": "rad (θ₀…θ₃, α), length (x, y): q_component_units",
                 "v0": "rad / time, length / time (x, y): q_component_units per time"}
 

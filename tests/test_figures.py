@@ -79,10 +79,14 @@ def test_analysis_plots():
     check_axes(w.plot()[1])
     assert w.plot()[1].get_title() == "angles against time, N = 4"   # no charts: no switch count
     fig, axes = w.plot(kind="velocities", rotors=[0, 2], window=(10.0, 60.0))
-    assert [a.get_ylabel() for a in axes] == ["$u_{0}$ (rad/time)", "$u_{2}$ (rad/time)"]
+    assert [a.get_ylabel() for a in axes] == ["$u_{0}$ (rad / time)", "$u_{2}$ (rad / time)"]
     assert np.array_equal(axes[1].lines[0].get_ydata(), w.u[(w.t >= 10) & (w.t <= 60), 2])
     check_axes(axes[-1])                                 # the panels share the time axis
     assert lyap.plot()[1].get_title().startswith("Lyapunov exponents, N = 4\n")
+    # the units of the labels are spelled as in the files: λ in 1 / time, u and ω in rad / time
+    assert lyap.plot()[1].get_ylabel() == f"λ ({lyap.to_xarray()['exponents'].attrs['units']})"
+    assert lyap.plot_spectrum()[1].get_ylabel() == "λᵢ (1 / time)"
+    assert w.to_xarray()["u"].attrs["units"] == "rad / time"
     masses = charts.lyapunov_spectrum(charts.RotorSystem(4, masses=[1, 2, 3, 1]), th, u, 4.0,
                                       t_transient=1.0, n_batches=2)
     assert "N = 4, masses (1, 2, 3, 1)" in masses.plot_spectrum()[1].get_legend().get_texts()[0].get_text()
@@ -153,7 +157,7 @@ def test_scene_spectrum_and_angles_figures(captured):
     scene_figures.spectrum_png(_Scene, om, np.exp(-om), 200.0)
     ax = captured[-1].axes[0]
     check_axes(ax)
-    assert "rad per unit time" in ax.get_xlabel()
+    assert ax.get_xlabel() == "ω (rad / time)" and "(rad / time)²" in ax.get_ylabel()
     phi = np.random.default_rng(2).uniform(0.1, 1.5, 500)
     scene_figures.angles_png(_Scene, {"angles_full": phi, "angles_restricted": phi})
     for ax in captured[-1].axes:

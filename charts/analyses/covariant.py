@@ -41,7 +41,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ..archive import (Archivable, attributes, dataset, exponent_words, index_coordinate,
+from ..archive import (ANGULAR_VELOCITY, RATE, Archivable, attributes, dataset, exponent_words, index_coordinate,
                        smallest_words)
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
@@ -297,8 +297,8 @@ class CovariantResult(Archivable):
             "phi": (("t",), self.phi, "rad", "angle between E_u and E_cs"),
             "phi_vectors": (("t",), self.phi_vectors, "rad",
                             "angle between the leading unstable and the leading stable CLV"),
-            "growth": (("t", "clv"), self.growth, "1 / time", "growth rate along each CLV"),
-            "gs_rates": (("t", "clv"), self.gs_rates, "1 / time",
+            "growth": (("t", "clv"), self.growth, RATE, "growth rate along each CLV"),
+            "gs_rates": (("t", "clv"), self.gs_rates, RATE,
                          "growth rate of each Gram-Schmidt vector"),
             "states": (("t", "component"), self.states, "see component_units",
                        "state (theta, u) at the samples")}
@@ -311,7 +311,7 @@ class CovariantResult(Archivable):
                                          + [f"u_{i}" for i in range(n)]), "1",
                                 "θ₀…θ_{N−1}, then u₀…u_{N−1}"),
                   "component_units": (("component",),
-                                      np.array(["rad"] * n + ["rad / time"] * n), "1",
+                                      np.array(["rad"] * n + [ANGULAR_VELOCITY] * n), "1",
                                       "the unit of each component of states")}
         if self.vectors is not None:
             data["vectors"] = (("t", "clv", "component"), self.vectors, "1", "unit CLVs")

@@ -32,7 +32,7 @@ from math import sqrt
 import numpy as np
 from numba import njit
 
-from ..archive import Archivable, attributes, dataset, index_coordinate
+from ..archive import ANGULAR_VELOCITY, Archivable, attributes, dataset, index_coordinate
 from ..compilation import announces_compilation
 from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
                              tangent_rate, transport_rate)
@@ -301,7 +301,7 @@ class CurvatureResult(Archivable):
         (t, direction, direction2); the settings as attributes."""
         dims = ("t", "direction", "direction2")
         data = {"theta": (("t", "rotor"), self.theta, "rad"),
-                "u": (("t", "rotor"), self.u, "rad / time"),
+                "u": (("t", "rotor"), self.u, ANGULAR_VELOCITY),
                 "frames": (("t", "frame", "rotor"), self.frames, "rad", "M-orthonormal frame"),
                 "K_numeric": (dims, self.K_numeric, "1 / rad²", "route (a), eqs (19)–(21)")}
         if self.K_exact is not None:

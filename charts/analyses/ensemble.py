@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (ENSEMBLE_TITLES, MEMBER, Archivable, attributes, counted, dataset,
+from ..archive import (ENSEMBLE_TITLES, MEMBER, RATE, Archivable, attributes, counted, dataset,
                        exponent_words, member_attributes, member_settings, require_xarray,
                        same_value, smallest_words)
 from ..compilation import announce, timed_call
@@ -87,8 +87,8 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         data = {k: spec(k, v) for k, v in stacked.data_vars.items()}
         coords = {k: spec(k, v) for k, v in stacked.coords.items()}
         if self.exponents is not None:
-            data["ensemble_exponents"] = (("exponent",), self.exponents, "1 / time", "mean")
-            data["ensemble_stderr"] = (("exponent",), self.stderr, "1 / time",
+            data["ensemble_exponents"] = (("exponent",), self.exponents, RATE, "mean")
+            data["ensemble_stderr"] = (("exponent",), self.stderr, RATE,
                                        "two-sided standard error of the mean")
         if self.error_ratio is not None:
             data["batch_error_ratio"] = (("exponent",), self.error_ratio, "1",

@@ -40,7 +40,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, index_coordinate, smallest_words
+from ..archive import RATE, Archivable, attributes, dataset, index_coordinate, smallest_words
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device
@@ -107,8 +107,8 @@ class AngleResult(Archivable):
             "phi_full": (("t",), self.phi_full, "rad", "angle, full 2N-dim tangent space"),
             "phi_restricted": (("t",), self.phi_restricted, "rad",
                                "angle, constraint-preserving tangent space"),
-            "forward_exponents": (("vector",), self.forward_exponents, "1 / time"),
-            "adjoint_exponents": (("vector",), self.adjoint_exponents, "1 / time")},
+            "forward_exponents": (("vector",), self.forward_exponents, RATE),
+            "adjoint_exponents": (("vector",), self.adjoint_exponents, RATE)},
             coords={"t": (("t",), self.t, "time"),
                     "vector": index_coordinate("vector", len(self.forward_exponents),
                                                "i of the i-th tangent / adjoint vector, from 1")},

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (MEMBER_DIMS, Archivable, attributes, dataset, exponent_coordinate,
+from ..archive import (ANGULAR_VELOCITY, MEMBER_DIMS, RATE, Archivable, attributes, dataset, exponent_coordinate,
                        exponent_words)
 from ..compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
@@ -41,8 +41,8 @@ __all__ = ["LinkageResult", "linkage_run", "run_steps", "linkage_ensemble", "lin
 #: angle, then their velocities, with their units.
 COMPONENTS = ("theta_0", "theta_1", "theta_2", "theta_3", "x", "y", "alpha", "u_0", "u_1",
               "u_2", "u_3", "x_dot", "y_dot", "alpha_dot")
-COMPONENT_UNITS = ("rad",) * 4 + ("length", "length", "rad") + ("rad / time",) * 4 + (
-    "length / time", "length / time", "rad / time")
+COMPONENT_UNITS = ("rad",) * 4 + ("length", "length", "rad") + (ANGULAR_VELOCITY,) * 4 + (
+    "length / time", "length / time", ANGULAR_VELOCITY)
 #: Positive exponents of the linkage's geodesic flow (its configuration space is 3-dimensional,
 #: as the rotors' N = 4 manifold: N − 2 = 2), and the relevant spectrum's size (2 · 3).
 POSITIVE_EXPONENTS, SPECTRUM_SIZE = 2, 6
@@ -124,10 +124,10 @@ class LinkageResult(SpectrumQuantities, Archivable):
         attributes (``charts.archive``); the exponents counted from 1 (λ₁ the largest, as
         `LyapunovResult`'s); the state's 14 components are q (θ₀…θ₃ and the disk's three
         coordinates), then their velocities."""
-        data = {"exponents": (("exponent",), self.exponents, "1 / time",
+        data = {"exponents": (("exponent",), self.exponents, RATE,
                               "Lyapunov exponents λᵢ, λ₁ the largest"),
-                "stderr": (("exponent",), self.stderr, "1 / time", "batch-means standard error"),
-                "batches": (("batch", "exponent"), self.batches, "1 / time", "batch estimates"),
+                "stderr": (("exponent",), self.stderr, RATE, "batch-means standard error"),
+                "batches": (("batch", "exponent"), self.batches, RATE, "batch estimates"),
                 "K": (("sample", "exponent"), self.K, "1 / rad^2",
                       "sectional curvature K(unit velocity, e_i) (Gauss equation)"),
                 "states": (("sample", "component"), self.states, "see component_units",

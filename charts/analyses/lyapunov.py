@@ -22,7 +22,8 @@ from functools import partial
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate, exponent_words
+from ..archive import (RATE, Archivable, attributes, dataset, exponent_coordinate,
+                       exponent_words)
 from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges
@@ -171,16 +172,16 @@ class LyapunovResult(SpectrumQuantities, Archivable):
         """Dataset: exponents, stderr (exponent); history (record, exponent) at history_t;
         batches (batch, exponent); full_spectrum (spectrum_index); the settings as attributes."""
         k = len(self.exponents)
-        data = {"exponents": (("exponent",), self.exponents, "1 / time",
+        data = {"exponents": (("exponent",), self.exponents, RATE,
                               "Lyapunov exponents λᵢ (eq 18), λ₁ the largest"),
-                "stderr": (("exponent",), self.stderr, "1 / time", "two-sided standard error"),
-                "history": (("record", "exponent"), self.history, "1 / time",
+                "stderr": (("exponent",), self.stderr, RATE, "two-sided standard error"),
+                "history": (("record", "exponent"), self.history, RATE,
                             "running estimates"),
-                "batches": (("batch", "exponent"), self.batches, "1 / time", "batch estimates")}
+                "batches": (("batch", "exponent"), self.batches, RATE, "batch estimates")}
         coords = {"exponent": exponent_coordinate(k),
                   "history_t": (("record",), self.history_t, "time", "averaging time")}
         if self.spectrum is not None:
-            data["full_spectrum"] = (("spectrum_index",), self.spectrum, "1 / time",
+            data["full_spectrum"] = (("spectrum_index",), self.spectrum, RATE,
                                      "the whole spectrum of the 2N−2 dimensional phase "
                                      "space, (λ…, 0, 0, −λ…): reconstructed from the "
                                      "leading N−2, or computed")

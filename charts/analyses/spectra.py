@@ -18,7 +18,7 @@ import numpy as np
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
-from ..archive import Archivable, attributes, counted, dataset
+from ..archive import ANGULAR_VELOCITY, Archivable, attributes, counted, dataset
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
                         start_state, steps_of, Documented)
 
@@ -37,7 +37,7 @@ class Waveform(Archivable):
 
     def summary_parts(self):
         """The sample spacing and the largest |uᵢ|."""
-        top = f"max |u| {np.abs(self.u).max():.3g} rad / time" if self.u.size else ""
+        top = f"max |u| {np.abs(self.u).max():.3g} {ANGULAR_VELOCITY}" if self.u.size else ""
         return [f"every {self.dt_sample:g}", top]
 
     KIND = "waveform"
@@ -46,7 +46,7 @@ class Waveform(Archivable):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
         attributes (``charts.archive``)."""
         return dataset(self.KIND, {"theta": (("t", "rotor"), self.theta, "rad"),
-                                   "u": (("t", "rotor"), self.u, "rad / time")},
+                                   "u": (("t", "rotor"), self.u, ANGULAR_VELOCITY)},
                        coords={"t": (("t",), self.t, "time"),
                                "rotor": (("rotor",), np.arange(self.theta.shape[1]), "1",
                                          "rotor index, from 0 as in scenes")},
@@ -83,7 +83,7 @@ class PowerSpectrum(Archivable, tuple):
         om, S = self.omega, self.density
         peak = f"peak at ω = {om[np.argmax(S)]:.3g}" if S.size else ""
         seg = self.params.get("segment_time")
-        return [counted(om.size, "frequency", "frequencies") + (f" up to ω = {om.max():.3g} rad / time" if om.size else ""),
+        return [counted(om.size, "frequency", "frequencies") + (f" up to ω = {om.max():.3g} {ANGULAR_VELOCITY}" if om.size else ""),
                 f"segments of {seg:g}" if seg is not None else "", peak]
 
     KIND = "spectrum"
@@ -109,7 +109,7 @@ class PowerSpectrum(Archivable, tuple):
         attributes (``charts.archive``)."""
         return dataset(self.KIND, {"density": (("omega",), self.density, "signal² · time / rad",
                                                "one-sided power spectral density per unit ω")},
-                       coords={"omega": (("omega",), self.omega, "rad / time",
+                       coords={"omega": (("omega",), self.omega, ANGULAR_VELOCITY,
                                          "angular frequency ω")},
                        attrs={"params": self.params})
 

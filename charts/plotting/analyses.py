@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..archive import ANGULAR_VELOCITY, RATE
 from .style import MAX_POINTS, TIME, figure_axes, line_colors, new_figure, time_window
 
 __all__ = ["plot_lyapunov", "plot_ensemble_exponents", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
@@ -67,7 +68,7 @@ def plot_lyapunov(T, H, exponents, stderr=None, *, paper=None, paper_label="pape
         ax.xaxis.set_major_formatter(FuncFormatter(lambda x, _: f"{x:g}"))
         ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("averaging time T (time units of the flow)")
-    ax.set_ylabel("λ (1 / time unit)")
+    ax.set_ylabel(f"λ ({RATE})")
     how = "running estimates"
     if stderr is not None:
         how += "; band and bar: final estimate ± standard error"
@@ -91,7 +92,7 @@ def plot_lyapunov_spectrum(exponents, stderr, n, *, ax=None, label=None, title=N
                 label=label or f"N = {n}")
     ax.axhline(0.0, color="0.6", lw=0.8)
     ax.set_xlabel("i / (N − 2)")
-    ax.set_ylabel("λᵢ (1 / time unit)")
+    ax.set_ylabel(f"λᵢ ({RATE})")
     ax.set_title(title or "Lyapunov spectrum (positive half) ± standard error", fontsize=10)
     ax.legend(fontsize=8, frameon=False)
     return fig, ax
@@ -115,7 +116,7 @@ def plot_ensemble_exponents(members, exponents, stderr, *, ax=None, title=None):
     ax.set_xticks(np.arange(1, k + 1), [f"λ{i + 1}" for i in range(k)])
     ax.set_xlim(0.5, k + 0.7)
     ax.set_xlabel("exponent")
-    ax.set_ylabel("λ (1 / time unit)")
+    ax.set_ylabel(f"λ ({RATE})")
     ax.set_title(title or f"Lyapunov exponents\n{m} members", fontsize=10)
     ax.legend(fontsize=8, frameon=False)
     return fig, ax
@@ -210,7 +211,7 @@ def plot_spectrum(omega, density, *, ax=None, label=None, title=None):
     fig, ax = figure_axes(ax, figsize=(6.5, 3.8))
     sel = (omega > 0) & (density > LOG_FLOOR)
     ax.semilogy(omega[sel], density[sel], lw=0.8, label=label)
-    ax.set_xlabel("ω (rad per unit time)")
+    ax.set_xlabel(f"ω ({ANGULAR_VELOCITY})")
     ax.set_ylabel("power spectral density (per unit ω)")
     ax.set_title(title or "power spectrum", fontsize=10)
     return fig, ax

@@ -4,6 +4,7 @@ of a sweep summary (one dict per ε: statistic → mean over seeds, ``<statistic
 standard error)."""
 from __future__ import annotations
 
+from ..archive import RATE
 from .style import new_figure
 
 __all__ = ["plot_linkage_epsilon", "ERROR_BARS"]
@@ -50,7 +51,7 @@ def plot_linkage_epsilon(rows, x="eps", *, paper=(), title="the linkage against 
     if "cone_distance_min" in stats:
         xs = sorted(r[x] for r in rows)
         ax[2].plot(xs, [2 * e for e in xs], "k:", label="2ε")
-    ax[0].set(ylabel="Lyapunov exponent (1/time)", title="Lyapunov exponents")
+    ax[0].set(ylabel=f"Lyapunov exponent ({RATE})", title="Lyapunov exponents")
     ax[1].set(ylabel="fraction of samples", title="Positive sectional curvature")
     ax[2].set(yscale="log", ylabel="rad, or dimensionless", title="Cone points and tangencies")
     ticks = sorted({r[x] for r in rows})

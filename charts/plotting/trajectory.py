@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..archive import ANGULAR_VELOCITY
 from .style import MAX_POINTS, TIME, broken_at_wraps, figure_axes, new_figure, time_window, wrap
 
 __all__ = ["plot_angles_time", "plot_velocities_time", "plot_surface", "plot_poincare", "animate_rotors",
@@ -43,7 +44,7 @@ def plot_angles_time(t, theta, *, switches=None, window=None, max_points=MAX_POI
 
 def plot_velocities_time(t, u, rotors=None, *, window=None, max_points=MAX_POINTS, axes=None,
                          title=None):
-    """The angular velocities uᵢ(t) (rad per unit time; the paper's figure 2), one panel per
+    """The angular velocities uᵢ(t) (rad / time; the paper's figure 2), one panel per
     rotor of ``rotors`` (default all; ``u`` (S, N), or (S, len(rotors)) with ``rotors``
     naming its columns when ``u`` holds only those); ``window`` = (t0, t1) and at most
     ``max_points`` samples per line as `plot_angles_time`.  ``(fig, axes)``."""
@@ -58,10 +59,10 @@ def plot_velocities_time(t, u, rotors=None, *, window=None, max_points=MAX_POINT
     fig = axes[0].figure
     for ax, r, col in zip(axes, rotors, cols.T):
         ax.plot(t, col, lw=0.7)
-        ax.set_ylabel(f"$u_{{{r}}}$ (rad/time)")
+        ax.set_ylabel(f"$u_{{{r}}}$ ({ANGULAR_VELOCITY})")
     axes[-1].set_xlabel(TIME)
     every = f", every {stride}th sample" if stride > 1 else ""
-    fig.suptitle(title or f"angular velocities (rad per unit time){every}", fontsize=10)
+    fig.suptitle(title or f"angular velocities ({ANGULAR_VELOCITY}){every}", fontsize=10)
     return fig, axes
 
 
@@ -109,7 +110,7 @@ def plot_surface(theta, *, system=None, ax=None, title=None):
 
 
 def _state_label(i, n):
-    return f"θ$_{i}$ (rad)" if i < n else f"u$_{i - n}$ (rad / time)"
+    return f"θ$_{i}$ (rad)" if i < n else f"u$_{i - n}$ ({ANGULAR_VELOCITY})"
 
 
 def plot_poincare(result, *, coords=(1, 4), event=0, select=None, ax=None, title=None,

@@ -10,7 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..archive import Archivable, attributes, counted, dataset, exponent_coordinate
+from ..archive import (ANGULAR_VELOCITY, RATE, Archivable, attributes, counted, dataset,
+                       exponent_coordinate)
 from .io import json_default
 
 __all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS", "column_units"]
@@ -21,15 +22,15 @@ SCENE_NETCDF = "results.nc"
 #: Dimensions and units of the arrays a scene stores (``arrays.npz`` keys).
 ARRAY_LAYOUT = {
     "waveforms_t": (("waveforms_sample",), "time"),
-    "waveforms_u": (("waveforms_sample", "waveforms_rotor"), "rad / time"),
-    "spectrum_omega": (("frequency",), "rad / time"),
-    "spectrum_psd": (("frequency",), "(rad / time)² per unit ω"),
+    "waveforms_u": (("waveforms_sample", "waveforms_rotor"), ANGULAR_VELOCITY),
+    "spectrum_omega": (("frequency",), ANGULAR_VELOCITY),
+    "spectrum_psd": (("frequency",), f"({ANGULAR_VELOCITY})² per unit ω"),
     "drift_t": (("drift_sample",), "time"),
     "drift_constraint": (("drift_sample",), "1"),
-    "drift_tangency": (("drift_sample",), "rad / time"),
+    "drift_tangency": (("drift_sample",), ANGULAR_VELOCITY),
     "drift_energy": (("drift_sample",), "1"),
     "lyapunov_history_t": (("lyapunov_record",), "time"),
-    "lyapunov_history": (("lyapunov_record", "exponent"), "1 / time"),
+    "lyapunov_history": (("lyapunov_record", "exponent"), RATE),
     "energy_share_counts": (("share_bin",), "1"),
     "angles_t": (("angles_sample",), "time"),
     "angles_full": (("angles_sample",), "rad"),
@@ -89,7 +90,7 @@ class SceneResult(Archivable):
 
 #: Units of the sweep table's known columns (``charts.runs.sweep``: the exponents and their
 #: errors, the times, the mean curvatures, the angles), by pattern; every other column "1".
-COLUMN_UNITS = ((r"lambda_\d+(_se)?", "1 / time"), (r"t_final", "time"),
+COLUMN_UNITS = ((r"lambda_\d+(_se)?", RATE), (r"t_final", "time"),
                 (r"Kmean_\w+", "1 / rad^2"),
                 (r"(clv_)?phi_[a-z]+_(min|p001|median)", "rad"), (r"cone_distance_min", "rad"))
 

@@ -3,12 +3,13 @@
 
 Each function takes the computed data keyed by N and a path, writes the figure and
 returns the path.  Time is in units where the speed along the geodesic is 1 (the
-paper's normalisation), angular velocities and angular frequencies in rad per time unit.
+paper's normalisation), angular velocities and angular frequencies in rad / time.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from ..archive import ANGULAR_VELOCITY
 from ..plotting import CURVATURE_QUANTILES, plot_curvature
 from ..plotting.style import new_figure, save_png
 
@@ -36,7 +37,7 @@ def figure2(waveforms, path, t_show=100.0):
         sel = w.t - w.t[0] <= t_show
         for i in range(n):
             ax.plot(w.t[sel] - w.t[0], w.u[sel, i], lw=0.8, label=f"$u_{i}$")
-        ax.set_ylabel("$u_i$ (rad/time)")
+        ax.set_ylabel(f"$u_i$ ({ANGULAR_VELOCITY})")
         ax.set_title(f"({L}) N = {n}, unit speed along the geodesic")
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
     ax.set_xlabel("time t (time units, unit speed)")
@@ -50,9 +51,9 @@ def figure3(spectra, path):
         om, p = spectra[n]
         sel = (om > 0) & (om <= 6.0)
         ax.semilogy(om[sel], p[sel], lw=0.8)
-        ax.set_ylabel(r"$S_{u_0}(\omega)$" "\n((rad/time)² per unit ω)")
+        ax.set_ylabel(r"$S_{u_0}(\omega)$" f"\n(({ANGULAR_VELOCITY})² per unit ω)")
         ax.set_title(f"({L}) N = {n}: Welch spectrum of $u_0$")
-    ax.set_xlabel(r"angular frequency $\omega$ (rad/time)")
+    ax.set_xlabel(rf"angular frequency $\omega$ ({ANGULAR_VELOCITY})")
     return _save(fig, path)
 
 

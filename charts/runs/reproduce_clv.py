@@ -8,6 +8,7 @@ import numpy as np
 from matplotlib.ticker import NullFormatter
 
 from ..analyses.hyperbolicity import angle_statistics
+from ..archive import RATE
 from ..plotting.style import new_figure, save_png
 
 __all__ = ["task_clv", "summarise", "report_lines", "figure_clv", "figure_ftle",
@@ -151,7 +152,7 @@ def figure_ftle(ftle, path):
                     label=f"T = {w:g} (≤ 0: {100 * (L <= 0).mean():.2f} %)")
         ax.axvline(0.0, color="k", lw=0.6)
         ax.set_title(f"N = {n}: leading finite-time Lyapunov exponent", fontsize=9)
-        ax.set_xlabel(r"$\lambda_1(T)$ (1/time)")
+        ax.set_xlabel(rf"$\lambda_1(T)$ ({RATE})")
         ax.set_ylabel("probability density")
         ax.legend(fontsize=7)
     save_png(fig, path)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..archive import ANGULAR_VELOCITY
 from ..plotting import (CURVATURE_QUANTILES, plot_angles, plot_curvature, plot_drift,
                         plot_lyapunov, plot_spectrum, plot_velocities_time)
 from ..plotting.style import new_figure, png_bytes
@@ -27,7 +28,7 @@ def waveforms_png(sc, t, U) -> bytes:
     """The angular velocities uᵢ(t) of the stored window, one panel per rotor."""
     rotors = sc.effects["waveforms"]["rotors"]
     fig, _ = plot_velocities_time(t, U, rotors, max_points=max(1, len(t)),
-                                  title=_title(sc, "angular velocities (rad per unit time)"))
+                                  title=_title(sc, f"angular velocities ({ANGULAR_VELOCITY})"))
     return png_bytes(fig)
 
 
@@ -36,14 +37,14 @@ def spectrum_png(sc, omega, density, segment_time) -> bytes:
     rotor = sc.effects["spectrum"]["rotor"]
     fig, ax = plot_spectrum(omega, density, title=_title(sc, f"power spectral density of $u_{{{rotor}}}$")
                             + f"\n(Welch: Hann segments of {segment_time:g} time units, 50 % overlap)")
-    ax.set_ylabel(f"$S_{{u_{{{rotor}}}}}(\\omega)$ ((rad/time)² per unit ω)")
+    ax.set_ylabel(f"$S_{{u_{{{rotor}}}}}(\\omega)$ (({ANGULAR_VELOCITY})² per unit ω)")
     return png_bytes(fig)
 
 
 def drift_png(sc, t, D) -> bytes:
     """|drift| of the three invariants on a log axis (values at rounding level or exact
     zeros, which a log axis cannot show, are left out and counted in the legend)."""
-    names = ("|Σ cos θᵢ| (constraint)", "|Σ uᵢ sin θᵢ| (tangency, rad/time)",
+    names = ("|Σ cos θᵢ| (constraint)", f"|Σ uᵢ sin θᵢ| (tangency, {ANGULAR_VELOCITY})",
              "|E/E₀ − 1| (energy, relative)")
     fig, _ = plot_drift(t, np.asarray(D).T, names, title=_title(sc, "drift of the invariants"))
     return png_bytes(fig)

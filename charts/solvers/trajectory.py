@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, counted, dataset
+from ..archive import ANGULAR_VELOCITY, Archivable, attributes, counted, dataset
 from .dense import DenseSolution
 
 __all__ = ["IntegrationResult"]
@@ -74,7 +74,7 @@ class IntegrationResult(Archivable):
         n = self.theta.shape[1]
         sw = np.array(self.switches, dtype=float).reshape(-1, 3)
         data = {"theta": (("t", "rotor"), self.theta, "rad", "ambient angles θᵢ (not wrapped)"),
-                "u": (("t", "rotor"), self.u, "rad / time", "angular velocities dθᵢ/dt"),
+                "u": (("t", "rotor"), self.u, ANGULAR_VELOCITY, "angular velocities dθᵢ/dt"),
                 "switch_t": (("switch",), sw[:, 0], "time", "time of the chart switch"),
                 "switch_from": (("switch",), sw[:, 1].astype(np.int64), "1", "chart left"),
                 "switch_to": (("switch",), sw[:, 2].astype(np.int64), "1", "chart entered")}
@@ -101,7 +101,7 @@ class IntegrationResult(Archivable):
                                + [f"u_{i}" for i in range(n)]
                                + [f"p{r}_{i}" for r in range(k) for i in range(n)], "1",
                                "component of the ambient state")
-            coords["state_units"] = (("state",), ["rad"] * n + ["rad / time"] * n
+            coords["state_units"] = (("state",), ["rad"] * n + [ANGULAR_VELOCITY] * n
                                      + ["rad"] * (k * n), "1", "units of each component")
         return dataset(self.KIND, data, coords=coords, attrs=attrs)
 

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from ...analyses.hyperbolicity import SMALL_ANGLE
+from ...archive import RATE
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ...plotting.style import new_figure, save_png
@@ -134,7 +135,7 @@ def _label(stat: str) -> str:
 def _axis_label(stat: str) -> str:
     """The value axis of ``stat``, with its unit."""
     if stat.startswith("lambda_"):
-        return f"{_label(stat)} (1 / time unit)"
+        return f"{_label(stat)} ({RATE})"
     if stat.startswith(("Kpos_", "phi_full_frac", "phi_restricted_frac")):
         return "fraction of samples"
     if stat.startswith("phi_"):
