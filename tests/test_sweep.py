@@ -225,8 +225,10 @@ def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypa
                         lambda *a, **k: calls.append(k.get("resume", False)) or real(*a, **k))
     resumed = evaluate_point(point.raw, str(keep))
     assert calls == [True] and resumed["status"] == "complete"
+    # it says from where it continued: the checkpoint after the third of four chunks
+    assert resumed["resumed_from"] == {"t_done": 3.0, "chunks_done": 3}
     fresh = evaluate_point(point.raw)
-    assert calls == [True, False]
+    assert calls == [True, False] and fresh["resumed_from"] is None
     assert resumed["stats"] == fresh["stats"] and resumed["t_final"] == fresh["t_final"]
     # a checkpoint of another scene there is not resumed: the point starts over
     other = _light_point(3.0)

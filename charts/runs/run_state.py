@@ -76,6 +76,8 @@ class RunState:
         self.done = False
         self.chunk_index = 0
         self.n_main = None             # chunks of the main pass (set by the runner)
+        #: {"t_done", "chunks_done"} of the checkpoint this run continued; None: from the start
+        self.resumed_from = None
 
     def add_compile_time(self, seconds):
         """Count ``seconds`` of compiling (``charts.compilation.compile_timer``)."""

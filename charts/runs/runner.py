@@ -50,7 +50,7 @@ from .linkage_run import linkage_angles_pass
 from .scene_linkage import is_linkage
 from .scene_schema import api_default
 from .scene import Scene
-from .scene_results import (FTLE_STATS, finalize, result_header, resume_command,
+from .scene_results import (FTLE_STATS, finalize, progress_of, result_header, resume_command,
                             write_result)
 
 __all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "PAPER_EXPONENTS",
@@ -178,6 +178,9 @@ class SceneRun:
         self.passes = plan.passes
         self.n_units = self.n_main + len(self.passes)
         st.n_main = self.n_main
+        if resume:
+            progress = progress_of(st, self.ends, transient, self.unit)
+            st.resumed_from = {key: progress[key] for key in ("t_done", "chunks_done")}
 
     def engine(self):
         """The engine of the main pass (``charts.runs.engines``)."""

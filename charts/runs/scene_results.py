@@ -27,7 +27,7 @@ from .scene import scene_to_dict
 from .linkage_run import linkage_result
 from .scene_linkage import is_linkage
 
-__all__ = ["finalize", "result_header", "resume_command", "write_result", "waveforms_result", "spectrum_result", "drift_result",
+__all__ = ["finalize", "progress_of", "result_header", "resume_command", "write_result", "waveforms_result", "spectrum_result", "drift_result",
            "lyapunov_result", "curvature_result", "angles_result", "clv_result",
            "switches_result", "FTLE_STATS"]
 
@@ -48,18 +48,26 @@ def write_result(outdir: Path, result: dict) -> None:
     atomic_write(outdir / "result.json", json.dumps(result, indent=2, default=json_default).encode())
 
 
-def result_header(st: RunState, status, ends, transient, unit) -> dict:
-    """The first entries of result.json: status, scene, source, versions and progress."""
+def progress_of(st: RunState, ends, transient, unit) -> dict:
+    """The run's progress: simulated time done after the transient (``t_done``), its
+    ``t_final`` and ``t_transient``, chunks done and in all; with ``resumed_from`` (the
+    ``t_done`` and ``chunks_done`` of the checkpoint it continued) where it resumed."""
     sc, plan = st.scene, st.plan
     t_done = max(0, units_done(st, ends) - transient) * unit
     if not plan.main_pass:    # the separate passes only: done when the last one has run
         t_done = sc.run["t_final"] if st.chunk_index == len(plan.passes) else 0.0
-    return {"status": status, "scene": scene_to_dict(sc), "source": sc.source,
-            "versions": versions(),
-            "progress": {"t_done": t_done, "t_final": sc.run["t_final"],
-                         "t_transient": sc.run["t_transient"],
-                         "chunks_done": st.chunk_index,
-                         "chunks": (len(ends) if plan.main_pass else 0) + len(plan.passes)}}
+    out = {"t_done": t_done, "t_final": sc.run["t_final"], "t_transient": sc.run["t_transient"],
+           "chunks_done": st.chunk_index,
+           "chunks": (len(ends) if plan.main_pass else 0) + len(plan.passes)}
+    if st.resumed_from is not None:
+        out["resumed_from"] = st.resumed_from
+    return out
+
+
+def result_header(st: RunState, status, ends, transient, unit) -> dict:
+    """The first entries of result.json: status, scene, source, versions and progress."""
+    return {"status": status, "scene": scene_to_dict(st.scene), "source": st.scene.source,
+            "versions": versions(), "progress": progress_of(st, ends, transient, unit)}
 
 
 def resume_command(st: RunState, outdir: Path) -> str:

@@ -28,8 +28,10 @@ def evaluate_point(raw: dict, keep=None) -> dict:
     """Run one point (on a Dask worker) quietly, in the folder ``keep`` if given and
     writable (the sweep's ``points/<point id>``: its checkpoints survive an interrupted sweep,
     and a point found there half done is resumed, with the same numbers), else in a
-    temporary folder.  Returns {'status', 'error', 'stats', 'wall_s', 'worker', 't_final'};
-    never raises for a point that fails to integrate (status 'failed' with the message)."""
+    temporary folder.  Returns {'status', 'error', 'stats', 'wall_s', 'worker', 't_final',
+    'resumed_from'} ('resumed_from': the simulated time and chunks of the checkpoint the
+    point continued, None if it ran from the start); never raises for a point that fails to
+    integrate (status 'failed' with the message)."""
     scene = parse_scene(raw, source=raw.get("name", "<point>"))
     t0 = time.perf_counter()
     folder = _kept_folder(keep)
@@ -144,7 +146,8 @@ def _point_outcome(outcome, folder: Path, wall_s: float) -> dict:
         status = "failed"
         error = (f"non-finite results ({', '.join(bad) or 'drift'}): the trajectory left the "
                  "manifold; set [scene.integrator] project = true or a smaller dt")
+    progress = result.get("progress", {})
     return {"status": status, "error": error, "stats": stats,
-            "t_final": result.get("progress", {}).get("t_done"),
+            "t_final": progress.get("t_done"), "resumed_from": progress.get("resumed_from"),
             "wall_s": round(wall_s, 3),
             "worker": f"{socket.gethostname()}:{os.getpid()}"}
