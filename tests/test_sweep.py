@@ -236,6 +236,59 @@ def test_a_long_point_interrupted_resumes_from_its_checkpoint(tmp_path, monkeypa
     assert calls[2:] == [True, False] and resumed_other["status"] == "complete"
 
 
+LIGHT = """name = "light"
+[scene.system]
+n = 3
+[scene.integrator]
+dt = 0.01
+[scene.run]
+t_final = 4.0
+t_transient = 0.0
+checkpoint_every = 1.0
+[scene.effects.lyapunov]
+n_batches = 2
+[sweep]
+seeds = [1]
+[sweep.parameters]
+m = [0.5]
+[sweep.masses]
+p = [1, "m", 1]
+"""
+
+
+def test_a_sweep_says_where_it_runs_before_its_bar_and_logs_a_resumed_point(tmp_path):
+    """The command line's first line says where the points run ("1 worker", singular),
+    before the progress bar draws (stdout and stderr in one pipe); a point that continues
+    the checkpoint of an interrupted sweep is recorded in log.jsonl with where it resumed."""
+    import re
+
+    from charts.runs import runner
+    spec = tmp_path / "light.toml"
+    spec.write_text(LIGHT)
+    point = sweep_points(load_sweep(spec))[0]
+    out = tmp_path / "out"
+
+    def stop(idx, total):
+        if idx == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):      # what a sweep killed in this point leaves
+        runner.run_scene(point.scene, out / POINTS / point.point_id, quiet=True, on_chunk=stop)
+    proc = subprocess.run([sys.executable, "-m", "charts.cli.main", "sweep", str(spec), "-o",
+                           str(out), "--workers", "1", "--no-plots"], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True, timeout=WAIT_S)
+    assert proc.returncode == 0, proc.stdout
+    lines = [x.strip() for x in re.split(r"[\r\n]+", proc.stdout) if x.strip()]
+    said = [i for i, x in enumerate(lines) if "(0 finished before" in x]
+    bars = [i for i, x in enumerate(lines) if x.startswith("light:") and "%|" in x]
+    assert said and bars and said[0] < bars[0], lines
+    assert lines[said[0]] == ("light: 1 point (0 finished before, 1 to compute) on a local "
+                              "cluster of 1 worker")
+    log = [json.loads(x) for x in (out / LOG).read_text().splitlines()]
+    assert [x["point_id"] for x in log] == [point.point_id]
+    assert log[0]["resumed_from"] == {"t_done": 2.0, "chunks_done": 2}
+
+
 def test_a_point_asks_dask_for_no_client_of_the_cluster(monkeypatch):
     """A point runs with Dask's synchronous scheduler.  Writing its NetCDF file, xarray asks
     Dask for a scheduler; without that setting the question reaches distributed's

@@ -5,6 +5,7 @@ import shlex
 import sys
 from pathlib import Path
 
+from ..archive import counted
 from ..runs.cli_parser import positive_count
 from ..runs.sweep import (TABLE, SweepError, bundled_sweeps, load_sweep, resolve_sweep,
                           run_sweep)
@@ -93,7 +94,7 @@ def cmd_sweep(args) -> int:
 
 
 def _report(name: str, info: dict, outdir: Path, plots: bool = True) -> None:
-    print(f"{name}: {info['points']} points, {info['skipped']} finished before, "
+    print(f"{name}: {counted(info['points'], 'point')}, {info['skipped']} finished before, "
           f"{len(info['computed'])} computed now, {len(info['failed'])} failed -> "
           f"{info['table']}")
     for idx, err in info["failed"] + info["lost"]:

@@ -14,6 +14,7 @@ import time
 import uuid
 
 from ...analyses.arguments import positive_int
+from ...archive import counted
 from ..io import atomic_text
 from ..outdir import OutputLock, prepare_output
 from ..scene import scene_to_dict
@@ -256,14 +257,14 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
         workers = min(workers or os.cpu_count() or 1, max(1, len(groups)))
     client, cluster = dask_client(scheduler, workers)
     app = TableAppender(outdir)
-    bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
-    futures = {}
+    futures, bar = {}, None
     try:
         nw = len(client.scheduler_info().get("workers", {}))
-        if not quiet:
-            where = scheduler or f"a local cluster of {nw} workers"
-            bar.write(f"{sweep.name}: {total} points ({n_done} finished before, {len(todo)} to "
-                      f"compute) on {where}")
+        if not quiet:               # said (and flushed) before the bar draws its first line
+            where = scheduler or f"a local cluster of {counted(nw, 'worker')}"
+            print(f"{sweep.name}: {counted(total, 'point')} ({n_done} finished before, "
+                  f"{len(todo)} to compute) on {where}", flush=True)
+        bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
         # identical scenes are computed once; the seeds of a point together, in lanes
         for block in lane_blocks(groups, max(nw, 1)):
             # a point computed alone keeps its checkpoints in points/<id> until its row is
@@ -297,7 +298,8 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
         client.cancel(list(futures))
         raise
     finally:
-        bar.close()
+        if bar is not None:
+            bar.close()
         app.close()
         client.close()
         if cluster is not None:
