@@ -30,6 +30,7 @@ def run3():
 def test_trajectory_plots(run3):
     fig, ax = run3.plot("angles")
     check_axes(ax)
+    assert ax.get_title() == f"angles against time, N = 3 ({len(run3.switches)} chart switches)"
     assert sum(1 for ln in ax.lines if ln.get_linestyle() == "--") == len(run3.switches) > 0
     w = np.concatenate([ln.get_ydata() for ln in ax.lines if ln.get_label().startswith("θ")])
     assert np.nanmax(np.abs(w)) <= np.pi                 # wrapped, lines broken at the wrap
@@ -43,6 +44,27 @@ def test_trajectory_plots(run3):
     check_axes(ax)
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("θ$_1$ (rad)", "u$_1$ (rad / time)")
     assert len(ax.collections[0].get_offsets()) == len(run3.t_events[0]) > 0
+
+
+def test_a_poincare_section_is_named_by_the_coordinate_its_crossings_fix():
+    """`section_words` finds the component of [θ, u] that one or two values hold at every
+    crossing (angles modulo 2π), with the direction of the crossing for an angle; nothing
+    where no single component is fixed or too few crossings show it."""
+    from charts.plotting.trajectory import section_words
+    rng = np.random.default_rng(1)
+    Y = rng.normal(size=(40, 8))
+    assert section_words(Y, 4) is None
+    Y[:, 2] = np.pi / 2 + 2 * np.pi * rng.integers(-3, 3, 40)      # θ₂ ≡ π/2, crossed both ways
+    assert section_words(Y, 4) == "θ₂ = π/2"
+    Y[:, 6] = np.abs(Y[:, 6])
+    assert section_words(Y, 4) == "θ₂ = π/2, u₂ > 0"
+    Y[::2, 2] = -np.pi + 1e-12                                      # a second sheet at π
+    Y[::2, 6] *= -1
+    assert section_words(Y, 4) == "θ₂ = π/2 (u₂ > 0) or π (u₂ < 0)"
+    Y = rng.normal(size=(40, 8))
+    Y[:, 5] = 1e-17                                                 # u₁ = 0: no direction known
+    assert section_words(Y, 4) == "u₁ = 0"
+    assert section_words(Y[:1], 4) is None and section_words(Y[:2, [0, 1, 2, 3, 4, 4, 6, 7]], 4) is None
 
 
 def test_rotor_animation_gif(run3, tmp_path, monkeypatch):

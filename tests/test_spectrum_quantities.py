@@ -95,6 +95,12 @@ def test_poincare_select_keeps_one_sheet():
     assert np.all(Y[np.cos(Y[:, 0]) > 0, 3] > 0) and np.all(Y[np.cos(Y[:, 0]) < 0, 3] < 0)
     _, ax = res.plot("poincare", select=lambda Z: np.cos(Z[:, 0]) > 0)
     assert len(ax.collections[0].get_offsets()) == both[0]
+    # the title says which section: the coordinate fixed, its value, the direction
+    assert ax.get_title() == f"Poincaré section θ₀ = 0, u₀ > 0: {both[0]} crossings"
+    _, ax = res.plot("poincare")
+    assert ax.get_title() == f"Poincaré section θ₀ = 0 (u₀ > 0) or π (u₀ < 0): {len(Y)} crossings"
+    _, ax = res.plot("poincare", section="sin θ₀ = 0 upwards")
+    assert ax.get_title().startswith("Poincaré section sin θ₀ = 0 upwards: ")
 
 
 def test_angles_of_a_long_run_take_a_window_and_are_thinned():

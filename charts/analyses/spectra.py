@@ -70,7 +70,7 @@ class Waveform(Archivable):
             return plot_velocities_time(self.t, self.u, axes=ax, **kw)
         if kind != "angles":
             raise ValueError(f"kind must be 'angles' or 'velocities', got {kind!r}")
-        kw.setdefault("title", f"angles against time, {system_label(self.params)}")
+        kw.setdefault("system", system_label(self.params))
         return plot_angles_time(self.t, self.theta, ax=ax, **kw)
 
 

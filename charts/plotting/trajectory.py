@@ -6,19 +6,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..archive import ANGULAR_VELOCITY
-from .style import MAX_POINTS, TIME, broken_at_wraps, figure_axes, new_figure, time_window, wrap
+from ..archive import ANGULAR_VELOCITY, counted
+from .style import (MAX_POINTS, TIME, broken_at_wraps, figure_axes, new_figure, system_label,
+                    time_window, wrap)
 
 __all__ = ["plot_angles_time", "plot_velocities_time", "plot_surface", "plot_poincare", "animate_rotors",
-           "plot_trajectory", "save_animation"]
+           "plot_trajectory", "save_animation", "section_words", "SECTION_TOL"]
 
 
 def plot_angles_time(t, theta, *, switches=None, window=None, max_points=MAX_POINTS, ax=None,
-                     title=None):
+                     title=None, system=None):
     """θᵢ(t) wrapped to (−π, π], one line per rotor; chart switches ``(t, from, to)`` as
-    thin vertical lines, counted in the title (None: a route without charts, nothing said).  ``window`` = (t0, t1): only that span (the whole of a long run
-    smears into a block); at most ``max_points`` samples per line (every k-th: the title
-    says so)."""
+    thin vertical lines, counted in the title (None: a route without charts, nothing said).
+    ``window`` = (t0, t1): only that span (the whole of a long run smears into a block); at
+    most ``max_points`` samples per line (every k-th: the title says so); ``system`` (e.g.
+    `system_label`'s words) in the title."""
     fig, ax = figure_axes(ax, figsize=(7.5, 3.6))
     t, theta, stride = time_window(t, theta, window, max_points)
     charts_ = switches is not None
@@ -37,7 +39,8 @@ def plot_angles_time(t, theta, *, switches=None, window=None, max_points=MAX_POI
     ax.set_yticks([-np.pi, -np.pi / 2, 0, np.pi / 2, np.pi], ["−π", "−π/2", "0", "π/2", "π"])
     every = f"every {stride}th sample" if stride > 1 else ""
     notes = ", ".join(x for x in (f"{len(switches)} chart switches" if charts_ else "", every) if x)
-    ax.set_title(title or ("angles against time" + (f" ({notes})" if notes else "")), fontsize=10)
+    what = f"angles against time, {system}" if system else "angles against time"
+    ax.set_title(title or (what + (f" ({notes})" if notes else "")), fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     return fig, ax
 
@@ -113,13 +116,71 @@ def _state_label(i, n):
     return f"θ$_{i}$ (rad)" if i < n else f"u$_{i - n}$ ({ANGULAR_VELOCITY})"
 
 
+_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+#: Largest spread (rad for angles, modulo 2π; relative for velocities) of a state component
+#: over the crossings of a section for `section_words` to call it one value: the crossings
+#: are located on the steps' interpolants to 1e-14 in time (``charts.solvers.events``), so a
+#: coordinate the event fixes spreads far less, and one it does not, far more.
+SECTION_TOL = 1e-6
+#: Angles named by their multiple of π in `section_words`.
+_NAMED_ANGLES = ((-0.5, "−π/2"), (0.0, "0"), (0.5, "π/2"), (1.0, "π"))
+
+
+def _angle_words(v):
+    return next((name for k, name in _NAMED_ANGLES if abs(wrap(v - k * np.pi)) < SECTION_TOL),
+                f"{v:.4g}")
+
+
+def section_words(Y, n):
+    """Words naming the section that the event states ``Y`` (m, ≥ 2n: [θ, u, …]) lie on: the
+    first component of [θ, u] that takes one value at every crossing, or two (angles modulo
+    2π; within `SECTION_TOL`), with the sign of uᵢ there for an angle θᵢ (the direction of
+    the crossing): "θ₀ = 0, u₀ > 0", "θ₀ = 0 (u₀ > 0) or π (u₀ < 0)"; None with fewer than
+    two crossings (three for two values) or where no single component is fixed (an event
+    mixing several)."""
+    Y = np.asarray(Y, dtype=float)
+    if Y.ndim != 2 or len(Y) < 2 or Y.shape[1] < 2 * n:
+        return None
+    for c in range(2 * n):
+        x = Y[:, c]
+        if c < n:
+            def near(a, b):
+                return np.abs(wrap(a - b)) < SECTION_TOL
+        else:
+            def near(a, b):
+                return np.abs(a - b) < SECTION_TOL * max(1.0, abs(b))
+        first = near(x, x[0])
+        groups = [first] if first.all() else [first, ~first & near(x, x[~first][0])]
+        if not np.logical_or.reduce(groups).all() or (len(groups) == 2 and len(Y) < 3):
+            continue
+        i = str(c % n).translate(_SUBSCRIPTS)
+        pieces = []
+        for g in groups:
+            if c >= n:
+                v = x[g][0]
+                pieces.append((v, "0" if abs(v) < SECTION_TOL else f"{v:.4g}", ""))
+                continue
+            v, rate = float(wrap(x[g][0])), Y[g, n + c]
+            v = np.pi if abs(wrap(v - np.pi)) < SECTION_TOL else v      # −π + ε is π
+            sign = f"u{i} > 0" if (rate > 0).all() else f"u{i} < 0" if (rate < 0).all() else ""
+            pieces.append((v, _angle_words(v), sign))
+        name = f"θ{i}" if c < n else f"u{i}"
+        if len(pieces) == 1:
+            return f"{name} = {pieces[0][1]}" + (f", {pieces[0][2]}" if pieces[0][2] else "")
+        return f"{name} = " + " or ".join(w + (f" ({s})" if s else "") for _, w, s in sorted(pieces))
+    return None
+
+
 def plot_poincare(result, *, coords=(1, 4), event=0, select=None, ax=None, title=None,
-                  **scatter_kw):
+                  section=None, **scatter_kw):
     """The points of ``result.y_events[event]`` (an ``integrate`` run with ``events=``) in the
     plane of two state components ``coords`` (indices into [θ, u]; angles wrapped).
     ``select``: a function of the event states (m, …) returning a boolean mask, to keep one
     sheet of a section whose event function vanishes on several (sin θ₀ = 0 holds at θ₀ ≡ 0
-    and at θ₀ ≡ π: ``select=lambda Y: np.cos(Y[:, 0]) > 0`` keeps θ₀ ≡ 0)."""
+    and at θ₀ ≡ π: ``select=lambda Y: np.cos(Y[:, 0]) > 0`` keeps θ₀ ≡ 0).  The title says
+    which section: ``section`` (words), else what the points show (`section_words`: the
+    coordinate the event fixes, its value and the direction of the crossings), else the
+    event's index."""
     if result.y_events is None:
         raise ValueError("the result has no events: integrate with events=[...]")
     n = result.theta.shape[1]
@@ -133,7 +194,9 @@ def plot_poincare(result, *, coords=(1, 4), event=0, select=None, ax=None, title
     ax.scatter(xy[0], xy[1], **kw)
     ax.set_xlabel(_state_label(coords[0], n))
     ax.set_ylabel(_state_label(coords[1], n))
-    ax.set_title(title or f"Poincaré section: {len(Y)} crossings", fontsize=10)
+    section = section or section_words(Y, n) or f"zeros of events[{event}]"
+    ax.set_title(title or f"Poincaré section {section}: {counted(len(Y), 'crossing')}",
+                 fontsize=10)
     return fig, ax
 
 
@@ -193,6 +256,8 @@ def plot_trajectory(result, kind="angles", **kw):
     ``"poincare"`` or ``"animation"``."""
     if kind == "angles":
         switches = result.switches if result.formulation == "chart" else None
+        if result.params.get("n") is not None:
+            kw.setdefault("system", system_label(result.params))
         return plot_angles_time(result.t, result.theta, switches=switches, **kw)
     if kind == "surface":
         return plot_surface(result.theta, **kw)
