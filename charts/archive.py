@@ -59,10 +59,12 @@ import numpy as np
 
 from .atomic import atomic_write
 
-__all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save", "load", "require_xarray",
-           "ENGINE", "RATE", "ANGULAR_VELOCITY", "TITLES", "ENSEMBLE_TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode", "member_settings",
-           "member_attributes", "index_coordinate", "same_value", "one_line", "system_label",
-           "counted", "span_words", "exponent_words", "smallest_words", "REPR_WIDTH"]
+__all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "attributes", "save",
+           "load", "require_xarray", "ENGINE", "RATE", "ANGULAR_VELOCITY", "TITLES",
+           "ENSEMBLE_TITLES", "GLOBALS", "COMMENT", "FLATTENED", "MARKS", "MEMBER", "encode",
+           "member_settings", "member_attributes", "index_coordinate", "same_value",
+           "one_line", "system_label", "counted", "span_words", "exponent_words",
+           "smallest_words", "REPR_WIDTH"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {

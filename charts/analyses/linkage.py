@@ -21,8 +21,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (ANGULAR_VELOCITY, MEMBER_DIMS, RATE, Archivable, attributes, dataset, exponent_coordinate,
-                       exponent_words)
+from ..archive import (ANGULAR_VELOCITY, MEMBER_DIMS, RATE, Archivable, attributes, dataset,
+                       exponent_coordinate, exponent_words)
 from ..compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array

@@ -83,7 +83,8 @@ class PowerSpectrum(Archivable, tuple):
         om, S = self.omega, self.density
         peak = f"peak at ω = {om[np.argmax(S)]:.3g}" if S.size else ""
         seg = self.params.get("segment_time")
-        return [counted(om.size, "frequency", "frequencies") + (f" up to ω = {om.max():.3g} {ANGULAR_VELOCITY}" if om.size else ""),
+        top = f" up to ω = {om.max():.3g} {ANGULAR_VELOCITY}" if om.size else ""
+        return [counted(om.size, "frequency", "frequencies") + top,
                 f"segments of {seg:g}" if seg is not None else "", peak]
 
     KIND = "spectrum"

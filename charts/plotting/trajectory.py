@@ -167,7 +167,8 @@ def section_words(Y, n):
         name = f"θ{i}" if c < n else f"u{i}"
         if len(pieces) == 1:
             return f"{name} = {pieces[0][1]}" + (f", {pieces[0][2]}" if pieces[0][2] else "")
-        return f"{name} = " + " or ".join(w + (f" ({s})" if s else "") for _, w, s in sorted(pieces))
+        return f"{name} = " + " or ".join(w + (f" ({s})" if s else "")
+                                          for _, w, s in sorted(pieces))
     return None
 
 
