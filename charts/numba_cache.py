@@ -7,8 +7,9 @@ the source raises from deep inside numba (``UnpicklingError``, ``EOFError``, a `
 while rebuilding) on every call.  `install` wraps numba's ``Cache.load_overload``: for a
 function of this package such a failure removes that function's index and object files,
 says so on stderr and lets numba compile and cache it anew.  Other packages' caches are left
-to numba.  numba calls `install` through its ``numba_extensions`` entry point (pyproject.toml)
-before it creates its first kernel, so it covers every process that uses charts.
+to numba.  numba calls `install` through its ``numba_extensions`` entry point
+(``charts.numba_init``, pyproject.toml) before it creates its first kernel, so it covers every
+process that uses charts.
 """
 from __future__ import annotations
 

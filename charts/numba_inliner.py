@@ -14,7 +14,7 @@ numba's own code.  The IR, and so the compiled code, is the same.
 The new copy is numba's own source of ``inline_ir`` with those lines replaced; where numba's
 source differs from the lines expected (another numba version), nothing is changed and
 `ACTIVE` stays False.  numba calls `install` through its ``numba_extensions`` entry point
-(pyproject.toml) before it compiles anything.
+(``charts.numba_init``, pyproject.toml) before it compiles anything.
 """
 from __future__ import annotations
 

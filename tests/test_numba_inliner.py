@@ -3,6 +3,8 @@ this numba, the same IR as numba's block-by-block copies, only for charts' calle
 kernels that inline through it compute what they computed."""
 import copy
 import io
+import subprocess
+import sys
 from contextlib import redirect_stdout
 
 import numpy as np
@@ -33,6 +35,16 @@ def test_the_one_copy_is_active_on_this_numba():
                                   "that charts.numba_inliner replaces: check numba's source")
     assert InlineWorker.inline_ir._charts_one_copy
     assert not getattr(InlineWorker.inline_ir.__wrapped__, "_charts_one_copy", False)
+
+
+def test_numba_installs_it_itself_before_compiling():
+    """A process that never imports charts gets it from numba's entry point (as every
+    process that compiles charts' kernels does, workers included)."""
+    code = ("import numba\n@numba.njit\ndef f(x): return x\nf(1)\n"
+            "from numba.core.inline_closurecall import InlineWorker\n"
+            "print(getattr(InlineWorker.inline_ir, '_charts_one_copy', False))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.stdout.strip() == "True", r.stderr
 
 
 def test_one_copy_is_the_same_ir_with_one_scope():

@@ -38,7 +38,7 @@ def plot_angles_time(t, theta, *, switches=None, window=None, max_points=MAX_POI
     ax.set_ylim(-np.pi * 1.05, np.pi * 1.05)
     ax.set_yticks([-np.pi, -np.pi / 2, 0, np.pi / 2, np.pi], ["−π", "−π/2", "0", "π/2", "π"])
     every = f"every {stride}th sample" if stride > 1 else ""
-    notes = ", ".join(x for x in (f"{len(switches)} chart switches" if charts_ else "", every) if x)
+    notes = ", ".join(x for x in (counted(len(switches), "chart switch", "chart switches") if charts_ else "", every) if x)
     what = f"angles against time, {system}" if system else "angles against time"
     ax.set_title(title or (what + (f" ({notes})" if notes else "")), fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
