@@ -14,11 +14,14 @@ numba's own code.  The IR, and so the compiled code, is the same.
 The new copy is numba's own source of ``inline_ir`` with those lines replaced; where numba's
 source differs from the lines expected (another numba version), nothing is changed and
 `ACTIVE` stays False.  numba calls `install` through its ``numba_extensions`` entry point
-(``charts.numba_init``, pyproject.toml) before it compiles anything.
+(``charts.numba_init``, pyproject.toml) before it compiles anything.  The environment
+variable ``CHARTS_NUMBA_INLINER=0`` leaves numba's inliner as it is (for a comparison, or
+should a numba version need it).
 """
 from __future__ import annotations
 
 import inspect
+import os
 import textwrap
 
 __all__ = ["install", "ACTIVE", "PER_BLOCK", "ONE_COPY", "ours"]
@@ -64,6 +67,8 @@ def _one_copy_inline_ir(original):
 def install() -> None:
     """Give numba's inliner the one-copy ``inline_ir`` for charts' callees (idempotent)."""
     global ACTIVE
+    if os.environ.get("CHARTS_NUMBA_INLINER", "1").strip() == "0":
+        return
     from numba.core.inline_closurecall import InlineWorker
 
     if getattr(InlineWorker.inline_ir, "_charts_one_copy", False):

@@ -3,6 +3,7 @@ this numba, the same IR as numba's block-by-block copies, only for charts' calle
 kernels that inline through it compute what they computed."""
 import copy
 import io
+import os
 import subprocess
 import sys
 from contextlib import redirect_stdout
@@ -45,6 +46,10 @@ def test_numba_installs_it_itself_before_compiling():
             "print(getattr(InlineWorker.inline_ir, '_charts_one_copy', False))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.stdout.strip() == "True", r.stderr
+    off = dict(os.environ, CHARTS_NUMBA_INLINER="0")     # numba's own inliner, when asked
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                       env=off)
+    assert r.stdout.strip() == "False", r.stderr
 
 
 def test_one_copy_is_the_same_ir_with_one_scope():
