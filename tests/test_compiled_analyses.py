@@ -13,6 +13,7 @@ from charts.analyses.adjoint_pass import backward_kernel
 from charts.analyses.hyperbolicity import adjoint_step, smallest_singular_values
 from charts.flows.ambient import adjoint_rhs, flow_rhs
 from charts.solvers.status import NONFINITE
+from charts.solvers.tangent import Rotors, Stepping
 from charts.geometry.structured import gauss_frame_curvature
 
 
@@ -92,8 +93,10 @@ def test_backward_pass_stops_at_a_nonfinite_state_like_the_forward_kernel():
     ck[3, 0] = np.nan                  # the state the pass starts from (segment 2's end)
     W = np.linalg.qr(np.random.default_rng(0).normal(size=(10, 3)))[0].T.copy()
     V = np.zeros((2, 40))
-    status, step = backward_kernel(ck, W, s.minv, s.masses, s.weights, s.level, 1.0, 0.01, 10,
-                                   5, 5, 5, V, np.ones(10), np.zeros(3), np.empty(2), np.empty(2))
+    rotors = Rotors(s.minv, s.masses, s.weights, s.level)
+    stepping = Stepping(1.0, 0.01, np.ones(10), True)
+    status, step = backward_kernel(ck, W, rotors, stepping, 10, 5, 5, 5, V, np.zeros(3),
+                                   np.empty(2), np.empty(2))
     assert (status, step) == (NONFINITE, 30)
 
 

@@ -14,7 +14,9 @@ from ..flows.ambient import adjoint_factors, adjoint_rate
 from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.status import RUNNING
-from ..solvers.tangent import orthonormal_rows, stacked_loop, stacked_rk4_step, stacked_work
+from ..solvers.driver import Phases
+from ..solvers.tangent import (Records, Stack, Stepping, orthonormal_rows, stacked_loop,
+                               stacked_rk4_step, stacked_work)
 from .singular_values import smallest_singular_values_into
 
 __all__ = ["adjoint_step", "backward_kernel", "backward_loop", "adjoint_vectors_rate", "sample_sines"]
@@ -90,12 +92,12 @@ def sample_sines(rec, row, V, q, w, y, sc, Wr, ga, gb, M, sv, A):
 
 
 @njit(cache=True)
-def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_sample,
-                    sample_every, reorth, V, w, logs, sf, sr):
+def backward_kernel(ck, W, rotors, stepping, ck_every, first_sample, sample_every, reorth, V,
+                    logs, sf, sr):
     """Backward pass over the segments (last first) down to step ``first_sample``: each
     segment from its checkpoint ck[seg + 1] by the stacked flows' one time loop
-    (``charts.solvers.tangent.stacked_loop``, with the adjoint hook and step −dt; the state
-    is not projected), W re-orthonormalised at every step index that is a multiple of
+    (``charts.solvers.tangent.stacked_loop``, with the adjoint hook and step −dt of the
+    forward flow's ``stepping``; the state is not projected), W re-orthonormalised at every step index that is a multiple of
     ``reorth`` (which divides the segment and sample steps; logs of the norms added to
     ``logs``) and recorded at the sample steps; at the k-th sample step the sines of
     `sample_sines` into sf[k] (full) and sr[k] (restricted), V_k the forward pass's record
@@ -113,16 +115,15 @@ def backward_kernel(ck, W, minv, masses, wts, level, speed, dt, ck_every, first_
     rec = np.empty((ck_every // sample_every + 1, (1 + kk) * d + d))  # Z, then sin, cos
     samples = (np.empty(d), np.empty((2, n)), np.empty((kk, d)), np.empty(d), np.empty(d),
                np.empty((2, kk, kk)), np.empty(2), np.empty((kk, kk)))
-    return backward_loop(ck, Z, np.empty((2, n)), np.zeros(1, dtype=np.int64), rec, minv,
-                         masses, wts, level, speed, dt, ck_every, first_sample, sample_every,
-                         reorth, V, w, logs, sf, sr, np.empty(0, dtype=np.int64),
-                         np.empty((0, 0)), stacked_work(1 + kk, d), samples)
+    return backward_loop(ck, Z, np.empty((2, n)), np.zeros(1, dtype=np.int64), rec, rotors,
+                         stepping, ck_every, first_sample, sample_every, reorth, V, logs, sf, sr,
+                         np.empty(0, dtype=np.int64), np.empty((0, 0)), stacked_work(1 + kk, d),
+                         samples)
 
 
 @njit(cache=True, inline="always")
-def backward_loop(ck, Z, sc, counter, rec, minv, masses, wts, level, speed, dt, ck_every,
-                  first_sample, sample_every, reorth, V, w, logs, sf, sr, no_events, none, work,
-                  samples):
+def backward_loop(ck, Z, sc, counter, rec, rotors, stepping, ck_every, first_sample,
+                  sample_every, reorth, V, logs, sf, sr, no_events, none, work, samples):
     """`backward_kernel` on arrays given by the caller, allocating nothing (it also runs in
     a GPU thread: ``charts.analyses.angle_blocks``): Z (1 + m, 2N) holds W in its rows
     after the first; sc (2, N), counter (1,) and rec (segment samples + 1, (2 + m)·2N)
@@ -132,19 +133,22 @@ def backward_loop(ck, Z, sc, counter, rec, minv, masses, wts, level, speed, dt, 
     n = d // 2
     ys, scs, Wr, ga, gb, M, sv, A = samples
     S = V.shape[0]
+    w = stepping.w
+    adjoint = Stack(Z, sc, counter, logs, no_events)
+    backward = Stepping(stepping.speed, -stepping.dt, w, False)
+    records = Records(rec, no_events, none)
     for seg in range(ck.shape[0] - 2, first_sample // ck_every - 1, -1):
         for i in range(d):
             Z[0, i] = ck[seg + 1, i]
-        sincos(ck[seg + 1], 0, n, wts, sc[0], sc[1])
+        sincos(ck[seg + 1], 0, n, rotors.wts, sc[0], sc[1])
         top = (seg + 1) * ck_every
         low = seg * ck_every
         nsteps = top - (low if low > first_sample else first_sample)
         counter[0] = 0                   # steps down from top (a multiple of reorth)
         rec_start = (top - first_sample) % sample_every
-        status, done = stacked_loop(Z, sc, counter, minv, masses, wts, level, speed, -dt,
-                                    nsteps, reorth, w, False, 0, logs, rec_start, sample_every,
-                                    rec, no_events, none, no_events, adjoint_vectors_rate,
-                                    work)
+        status, done = stacked_loop(adjoint, rotors, backward,
+                                    Phases(0, reorth, rec_start, sample_every), records, nsteps,
+                                    adjoint_vectors_rate, work)
         if status != RUNNING:
             return status, top - done
         for i in range(rec_start if rec_start > 0 else sample_every, nsteps + 1, sample_every):

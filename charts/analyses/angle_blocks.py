@@ -36,8 +36,8 @@ from numba import njit
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
                               load_member, store_member)
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import (check_memory, memory_budget, orthonormalize, stacked_work,
-                               tangent_loop)
+from ..solvers.tangent import (Rotors, Stack, Stepping, check_memory, memory_budget,
+                               orthonormalize, stacked_work, tangent_loop)
 from .adjoint_pass import backward_loop
 from .ensemble import member_states_of
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, forward_segments
@@ -70,8 +70,9 @@ def forward_member(l, Zs, scs, counters, logsums, status, stopped, Vrec, CK, arr
             for i in range(R):
                 for j in range(d):
                     Vrec[l, 0, i * d + j] = Z[i, j]
-    code = forward_segments(Z, sc, counter, minv, m, wts, level, speeds[l], dt, ce, reorth, w,
-                            True, project, logsum, rec_start, sample, Vrec[l, :S], CK[l], a, b,
+    code = forward_segments(Stack(Z, sc, counter, logsum, no_events),
+                            Rotors(minv, m, wts, level), Stepping(speeds[l], dt, w, True),
+                            project, reorth, ce, rec_start, sample, Vrec[l, :S], CK[l], a, b,
                             vec_end, no_events, none, work, tangent_loop)
     store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 
@@ -92,9 +93,10 @@ def backward_member(l, status, stopped, phase, Ws, CK, Vrec, blogs, SF, SR, arra
     for r in range(R - 1):
         for j in range(d):
             Z[1 + r, j] = Ws[l, r, j]
-    code, step = backward_loop(CK[l, :nseg + 1], Z, sc, counter, rec, minv, m, wts, level, 0.0,
-                               dt, ce, first, sample, reorth, Vrec[l, :S], w, blogs[l],
-                               SF[l, :S], SR[l, :S], no_events, none, work, samples)
+    code, step = backward_loop(CK[l, :nseg + 1], Z, sc, counter, rec,
+                               Rotors(minv, m, wts, level), Stepping(0.0, dt, w, True), ce,
+                               first, sample, reorth, Vrec[l, :S], blogs[l], SF[l, :S],
+                               SR[l, :S], no_events, none, work, samples)
     if code != RUNNING:
         status[l] = code
         stopped[l] = origin + step

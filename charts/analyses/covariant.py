@@ -46,7 +46,8 @@ from ..archive import (ANGULAR_VELOCITY, RATE, Archivable, attributes, dataset, 
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
-from ..solvers.tangent import TangentFlow, check_memory, orthonormalize, tangent_kernel
+from ..solvers.driver import Phases
+from ..solvers.tangent import Records, TangentFlow, check_memory, orthonormalize, tangent_kernel
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .finite_time import domination, finite_time_statistics
@@ -102,16 +103,13 @@ def _factor(y, X, minv, s, c, w, restricted, logs, Xraw, Rout):
 def _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by, gs, logs):
     """The forward pass (`_forward_kernel` with the flow's settings): the transient of n_tr
     steps if a = 0, then samples a … b−1.  Returns the kernel's status."""
-    return _forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                           system.weights, system.level, flow.speed, flow.dt, sample,
-                           flow.reorth_every, flow.w, flow.restricted, flow.project_every,
-                           flow.logsum, n_tr, a, b, tau, Xraw, bq, br, by, gs, logs)
+    return _forward_kernel(flow.stack(), flow.rotors(), flow.stepping(), flow.project_every,
+                           flow.reorth_every, sample, n_tr, a, b, tau, Xraw, bq, br, by, gs, logs)
 
 
 @njit(cache=True)
-def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reorth_every, w,
-                    restricted, project_every, logsum, n_tr, a, b, tau, Xraw, bq, br, by, gs,
-                    logs):
+def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample, n_tr, a, b,
+                    tau, Xraw, bq, br, by, gs, logs):
     """If a = 0, the transient first: n_tr steps of the tangent kernel, `_factor`-ed every
     ``sample`` steps.  Then samples j = a … b−1: advance ``sample`` steps (not before j = 0),
     `_factor` the vectors and store Q, R, y in row j − a of bq, br, by and the Gram–Schmidt
@@ -119,6 +117,11 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
     none = np.empty((0, 0))
     no_events = np.empty(0, dtype=np.int64)
     zero = np.int64(0)  # not the literal 0, which would compile tangent_kernel once more
+    phases = Phases(project_every, reorth_every, zero, zero)
+    records = Records(none, no_events, none)
+    Z, sc = stack.Z, stack.sc
+    minv = rotors.minv
+    w, restricted = stepping.w, stepping.restricted
     D = Z.shape[0] - 1
     done = 0
     j = a
@@ -126,9 +129,7 @@ def _forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, sample, reor
         transient = a == 0 and done < n_tr
         k = min(sample, n_tr - done) if transient else (sample if j > 0 else 0)
         if k > 0:
-            status, _ = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k,
-                                       reorth_every, w, restricted, project_every, logsum,
-                                       zero, zero, none, no_events, none, no_events, None)
+            status, _ = tangent_kernel(stack, rotors, stepping, phases, records, k, None)
             if status != RUNNING:
                 return status
         if transient:

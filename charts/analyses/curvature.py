@@ -40,9 +40,10 @@ from ..geometry.primitives import sincos
 from ..geometry.checks import finite_array
 from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
+from ..solvers.driver import Phases
 from ..solvers.status import RUNNING, status_error
-from ..solvers.tangent import (TangentFlow, orthonormalize, reorth_steps, shift_sincos,
-                               tangent_kernel)
+from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reorth_steps,
+                               shift_sincos, tangent_kernel)
 from .arguments import (flag, positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
@@ -217,29 +218,34 @@ _BLOCK = 64
 
 
 @njit(cache=True)
-def _sample_curvature(Z, sc, counter, minv, m, wts, level, speed, dt, sample_steps, reorth, w,
-                      restricted, project_every, Ka, Ys, Ps):
-    """Advance the tangent flow Z = [y; X] ``sample_steps`` steps per sample (re-orthonormalised
-    every ``reorth`` steps, a divisor of ``sample_steps``), `_BLOCK` samples per kernel call
-    with their states recorded, and at each sample store y, the frame and the route-(a)
-    matrix.  Returns (status, samples done).  ``restricted`` comes from the caller (True):
-    the literal True here would compile the tangent kernel a second time, beside the
-    signature `TangentFlow.advance` compiled for the transient (10 s at the first call)."""
+def _sample_curvature(stack, rotors, stepping, project_every, reorth, sample_steps, Ka, Ys, Ps):
+    """Advance the tangent flow Z = [y; X] (``stack``: `Stack`) ``sample_steps`` steps per
+    sample (re-orthonormalised every ``reorth`` steps, a divisor of ``sample_steps``),
+    `_BLOCK` samples per kernel call with their states recorded, and at each sample store y,
+    the frame and the route-(a) matrix.  Returns (status, samples done).  ``stepping`` comes
+    from the caller (restricted True): a literal True here would compile the tangent kernel
+    a second time, beside the signature `TangentFlow.advance` compiled for the transient
+    (10 s at the first call)."""
+    Z, sc, counter = stack.Z, stack.sc, stack.counter
+    minv, m, wts = rotors.minv, rotors.m, rotors.wts
+    dt = stepping.dt
     n = Z.shape[1] // 2
     k = Z.shape[0] - 1
     logs = np.zeros(k)
     no_events = np.empty(0, dtype=np.int64)
+    frames = Stack(Z, sc, counter, logs, no_events)   # the log-norm sums are not kept
     Xj = np.empty((k, 2 * n))
     P = np.empty((k + 1, n))
     work = curvature_work(n, k)
     S = Ka.shape[0]
     buf = np.empty((min(S, _BLOCK), Z.size))
+    records = Records(buf, no_events, buf)
     for a in range(0, S, _BLOCK):
         nb = min(_BLOCK, S - a)
-        status, done = tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt,
-                                      nb * sample_steps, reorth, w, restricted, project_every, logs,
-                                      counter[0] + sample_steps, sample_steps, buf, no_events,
-                                      buf, no_events, None)
+        status, done = tangent_kernel(
+            frames, rotors, stepping,
+            Phases(project_every, reorth, counter[0] + sample_steps, sample_steps), records,
+            nb * sample_steps, None)
         if status != RUNNING:
             return status, a
         for b in range(nb):
@@ -385,10 +391,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     Ps = np.empty((S, k + 1, n))
     for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
-        status, done = _sample_curvature(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                                         system.weights, system.level, flow.speed, dt, sample, reorth, flow.w,
-                                         flow.restricted, project,
-                                         Ka[a:b], Ys[a:b], Ps[a:b])
+        status, done = _sample_curvature(flow.stack(), flow.rotors(), flow.stepping(), project,
+                                         reorth, sample, Ka[a:b], Ys[a:b], Ps[a:b])
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, where)
         rep.update((b - a) * sample * dt)

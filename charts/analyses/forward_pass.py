@@ -9,8 +9,10 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from ..solvers.driver import Phases
 from ..solvers.status import RUNNING
-from ..solvers.tangent import TangentFlow, orthonormalize, reorth_steps, tangent_kernel
+from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reorth_steps,
+                               tangent_kernel)
 from .arguments import (Documented, positive_int, positive_time, project_steps, samples_of,
                         steps_of, unstable_dimension)
 
@@ -73,47 +75,47 @@ def adjoint_start(cfg: AngleSettings, w, block=None):
 
 
 @njit(cache=True)
-def forward_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, restricted,
-                   project, logsum, rec_start, rec_every, states, ck, a, b, vec_end):
+def forward_kernel(stack, rotors, stepping, project, reorth, ce, rec_start, rec_every, states,
+                   ck, a, b, vec_end):
     """`forward_segments` on the CPU: with `tangent_kernel`, which allocates its work."""
-    return forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w,
-                            restricted, project, logsum, rec_start, rec_every, states, ck, a, b,
-                            vec_end, np.empty(0, dtype=np.int64), np.empty((0, 0)), None,
-                            tangent_kernel)
+    return forward_segments(stack, rotors, stepping, project, reorth, ce, rec_start, rec_every,
+                            states, ck, a, b, vec_end, np.empty(0, dtype=np.int64),
+                            np.empty((0, 0)), None, tangent_kernel)
 
 
 @njit(cache=True, inline="always")
-def forward_segments(Z, sc, counter, minv, m, wts, level, speed, dt, ce, reorth, w, restricted,
-                     project, logsum, rec_start, rec_every, states, ck, a, b, vec_end, no_events,
-                     none, work, kernel):
-    """Forward segments a … b−1 of ``ce`` steps of the tangent loop (restricted vectors,
-    samples recorded into ``states``), the state at each segment's end into ck[i + 1]; after
-    global step ``vec_end`` the state alone (its bits do not depend on the vectors).
-    Returns the loop's status.  ``kernel``: `tangent_kernel` (CPU, ``work`` None) or
-    `tangent_loop` on the work arrays ``work`` (``charts.solvers.tangent.stacked_work``),
-    which allocates nothing: in a GPU thread (``charts.analyses.angle_blocks``); no_events
-    (0,), none (0, 0)."""
-    y = Z[:1]
+def forward_segments(stack, rotors, stepping, project, reorth, ce, rec_start, rec_every, states,
+                     ck, a, b, vec_end, no_events, none, work, kernel):
+    """Forward segments a … b−1 of ``ce`` steps of the tangent loop (``stack``: `Stack`,
+    restricted vectors, projected every ``project`` steps, re-orthonormalised every
+    ``reorth``, samples recorded into ``states`` from ``rec_start`` every ``rec_every``
+    steps), the state at each segment's end into ck[i + 1]; after global step ``vec_end``
+    the state alone (its bits do not depend on the vectors).  Returns the loop's status.
+    ``kernel``: `tangent_kernel` (CPU, ``work`` None) or `tangent_loop` on the work arrays
+    ``work`` (``charts.solvers.tangent.stacked_work``), which allocates nothing: in a GPU
+    thread (``charts.analyses.angle_blocks``); no_events (0,), none (0, 0)."""
+    Z, counter = stack.Z, stack.counter
+    alone = Stack(Z[:1], stack.sc, counter, stack.logsum, stack.shares)
     # ``restricted`` (True) from the caller, not the literal True, and typed zeros, not the
     # literal 0: a literal argument compiles the loop once more (a signature of its own
     # beside TangentFlow.advance's, which every other analysis compiles: 8 s)
     zero = np.int64(0)
+    sampled = Phases(project, reorth, rec_start, rec_every)
+    unsampled = Phases(project, reorth, zero, zero)
+    samples = Records(states, no_events, none)
+    nothing = Records(none, no_events, none)
     for i in range(a, b):
         left = ce
         if counter[0] < vec_end:
             k = vec_end - counter[0]
             if ce < k:
                 k = ce
-            status, _ = kernel(Z, sc, counter, minv, m, wts, level, speed, dt, k, reorth,
-                                     w, restricted, project, logsum, rec_start, rec_every, states,
-                                     no_events, none, no_events, work)
+            status, _ = kernel(stack, rotors, stepping, sampled, samples, k, work)
             if status != RUNNING:
                 return status
             left -= k
         if left > 0:
-            status, _ = kernel(y, sc, counter, minv, m, wts, level, speed, dt, left,
-                                     reorth, w, restricted, project, logsum, zero, zero, none,
-                                     no_events, none, no_events, work)
+            status, _ = kernel(alone, rotors, stepping, unsampled, nothing, left, work)
             if status != RUNNING:
                 return status
         for j in range(Z.shape[1]):      # a loop, not a slice copy (adjoint_pass)

@@ -232,10 +232,8 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
         states[0] = flow.Z.ravel()
     for a in range(0, nseg, _SEGMENTS):
         b = min(nseg, a + _SEGMENTS)
-        status = forward_kernel(flow.Z, flow.sc, flow.counter, system.minv, system.masses,
-                                 system.weights, system.level, flow.speed, dt, ce, reorth,
-                                 flow.w, flow.restricted, project, flow.logsum, n_tr, sample,
-                                 states, ck, a, b, n_tr + n_win)
+        status = forward_kernel(flow.stack(), flow.rotors(), flow.stepping(), project, reorth,
+                                ce, n_tr, sample, states, ck, a, b, n_tr + n_win)
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, "hyperbolicity_angles (forward RK4)")
         rep.update((b - a) * ce * dt)
@@ -243,9 +241,8 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     sf = np.empty(S)
     sr = np.empty(S)
     blog = np.zeros(m)
-    status, step = backward_kernel(ck, W, system.minv, system.masses, system.weights,
-                                   system.level, flow.speed, dt, ce, n_tr, sample, reorth,
-                                   states, flow.w, blog, sf, sr)
+    status, step = backward_kernel(ck, W, flow.rotors(), flow.stepping(), ce, n_tr, sample,
+                                   reorth, states, blog, sf, sr)
     if status != RUNNING:
         raise status_error(status, step * dt, "hyperbolicity_angles (backward RK4)")
     rep.update(nsteps * dt)

@@ -27,7 +27,8 @@ import numpy as np
 from numba import njit
 
 from .status import RUNNING, status_error
-from .tangent import stacked_loop, tangent_vectors_rate
+from .driver import Phases
+from .tangent import Records, Rotors, Stack, Stepping, stacked_loop, tangent_vectors_rate
 
 __all__ = ["DeviceFlows", "DeviceUnavailable", "cuda_module", "cuda_available",
            "member_advance", "device_bytes", "DeviceArrays", "flow_states", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
@@ -108,9 +109,11 @@ def member_advance(l, Zs, scs, counters, status, stopped, minv, m, wts, level, s
     if status[l] != RUNNING:
         return
     load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum)
-    code, done = stacked_loop(Z, sc, counter, minv, m, wts, level, speeds[l], dt, nsteps,
-                              reorth_every, w, restricted, project_every, logsum, 0, 0, rec,
-                              events, event_logs[l], shares[l], tangent_vectors_rate, work)
+    code, done = stacked_loop(Stack(Z, sc, counter, logsum, shares[l]),
+                              Rotors(minv, m, wts, level), Stepping(speeds[l], dt, w, restricted),
+                              Phases(project_every, reorth_every, 0, 0),
+                              Records(rec, events, event_logs[l]), nsteps, tangent_vectors_rate,
+                              work)
     store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 
 

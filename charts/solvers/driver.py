@@ -88,10 +88,13 @@ def countdowns(i0, project_every, reorth_every, events):
 @njit(cache=True, inline="always")
 def log_sums(flow, e):
     """The log-event hook of a flow whose vectors keep log-norm sums: ``flow.logsum`` into
-    row e of ``flow.event_logs``."""
+    row e of ``flow.event_logs`` (as many entries as both hold)."""
     logsum = flow.logsum
     event_logs = flow.event_logs
-    for r in range(logsum.size):
+    k = logsum.size
+    if event_logs.shape[1] < k:         # (not min(): numba-cuda fails to type min of two ints)
+        k = event_logs.shape[1]
+    for r in range(k):
         event_logs[e, r] = logsum[r]
 
 

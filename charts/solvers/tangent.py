@@ -43,7 +43,7 @@ __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "or
            "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes", "RotorStack", "stacked_step", "stacked_project",
-           "stacked_reorth", "stacked_record"]
+           "stacked_reorth", "stacked_record", "Stack", "Rotors", "Stepping", "Records"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -317,30 +317,45 @@ def stacked_record(fl, row):
             states[row, nz + n + j] = fl.c0[j]
 
 
-@njit(cache=True, inline="always")
-def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                 restricted, project_every, logsum, rec_start, rec_every, states, events,
-                 event_logs, shares, vectors_rate, work):
-    """Every stacked flow of the rotors in the one time loop (``charts.solvers.driver``):
-    advance Z = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eq (8) and of the
-    vectors' linear flow ``vectors_rate`` (the hook of `stacked_rk4_step`: eq (17) in
-    `tangent_kernel`, the adjoint flow in the backward pass of
-    ``charts.analyses.adjoint_pass``) on the constraint Σ wtsᵢ cos θᵢ = level; dt < 0 steps
-    backward in time.
+#: A stacked flow's state as the kernels take it: Z = [y; X] (1 + k, 2N), the weighted
+#: sin/cos sc (2, N) of y's angles, the global step counter (1,), the log-norm sums (k,) and
+#: the histogram of energy shares (bins,) — `TangentFlow.state`'s arrays.
+Stack = namedtuple("Stack", ["Z", "sc", "counter", "logsum", "shares"])
+#: The system as the kernels read it: M⁻¹ (N,), the masses (N,), the constraint's weights
+#: (N,) and its level.
+Rotors = namedtuple("Rotors", ["minv", "m", "wts", "level"])
+#: How a flow steps: the speed its state is projected back to, the step dt (< 0: backward),
+#: the weights w (2N,) of the vectors' inner product (eq 18) and whether the vectors are kept
+#: in T_r.
+Stepping = namedtuple("Stepping", ["speed", "dt", "w", "restricted"])
+#: What a run records: ``states`` (rows, width): Z's first entries (then sc where wider) at
+#: the record steps (`Phases`); ``events`` (E,): sorted global steps at which ``event_logs``
+#: (E, k) receive the log-norm sums.
+Records = namedtuple("Records", ["states", "events", "event_logs"])
 
-    ``sc`` (2, N): a sin θ, a cos θ of y's angles (a = wts), kept current; ``counter`` (1,):
-    global step count.  After global step i: project y onto the invariants (`project_state`)
-    when i % project_every == 0 (``project_every`` = 0: never); project X onto T_r (if
-    ``restricted``) and re-orthonormalise (eq 18, logs added to ``logsum``) when
-    i % reorth_every == 0; when i ≥ rec_start and (i − rec_start) % rec_every == 0, store
-    the first ``states.shape[1]`` entries of Z (y, then the rows of X), then of sc (the
-    weighted sines, then cosines, as the loop keeps them) in ``states[row]``,
-    row = (i − rec_start) // rec_every (if ``states`` has that row); when i = events[e] (a
-    sorted array of global steps), store ``logsum`` in ``event_logs[e]``; at every
+
+@njit(cache=True, inline="always")
+def stacked_loop(stack, rotors, stepping, phases, records, nsteps, vectors_rate, work):
+    """Every stacked flow of the rotors in the one time loop (``charts.solvers.driver``):
+    advance ``stack.Z`` = [y; X], shape (1 + k, 2N), by ``nsteps`` RK4 steps of eq (8) and of
+    the vectors' linear flow ``vectors_rate`` (the hook of `stacked_rk4_step`: eq (17) in
+    `tangent_kernel`, the adjoint flow in the backward pass of
+    ``charts.analyses.adjoint_pass``) on the constraint Σ wtsᵢ cos θᵢ = level (`Rotors`), as
+    ``stepping`` says (`Stepping`: dt < 0 steps backward in time).
+
+    ``stack`` (`Stack`): sc holds a sin θ, a cos θ of y's angles (a = wts), kept current;
+    counter the global step count.  After global step i (``phases``: `Phases`): project y
+    onto the invariants (`project_state`) when i % project_every == 0 (0: never); project X
+    onto T_r (if restricted) and re-orthonormalise (eq 18, logs added to ``stack.logsum``)
+    when i % reorth_every == 0; when i ≥ rec_start and (i − rec_start) % rec_every == 0,
+    store the first ``records.states.shape[1]`` entries of Z (y, then the rows of X), then
+    of sc (the weighted sines, then cosines, as the loop keeps them) in
+    ``records.states[row]``, row = (i − rec_start) // rec_every (if it has that row); when
+    i = records.events[e], store the log-norm sums in ``records.event_logs[e]``; at every
     re-orthonormalisation step add the largest kinetic-energy share to the histogram
-    ``shares`` (``charts.geometry.energy_shares``; size 0: none).  Each step follows the
-    policy near singular points (`stacked_step`).  Returns (status, steps done): RUNNING, or
-    SINGULAR / NONFINITE with Z at the start of the failing step.
+    ``stack.shares`` (``charts.geometry.energy_shares``; size 0: none).  Each step follows
+    the policy near singular points (`stacked_step`).  Returns (status, steps done):
+    RUNNING, or SINGULAR / NONFINITE with Z at the start of the failing step.
 
     The loop and its hooks are inlined into one function on purpose: an array-valued call or
     view inside the loop would cost reference-count updates per step (see
@@ -350,9 +365,12 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
     ``work`` = (Zt: (1 + k)·2N, K: 4·(1 + k)·2N, then th, dl, s, c, f, g, p, q: N each), the
     work arrays (`stacked_work`), given by the caller: the loop allocates nothing, so that it
     also compiles for a GPU thread whose work arrays are its local memory
-    (``charts.solvers.device``).  (A tuple: a call of more than 30 arguments compiles to a
-    call with ``*args``, which Numba cannot inline.)
+    (``charts.solvers.device``).
     """
+    Z, sc, counter, logsum, shares = stack
+    minv, m, wts, level = rotors
+    speed, dt, w, restricted = stepping
+    states, events, event_logs = records
     R, d = Z.shape
     n = d // 2
     L = R * d
@@ -365,43 +383,34 @@ def stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_
                     level, speed, dt, b(w), restricted, b(logsum), b(states), b(event_logs),
                     b(shares), (b(Zt), b(K), b(th), b(dl), b(s), b(c), b(f), b(g), b(p), b(q)), n,
                     R, np.uint64(n), np.uint64(R), np.uint64(d), np.uint64(L), nz, nsc)
-    code = phased_loop(fl, nsteps, counter,
-                       Phases(project_every, reorth_every, rec_start, rec_every), events,
-                       stacked_step, vectors_rate, stacked_project, stacked_reorth,
-                       log_sums, stacked_record)
+    code = phased_loop(fl, nsteps, counter, phases, events, stacked_step, vectors_rate,
+                       stacked_project, stacked_reorth, log_sums, stacked_record)
     keep_alive(work)                    # the work arrays, borrowed above, live until here
     return code
 
 
 @njit(cache=True)
-def tangent_kernel(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                   restricted, project_every, logsum, rec_start, rec_every, states, events,
-                   event_logs, shares, work):
+def tangent_kernel(stack, rotors, stepping, phases, records, nsteps, work):
     """`stacked_loop` of eqs (8) + (17) (hook `tangent_vectors_rate`): the kernel of
     `TangentFlow` and of every forward analysis on the CPU.  It allocates its work arrays in
     its own body, where LLVM knows they alias nothing (``work`` is ignored: callers pass
     None; it is there so that `tangent_loop` can stand in for it): given by the caller, the
     warm kernel ran 15 % slower (0.138 against 0.120 s, scripts/bench_kernel_pair.py)."""
-    R, d = Z.shape
+    R, d = stack.Z.shape
     n = d // 2
     s, c, f, g, p, q = stage_work(n)
-    return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                        restricted, project_every, logsum, rec_start, rec_every, states, events,
-                        event_logs, shares, tangent_vectors_rate,
+    return stacked_loop(stack, rotors, stepping, phases, records, nsteps, tangent_vectors_rate,
                         (np.empty(R * d), np.empty(4 * R * d), np.empty(n), np.empty(n), s, c, f,
                          g, p, q))
 
 
 @njit(cache=True)
-def tangent_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                 restricted, project_every, logsum, rec_start, rec_every, states, events,
-                 event_logs, shares, work):
+def tangent_loop(stack, rotors, stepping, phases, records, nsteps, work):
     """`tangent_kernel` on the caller's work arrays ``work`` (`stacked_work`), allocating
     nothing: the forward pass of the angle test in a GPU thread
     (``charts.analyses.angle_blocks``)."""
-    return stacked_loop(Z, sc, counter, minv, m, wts, level, speed, dt, nsteps, reorth_every, w,
-                        restricted, project_every, logsum, rec_start, rec_every, states, events,
-                        event_logs, shares, tangent_vectors_rate, work)
+    return stacked_loop(stack, rotors, stepping, phases, records, nsteps, tangent_vectors_rate,
+                        work)
 
 
 def reorth_steps(dt, *multiples) -> int:
@@ -541,17 +550,28 @@ class TangentFlow(StackedFlow):
                 event_logs=None, where="RK4"):
         """Advance ``nsteps`` steps (recording as `tangent_kernel` says); raises
         `SingularPointError` / `IntegrationError` (``where`` names the route) on failure."""
-        sys_ = self.system
         states = _NO_ROWS if states is None else states
         if events is None:
             events, event_logs = _NO_EVENTS, _NO_ROWS
-        status, done = tangent_kernel(self.Z, self.sc, self.counter, sys_.minv, sys_.masses,
-                                      sys_.weights, sys_.level, self.speed, self.dt, int(nsteps), self.reorth_every,
-                                      self.w, self.restricted, self.project_every, self.logsum,
-                                      int(rec_start), int(rec_every), states, events,
-                                      event_logs, self.shares, None)
+        status, done = tangent_kernel(
+            self.stack(), self.rotors(), self.stepping(),
+            Phases(self.project_every, self.reorth_every, int(rec_start), int(rec_every)),
+            Records(states, events, event_logs), int(nsteps), None)
         if status != RUNNING:
             raise status_error(status, self.steps * self.dt, where)
+
+    def stack(self) -> Stack:
+        """The flow's state as the kernels take it (its own arrays, not copies)."""
+        return Stack(self.Z, self.sc, self.counter, self.logsum, self.shares)
+
+    def rotors(self) -> Rotors:
+        """The system as the kernels read it."""
+        sys_ = self.system
+        return Rotors(sys_.minv, sys_.masses, sys_.weights, sys_.level)
+
+    def stepping(self) -> Stepping:
+        """How the flow steps, as the kernels take it."""
+        return Stepping(self.speed, self.dt, self.w, self.restricted)
 
     def state(self) -> dict:
         """Copies of every array that decides the next step (for checkpoints)."""
