@@ -105,6 +105,16 @@ def no_record(flow, row):
 
 
 @njit(cache=True, inline="always")
+def _phase(countdown, every, hook, flow):
+    """One step of a phase's countdown: at zero, ``hook(flow)`` and the countdown anew.
+    Returns (countdown, the hook's status or RUNNING)."""
+    countdown -= 1
+    if countdown == 0:
+        return every, hook(flow)
+    return countdown, RUNNING
+
+
+@njit(cache=True, inline="always")
 def phased_loop(flow, nsteps, counter, phases, events, step, rate, project, reorth, log_event,
                 record):
     """Advance ``flow`` by ``nsteps`` steps of ``step``; after global step i (``counter``
@@ -124,18 +134,12 @@ def phased_loop(flow, nsteps, counter, phases, events, step, rate, project, reor
         if code != RUNNING:
             return code, it
         counter[0] += 1
-        to_proj -= 1
-        if to_proj == 0:
-            to_proj = project_every
-            code = project(flow)
-            if code != RUNNING:
-                return code, it + 1
-        to_reorth -= 1
-        if to_reorth == 0:
-            to_reorth = reorth_every
-            code = reorth(flow)
-            if code != RUNNING:
-                return code, it + 1
+        to_proj, code = _phase(to_proj, project_every, project, flow)
+        if code != RUNNING:
+            return code, it + 1
+        to_reorth, code = _phase(to_reorth, reorth_every, reorth, flow)
+        if code != RUNNING:
+            return code, it + 1
         if ev < events.size and counter[0] == events[ev]:
             log_event(flow, ev)
             ev += 1
