@@ -591,7 +591,8 @@ def _as_written_before(ds):
     settings dict also as one JSON text, the copy that load read, beside its entries
     (booleans 1 or 0, None left out, no lists of names); other values that are not numbers
     or strings, and the members' shared booleans, None and lists of strings, as JSON."""
-    from charts.archive import MARKS, attributes
+    from charts.archive import attributes
+    from charts.file_settings import MARKS
     old = ds.copy()
     marks = {m: str(ds.attrs.get(m, "")).split() for m in MARKS}
     old.attrs = {k: v for k, v in ds.attrs.items() if k not in MARKS}

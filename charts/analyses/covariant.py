@@ -41,8 +41,8 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ..archive import (ANGULAR_VELOCITY, RATE, Archivable, attributes, dataset, exponent_words,
-                       index_coordinate, smallest_words)
+from ..archive import Archivable, attributes, dataset, index_coordinate
+from ..result_words import ANGULAR_VELOCITY, RATE, exponent_words, smallest_words
 from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error

@@ -32,7 +32,8 @@ from math import sqrt
 import numpy as np
 from numba import njit
 
-from ..archive import ANGULAR_VELOCITY, Archivable, attributes, dataset, index_coordinate
+from ..archive import Archivable, attributes, dataset, index_coordinate
+from ..result_words import ANGULAR_VELOCITY
 from ..compilation import announces_compilation
 from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
                              tangent_rate, transport_rate)

@@ -8,9 +8,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (ENSEMBLE_TITLES, MEMBER, RATE, Archivable, attributes, counted, dataset,
-                       exponent_words, member_attributes, member_settings, require_xarray,
-                       same_value, smallest_words)
+from ..archive import (ENSEMBLE_TITLES, Archivable, attributes, dataset, require_xarray,
+                       same_value)
+from ..file_settings import MEMBER, member_attributes, member_settings
+from ..result_words import RATE, counted, exponent_words, smallest_words
 from ..compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
@@ -69,7 +70,7 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         """The members' datasets stacked along a ``member`` dimension (members of one
         analysis share their shapes); their settings as ``member.*`` attributes where they
         share them and ``member.*`` variables along ``member`` where they differ (the seed,
-        the speed: ``charts.archive.member_settings``)."""
+        the speed: ``charts.file_settings.member_settings``)."""
         xr = require_xarray()
         if not self.members:
             raise ValueError("an empty ensemble has nothing to save")

@@ -40,7 +40,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..archive import RATE, Archivable, attributes, dataset, index_coordinate, smallest_words
+from ..archive import Archivable, attributes, dataset, index_coordinate
+from ..result_words import RATE, smallest_words
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device

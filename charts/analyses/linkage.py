@@ -21,8 +21,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (ANGULAR_VELOCITY, MEMBER_DIMS, RATE, Archivable, attributes, dataset,
-                       exponent_coordinate, exponent_words)
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..file_settings import MEMBER_DIMS
+from ..result_words import ANGULAR_VELOCITY, RATE, exponent_words
 from ..compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
@@ -165,7 +166,7 @@ class LinkageResult(SpectrumQuantities, Archivable):
 def q_component_coordinates() -> dict:
     """The coordinates that name the 7 components of q (θ₀…θ₃, x, y, α: the first of
     `COMPONENTS`) and their units, along the dimension of the settings q0 and v0 (v0 holds
-    their rates) in an ensemble's file (``charts.archive.MEMBER_DIMS``), for `dataset`'s
+    their rates) in an ensemble's file (``charts.file_settings.MEMBER_DIMS``), for `dataset`'s
     ``coords``: a run's file has them too, naming the entries of ``params_q0``, ``params_v0``."""
     dim = MEMBER_DIMS["q0"]
     return {dim: ((dim,), np.array(COMPONENTS[:NQ]), "1",

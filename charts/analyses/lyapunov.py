@@ -22,8 +22,8 @@ from functools import partial
 
 import numpy as np
 
-from ..archive import (RATE, Archivable, attributes, dataset, exponent_coordinate,
-                       exponent_words)
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..result_words import RATE, exponent_words
 from ..compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges

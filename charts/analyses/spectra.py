@@ -18,7 +18,8 @@ import numpy as np
 from ..compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
-from ..archive import ANGULAR_VELOCITY, Archivable, attributes, counted, dataset
+from ..archive import Archivable, attributes, dataset
+from ..result_words import ANGULAR_VELOCITY, counted
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
                         start_state, steps_of, Documented)
 

@@ -3,7 +3,7 @@
 Imported lazily by the results' ``plot()`` methods; every function returns matplotlib
 ``(fig, ax)`` on a pyplot-free figure (never selecting or switching a backend), or draws on
 the axes it is given.  Sits below the analyses in the layers: it imports only the style,
-the atomic write, the archive's words for a system and (for the N = 3 surface)
+the atomic write, the results' words for a system and (for the N = 3 surface)
 ``charts.geometry``."""
 from .analyses import (CURVATURE_QUANTILES, LOG_FLOOR, plot_angles, plot_angles_series,
                        plot_curvature, plot_drift, plot_ensemble_exponents, plot_lyapunov,

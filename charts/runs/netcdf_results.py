@@ -10,8 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..archive import (ANGULAR_VELOCITY, RATE, Archivable, attributes, counted, dataset,
-                       exponent_coordinate)
+from ..archive import Archivable, attributes, dataset, exponent_coordinate
+from ..result_words import ANGULAR_VELOCITY, RATE, counted
 from .io import json_default
 
 __all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS", "column_units"]

@@ -7,7 +7,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import ANGULAR_VELOCITY, Archivable, attributes, counted, dataset
+from ..archive import Archivable, attributes, dataset
+from ..result_words import ANGULAR_VELOCITY, counted
 from .dense import DenseSolution
 
 __all__ = ["IntegrationResult"]

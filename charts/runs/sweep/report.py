@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from ...analyses.hyperbolicity import SMALL_ANGLE
-from ...archive import RATE
+from ...result_words import RATE
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ...plotting.style import new_figure, save_png
