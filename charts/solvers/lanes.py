@@ -139,12 +139,13 @@ def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, s
 #: histograms, the step's work arrays (``lane_layout.lane_arrays``), one lane's work arrays
 #: in the one-trajectory layout (``one``: z, its sin/cos, the RK4 work and stage work), the
 #: work of the policy (``subs``: each lane's status and cap, the lanes that take sub-steps,
-#: their caps, states and sin/cos), and N and k as the lengths of the tuples ``n_tag``,
-#: ``k_tag`` (compile-time constants: the loops over rotors and rows have constant lengths).
+#: their caps, states and sin/cos), N and k as the lengths of the tuples ``n_tag``, ``k_tag``
+#: (compile-time constants: the loops over rotors and rows have constant lengths), and the
+#: padded lane count Lp (the stride of the flat lanes).
 LaneStack = namedtuple("LaneStack", [
     "Zf", "s0", "c0", "counter", "status", "stopped", "frozen", "minv", "m", "wts", "level",
     "speed", "dt", "w", "restricted", "logsum", "event_logs", "shares", "work", "one", "subs",
-    "n_tag", "k_tag"])
+    "n_tag", "k_tag", "Lp"])
 
 
 @njit(cache=True, inline="always")
@@ -161,7 +162,7 @@ def _lanes_policy_step(fl, rate):
     z, zs0, zc0, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1 = fl.one
     code, sub, subcap, subZ, subS = fl.subs
     L = status.size
-    Lp = lam.size
+    Lp = fl.Lp
     d = 2 * n
     R = k + 1
     D = R * d
@@ -209,9 +210,9 @@ def _lanes_project(fl):
     """Every running lane's state onto the invariants (`project_state`, in the one-trajectory
     layout), its sin/cos anew."""
     n = len(fl.n_tag)
-    z, zs0, zc0 = fl.one[0], fl.one[1], fl.one[2]
+    z, zs0, zc0, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1 = fl.one
     Zf, s0, c0, status = fl.Zf, fl.s0, fl.c0, fl.status
-    Lp = fl.work[10].size
+    Lp = fl.Lp
     y1 = z[:2 * n]
     for l in range(status.size):
         if status[l] == RUNNING:
@@ -231,10 +232,10 @@ def _lanes_reorth(fl):
     n = len(fl.n_tag)
     k = len(fl.k_tag)
     Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = fl.work
-    z, zs0, zc0 = fl.one[0], fl.one[1], fl.one[2]
+    z, zs0, zc0, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1 = fl.one
     Zf, s0, c0, status, logsum, shares = fl.Zf, fl.s0, fl.c0, fl.status, fl.logsum, fl.shares
     L = status.size
-    Lp = lam.size
+    Lp = fl.Lp
     R = k + 1
     nu, ku, du, Lu = np.uint64(n), np.uint64(k), np.uint64(2 * n), np.uint64(Lp)
     if R > 1:
@@ -282,7 +283,8 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     n = len(n_tag)                      # N and k, fixed at compile time (tuple lengths)
     k = len(k_tag)
     L = status.size
-    Lp = work[10].size
+    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = work
+    Lp = lam.size
     D = (k + 1) * 2 * n
     # one lane in the one-trajectory layout (projections, eq 18, sub-steps), the policy's work
     z = np.empty(D)
@@ -299,7 +301,6 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
     subZ = np.empty((L, D))
     subS = np.empty((L, 2, n))
     b = borrowed
-    Zt, K, th, dl, s, c, f, g, p, q, lam, iB, dlam, wl, S, U, cap, v1, v2, v3, nrm = work
     fl = LaneStack(b(Zf), b(s0), b(c0), b(counter), b(status), b(stopped), b(frozen), b(minv),
                    b(m), b(wts), level, b(speed), dt, b(w), restricted, b(logsum),
                    b(event_logs), b(shares),
@@ -307,7 +308,7 @@ def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level
                     b(iB), b(dlam), b(wl), b(S), b(U), b(cap), b(v1), b(v2), b(v3), b(nrm)),
                    (b(z), b(zs0), b(zc0), b(Zt1), b(K1), b(th1), b(dl1), b(s1), b(c1), b(f1),
                     b(g1), b(p1), b(q1)),
-                   (b(code), b(sub), b(subcap), b(subZ), b(subS)), n_tag, k_tag)
+                   (b(code), b(sub), b(subcap), b(subZ), b(subS)), n_tag, k_tag, Lp)
     phased_loop(fl, nsteps, counter, Phases(project_every, reorth_every, 0, 0), events,
                 _lanes_policy_step, 0, _lanes_project, _lanes_reorth, _lanes_log_event,
                 no_record)

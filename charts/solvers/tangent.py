@@ -280,8 +280,8 @@ def stacked_step(fl, vectors_rate):
 @njit(cache=True, inline="always")
 def stacked_project(fl):
     """The state y of ``fl`` onto the invariants (`project_state_into`), its sin/cos anew."""
-    work = fl.work
-    project_state_into(fl.y, fl.m, fl.wts, fl.level, fl.speed, work[4], work[6])  # s, f
+    Zt, K, th, dl, s, c, f, g, p, q = fl.work
+    project_state_into(fl.y, fl.m, fl.wts, fl.level, fl.speed, s, f)
     sincos(fl.Zf, 0, fl.n, fl.wts, fl.s0, fl.c0)
     return RUNNING
 
