@@ -46,6 +46,8 @@ _HOMES = {
     "angle_statistics": ".analyses.hyperbolicity",
     "hyperbolicity_angles": ".analyses.hyperbolicity",
     "hyperbolicity_ensemble": ".analyses.hyperbolicity",
+    "AngleTally": ".analyses.angle_tally",
+    "hyperbolicity_tally": ".analyses.angle_tally",
     "CovariantResult": ".analyses.covariant",
     "covariant_lyapunov_vectors": ".analyses.covariant",
     "PowerSpectrum": ".analyses.spectra",

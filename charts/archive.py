@@ -42,6 +42,7 @@ KINDS = {
     "lyapunov": "charts.analyses.lyapunov:LyapunovResult",
     "curvature": "charts.analyses.curvature:CurvatureResult",
     "angles": "charts.analyses.hyperbolicity:AngleResult",
+    "angle_tally": "charts.analyses.angle_tally:AngleTally",
     "covariant": "charts.analyses.covariant:CovariantResult",
     "waveform": "charts.analyses.spectra:Waveform",
     "spectrum": "charts.analyses.spectra:PowerSpectrum",
@@ -73,6 +74,8 @@ TITLES = {
     "curvature": "sectional curvatures along a trajectory (charts.curvature_along_trajectory)",
     "angles": "angles between the expanding and the zero-and-contracting subspaces "
               "(charts.hyperbolicity_angles)",
+    "angle_tally": "statistics of the angles between the expanding and the zero-and-"
+                   "contracting subspaces of an ensemble (charts.hyperbolicity_tally)",
     "covariant": "covariant Lyapunov vectors (charts.covariant_lyapunov_vectors)",
     "waveform": "waveforms theta(t), u(t) (charts.waveform)",
     "spectrum": "power spectrum (charts.power_spectrum)",

@@ -259,7 +259,7 @@ def _orthonormal_starts(W, w):
 
 
 def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda", workers=1,
-                     budget=None, block=None, update=None):
+                     budget=None, block=None, update=None, consume=None):
     """The angle test of the seeds (as `hyperbolicity_angles` with ``seed=s`` on
     ``system.random_state(seed=s, speed=speed)``), every member a GPU thread (``backend=
     "cuda"``) or in turn on the CPU (``"cpu"``: the same logic), the window in blocks
@@ -267,9 +267,13 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
     `memory_budget` on the CPU) or to ``block`` window steps at most; ``update(t)`` gets
     the window time done by all members after each block.  Returns (sines full (L, S),
     sines restricted (L, S), forward log-norm sums (L, m), adjoint rates (L, m), speeds
-    (L,)) (``charts.analyses.hyperbolicity.angle_members`` makes them `AngleResult` s).  The
-    first member that stops raises the error `hyperbolicity_angles` raises, naming its
-    seed."""
+    (L,)) (``charts.analyses.hyperbolicity.angle_members`` makes them `AngleResult` s).
+    The first member that stops raises the error `hyperbolicity_angles` raises, naming its
+    seed.  ``consume(sf, sr, stops)``: takes each block's sines (L, block's samples) in turn
+    instead, and the sines returned are None (``charts.analyses.angle_tally``: memory
+    independent of the window); a member that stops is then frozen, not raised, and
+    ``stops`` lists every stopped member as (index, seed, time, message): its block's sines
+    are not its angles."""
     L = len(seeds)
     arr = DeviceArrays(backend)
     if budget is None:
@@ -304,7 +308,15 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
             bwd_k[grid, threads](*a[:9], *a[9], *a[10:])
     else:
         fwd, bwd = _forward_cpu, _backward_cpu
-    sf, sr = np.empty((L, cfg.samples)), np.empty((L, cfg.samples))
+    keep_going = consume is not None
+    if consume is None:
+        sf, sr = np.empty((L, cfg.samples)), np.empty((L, cfg.samples))
+
+        def consume(sf_block, sr_block, stops):
+            sf[:, done // sample: done // sample + S] = sf_block
+            sr[:, done // sample: done // sample + S] = sr_block
+    else:
+        sf = sr = None
     level, dt = float(system.level), cfg.dt
     done, back_steps, origin = 0, 0, 0
     for i, B in enumerate(plan.lengths):
@@ -331,9 +343,10 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
         bwd(dev["status"], dev["stopped"], dev["phase"], arr.put(W), dev["CK"], dev["Vrec"],
             dev["blogs"], dev["SF"], dev["SR"], arrays, level, dt,
             (ce, first, sample, cfg.reorth, nseg, S, origin), no_events, none)
-        _raise_first_stop(arr, dev, seeds, dt)
-        sf[:, done // sample: done // sample + S] = arr.get(dev["SF"])[:, :S]
-        sr[:, done // sample: done // sample + S] = arr.get(dev["SR"])[:, :S]
+        if not keep_going:
+            _raise_first_stop(arr, dev, seeds, dt)
+        consume(arr.get(dev["SF"])[:, :S], arr.get(dev["SR"])[:, :S],
+                _stops(arr, dev, seeds, dt))
         back_steps += nseg * ce - first
         done += B
         if i + 1 < len(plan.lengths):
@@ -349,6 +362,22 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
 def _seeded(cfg, s):
     from dataclasses import replace
     return replace(cfg, seed=s)
+
+
+def _stops(arr, dev, seeds, dt):
+    """[(index, seed, time, message)] of the members that stopped, in member order."""
+    status = arr.get(dev["status"])
+    bad = np.flatnonzero(status != RUNNING)
+    if not bad.size:
+        return []
+    phase, stopped = arr.get(dev["phase"]), arr.get(dev["stopped"])
+    out = []
+    for l in bad:
+        where = "backward" if phase[l] == BACKWARD else "forward"
+        err = status_error(int(status[l]), int(stopped[l]) * dt,
+                           f"hyperbolicity_ensemble ({where} RK4, member seed={seeds[l]})")
+        out.append((int(l), int(seeds[l]), float(stopped[l] * dt), str(err)))
+    return out
 
 
 def _raise_first_stop(arr, dev, seeds, dt):

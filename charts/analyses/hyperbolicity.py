@@ -56,7 +56,7 @@ from .singular_values import smallest_singular_values
 from .statistics import small_value_law
 
 __all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
-           "hyperbolicity_ensemble", "angle_statistics",
+           "hyperbolicity_ensemble", "angle_statistics", "sin_to_angle",
            "SMALL_ANGLE", "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
 #: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
@@ -164,7 +164,8 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     return out
 
 
-def _sin_to_angle(sv):
+def sin_to_angle(sv):
+    """φ = arcsin(sin φ) of the sines at the samples, clipped to [0, 1] (rounding)."""
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
@@ -267,7 +268,7 @@ def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_expon
     if start is not None:
         params.update(theta0=np.asarray(start[0], dtype=float).tolist(),
                       u0=np.asarray(start[1], dtype=float).tolist())
-    return AngleResult(t, _sin_to_angle(sf), _sin_to_angle(sr),
+    return AngleResult(t, sin_to_angle(sf), sin_to_angle(sr),
                        forward_logs / ((cfg.n_tr + cfg.n_win) * dt), adjoint_exponents, params)
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["standard_error", "batch_ends", "batch_estimates", "small_value_law",
-           "pool_small_value_laws", "block_minima"]
+           "pool_small_value_laws", "block_minima", "law_from_batches"]
 
 
 def standard_error(samples, axis=0):
@@ -70,21 +70,31 @@ def small_value_law(samples, x0, n_batches=10):
                          f"got {n_batches!r}")
     below = x < x0
     logs = np.where(below, np.log(x0 / np.where(below, x, x0)), 0.0)
-    k, L = int(below.sum()), float(logs.sum())
     blocks = _blocks(x.size, int(n_batches))
     kb = np.array([below[b].sum() for b in blocks], dtype=float)
     Lb = np.array([logs[b].sum() for b in blocks])
     fb = np.array([below[b].mean() for b in blocks])
+    return law_from_batches(int(below.sum()), float(logs.sum()), int(x.size), kb, Lb, fb, x0)
+
+
+def law_from_batches(count, logsum, n, kb, Lb, fb, x0):
+    """`small_value_law` from its sums: ``count`` samples of ``n`` below ``x0`` and their
+    ``logsum`` Σ ln(x0/xᵢ); per batch (B,) the counts ``kb``, log sums ``Lb`` and fractions
+    below ``fb`` (the batches: blocks of one series, or independent series such as the
+    members of an ensemble).  β̂ = count / logsum; its error by the batch-means ratio
+    estimator, A's by the spread of ``fb``."""
+    kb, Lb, fb = (np.asarray(a, dtype=float) for a in (kb, Lb, fb))
+    k, L = int(count), float(logsum)
     beta = k / L if L > 0 else np.nan
-    B = len(blocks)
+    B = len(kb)
     if B >= 2 and L > 0:
         beta_se = float(np.sqrt(B / (B - 1) * np.sum((kb - beta * Lb) ** 2)) / L)
     else:
         beta_se = np.nan
     with np.errstate(over="ignore", under="ignore"):   # 0 for a tiny x0: A undefined (NaN)
         x02 = float(np.float64(x0) ** 2)
-    return dict(count=k, n=int(x.size), x0=float(x0), exponent=float(beta),
-                exponent_se=beta_se, coef2=k / x.size / x02 if x02 > 0 else np.nan,
+    return dict(count=k, n=int(n), x0=float(x0), exponent=float(beta),
+                exponent_se=beta_se, coef2=k / n / x02 if x02 > 0 else np.nan,
                 coef2_se=float(standard_error(fb)) / x02 if x02 > 0 else np.nan)
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 import warnings
 from pathlib import Path
 
@@ -39,6 +40,28 @@ def add_parser(sub) -> None:
     p.add_argument("--seeds", type=int, nargs="+", default=[1, 2], metavar="S",
                    help="seeds of the exponent's runs (default 1 2)")
     p.add_argument("--json", type=Path, metavar="FILE", help="also write the reports as JSON")
+    g = p.add_argument_group(
+        "statistics at scale", "--statistics runs the angle test (restricted and full angles) "
+        "on many members instead of the certificates, tallied as it goes (memory independent "
+        "of the run's length), and reports the smallest angle, the law of the small angles, "
+        "the block minima and the episodes with error bars from the spread between members")
+    g.add_argument("--statistics", action="store_true",
+                   help="the angle test at scale for each system (see the group's description)")
+    g.add_argument("--samples", type=float, default=1e8, metavar="S",
+                   help="angles per system, all members together (default 1e8)")
+    g.add_argument("--members", type=positive_count, default=16384, metavar="M",
+                   help="independent trajectories, seeds 0 … M-1 (default 16384)")
+    g.add_argument("--device", choices=("cpu", "cuda", "auto"), default="auto",
+                   help="where the members run (default auto: the GPU when there is one)")
+    g.add_argument("--family", metavar="SWEEP",
+                   help="the distinct systems of a bundled sweep (e.g. families-n4) instead "
+                   "of --n")
+    g.add_argument("--t-transient", type=float, default=100.0, metavar="T",
+                   help="transient of both passes (default 100)")
+    g.add_argument("--out", type=Path, metavar="DIR",
+                   help="save each system's tally there (NetCDF) and statistics.json after "
+                   "each system; a system whose tally or report is there already is read, not "
+                   "run again")
     p.set_defaults(func=cmd_verdict)
 
 
@@ -48,6 +71,8 @@ def cmd_verdict(args) -> int:
     from ..geometry.system import RotorSystem
     from ..runs.verdict import format_verdict, surface_verdict, torus_verdict, verdict_passed
 
+    if args.statistics:
+        return _statistics(args)
     if len(args.n) > 1 and (args.masses or args.weights or args.level != 0.0):
         raise ValueError("--masses, --weights and --level describe one system: give one --n")
     reports = []
@@ -65,3 +90,64 @@ def cmd_verdict(args) -> int:
     if args.json is not None:
         args.json.write_text(json.dumps(reports, indent=1), encoding="utf-8")
     return 0 if all(verdict_passed(r) for r in reports) else 1
+
+
+def _statistics(args) -> int:
+    """``charts verdict --statistics``: `statistics_verdict` of each system in turn."""
+    from ..analyses.angle_tally import AngleTally
+    from ..archive import load
+    from ..geometry.system import RotorSystem
+    from ..runs.verdict import family_systems, format_statistics, statistics_verdict
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")           # critical levels: stops are reported
+        if args.family:
+            systems = family_systems(args.family)
+        else:
+            if len(args.n) > 1 and (args.masses or args.weights or args.level != 0.0):
+                raise ValueError("--masses, --weights and --level describe one system: give "
+                                 "one --n")
+            systems = [(f"N = {n}", RotorSystem(n, masses=args.masses, weights=args.weights,
+                                                 level=args.level)) for n in args.n]
+    done = {}
+    if args.out is not None:
+        args.out.mkdir(parents=True, exist_ok=True)
+        if (args.out / "statistics.json").exists():      # the reports of an earlier run
+            done = {r.get("slug"): r for r in
+                    json.loads((args.out / "statistics.json").read_text(encoding="utf-8"))}
+    reports = []
+    for label, system in systems:
+        slug = _slug(system)
+        path = None if args.out is None else args.out / f"{slug}.nc"
+        if slug in done and done[slug]["members"] == args.members \
+                and done[slug]["statistics"]["restricted"]["n"] >= args.samples:
+            rep = done[slug]
+        elif path is not None and path.exists():
+            tally = load(path)
+            if not isinstance(tally, AngleTally):
+                raise ValueError(f"{path} is not an angle tally")
+            rep = dict(label=label, system=system.describe(), members=tally.members,
+                       t_final=tally.params["t_final"], t_transient=tally.params["t_transient"],
+                       sample_every=tally.params["sample_every"], device=tally.params["device"],
+                       seconds=float("nan"), file=str(path),
+                       statistics={v: tally.statistics(v) for v in ("full", "restricted")})
+        else:
+            rep = statistics_verdict(system, args.samples, members=args.members,
+                                     device=args.device, t_transient=args.t_transient,
+                                     out=path, label=label, progress=sys.stderr.isatty())
+        rep["slug"] = slug
+        print(format_statistics(rep) + "\n", flush=True)
+        reports.append(rep)
+        if args.out is not None:
+            (args.out / "statistics.json").write_text(json.dumps(reports, indent=1),
+                                                      encoding="utf-8")
+    if args.json is not None:
+        args.json.write_text(json.dumps(reports, indent=1), encoding="utf-8")
+    return 0
+
+
+def _slug(system) -> str:
+    """A file name for a system: n4-c0-w1,1,1,1-m1,1,1,1."""
+    d = system.describe()
+    join = ",".join(f"{x:g}" for x in d["weights"]), ",".join(f"{x:g}" for x in d["masses"])
+    return f"n{d['n']}-c{d['level']:g}-w{join[0]}-m{join[1]}"

@@ -2,10 +2,12 @@
 ``charts verdict``): for N = 3 the Gauss–Bonnet theorem by both curvature routes, the leading
 exponent against the bracket of Katok's and Osserman–Sarnak's inequalities and the certified
 sign of the curvature; for N ≥ 4 the flat totally geodesic torus that rules out the Anosov
-property, with the monodromy of its closed geodesic.
+property, with the monodromy of its closed geodesic.  Where neither applies, the statistics
+of the angle test at scale (`statistics_verdict`, ``charts verdict --statistics``).
 """
 from __future__ import annotations
 
+import json
 import time
 
 import numpy as np
@@ -15,7 +17,8 @@ from ..analyses.flat_tori import certify_flat_torus
 from ..analyses.lyapunov import lyapunov_spectrum
 from ..analyses.surface_integrals import surface_integrals
 
-__all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed"]
+__all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed",
+           "statistics_verdict", "family_systems", "format_statistics", "members_window"]
 
 
 def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict:
@@ -137,4 +140,81 @@ def format_verdict(rep: dict) -> str:
     if cert["open_boxes"] and cert["verdict"] == "undecided":
         lines.append(f"  {cert['open_boxes']} boxes left open")
     lines.append(f"({rep['seconds']:.1f} s)")
+    return "\n".join(lines)
+
+
+def members_window(samples, members, sample_every=0.1, unit=1.0) -> float:
+    """The window T per member for at least ``samples`` angles over ``members`` members
+    sampled every ``sample_every``: a whole number of ``unit`` (the checkpoint segment)."""
+    return float(unit * np.ceil(samples / members * sample_every / unit))
+
+
+def statistics_verdict(system, samples, *, members, device="auto", t_transient=100.0,
+                       sample_every=0.1, workers=None, out=None, label="",
+                       progress=False) -> dict:
+    """The angle test at scale: ``members`` trajectories (seeds 0, 1, …) with at least
+    ``samples`` angles together, tallied (``charts.analyses.angle_tally``), as one JSON-ready
+    dict: the run (members, window, device, seconds) and `AngleTally.statistics` of both
+    variants; the tally saved as ``out`` (a path) when given."""
+    from ..analyses.angle_tally import VARIANTS, hyperbolicity_tally
+    t_final = members_window(samples, members, sample_every)
+    t0 = time.perf_counter()
+    tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,
+                                t_transient=t_transient, sample_every=sample_every,
+                                progress=progress)
+    seconds = time.perf_counter() - t0
+    rep = dict(label=label, system=system.describe(), members=int(members), t_final=t_final,
+               t_transient=float(t_transient), sample_every=float(sample_every),
+               device=tally.params["device"], seconds=seconds,
+               statistics={v: tally.statistics(v) for v in VARIANTS})
+    if out is not None:
+        rep["file"] = str(tally.save(out))
+    return rep
+
+
+def family_systems(name) -> list:
+    """[(label, RotorSystem)] of the distinct systems of the bundled sweep ``name`` (its
+    points without their seeds), in the sweep's order."""
+    from ..geometry.system import RotorSystem
+    from .sweep.points import sweep_points
+    from .sweep.spec import bundled_sweeps, load_sweep
+    sweeps = bundled_sweeps()
+    if name not in sweeps:
+        raise ValueError(f"unknown sweep {name!r}; bundled: {', '.join(sorted(sweeps))}")
+    out, seen = [], set()
+    for point in sweep_points(load_sweep(sweeps[name])):
+        params = {k: v for k, v in point.params.items() if k != "seed"}
+        key = json.dumps(params, sort_keys=True)
+        if key in seen:
+            continue
+        seen.add(key)
+        sysd = point.scene.system
+        system = RotorSystem(sysd["n"], masses=sysd.get("masses"), weights=sysd.get("weights"),
+                             level=sysd.get("level", 0.0))
+        out.append((", ".join(f"{k} {v}" for k, v in params.items()), system))
+    return out
+
+
+def format_statistics(rep: dict) -> str:
+    """A report of `statistics_verdict` as text: the restricted angles first."""
+    s = rep["system"]
+    head = (f"{rep['label'] or 'N = ' + str(s['n'])}: masses {s['masses']}, weights "
+            f"{s['weights']}, level {s['level']:g}; {rep['members']} members x T = "
+            f"{rep['t_final']:g} (transient {rep['t_transient']:g}) on the {rep['device']}, "
+            f"{rep['seconds']:.0f} s")
+    lines = [head]
+    for variant in ("restricted", "full"):
+        st = rep["statistics"][variant]
+        lines.append(f"  {variant}: {st['n']:.3g} angles, min {st['min']:.3g} rad (seed "
+                     f"{st['min_seed']}, t = {st['min_t']:g}); {st['episodes']} episodes below "
+                     f"{st['small']:g} rad ({st['episode_rate']:.3g} per time unit)")
+        laws = [f"x0 {d['x0']:g}: beta {d['exponent']:.3f} ± "
+                f"{'?' if d['exponent_se'] is None else format(d['exponent_se'], '.3f')} "
+                f"(n {d['count']})" for d in st["law"] if d["count"]]
+        if laws:
+            lines.append("    law P(phi < x) = A x^beta: " + "; ".join(laws))
+        lines.append("    mean block minima: " + ", ".join(
+            f"{size:g}: {m:.3g} ± {se:.1g}" for size, m, se in st["block_minima"]))
+        lines.append("    slopes d ln min / d ln size: " + ", ".join(
+            f"{a:g}-{b:g}: {x:.3f} ± {se:.3f}" for a, b, x, se in st["slopes"]))
     return "\n".join(lines)

@@ -1,0 +1,427 @@
+"""Statistics of the hyperbolicity angles (section 4) from more samples than memory holds.
+
+The angle test of an ensemble yields its angles block by block, (members × samples); an
+`AngleTally` keeps of them only per-member sums, so that 10⁹ angles need a few kilobytes per
+member.  The members are independent trajectories, and they are the batches of every error
+bar below.  What a tally keeps per member, for both variants (full, restricted):
+
+* the sample count, the smallest angle and the sample at which it fell, exact zeros;
+* counts below the edges of a logarithmic grid of angles (the law P(φ < x) near zero);
+* for each threshold x₀ of the small-angle law, the count below it and Σ ln(x₀/φ) (Hill's
+  estimate of P(φ < x) = A x^β, ``charts.analyses.statistics.law_from_batches``);
+* the minima of 10, 100, 1000, … consecutive samples (count, sum, sum of squares): each
+  level's minima from the level below, a group left incomplete at the end of a block
+  carried into the next;
+* episodes: runs of consecutive samples below `SMALL_ANGLE`.
+
+`hyperbolicity_tally` runs the test and tallies as it goes (on the GPU the blocks of
+``charts.analyses.angle_blocks``; on the CPU the members of `hyperbolicity_ensemble` in
+chunks); `AngleTally.statistics` turns the sums into the verdict's numbers with intervals.
+"""
+from __future__ import annotations
+
+import os
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..archive import Archivable, attributes, dataset
+from ..geometry.checks import finite_array
+from ..solvers.device import resolve_device
+from .arguments import progress_reporter
+from .ensemble import ensemble_arguments
+from .statistics import law_from_batches, standard_error
+
+__all__ = ["AngleTally", "hyperbolicity_tally", "tally_on_device", "StoppedMember", "VARIANTS", "EDGES", "LAW_X0", "LADDER",
+           "JACKKNIFE_GROUPS"]
+
+#: the two angles of the test, in the order of a tally's first axis.
+VARIANTS = ("full", "restricted")
+#: the near-tangency threshold of the episodes (rad): `hyperbolicity.SMALL_ANGLE`.
+SMALL = 0.05
+#: edges of the angle grid (rad), ascending: 0.05 · 10^(−j/10), j = 80 … 0 (5e-10 to 0.05).
+EDGES = SMALL * 10.0 ** (-np.arange(80, -1, -1) / 10)
+#: thresholds x₀ of the small-angle law (rad).
+LAW_X0 = (0.05, 0.02, 0.01, 0.005, 0.002)
+#: the ladder of block minima: groups of 10 samples, 10 minima, … (sizes 10¹ … 10^LADDER).
+LADDER = 9
+#: member groups of the jackknife errors of the block-minima slopes.
+JACKKNIFE_GROUPS = 32
+
+
+def _sums(V, L):
+    """Zeroed per-member sums of a tally of ``L`` members, for ``V`` variants."""
+    return dict(n=np.zeros(L, np.int64), min=np.full((V, L), np.inf),
+                argmin=np.full((V, L), -1, np.int64), zeros=np.zeros((V, L), np.int64),
+                below=np.zeros((V, L, EDGES.size), np.int64),
+                law_count=np.zeros((V, L, len(LAW_X0)), np.int64),
+                law_logsum=np.zeros((V, L, len(LAW_X0))),
+                ladder_count=np.zeros((V, L, LADDER), np.int64),
+                ladder_sum=np.zeros((V, L, LADDER)), ladder_sumsq=np.zeros((V, L, LADDER)),
+                episodes=np.zeros((V, L), np.int64))
+
+
+def _carries(V, L):
+    """What a tally carries between blocks, per variant: whether each member's last sample
+    was below `SMALL`, and the incomplete groups of the ladder's levels."""
+    out = {}
+    for v in range(V):
+        out[("last", v)] = np.zeros(L, bool)
+        for j in range(LADDER):
+            out[("carry", v, j)] = np.empty((L, 9))
+    return out
+
+
+@dataclass(eq=False, repr=False)
+class AngleTally(Archivable):
+    """Per-member sums of the angles of an ensemble's angle test (module docstring); arrays
+    with the axes (variant, member, …) in the order of `VARIANTS`.  ``params``: the system,
+    the test's settings (``sample_every`` converts samples to time) and the seeds.
+    `add` feeds it, `statistics` reads it."""
+    n: np.ndarray
+    min: np.ndarray
+    argmin: np.ndarray
+    zeros: np.ndarray
+    below: np.ndarray
+    law_count: np.ndarray
+    law_logsum: np.ndarray
+    ladder_count: np.ndarray
+    ladder_sum: np.ndarray
+    ladder_sumsq: np.ndarray
+    episodes: np.ndarray
+    params: dict = field(default_factory=dict)
+    _open: dict = field(default_factory=dict)       # carried between blocks: not saved
+
+    KIND = "angle_tally"
+
+    @classmethod
+    def empty(cls, members, params=None) -> "AngleTally":
+        """A tally of ``members`` members with nothing added yet."""
+        if isinstance(members, bool) or not isinstance(members, (int, np.integer)) or members < 1:
+            raise ValueError(f"members must be a positive integer, got {members!r}")
+        tally = cls(**_sums(len(VARIANTS), int(members)), params=dict(params or {}))
+        tally._open.update(_carries(len(VARIANTS), int(members)))
+        return tally
+
+    @property
+    def members(self) -> int:
+        return self.n.size
+
+    def add(self, phi, first=0, variant="restricted"):
+        """Tally the angles ``phi`` (rad; (l, s): the next s samples of members first …
+        first + l − 1, or of the members listed in ``first``, in increasing order; they must
+        have seen equally many samples before) of ``variant``.  Call it once per variant for
+        each block, with the same shapes; the sample count advances after the last variant
+        of `VARIANTS` is added."""
+        self._add(finite_array("phi", phi, ndim=2), first, variant, "angles", _same)
+
+    def add_sines(self, sines, first=0, variant="restricted"):
+        """`add` for the sines of the angles, as the angle test computes them (φ =
+        arcsin of the sine clipped to [0, 1], `sin_to_angle`): only the sines below
+        sin(`SMALL`) and the minima are turned into angles, with the same result."""
+        from .hyperbolicity import sin_to_angle
+        self._add(finite_array("sines", sines, ndim=2), first, variant, "sines", sin_to_angle)
+
+    def add_both(self, sines_full, sines_restricted, threads=1, alive=None):
+        """`add_sines` of one block of every member, both variants (each (members, s)), the
+        members split among ``threads`` threads (NumPy works without the GIL); ``alive``
+        (members,) bool: only those members (the others stopped: their block is left out)."""
+        from concurrent.futures import ThreadPoolExecutor
+        live = np.arange(self.members) if alive is None else np.flatnonzero(alive)
+        if live.size == 0:
+            return
+        parts = np.array_split(live, max(1, min(int(threads), live.size)))
+
+        def part(rows):
+            self.add_sines(sines_full[rows], rows, "full")
+            self.add_sines(sines_restricted[rows], rows, "restricted")
+        if len(parts) == 1:
+            part(parts[0])
+            return
+        with ThreadPoolExecutor(len(parts)) as pool:
+            list(pool.map(part, parts))
+
+    def _add(self, x, first, v, kind, angle):
+        v = _variant(v)
+        if ("last", v) not in self._open:
+            raise ValueError("this tally was loaded from a file: it is complete, and what "
+                             "it carried between blocks was not saved")
+        l, s = x.shape
+        rows = (np.arange(int(first), int(first) + l) if np.ndim(first) == 0
+                else np.asarray(first, dtype=np.int64))
+        if l == 0 or s == 0 or rows.shape != (l,) or rows[0] < 0 or rows[-1] >= self.members \
+                or np.any(np.diff(rows) <= 0):
+            raise ValueError(f"a block of shape {x.shape} from member {first} does not fit a "
+                             f"tally of {self.members} members")
+        if self._open.setdefault("input", kind) != kind:
+            raise ValueError(f"this tally was fed {self._open['input']}, not {kind}")
+        before = self.n[rows]
+        if np.any(before != before[0]):
+            raise ValueError("the members of one block must have seen equally many samples")
+        n0 = int(before[0])
+        if np.any(x < 0) and kind == "angles":
+            raise ValueError("angles must be ≥ 0")
+        j = x.argmin(axis=1)
+        low = angle(x[np.arange(l), j])
+        better = low < self.min[v, rows]
+        self.min[v, rows] = np.where(better, low, self.min[v, rows])
+        self.argmin[v, rows] = np.where(better, n0 + j, self.argmin[v, rows])
+        self._small(v, rows, x, angle)
+        self._ladder(v, rows, x, n0, angle)
+        if v == len(VARIANTS) - 1:
+            self.n[rows] += s
+
+    def _small(self, v, rows, x, angle):
+        """Zeros, the grid counts, the law's sums and the episodes of the samples below
+        `SMALL`: the candidates found on ``x``, then decided on their angles."""
+        l = x.shape[0]
+        below = x < (SMALL if angle is _same else np.sin(SMALL) * (1 + 1e-9))
+        flat = np.flatnonzero(below)
+        phi = angle(x.ravel()[flat] if x.flags.c_contiguous else x[below])
+        out = phi >= SMALL
+        below.ravel()[flat[out]] = False
+        r, phi = flat[~out] // x.shape[1], phi[~out]
+        last = self._open[("last", v)]
+        starts = (below[:, 0] & ~last[rows]).astype(np.int64)
+        starts += (below[:, 1:] & ~below[:, :-1]).sum(axis=1)
+        self.episodes[v, rows] += starts
+        last[rows] = below[:, -1]
+        self.zeros[v, rows] += np.bincount(r[phi == 0], minlength=l)
+        E = EDGES.size
+        # edge e counts φ < EDGES[e]: searchsorted gives the edges ≤ φ, the first edge above
+        first_above = np.searchsorted(EDGES, phi, side="right")
+        hist = np.bincount(r * (E + 1) + first_above, minlength=l * (E + 1)).reshape(l, E + 1)
+        self.below[v, rows] += np.cumsum(hist, axis=1)[:, :E]
+        for i, x0 in enumerate(LAW_X0):
+            sel = (phi < x0) & (phi > 0)
+            self.law_count[v, rows, i] += np.bincount(r[sel], minlength=l)
+            self.law_logsum[v, rows, i] += np.bincount(r[sel], weights=np.log(x0 / phi[sel]),
+                                                       minlength=l)
+
+    def _ladder(self, v, rows, x, n0, angle):
+        """Minima of 10ʲ consecutive samples, each level from the one below (the first on
+        ``x``, then turned into angles: the angle grows with its sine); the incomplete group
+        at a block's end carried to the next block (at level j a member that has seen n
+        samples carries ⌊n / 10ʲ⌋ mod 10 values: equal for the members of a block)."""
+        for j in range(LADDER):
+            carry = self._open[("carry", v, j)]
+            c = n0 // 10 ** j % 10
+            if c:
+                x = np.concatenate([carry[rows, :c], x], axis=1)
+            g, rest = divmod(x.shape[1], 10)
+            carry[rows, :rest] = x[:, g * 10:]
+            if g == 0:
+                break
+            mins = x[:, :g * 10].reshape(x.shape[0], g, 10).min(axis=2)
+            if j == 0:
+                mins = angle(mins)
+            self.ladder_count[v, rows, j] += g
+            self.ladder_sum[v, rows, j] += mins.sum(axis=1)
+            self.ladder_sumsq[v, rows, j] += (mins * mins).sum(axis=1)
+            x = mins
+
+    # ---- reading it -------------------------------------------------------------------
+    def statistics(self, variant="restricted") -> dict:
+        """The numbers of the verdict for ``variant``, JSON-ready, every error bar from the
+        spread between members (independent trajectories):
+
+        * ``n``, ``members``, ``min`` with the ``min_seed`` and ``min_t`` where it fell,
+          ``zeros`` (angles of exactly 0);
+        * ``cdf``: [x, P(φ < x), standard error] on the grid `EDGES` where any angle fell;
+        * ``law``: `law_from_batches` (Hill's β̂ ± se, A for β = 2 ± se) at each x₀ of
+          `LAW_X0` (None where undefined: no angle below x₀, or the errors where fewer than
+          two members have one);
+        * ``block_minima``: [size in samples, members' mean minimum, se] per size 10ʲ held by
+          every member, and ``slopes``: d ln(mean minimum) / d ln(size) between neighbouring
+          sizes with jackknife errors over `JACKKNIFE_GROUPS` groups of members (−1/β for
+          a law A x^β near zero, 0 for angles bounded away from zero);
+        * ``episodes`` (runs below `SMALL`), their rate per time unit and mean length in
+          samples."""
+        v = _variant(variant)
+        has = self.n > 0                # a member that stopped in its first block has none
+        n = self.n[has].astype(float)
+        N = int(self.n.sum())
+        if N == 0:
+            raise ValueError("the tally holds no angles yet")
+        dt = float(self.params.get("sample_every", np.nan))
+        seeds = self.params.get("seeds") or list(range(self.members))
+        l = int(np.argmin(self.min[v]))
+        out = dict(variant=VARIANTS[v], n=N, members=self.members,
+                   min=float(self.min[v, l]), min_seed=int(seeds[l]),
+                   min_t=float(self.params.get("t_transient", 0.0) + self.argmin[v, l] * dt),
+                   zeros=int(self.zeros[v].sum()), small=SMALL)
+        below = self.below[v][has]
+        out["cdf"] = [[float(x), float(below[:, e].sum() / N),
+                       float(standard_error(below[:, e] / n))]
+                      for e, x in enumerate(EDGES) if below[:, e].any()]
+        out["law"] = [_one_member_no_error(law_from_batches(int(self.law_count[v, :, i].sum()),
+                                       float(self.law_logsum[v, :, i].sum()), N,
+                                       self.law_count[v, has, i], self.law_logsum[v, has, i],
+                                       self.law_count[v, has, i] / n, x0),
+                                       np.count_nonzero(self.law_count[v, has, i]))
+                      for i, x0 in enumerate(LAW_X0)]
+        count, total = self.ladder_count[v], self.ladder_sum[v]
+        levels = [j for j in range(LADDER) if np.count_nonzero(count[:, j]) >= 2]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            means = np.where(count > 0, total / count, np.nan)[:, levels]
+        out["block_minima"] = [[10 ** (j + 1), float(np.nanmean(means[:, i])),
+                                float(standard_error(means[~np.isnan(means[:, i]), i]))]
+                               for i, j in enumerate(levels)]
+        out["slopes"] = _slopes(means, levels)
+        stopped = self.params.get("stopped") or []
+        out["stopped"] = [list(x) for x in stopped]
+        ep = int(self.episodes[v].sum())
+        out.update(episodes=ep, episode_rate=ep / (N * dt),
+                   episode_length=float(self.below[v, :, -1].sum() / ep) if ep else None)
+        return out
+
+    def summary_parts(self):
+        s = self.statistics("restricted")
+        return [f"{s['n']:.3g} angles of {s['members']} members",
+                f"min φ restricted {s['min']:.3g} rad"]
+
+    def to_xarray(self):
+        """This tally as an ``xarray.Dataset`` (``charts.archive``)."""
+        member = ("variant", "member")
+        return dataset(self.KIND, {
+            "n": (("member",), self.n, "1", "angles per member"),
+            "min": (member, self.min, "rad", "smallest angle"),
+            "argmin": (member, self.argmin, "1", "sample index of the smallest angle"),
+            "zeros": (member, self.zeros, "1", "angles of exactly 0"),
+            "below": (member + ("edge",), self.below, "1", "angles below the edge"),
+            "law_count": (member + ("x0",), self.law_count, "1", "angles below x0"),
+            "law_logsum": (member + ("x0",), self.law_logsum, "1",
+                           "sum of ln(x0/phi) over the angles below x0"),
+            "ladder_count": (member + ("size",), self.ladder_count, "1", "blocks"),
+            "ladder_sum": (member + ("size",), self.ladder_sum, "rad",
+                           "sum of the blocks' minima"),
+            "ladder_sumsq": (member + ("size",), self.ladder_sumsq, "rad2",
+                             "sum of the squared minima"),
+            "episodes": (member, self.episodes, "1",
+                         f"runs of consecutive angles below {SMALL} rad")},
+            coords={"variant": (("variant",), np.array(VARIANTS), "1"),
+                    "edge": (("edge",), EDGES, "rad"),
+                    "x0": (("x0",), np.array(LAW_X0), "rad"),
+                    "size": (("size",), 10 ** np.arange(1, LADDER + 1), "1",
+                             "consecutive samples per block")},
+            attrs={"params": self.params})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        names = ("n", "min", "argmin", "zeros", "below", "law_count", "law_logsum",
+                 "ladder_count", "ladder_sum", "ladder_sumsq", "episodes")
+        return cls(**{k: ds[k].values for k in names}, params=attributes(ds)["params"])
+
+
+def _one_member_no_error(law, holders):
+    """``law`` with its errors undefined (None) where fewer than two members hold samples
+    below x₀ (the spread between members is then unknown, not 0), NaN as None."""
+    if holders < 2:
+        law.update(exponent_se=None, coef2_se=None)
+    return {k: (None if isinstance(x, float) and not np.isfinite(x) else x)
+            for k, x in law.items()}
+
+
+def _same(x):
+    return x
+
+
+def _variant(variant) -> int:
+    if variant not in VARIANTS:
+        raise ValueError(f"variant must be one of {VARIANTS}, got {variant!r}")
+    return VARIANTS.index(variant)
+
+
+def _slopes(means, levels):
+    """[size a, size b, slope, jackknife se] of ln(mean minimum) between neighbouring
+    sizes; ``means`` (members, levels) the members' mean block minima (NaN: a member that
+    stopped before its first block of that size), over the members holding both sizes."""
+    out = []
+    for i in range(len(levels) - 1):
+        m = means[:, i:i + 2]
+        m = m[~np.isnan(m).any(axis=1)]
+        L = m.shape[0]
+        groups = np.array_split(np.arange(L), min(JACKKNIFE_GROUPS, L))
+
+        def slope(rows):
+            return np.log(m[rows, 1].mean() / m[rows, 0].mean()) / np.log(10.0)
+        full = slope(slice(None))
+        if len(groups) >= 2:
+            jack = np.array([slope(np.setdiff1d(np.arange(L), g)) for g in groups])
+            G = len(groups)
+            se = float(np.sqrt((G - 1) / G * np.sum((jack - jack.mean()) ** 2)))
+        else:
+            se = float("nan")
+        out.append([10 ** (levels[i] + 1), 10 ** (levels[i + 1] + 1), float(full), se])
+    return out
+
+
+def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
+                        progress=False, device="cpu", budget=None, chunk=None,
+                        **kwargs) -> AngleTally:
+    """The angle test of `hyperbolicity_ensemble` (seeds seed, seed + 1, …; ``kwargs``: its
+    settings), tallied as it runs into an `AngleTally` instead of kept: memory per member
+    independent of ``t_final``.  ``device="cuda"``: every member a GPU thread, the window in
+    the blocks of ``charts.analyses.angle_blocks`` (``budget``: bytes of GPU memory for one
+    block's stores, default half the free memory; the sines tallied on ``workers`` threads);
+    ``"cpu"``: the members in chunks of about ``chunk`` (default 4 per process, at least 2)
+    by `hyperbolicity_ensemble`."""
+    from .forward_pass import angle_settings
+    from .hyperbolicity import hyperbolicity_ensemble
+    device = resolve_device(device)
+    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                       workers, progress)
+    workers = workers or os.cpu_count() or 1
+    cfg = angle_settings(system, t_final, seed=seed, **kwargs)
+    tally = AngleTally.empty(n_trajectories, dict(
+        **system.describe(), dt=cfg.dt, m=cfg.m, t_final=cfg.n_win * cfg.dt,
+        t_transient=cfg.n_tr * cfg.dt, sample_every=cfg.sample * cfg.dt,
+        checkpoint_every=cfg.ce * cfg.dt, project_every=cfg.project * cfg.dt or None,
+        speed=float(speed), seed=int(seed), device=device))
+    rep = progress_reporter(progress, n_trajectories * t_final,
+                            f"angles N={system.n} tally ({device.upper()})")
+    try:
+        if device == "cuda":
+            tally_on_device(system, cfg, tally, speed, workers=workers, budget=budget,
+                            update=rep.update)
+        else:
+            size = max(2, int(chunk or 4 * workers))        # an ensemble has 2 members or more
+            cuts = np.linspace(0, n_trajectories, max(1, n_trajectories // size) + 1).round()
+            for a, b in zip(cuts[:-1].astype(int), cuts[1:].astype(int)):
+                ens = hyperbolicity_ensemble(system, b - a, t_final, speed=speed, seed=seed + a,
+                                             workers=workers, **kwargs)
+                for i, m in enumerate(ens.members):
+                    tally.add(m.phi_full[None, :], a + i, variant="full")
+                    tally.add(m.phi_restricted[None, :], a + i, variant="restricted")
+                rep.update(len(ens.members) * t_final)
+    finally:
+        rep.close()
+    tally._open.clear()                     # the run is whole: nothing left to carry
+    return tally
+
+
+def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **kw):
+    """The angle test of ``tally``'s members (seeds ``tally.params["seed"]`` on) by
+    ``charts.analyses.angle_blocks.angles_on_device`` (``backend``, ``kw``: its arguments),
+    each block's sines added to ``tally`` on ``workers`` threads as they arrive."""
+    from .angle_blocks import angles_on_device
+    seed = int(tally.params.get("seed", 0))
+    seeds = list(range(seed, seed + tally.members))
+    alive = np.ones(tally.members, bool)
+
+    def consume(sf, sr, stops):
+        for l, s, t, message in stops:
+            if alive[l]:
+                alive[l] = False
+                tally.params.setdefault("stopped", []).append([s, t])
+                warnings.warn(f"{message}; its angles before this block are kept", StoppedMember)
+        tally.add_both(sf, sr, threads=workers, alive=alive)
+    angles_on_device(system, cfg, seeds, speed, backend=backend, workers=workers,
+                     consume=consume, **kw)
+    return tally
+
+
+class StoppedMember(UserWarning):
+    """A member of a tallied angle test stopped (at a singular point, on a non-finite
+    value): the others go on; its angles up to the block before count."""
