@@ -16,7 +16,7 @@
 set -o pipefail
 export PYTHONUNBUFFERED=1 NUMBA_CACHE_DIR=${NUMBA_CACHE_DIR:-/tmp/charts-numba-cache}
 python3 -m pip install -q --no-deps --no-build-isolation --no-index -e . >/dev/null 2>&1 \
-    || export PYTHONPATH=$PWD
+    || export PYTHONPATH=$PWD${PYTHONPATH:+:$PYTHONPATH}
 OUT=${OUT:-/tmp/out}
 TALLIES=${TALLIES:-/tmp/tallies}
 DEADLINE=${DEADLINE:-540}
