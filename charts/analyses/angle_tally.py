@@ -276,6 +276,15 @@ class AngleTally(Archivable):
                    episode_length=float(self.below[v, :, -1].sum() / ep) if ep else None)
         return out
 
+    def plot(self, ax=None, variant="restricted", **kw):
+        """The law of the small angles and the block minima of ``variant``
+        (``charts.plotting.plot_angle_law``), ``(fig, axes)``."""
+        from ..plotting import plot_angle_law
+        kw.setdefault("sample_every", float(self.params.get("sample_every", 0.1)))
+        kw.setdefault("title", f"smallest angles between $E_u$ and $E_{{cs}}$ ({variant})")
+        label = f"N = {self.params['n']}" if "n" in self.params else variant
+        return plot_angle_law({label: self.statistics(variant)}, axes=ax, **kw)
+
     def summary_parts(self):
         s = self.statistics("restricted")
         return [f"{s['n']:.3g} angles of {s['members']} members",

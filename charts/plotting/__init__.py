@@ -5,7 +5,8 @@ Imported lazily by the results' ``plot()`` methods; every function returns matpl
 the axes it is given.  Sits below the analyses in the layers: it imports only the style,
 the atomic write, the results' words for a system and (for the N = 3 surface)
 ``charts.geometry``."""
-from .analyses import (CURVATURE_QUANTILES, LOG_FLOOR, plot_angles, plot_angles_series,
+from .analyses import (CURVATURE_QUANTILES, LOG_FLOOR, plot_angle_law, plot_angles,
+                       plot_angles_series,
                        plot_curvature, plot_drift, plot_ensemble_exponents, plot_lyapunov,
                        plot_lyapunov_spectrum, plot_spectrum)
 from .style import DPI, TIME, new_figure, png_bytes, save_png, system_label
@@ -13,7 +14,7 @@ from .trajectory import (animate_rotors, plot_angles_time, plot_poincare, plot_s
                          plot_trajectory, plot_velocities_time, save_animation)
 
 __all__ = ["plot_lyapunov", "plot_lyapunov_spectrum", "plot_ensemble_exponents", "plot_curvature",
-           "plot_angles",
+           "plot_angles", "plot_angle_law",
            "plot_angles_series", "plot_spectrum", "plot_drift",
            "plot_angles_time", "plot_velocities_time", "plot_surface", "plot_poincare", "animate_rotors", "save_animation",
            "plot_trajectory", "new_figure", "png_bytes", "save_png", "system_label", "DPI", "TIME",

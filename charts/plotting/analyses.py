@@ -13,7 +13,8 @@ import numpy as np
 from ..result_words import ANGULAR_VELOCITY, RATE
 from .style import MAX_POINTS, TIME, figure_axes, line_colors, new_figure, time_window
 
-__all__ = ["plot_lyapunov", "plot_ensemble_exponents", "plot_curvature", "plot_angles", "plot_spectrum", "plot_drift",
+__all__ = ["plot_lyapunov", "plot_ensemble_exponents", "plot_curvature", "plot_angles",
+           "plot_angle_law", "plot_spectrum", "plot_drift",
            "CURVATURE_QUANTILES", "LOG_FLOOR"]
 
 #: Quantiles (in %) of the curvature samples that set the histogram limits; the share of
@@ -181,6 +182,55 @@ def plot_angles(phis, *, axes=None, title=None, bins=60):
         a.set_ylabel("probability density")
         a.set_title(f"{v} tangent space (min φ = {phi.min():.2g}, {phi.size} samples)", fontsize=9)
     fig.suptitle(title or "angles between $E_u$ and $E_{cs}$", fontsize=10)
+    return fig, axes
+
+
+def plot_angle_law(statistics, *, axes=None, title=None, sample_every=0.1):
+    """The law of the small angles from `AngleTally.statistics` dicts (``statistics``: label
+    → dict, one curve each): (a) P(φ < x) against x on log axes with the members' standard
+    errors (where P exceeds two of them: the last few angles of the tail are left out), and
+    the line of slope 1 (β = 1) for reference; (b) the members' mean minimum of
+    consecutive samples against the block's length in time units (``sample_every`` per
+    sample): flat for angles bounded away from zero, falling as length^(−1/β) for a law
+    A x^β.  ``(fig, axes)``."""
+    if axes is None:
+        fig, grid = new_figure(1, 2, figsize=(10, 3.8), squeeze=False)
+        axes = list(grid[0])
+    fig = axes[0].figure
+    colors = line_colors(len(statistics))
+    xs = []
+    for color, (label, st) in zip(colors, statistics.items()):
+        if st["cdf"]:
+            x, p, se = (np.array(c, dtype=float) for c in zip(*st["cdf"]))
+            ok = p > 2 * se                         # the tail of a few angles left out
+            x, p, se = x[ok], p[ok], se[ok]
+            axes[0].errorbar(x, p, yerr=se, color=color, lw=1, capsize=0,
+                             label=f"{label}: min {st['min']:.2g} rad, {st['n']:.2g} angles")
+            xs.append(x)
+        else:
+            axes[0].plot([], [], color=color,
+                         label=f"{label}: none below 0.05 (min {st['min']:.2g} rad)")
+        if st["block_minima"]:
+            size, mean, se = (np.array(c, dtype=float) for c in zip(*st["block_minima"]))
+            axes[1].errorbar(size * sample_every, mean, yerr=se, color=color, marker="o",
+                             ms=3, lw=1, capsize=0, label=label)
+    if xs:
+        x = np.concatenate(xs)
+        ref = np.array([x.min(), x.max()])
+        axes[0].plot(ref, ref / ref[-1] * 1e-2, "k:", lw=0.8, label="slope 1 (β = 1)")
+    axes[0].set_xscale("log")
+    axes[0].set_yscale("log")
+    axes[0].set_xlabel("x (rad)")
+    axes[0].set_ylabel("P(φ < x)")
+    axes[0].set_title("(a) the law of the small angles", fontsize=9)
+    axes[0].legend(fontsize=7, frameon=False)
+    axes[1].set_xscale("log")
+    axes[1].set_yscale("log")
+    axes[1].set_xlabel("block of consecutive samples (time units)")
+    axes[1].set_ylabel("mean minimum of φ (rad)")
+    axes[1].set_title("(b) block minima", fontsize=9)
+    axes[1].legend(fontsize=7, frameon=False)
+    fig.suptitle(title or "smallest angles between $E_u$ and $E_{cs}$ (restricted)", fontsize=10)
     return fig, axes
 
 
