@@ -39,6 +39,7 @@ def results():
         "spectrum": charts.power_spectrum(w.u[:, 0], w.dt_sample, segment_time=10.0),
         "ensemble": charts.lyapunov_ensemble(SYS4, 2, 10.0, t_transient=1.0, workers=1),
         "angle_ensemble": charts.hyperbolicity_ensemble(SYS4, 2, 5.0, t_transient=5.0, workers=1),
+        "angle_tally": charts.hyperbolicity_tally(SYS4, 2, 5.0, t_transient=5.0, workers=1),
     }
 
 
@@ -65,7 +66,7 @@ def _same(a, b, where):
 
 @pytest.mark.parametrize("name", ["trajectory", "trajectory_plain", "trajectory_chart", "lyapunov",
                                   "curvature", "angles", "covariant", "waveform", "spectrum",
-                                  "ensemble", "angle_ensemble"])
+                                  "ensemble", "angle_ensemble", "angle_tally"])
 def test_round_trip_identical(results, name, tmp_path):
     res = results[name]
     path = res.save(tmp_path / f"{name}.nc")
@@ -112,6 +113,7 @@ def test_every_result_type_prints_as_one_short_line(results):
     assert repr(results["lyapunov"]).startswith("LyapunovResult(N = 4, T = 20, λ = ")
     assert "(58 more)" in repr(every["wide"])
     assert "2 AngleResult members" in repr(results["angle_ensemble"])
+    assert "100 angles of 2 members" in repr(results["angle_tally"])
     assert repr(every["sweep"]) == "SweepTable(5 points, 40 columns)"
     angles = results["angles"]
     assert f"{angles.t.size} samples, t = {angles.t[0]:g}…{angles.t[-1]:g}" in repr(angles)

@@ -105,7 +105,7 @@ class AngleTally(Archivable):
         return tally
 
     @property
-    def members(self) -> int:
+    def n_members(self) -> int:
         return self.n.size
 
     def add(self, phi, first=0, variant="restricted"):
@@ -128,7 +128,7 @@ class AngleTally(Archivable):
         members split among ``threads`` threads (NumPy works without the GIL); ``alive``
         (members,) bool: only those members (the others stopped: their block is left out)."""
         from concurrent.futures import ThreadPoolExecutor
-        live = np.arange(self.members) if alive is None else np.flatnonzero(alive)
+        live = np.arange(self.n_members) if alive is None else np.flatnonzero(alive)
         if live.size == 0:
             return
         parts = np.array_split(live, max(1, min(int(threads), live.size)))
@@ -150,10 +150,10 @@ class AngleTally(Archivable):
         l, s = x.shape
         rows = (np.arange(int(first), int(first) + l) if np.ndim(first) == 0
                 else np.asarray(first, dtype=np.int64))
-        if l == 0 or s == 0 or rows.shape != (l,) or rows[0] < 0 or rows[-1] >= self.members \
+        if l == 0 or s == 0 or rows.shape != (l,) or rows[0] < 0 or rows[-1] >= self.n_members \
                 or np.any(np.diff(rows) <= 0):
             raise ValueError(f"a block of shape {x.shape} from member {first} does not fit a "
-                             f"tally of {self.members} members")
+                             f"tally of {self.n_members} members")
         if self._open.setdefault("input", kind) != kind:
             raise ValueError(f"this tally was fed {self._open['input']}, not {kind}")
         before = self.n[rows]
@@ -245,10 +245,9 @@ class AngleTally(Archivable):
         if N == 0:
             raise ValueError("the tally holds no angles yet")
         dt = float(self.params.get("sample_every", np.nan))
-        seeds = self.params.get("seeds") or list(range(self.members))
         l = int(np.argmin(self.min[v]))
-        out = dict(variant=VARIANTS[v], n=N, members=self.members,
-                   min=float(self.min[v, l]), min_seed=int(seeds[l]),
+        out = dict(variant=VARIANTS[v], n=N, members=self.n_members,
+                   min=float(self.min[v, l]), min_seed=int(self.params.get("seed", 0)) + l,
                    min_t=float(self.params.get("t_transient", 0.0) + self.argmin[v, l] * dt),
                    zeros=int(self.zeros[v].sum()), small=SMALL)
         below = self.below[v][has]
@@ -416,8 +415,8 @@ def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **k
     each block's sines added to ``tally`` on ``workers`` threads as they arrive."""
     from .angle_blocks import angles_on_device
     seed = int(tally.params.get("seed", 0))
-    seeds = list(range(seed, seed + tally.members))
-    alive = np.ones(tally.members, bool)
+    seeds = list(range(seed, seed + tally.n_members))
+    alive = np.ones(tally.n_members, bool)
 
     def consume(sf, sr, stops):
         for l, s, t, message in stops:

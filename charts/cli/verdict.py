@@ -126,7 +126,7 @@ def _statistics(args) -> int:
             tally = load(path)
             if not isinstance(tally, AngleTally):
                 raise ValueError(f"{path} is not an angle tally")
-            rep = dict(label=label, system=system.describe(), members=tally.members,
+            rep = dict(label=label, system=system.describe(), members=tally.n_members,
                        t_final=tally.params["t_final"], t_transient=tally.params["t_transient"],
                        sample_every=tally.params["sample_every"], device=tally.params["device"],
                        seconds=float("nan"), file=str(path),
