@@ -163,3 +163,23 @@ def test_ensembles_too_large_for_memory_are_refused_before_they_start():
         lyapunov_ensemble(RotorSystem(4), 10**12, 100.0)
     with pytest.raises(ValueError, match=r"angles of 1000000000000 members .* GiB"):
         hyperbolicity_ensemble(RotorSystem(4), 10**12, 100.0)
+
+
+def test_the_states_compile_once_before_the_workers(monkeypatch):
+    """The members' initial states are built in processes; the first seed's is built here
+    first (``prime``), so that the workers load its kernels instead of each compiling them."""
+    import charts.analyses.ensemble as ensemble
+    seen = {}
+
+    def fake(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name=None, n=None):
+        seen.update(prime=prime, name=name, n=n)
+        return [fn(job) for job in jobs]
+
+    def states_of(job):
+        system, cfg, seeds, speed = job
+        return [np.array(seeds, float), np.array(seeds, float), np.array(seeds, float)]
+    monkeypatch.setattr(ensemble, "map_jobs", fake)
+    out = ensemble.member_states_of(states_of, RotorSystem(4), None, [5, 6, 7], 1.0, 2)
+    assert out[0].tolist() == [5.0, 6.0, 7.0]
+    assert seen["prime"][0] is states_of and seen["prime"][1][2] == [5]
+    assert (seen["name"], seen["n"]) == ("states_of", 4)

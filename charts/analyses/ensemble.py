@@ -247,10 +247,14 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
 def member_states_of(states_of, system, cfg, seeds, speed, workers):
     """The members' initial states [Zs, scs, speeds] (``charts.solvers.device.flow_states``)
     of the seeds, built by ``states_of((system, cfg, seeds, speed))`` (which returns them in
-    a list of one) in about four chunks per process of ``workers`` (`map_jobs`)."""
+    a list of one) in about four chunks per process of ``workers`` (`map_jobs`; the first
+    seed's state built here first, so that the workers load its kernels from the disk cache
+    instead of each compiling them)."""
     size = max(1, -(-len(seeds) // (4 * workers)))
     jobs = [(system, cfg, seeds[i:i + size], speed) for i in range(0, len(seeds), size)]
-    parts = map_jobs(states_of, jobs, [1] * len(jobs), workers, 0.0, False, "states")
+    parts = map_jobs(states_of, jobs, [1] * len(jobs), workers, 0.0, False, "states",
+                     prime=(states_of, (system, cfg, seeds[:1], speed)),
+                     name=getattr(states_of, "__name__", "states"), n=system.n)
     return [np.concatenate(a) for a in zip(*parts)]
 
 
