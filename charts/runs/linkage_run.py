@@ -8,8 +8,9 @@ import numpy as np
 
 from .plan import ticks
 
-__all__ = ["linkage_system", "linkage_flow", "linkage_invariants", "linkage_curvature",
-           "linkage_angles_pass", "linkage_result"]
+__all__ = ["linkage_system", "linkage_start", "linkage_flow", "linkage_invariants",
+           "linkage_curvature", "linkage_angles_pass", "linkage_paper_exponents",
+           "linkage_result"]
 
 
 def linkage_system(scene):
@@ -19,6 +20,14 @@ def linkage_system(scene):
     s = scene.system
     return LinkageSystem(s["eps"], s["rho"], disk_mass=s["disk_mass"],
                          disk_inertia=s["disk_inertia"])
+
+
+def linkage_start(scene, system, plan):
+    """(positions per state nq = 7, initial state y0 = (q, v) drawn from the scene's seed,
+    its speed, the `LinkageFlow`)."""
+    q, v = system.random_state(seed=scene.initial["seed"], speed=scene.system["speed"])
+    return (q.size, np.concatenate([q, v]), float(system.speed(v)),
+            linkage_flow(scene, system, q, v, plan.tangent_vectors))
 
 
 def linkage_flow(scene, system, q, v, k: int):
@@ -47,11 +56,22 @@ def linkage_invariants(system, y, speed) -> list:
             float((system.speed(v) / speed) ** 2 - 1.0)]
 
 
-def linkage_curvature(st, kdir: int):
-    """K(v̂, eᵢ), i = 1…kdir, at the current state and vectors (`frame_curvatures`)."""
+def linkage_curvature(st, kdir: int, routes=None):
+    """(None, K(v̂, eᵢ)), i = 1…kdir, at the current state and vectors (`frame_curvatures`:
+    the Gauss equation, the linkage's one route, whatever ``routes`` asks)."""
     from ..analyses.linkage import frame_curvatures
 
-    return frame_curvatures(st.system, st.flow.Z.ravel(), kdir)
+    return None, frame_curvatures(st.system, st.flow.Z.ravel(), kdir)
+
+
+def linkage_paper_exponents(st, k: int):
+    """(the paper's N = 4 exponents, the linkage's ε → 0 limit, scaled by the run's speed,
+    where they come from)."""
+    from .paper import PAPER_EXPONENTS
+
+    return ([round(float(p) * st.speed, 12) for p in PAPER_EXPONENTS[4][:k]],
+            "section 2, N = 4: the linkage's limit ε → 0 (Σ cos θᵢ = 0), unit speed; scaled "
+            "by the speed")
 
 
 def linkage_angles_pass(st) -> None:

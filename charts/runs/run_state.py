@@ -11,15 +11,11 @@ import json
 
 import numpy as np
 
-from ..geometry.system import RotorSystem
 from .plan import Plan
 from .scene import Scene, scene_to_dict
-from .linkage_run import linkage_flow, linkage_system
-from .scene_linkage import is_linkage
+from .scene_kind import scene_kind
 
-__all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done", "tangent_flow",
-           "scene_system",
-           "lyapunov_settings_of"]
+__all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done"]
 
 #: File name of the checkpoint in the output folder.
 CHECKPOINT = "checkpoint.npz"
@@ -38,27 +34,12 @@ def scene_hash(scene: Scene) -> str:
 class RunState:
     """Everything a run accumulates; saved whole in the checkpoint."""
 
-    def __init__(self, scene: Scene, plan: Plan, system: RotorSystem):
+    def __init__(self, scene: Scene, plan: Plan, system):
         self.scene, self.plan, self.system = scene, plan, system
-        #: positions in y before the velocities: N, or 7 for the linkage's q = (θ, x, y, α)
-        self.nq = system.n
-        if is_linkage(scene):
-            q, v = system.random_state(seed=scene.initial["seed"], speed=scene.system["speed"])
-            self.nq = q.size
-            self.y0 = np.concatenate([q, v])
-            self.speed = float(system.speed(v))
-            self.flow = linkage_flow(scene, system, q, v, plan.tangent_vectors)
-        elif scene.initial["theta"] is not None:
-            theta, u = np.array(scene.initial["theta"]), np.array(scene.initial["u"])
-        else:
-            theta, u = system.random_state(seed=scene.initial["seed"],
-                                           speed=scene.system["speed"])
-        if not is_linkage(scene):
-            self.y0 = np.concatenate([theta, u])
-            self.speed = float(system.speed(u))
-            #: the tangent flow of the kernel engine (state, vectors, log-norm sums), else None
-            self.flow = tangent_flow(scene, system, theta, u, plan.tangent_vectors) \
-                if plan.engine == "kernel" else None
+        #: positions in y before the velocities: N, or 7 for the linkage's q = (θ, x, y, α);
+        #: the initial state, its speed, and the tangent flow of the kernel engine (state,
+        #: vectors, log-norm sums; None for the integrate engine)
+        self.nq, self.y0, self.speed, self.flow = scene_kind(scene).start(scene, system, plan)
         self._y = self.y0.copy()
         self.lyap_marks = []           # (tick, logsum) at Lyapunov batch boundaries
         self.shares_partial = False    # resumed from a checkpoint without the energy shares
@@ -140,46 +121,6 @@ class RunState:
             self.rec[name] = list(a["rec_" + name])
         for name in self.rec_t:
             self.rec_t[name] = list(a["rect_" + name])
-
-
-def scene_system(scene: Scene):
-    """The system a scene runs: its `RotorSystem`, or the `LinkageSystem` of a linkage
-    scene (``charts.runs.scene_linkage``)."""
-    if is_linkage(scene):
-        return linkage_system(scene)
-    return RotorSystem(scene.system["n"], scene.system["masses"], scene.system.get("weights"),
-                       scene.system.get("level", 0.0))
-
-
-def lyapunov_settings_of(scene: Scene, system: RotorSystem, k: int):
-    """The settings of `charts.lyapunov_spectrum` that the scene's tangent flow mirrors
-    (validated by the scene schema): a scene and that API call give identical numbers."""
-    from ..analyses.lyapunov import lyapunov_settings
-
-    integ, run, eff = scene.integrator, scene.run, scene.effects
-    ly = eff.get("lyapunov", {})
-    dt = integ["dt"]
-    # without a Lyapunov effect the vectors (curvature frames) are re-orthonormalised every
-    # step, as in charts.curvature_along_trajectory
-    reorth = ly.get("reorth_every", dt)
-    project = dt if integ["project"] else (integ["project_every"] or None)
-    return lyapunov_settings(system, run["t_final"], dt=dt, n_exponents=max(k, 1),
-                             inner=ly.get("inner_product", "theta"), space="restricted",
-                             t_transient=run["t_transient"], n_batches=ly.get("n_batches", 2),
-                             reorth_every=reorth, project_every=project, record_every=reorth,
-                             seed=scene.initial["seed"] or 0)
-
-
-def tangent_flow(scene: Scene, system: RotorSystem, theta, u, k: int):
-    """The tangent flow of the kernel engine: ``k`` vectors, settings as the API's."""
-    from ..analyses.lyapunov import lyapunov_flow
-    from ..solvers.tangent import TangentFlow
-
-    cfg = lyapunov_settings_of(scene, system, k)
-    if k:
-        return lyapunov_flow(system, theta, u, cfg)
-    return TangentFlow(system, theta, u, 0, dt=cfg.dt, reorth_every=cfg.reorth,
-                       project_every=cfg.project)
 
 
 def units_done(st: RunState, ends) -> int:

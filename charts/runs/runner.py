@@ -45,10 +45,8 @@ from .outdir import OutputLock, prepare_output
 from .paper import PAPER_EXPONENTS
 from .plan import Plan, plan_scene, ticks
 from .recorders import make_recorders
-from .run_state import CHECKPOINT, RunError, RunState, scene_hash, scene_system, units_done
-from .linkage_run import linkage_angles_pass
-from .scene_linkage import is_linkage
-from .scene_schema import api_default
+from .run_state import CHECKPOINT, RunError, RunState, scene_hash, units_done
+from .scene_kind import scene_kind
 from .scene import Scene
 from .scene_results import (FTLE_STATS, finalize, progress_of, result_header, resume_command,
                             write_result)
@@ -146,7 +144,7 @@ class SceneRun:
 
     def __init__(self, scene: Scene, outdir: Path, resume: bool, *, force: bool = False):
         self.scene, self.outdir = scene, outdir
-        system = scene_system(scene)
+        system = scene_kind(scene).system(scene)
         self.plan = plan = plan_scene(scene)
         self.st = st = RunState(scene, plan, system)
         self.ck = outdir / CHECKPOINT
@@ -304,27 +302,8 @@ class SceneRun:
 
 
 def _angles_pass(st: RunState):
-    """The hyperbolicity test (section 4) from the initial state: forward tangent vectors,
-    backward adjoint vectors along the re-integrated trajectory (``charts.analyses.hyperbolicity``)."""
-    from ..analyses.hyperbolicity import hyperbolicity_angles
-
-    if is_linkage(st.scene):                 # its own test, charts.analyses.linkage_angles
-        return linkage_angles_pass(st)
-    sc, sys_ = st.scene, st.system
-    a = sc.effects["angles"]
-    dt = sc.integrator["dt"]
-    n = sys_.n
-    res = hyperbolicity_angles(sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
-                               n_unstable=a["n_vectors"], t_transient=a["t_transient"],
-                               sample_every=a["sample_every"],
-                               checkpoint_every=api_default("angles", "checkpoint_every"),
-                               project_every=st.flow.project_every * dt or None,
-                               seed=sc.initial["seed"] or 0)
-    st.rec["angles"] = [list(r) for r in np.column_stack([res.t, res.phi_full,
-                                                          res.phi_restricted])]
-    st.rec["angles_exponents"] = [list(res.forward_exponents), list(res.adjoint_exponents)]
-    st.rhs += st.plan.angles["rhs_evaluations"]
-    st.steps += 2 * st.plan.angles["steps"]
+    """The hyperbolicity test (section 4) of the scene's kind (`SceneKind.angles_pass`)."""
+    scene_kind(st.scene).angles_pass(st)
 
 
 def _clv_pass(st: RunState):

@@ -20,12 +20,9 @@ from ..geometry.energy_shares import LOCALISED_SHARE, localised_fraction
 from . import scene_figures as figs
 from .netcdf_results import SCENE_NETCDF, SceneResult
 from .io import atomic_write, json_default, npz_bytes, versions
-from .paper import PAPER_EXPONENTS
-from .recorders import invariants
 from .run_state import CHECKPOINT, RunState, units_done
 from .scene import scene_to_dict
-from .linkage_run import linkage_result
-from .scene_linkage import is_linkage
+from .scene_kind import scene_kind
 
 __all__ = ["finalize", "progress_of", "result_header", "resume_command", "write_result", "waveforms_result", "spectrum_result", "drift_result",
            "lyapunov_result", "curvature_result", "angles_result", "clv_result",
@@ -89,8 +86,7 @@ def finalize(st: RunState, status, ends, transient, unit, outdir: Path) -> dict:
                         ("switches", switches_result)):
         if name in eff:
             build(st, out, t_done=t_done, status=status)
-    if is_linkage(sc):
-        linkage_result(st, out)
+    scene_kind(sc).results(st, out)
     comp = plan.as_dict()
     comp["stored_samples"] = {k: v[0] for k, v in out.stored.items()}
     comp["stored_values"] = int(sum(v[1] for v in out.stored.values()))
@@ -136,13 +132,13 @@ def _write_netcdf(outdir, result, arrays):
 
 def _state(st, y):
     """A state as result.json holds it: θ and u, or the linkage's q = (θ₀…θ₃, x, y, α), v."""
-    keys = ("q", "v") if is_linkage(st.scene) else ("theta", "u")
+    keys = scene_kind(st.scene).state_keys
     return {keys[0]: y[:st.nq].tolist(), keys[1]: y[st.nq:].tolist()}
 
 
 def _drift_summary(st, out):
     """The invariants at the final state, and their largest recorded drift."""
-    inv = invariants(st)
+    inv = scene_kind(st.scene).invariants(st)
     drift = {"constraint": inv[0], "tangency": inv[1], "energy_relative": inv[2]}
     if out.stored.get("drift", (0,))[0]:
         D = np.array(st.rec["drift"])
@@ -204,7 +200,6 @@ def drift_result(st, out, **_):
 
 def lyapunov_result(st, out, *, t_done, **_):
     ly = st.scene.effects["lyapunov"]
-    n = st.system.n
     res = {"n_exponents": ly["n_exponents"], "inner_product": ly["inner_product"],
            "t_averaged": t_done}
     out.results["lyapunov"] = res
@@ -220,16 +215,9 @@ def lyapunov_result(st, out, *, t_done, **_):
     if len(marks) >= 2:
         res["stderr"] = stderr.tolist()
         res["batches"] = len(batches)
-    if is_linkage(st.scene):             # its ε → 0 limit is the paper's N = 4 system
-        res["paper"] = [round(float(p) * st.speed, 12)
-                        for p in PAPER_EXPONENTS[4][: ly["n_exponents"]]]
-        res["paper_note"] = ("section 2, N = 4: the linkage's limit ε → 0 (Σ cos θᵢ = 0), unit "
-                             "speed; scaled by the speed")
-    elif n in PAPER_EXPONENTS and np.allclose(st.system.masses, 1.0) \
-            and st.system.is_paper_family:
-        paper = np.array(PAPER_EXPONENTS[n]) * st.speed
-        res["paper"] = [round(float(p), 12) for p in paper[: ly["n_exponents"]]]
-        res["paper_note"] = "section 2, unit speed, equal masses; scaled by the speed"
+    paper = scene_kind(st.scene).paper_exponents(st, ly["n_exponents"])
+    if paper is not None:
+        res["paper"], res["paper_note"] = paper
     out.arrays.update(lyapunov_history_t=T, lyapunov_history=L / T[:, None])
     shares = st.flow.shares
     if st.shares_partial:

@@ -22,7 +22,7 @@ from .outdir import OutputLock, prepare_output
 from .run_state import RunError
 from .runner import QUIET_BAR, SceneRun
 from .scene import Scene, scene_to_dict
-from .scene_linkage import is_linkage
+from .scene_kind import scene_kind
 
 __all__ = ["seed_family", "run_seed_lanes", "lane_flows"]
 
@@ -33,7 +33,7 @@ def seed_family(scene: Scene):
     the kernel engine, a linkage, or an initial state given in full)."""
     from .plan import plan_scene
 
-    if is_linkage(scene) or scene.initial["theta"] is not None:
+    if not scene_kind(scene).lanes or scene.initial["theta"] is not None:
         return None
     if plan_scene(scene).engine != "kernel":
         return None

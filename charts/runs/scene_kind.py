@@ -1,0 +1,52 @@
+"""What a scene's kind of system decides — the rotors (``charts.runs.rotor_run``) or the
+Appendix's linkage (``charts.runs.linkage_run``): one record of its pieces per kind, so that
+the runner, the recorders and the result writers ask the scene's kind instead of branching
+on it."""
+from __future__ import annotations
+
+from typing import Callable, NamedTuple
+
+from . import linkage_run, rotor_run
+from .scene_linkage import is_linkage
+
+__all__ = ["SceneKind", "scene_kind", "ROTORS", "LINKAGE"]
+
+
+class SceneKind(NamedTuple):
+    """The pieces of a scene run that depend on the kind of system."""
+    #: "rotors" or "linkage"
+    name: str
+    #: the names of a state's positions and velocities in result.json
+    state_keys: tuple
+    #: scene → the system
+    system: Callable
+    #: (scene, system, plan) → (positions per state, y0, speed, the tangent flow or None)
+    start: Callable
+    #: run state → [constraint, tangency, E/E₀ − 1] of its current state
+    invariants: Callable
+    #: (run state, directions, routes) → (numerical K(v̂, eᵢ) or None, exact or None)
+    curvature: Callable
+    #: run state → None: the section-4 angle test, recorded in the run state
+    angles_pass: Callable
+    #: (run state, k) → (the paper's first k exponents, their source) or None
+    paper_exponents: Callable
+    #: (run state, outputs) → None: the kind's own results
+    results: Callable
+    #: whether the seeds of a scene can share the lanes of one kernel
+    lanes: bool
+
+
+ROTORS = SceneKind("rotors", ("theta", "u"), rotor_run.rotor_system, rotor_run.rotor_start,
+                   rotor_run.rotor_invariants, rotor_run.rotor_curvature,
+                   rotor_run.rotor_angles_pass, rotor_run.rotor_paper_exponents,
+                   lambda st, out: None, True)
+LINKAGE = SceneKind("linkage", ("q", "v"), linkage_run.linkage_system,
+                    linkage_run.linkage_start,
+                    lambda st: linkage_run.linkage_invariants(st.system, st.y, st.speed),
+                    linkage_run.linkage_curvature, linkage_run.linkage_angles_pass,
+                    linkage_run.linkage_paper_exponents, linkage_run.linkage_result, False)
+
+
+def scene_kind(scene) -> SceneKind:
+    """The `SceneKind` of a scene (``[system] kind``)."""
+    return LINKAGE if is_linkage(scene) else ROTORS
