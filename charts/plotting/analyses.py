@@ -218,18 +218,14 @@ def plot_angle_law(statistics, *, axes=None, title=None, sample_every=0.1):
         x = np.concatenate(xs)
         ref = np.array([x.min(), x.max()])
         axes[0].plot(ref, ref / ref[-1] * 1e-2, "k:", lw=0.8, label="slope 1 (β = 1)")
-    axes[0].set_xscale("log")
-    axes[0].set_yscale("log")
-    axes[0].set_xlabel("x (rad)")
-    axes[0].set_ylabel("P(φ < x)")
-    axes[0].set_title("(a) the law of the small angles", fontsize=9)
-    axes[0].legend(fontsize=7, frameon=False)
-    axes[1].set_xscale("log")
-    axes[1].set_yscale("log")
-    axes[1].set_xlabel("block of consecutive samples (time units)")
-    axes[1].set_ylabel("mean minimum of φ (rad)")
-    axes[1].set_title("(b) block minima", fontsize=9)
-    axes[1].legend(fontsize=7, frameon=False)
+    for ax, x, y, t in ((axes[0], "x (rad)", "P(φ < x)", "(a) the law of the small angles"),
+                        (axes[1], "block of consecutive samples (time units)",
+                         "mean minimum of φ (rad)", "(b) block minima")):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set(xlabel=x, ylabel=y)
+        ax.set_title(t, fontsize=9)
+        ax.legend(fontsize=7, frameon=False)
     fig.suptitle(title or "smallest angles between $E_u$ and $E_{cs}$ (restricted)", fontsize=10)
     return fig, axes
 
