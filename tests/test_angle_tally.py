@@ -204,3 +204,33 @@ def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
     s = t.statistics()
     assert s["n"] == 700 and s["stopped"] == [[8, 12.5]]
     assert s["min"] == pytest.approx(min(phi[0].min(), phi[1, :100].min(), phi[2].min()))
+
+
+def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypatch):
+    """On the CPU the tally of the members done is saved after each chunk; a run interrupted
+    in its second chunk and called again goes on from there, to the tally of a run never
+    interrupted, and removes it; a checkpoint of another run is refused."""
+    pytest.importorskip("xarray")
+    import charts.analyses.hyperbolicity as hyp
+    S = RotorSystem(3)
+    kw = dict(t_transient=1.0, workers=1, chunk=2)
+    whole = hyperbolicity_tally(S, 5, 3.0, **kw)
+    real, calls = hyp.hyperbolicity_ensemble, []
+
+    def cut(*a, **k):
+        calls.append(1)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(*a, **k)
+    monkeypatch.setattr(hyp, "hyperbolicity_ensemble", cut)
+    path = tmp_path / "partial.nc"
+    with pytest.raises(KeyboardInterrupt):
+        hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
+    monkeypatch.setattr(hyp, "hyperbolicity_ensemble", real)
+    from charts import load
+    assert load(path).params["members_done"] == 2 and load(path).n[:2].tolist() == [30, 30]
+    with pytest.raises(ValueError, match="another run"):
+        hyperbolicity_tally(S, 5, 4.0, checkpoint=path, **kw)
+    resumed = hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
+    _same(resumed, whole)
+    assert resumed.params == whole.params and not path.exists()

@@ -366,7 +366,7 @@ def _slopes(means, levels):
 
 
 def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                        progress=False, device="cpu", budget=None, chunk=None,
+                        progress=False, device="cpu", budget=None, chunk=None, checkpoint=None,
                         **kwargs) -> AngleTally:
     """The angle test of `hyperbolicity_ensemble` (seeds seed, seed + 1, …; ``kwargs``: its
     settings), tallied as it runs into an `AngleTally` instead of kept: memory per member
@@ -374,38 +374,72 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
     the blocks of ``charts.analyses.angle_blocks`` (``budget``: bytes of GPU memory for one
     block's stores, default half the free memory; the sines tallied on ``workers`` threads);
     ``"cpu"``: the members in chunks of about ``chunk`` (default 4 per process, at least 2)
-    by `hyperbolicity_ensemble`."""
+    by `hyperbolicity_ensemble`; with ``checkpoint`` (a path) the tally of the members done
+    is saved there after each chunk, and a run that finds it there (the same call) goes on
+    from it instead of starting again; removed when the run is whole."""
     from .forward_pass import angle_settings
-    from .hyperbolicity import hyperbolicity_ensemble
     device = resolve_device(device)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     workers = workers or os.cpu_count() or 1
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
-    tally = AngleTally.empty(n_trajectories, dict(
-        **system.describe(), dt=cfg.dt, m=cfg.m, t_final=cfg.n_win * cfg.dt,
-        t_transient=cfg.n_tr * cfg.dt, sample_every=cfg.sample * cfg.dt,
-        checkpoint_every=cfg.ce * cfg.dt, project_every=cfg.project * cfg.dt or None,
-        speed=float(speed), seed=int(seed), device=device))
+    params = dict(**system.describe(), dt=cfg.dt, m=cfg.m, t_final=cfg.n_win * cfg.dt,
+                  t_transient=cfg.n_tr * cfg.dt, sample_every=cfg.sample * cfg.dt,
+                  checkpoint_every=cfg.ce * cfg.dt, project_every=cfg.project * cfg.dt or None,
+                  speed=float(speed), seed=int(seed), device=device)
     rep = progress_reporter(progress, n_trajectories * t_final,
                             f"angles N={system.n} tally ({device.upper()})")
     try:
         if device == "cuda":
+            tally = AngleTally.empty(n_trajectories, params)
             tally_on_device(system, cfg, tally, speed, workers=workers, budget=budget,
                             update=rep.update)
         else:
-            size = max(2, int(chunk or 4 * workers))        # an ensemble has 2 members or more
-            cuts = np.linspace(0, n_trajectories, max(1, n_trajectories // size) + 1).round()
-            for a, b in zip(cuts[:-1].astype(int), cuts[1:].astype(int)):
-                ens = hyperbolicity_ensemble(system, b - a, t_final, speed=speed, seed=seed + a,
-                                             workers=workers, **kwargs)
-                for i, m in enumerate(ens.members):
-                    tally.add(m.phi_full[None, :], a + i, variant="full")
-                    tally.add(m.phi_restricted[None, :], a + i, variant="restricted")
-                rep.update(len(ens.members) * t_final)
+            tally = _tally_on_cpu(system, n_trajectories, t_final, params, speed, seed, workers,
+                                  chunk, checkpoint, rep, kwargs)
     finally:
         rep.close()
     tally._open.clear()                     # the run is whole: nothing left to carry
+    return tally
+
+
+def _tally_on_cpu(system, L, t_final, params, speed, seed, workers, chunk, checkpoint, rep,
+                  kwargs) -> AngleTally:
+    """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
+    each chunk's tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
+    from ..archive import load
+    from .hyperbolicity import hyperbolicity_ensemble
+    tally, done = AngleTally.empty(L, params), 0
+    if checkpoint is not None and os.path.exists(checkpoint):
+        saved = load(checkpoint)
+        kept = {k: v for k, v in saved.params.items() if k != "members_done"}
+        if not isinstance(saved, AngleTally) or kept != tally.params or saved.n_members != L:
+            raise ValueError(f"{checkpoint} holds the tally of another run; remove it or "
+                             "name another checkpoint")
+        done = int(saved.params["members_done"])
+        saved._open.update(_carries(len(VARIANTS), L))     # whole members: nothing carried
+        saved.params.pop("members_done")
+        tally = saved
+        rep.update(done * t_final)
+    size = max(2, int(chunk or 4 * workers))                # an ensemble has 2 members or more
+    cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
+    for a, b in zip(cuts[:-1], cuts[1:]):
+        if b <= done:
+            continue
+        if a < done:                                  # a checkpoint of another chunk size
+            raise ValueError(f"{checkpoint} was written with another chunk size")
+        ens = hyperbolicity_ensemble(system, b - a, t_final, speed=speed, seed=seed + a,
+                                     workers=workers, **kwargs)
+        for i, m in enumerate(ens.members):
+            tally.add(m.phi_full[None, :], a + i, variant="full")
+            tally.add(m.phi_restricted[None, :], a + i, variant="restricted")
+        rep.update(len(ens.members) * t_final)
+        if checkpoint is not None and b < L:
+            tally.params["members_done"] = int(b)
+            tally.save(checkpoint)
+            tally.params.pop("members_done")
+    if checkpoint is not None and os.path.exists(checkpoint):
+        os.remove(checkpoint)                    # the run is whole: its result is returned
     return tally
 
 

@@ -61,7 +61,8 @@ def add_parser(sub) -> None:
     g.add_argument("--out", type=Path, metavar="DIR",
                    help="save each system's tally there (NetCDF) and statistics.json after "
                    "each system; a system whose tally or report is there already is read, not "
-                   "run again")
+                   "run again; on the CPU the members done are kept there too, and an "
+                   "interrupted system goes on from them")
     p.set_defaults(func=cmd_verdict)
 
 
@@ -134,7 +135,9 @@ def _statistics(args) -> int:
         else:
             rep = statistics_verdict(system, args.samples, members=args.members,
                                      device=args.device, t_transient=args.t_transient,
-                                     out=path, label=label, progress=sys.stderr.isatty())
+                                     out=path, label=label, progress=sys.stderr.isatty(),
+                                     checkpoint=None if args.out is None
+                                     else args.out / f"{slug}.partial.nc")
         rep["slug"] = slug
         print(format_statistics(rep) + "\n", flush=True)
         reports.append(rep)

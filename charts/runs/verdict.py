@@ -151,17 +151,18 @@ def members_window(samples, members, sample_every=0.1, unit=1.0) -> float:
 
 def statistics_verdict(system, samples, *, members, device="auto", t_transient=100.0,
                        sample_every=0.1, workers=None, out=None, label="",
-                       progress=False) -> dict:
+                       progress=False, checkpoint=None) -> dict:
     """The angle test at scale: ``members`` trajectories (seeds 0, 1, …) with at least
     ``samples`` angles together, tallied (``charts.analyses.angle_tally``), as one JSON-ready
     dict: the run (members, window, device, seconds) and `AngleTally.statistics` of both
-    variants; the tally saved as ``out`` (a path) when given."""
+    variants; the tally saved as ``out`` (a path) when given; ``checkpoint``: the path of
+    the partial tally of a run on the CPU (`hyperbolicity_tally`)."""
     from ..analyses.angle_tally import VARIANTS, hyperbolicity_tally
     t_final = members_window(samples, members, sample_every)
     t0 = time.perf_counter()
     tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,
                                 t_transient=t_transient, sample_every=sample_every,
-                                progress=progress)
+                                progress=progress, checkpoint=checkpoint)
     seconds = time.perf_counter() - t0
     rep = dict(label=label, system=system.describe(), members=int(members), t_final=t_final,
                t_transient=float(t_transient), sample_every=float(sample_every),
