@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import time
+import warnings
 
 import numpy as np
 
@@ -190,8 +191,10 @@ def family_systems(name) -> list:
             continue
         seen.add(key)
         sysd = point.scene.system
-        system = RotorSystem(sysd["n"], masses=sysd.get("masses"), weights=sysd.get("weights"),
-                             level=sysd.get("level", 0.0))
+        with warnings.catch_warnings():       # critical levels: a stopped member is reported
+            warnings.simplefilter("ignore")
+            system = RotorSystem(sysd["n"], masses=sysd.get("masses"),
+                                 weights=sysd.get("weights"), level=sysd.get("level", 0.0))
         out.append((", ".join(f"{k} {v}" for k, v in params.items()), system))
     return out
 
