@@ -55,7 +55,8 @@ from .hyperbolicity import angle_statistics
 from .singular_values import smallest_singular_values
 
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
-           "MAX_MEMORY"]
+           "MAX_MEMORY", "CLVSettings", "clv_settings", "clv_flow", "ginelli_start",
+           "clv_samples", "covariant_result", "factor_sample", "backward_coefficients"]
 
 #: default limit (bytes) of the stored factors kept in memory; beyond it they go to disk.
 MAX_MEMORY = 256 << 20
@@ -80,7 +81,7 @@ def sample_bytes(n, variant):
 
 
 @njit(cache=True)
-def _factor(y, X, minv, s, c, w, restricted, logs, Xraw, Rout):
+def factor_sample(y, X, minv, s, c, w, restricted, logs, Xraw, Rout):
     """Project X (D, 2N) onto T_r at y (if ``restricted``), keep a copy in Xraw, Gram–Schmidt
     it in place (eq 18, `orthonormalize`, logs added to ``logs``) and store the upper-
     triangular factor Rout[q, r] = ⟨Q_q, X_r⟩ (q ≤ r) of X = Rᵀ Q (rows)."""
@@ -110,9 +111,9 @@ def _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by, gs
 @njit(cache=True)
 def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample, n_tr, a, b,
                     tau, Xraw, bq, br, by, gs, logs):
-    """If a = 0, the transient first: n_tr steps of the tangent kernel, `_factor`-ed every
+    """If a = 0, the transient first: n_tr steps of the tangent kernel, `factor_sample`-ed every
     ``sample`` steps.  Then samples j = a … b−1: advance ``sample`` steps (not before j = 0),
-    `_factor` the vectors and store Q, R, y in row j − a of bq, br, by and the Gram–Schmidt
+    `factor_sample` the vectors and store Q, R, y in row j − a of bq, br, by and the Gram–Schmidt
     rates in gs[j].  Returns the kernel's status (NONFINITE for a norm that is not finite)."""
     none = np.empty((0, 0))
     no_events = np.empty(0, dtype=np.int64)
@@ -133,11 +134,11 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
             if status != RUNNING:
                 return status
         if transient:
-            _factor(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[0])
+            factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[0])
             done += k
             continue
         logs[:] = 0.0
-        _factor(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[j - a])
+        factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[j - a])
         for r in range(D):
             if not isfinite(logs[r]):
                 return NONFINITE
@@ -149,7 +150,7 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
 
 
 @njit(cache=True)
-def _backward(R, C, Cs, lost):
+def backward_coefficients(R, C, Cs, lost):
     """Ginelli's backward step over one chunk, last sample first: Cs[b] = C (unit columns,
     the coefficients at sample b), then C ← R[b]⁻¹ C (back substitution), lost[b, i] = log of
     the norm of column i (minus the log growth along CLV i from sample b−1 to b), normalised."""
@@ -377,14 +378,10 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
         Parent folder of that temporary folder (default: the system's temporary folder).
     progress : bool or callable(t_done, t_total)
     """
-    cfg = _clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
+    cfg = clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
                         project_every, seed, max_memory)
     theta0, u0 = start_state(system, theta0, u0)
-    # the kernel never re-orthonormalises (reorth_every beyond the run): `_factor` does, at
-    # the samples, with the kernel's Gram–Schmidt, keeping R
-    flow = TangentFlow(system, theta0, u0, cfg.D, dt=cfg.dt, inner="euclidean",
-                       restricted=variant == "restricted", reorth_every=cfg.n_steps + 1,
-                       project_every=cfg.project, seed=cfg.seed)
+    flow = clv_flow(system, theta0, u0, cfg, variant)
     rep = progress_reporter(progress, cfg.n_steps * cfg.dt, f"CLV N={system.n} {variant}")
     on_disk = plan_storage(cfg, system.n, variant, keep_vectors, scratch)
     store = _Store((cfg.total, cfg.D, 2 * system.n), (cfg.total, cfg.D, cfg.D),
@@ -396,20 +393,57 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
     finally:
         store.close()
     rep.close()
-    S, tau = cfg.S, cfg.tau
-    t = (cfg.n_tr + np.arange(S) * cfg.sample) * cfg.dt
+    return covariant_result(system, cfg, variant, phi, phi_v, lost[1:cfg.S + 1],
+                            gs[1:cfg.S + 1], states, vectors, flow.speed, (theta0, u0))
+
+
+def covariant_result(system, cfg, variant, phi, phi_v, lost, gs, states, vectors, speed,
+                     start) -> CovariantResult:
+    """The `CovariantResult` of a run with settings ``cfg`` (`clv_settings`) from its
+    angles, the logs lost per sample by Ginelli's iteration and the Gram–Schmidt rates of
+    the S samples' intervals (S, D), its states, its CLVs (or None), its measured speed
+    and its initial state ``start`` = (theta0, u0)."""
+    t = (cfg.n_tr + np.arange(cfg.S) * cfg.sample) * cfg.dt
     params = dict(**system.describe(), variant=variant, dt=cfg.dt, m=cfg.m, D=cfg.D,
-                  t_final=cfg.n_win * cfg.dt, t_transient=cfg.n_tr * cfg.dt, sample_every=tau,
-                  speed=flow.speed, project_every=cfg.project * cfg.dt or None, seed=cfg.seed,
-                  bytes_per_sample=sample_bytes(system.n, variant), stored_samples=cfg.total,
-                  n_unstable=cfg.m, keep_vectors=bool(keep_vectors),
-                  theta0=np.asarray(theta0, dtype=float).tolist(),
-                  u0=np.asarray(u0, dtype=float).tolist())
-    return CovariantResult(t, variant, phi, phi_v, -lost[1:S + 1] / tau, gs[1:S + 1], states,
-                           vectors, params)
+                  t_final=cfg.n_win * cfg.dt, t_transient=cfg.n_tr * cfg.dt,
+                  sample_every=cfg.tau, speed=speed, project_every=cfg.project * cfg.dt or None,
+                  seed=cfg.seed, bytes_per_sample=sample_bytes(system.n, variant),
+                  stored_samples=cfg.total, n_unstable=cfg.m, keep_vectors=vectors is not None,
+                  theta0=np.asarray(start[0], dtype=float).tolist(),
+                  u0=np.asarray(start[1], dtype=float).tolist())
+    return CovariantResult(t, variant, phi, phi_v, -lost / cfg.tau, gs, states, vectors, params)
 
 
-class _CLVSettings(NamedTuple):
+def clv_flow(system, theta0, u0, cfg, variant) -> TangentFlow:
+    """The forward pass's `TangentFlow`: D vectors in the Euclidean product, in T_r for the
+    restricted variant.  The kernel never re-orthonormalises (reorth_every beyond the run):
+    `factor_sample` does, at the samples, with the kernel's Gram–Schmidt, keeping R."""
+    return TangentFlow(system, theta0, u0, cfg.D, dt=cfg.dt, inner="euclidean",
+                       restricted=variant == "restricted", reorth_every=cfg.n_steps + 1,
+                       project_every=cfg.project, seed=cfg.seed)
+
+
+def ginelli_start(seed, D, block=None):
+    """Ginelli's random upper-triangular C (D, D) with unit columns, from the stream
+    [seed, 2] (the backward pass of `covariant_lyapunov_vectors`), or [seed, 2, block] for
+    a later block of the GPU route."""
+    rng = np.random.default_rng([seed, 2] if block is None else [seed, 2, block])
+    C = np.triu(rng.uniform(0.5, 1.5, size=(D, D)))
+    C /= np.linalg.norm(C, axis=0)
+    return C
+
+
+def clv_samples(Q, Cs, m, n):
+    """At each sample of a chunk, from the Gram–Schmidt vectors Q (B, D, 2N) and Ginelli's
+    coefficients Cs (B, D, D): (the CLVs V (B, D, 2N), the angle between E_u and E_cs, the
+    angle between the leading unstable CLV and the leading stable one)."""
+    D = Q.shape[1]
+    ist = D - (n - 2)                                  # the leading stable CLV
+    V = np.einsum("kqi,kqx->kix", Cs, Q)                # rows: the CLVs
+    return V, _angle(Q[:, :m], V[:, m:]), _angle(V[:, :1], V[:, ist:ist + 1])
+
+
+class CLVSettings(NamedTuple):
     """The checked settings of a CLV run, in steps: the transient ``n_tr``, the window
     ``n_win``, steps per sample ``sample`` (τ = ``tau`` in time), projection ``project``;
     ``S`` samples analysed, ``total`` stored (the backward transient's too), ``n_steps``
@@ -429,9 +463,10 @@ class _CLVSettings(NamedTuple):
     tau: float
 
 
-def _clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
-                  project_every, seed, max_memory) -> _CLVSettings:
-    """`covariant_lyapunov_vectors`' arguments checked (ValueError naming the bad one)."""
+def clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
+                  project_every, seed, max_memory) -> CLVSettings:
+    """`covariant_lyapunov_vectors`' arguments checked (ValueError naming the bad one), as
+    its settings in steps."""
     D = clv_dimension(system.n, variant)
     m = unstable_dimension(system.n, n_unstable)
     dt = positive_time("dt", dt)
@@ -444,7 +479,7 @@ def _clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_
     S = samples_of(n_win, sample, t_final, sample_every)
     total = S + max(1, -(-n_tr // sample))              # stored samples
     n_steps = n_tr + (total - 1) * sample               # the first one at the transient's end
-    return _CLVSettings(D, m, dt, n_tr, n_win, sample, project, seed, max_memory, S, total,
+    return CLVSettings(D, m, dt, n_tr, n_win, sample, project, seed, max_memory, S, total,
                         n_steps, sample * dt)
 
 
@@ -473,24 +508,18 @@ def _backward_pass(store, n, cfg, keep_vectors):
     E_s, the angle between the leading unstable and stable CLVs (S,), the states (S, 2N),
     the CLVs (S, D, 2N) or None)."""
     D, S, m, total = cfg.D, cfg.S, cfg.m, cfg.total
-    rng = np.random.default_rng([cfg.seed, 2])
-    C = np.triu(rng.uniform(0.5, 1.5, size=(D, D)))
-    C /= np.linalg.norm(C, axis=0)
+    C = ginelli_start(cfg.seed, D)
     lost = np.zeros((total, D))
     phi, phi_v = np.empty(S), np.empty(S)
     states = np.empty((S, 2 * n))
     vectors = np.empty((S, D, 2 * n)) if keep_vectors else None
-    ist = D - (n - 2)                                  # the leading stable CLV
     for b in range(total, 0, -CHUNK):
         a = max(0, b - CHUNK)
         Cs = np.empty((b - a, D, D))
-        _backward(np.ascontiguousarray(store.R[a:b]), C, Cs, lost[a:b])
+        backward_coefficients(np.ascontiguousarray(store.R[a:b]), C, Cs, lost[a:b])
         hi = min(b, S)
         if a < hi:
-            Q = np.asarray(store.Q[a:hi])
-            V = np.einsum("kqi,kqx->kix", Cs[:hi - a], Q)       # rows: the CLVs
-            phi[a:hi] = _angle(Q[:, :m], V[:, m:])
-            phi_v[a:hi] = _angle(V[:, :1], V[:, ist:ist + 1])
+            V, phi[a:hi], phi_v[a:hi] = clv_samples(np.asarray(store.Q[a:hi]), Cs[:hi - a], m, n)
             states[a:hi] = store.y[a:hi]
             if keep_vectors:
                 vectors[a:hi] = V
