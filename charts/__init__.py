@@ -50,6 +50,7 @@ _HOMES = {
     "hyperbolicity_tally": ".analyses.angle_tally",
     "CovariantResult": ".analyses.covariant",
     "covariant_lyapunov_vectors": ".analyses.covariant",
+    "covariant_ensemble": ".analyses.clv_ensemble",
     "PowerSpectrum": ".analyses.spectra",
     "Waveform": ".analyses.spectra",
     "power_spectrum": ".analyses.spectra",

@@ -1,6 +1,7 @@
 """Compile the GPU kernels to PTX on a machine without a GPU: the Lyapunov kernel
-(``charts.solvers.device``) and the angle test's forward and backward kernels
-(``charts.analyses.angle_blocks``), for compute capability 9.0.
+(``charts.solvers.device``), the angle test's forward and backward kernels
+(``charts.analyses.angle_blocks``) and the CLVs' forward kernel
+(``charts.analyses.clv_ensemble``, restricted: D = 2N − 2), for compute capability 9.0.
 
     pip install nvidia-cuda-nvcc-cu12        # libnvvm and libdevice, no driver needed
     CUDA_HOME=$(python -c "import nvidia.cuda_nvcc, os; print(os.path.dirname(nvidia.cuda_nvcc.__file__))") \\
@@ -17,6 +18,7 @@ import numba.cuda.dispatcher as dispatcher
 from numba import cuda, types as t
 
 import charts.analyses.angle_blocks as angle_blocks
+import charts.analyses.clv_ensemble as clv_ensemble
 import charts.solvers.device as device
 
 
@@ -25,7 +27,7 @@ class _H100:
 
 
 dispatcher.get_current_device = lambda: _H100()
-device.cuda = angle_blocks.cuda = cuda
+device.cuda = angle_blocks.cuda = clv_ensemble.cuda = cuda
 
 n, m = (int(x) for x in sys.argv[1:3]) if len(sys.argv) > 2 else (5, 3)
 a3, a2, a1, i1, f8 = t.float64[:, :, ::1], t.float64[:, ::1], t.float64[::1], t.int64[::1], t.float64
@@ -35,10 +37,16 @@ forward = (a3, a3, i1, a2, i1, i1, a3, a3, a1, a1, a1, a1, f8, a1, f8, t.UniTupl
            i1, a2)
 backward = (i1, i1, i1, a3, a3, a3, a2, a2, a2, a1, a1, a1, a1, f8, f8, t.UniTuple(t.int64, 7),
             i1, a2)
+a4 = t.float64[:, :, :, ::1]
+clv = (a3, a3, i1, a2, i1, i1, a4, a4, a3, a3, a1, a1, a1, a1, t.boolean, f8, a1, f8,
+       t.UniTuple(t.int64, 7), f8, i1, a2)
 fwd, bwd = angle_blocks.kernel_functions(n, m, 11)
-for name, fn, sig in (("lyapunov", device.kernel_function(n, m), lyapunov),
-                      ("angles forward", fwd, forward), ("angles backward", bwd, backward)):
+for name, fn, sig in ((f"lyapunov N={n} k={m}", device.kernel_function(n, m), lyapunov),
+                      (f"angles forward N={n} m={m}", fwd, forward),
+                      (f"angles backward N={n} m={m}", bwd, backward),
+                      (f"CLV forward N={n} D={2 * n - 2}",
+                       clv_ensemble.kernel_function(n, 2 * n - 2), clv)):
     t0 = time.perf_counter()
     ptx, _ = cuda.compile_ptx(fn, sig, cc=(9, 0))
-    print(f"{name} N={n} k={m}: {len(ptx)} chars of PTX in {time.perf_counter() - t0:.1f} s, "
+    print(f"{name}: {len(ptx)} chars of PTX in {time.perf_counter() - t0:.1f} s, "
           f"{ptx.count('fma.rn.f64')} fused multiply-adds")

@@ -156,6 +156,12 @@ def test_the_angle_rows_run_on_the_cpu_route():
     assert wall > 0 and integrated > window > 0
 
 
+def test_the_clv_rows_run_on_the_twin():
+    from charts.runs.benchmarks.gpu import clv_rate
+    wall, window = clv_rate(3, 2, 2.0, 1.0, 1, backend="cpu")
+    assert wall > 0 and window > 0
+
+
 def test_ensembles_too_large_for_memory_are_refused_before_they_start():
     """10¹² members: refused at once with the bytes and the remedy, on both routes."""
     from charts.analyses.hyperbolicity import hyperbolicity_ensemble

@@ -149,7 +149,7 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
     return RUNNING
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def backward_coefficients(R, C, Cs, lost):
     """Ginelli's backward step over one chunk, last sample first: Cs[b] = C (unit columns,
     the coefficients at sample b), then C ← R[b]⁻¹ C (back substitution), lost[b, i] = log of

@@ -1,4 +1,5 @@
-"""Lyapunov ensembles on the GPU against the CPU lanes on every core, measured in one run.
+"""Lyapunov ensembles on the GPU against the CPU lanes on every core, measured in one run;
+then the angle test's and the covariant Lyapunov vectors' GPU routes.
 
     charts bench gpu                # the table of docs/gpu.md (about 4 minutes on an H100)
     charts bench gpu --quick        # fewer members and shorter runs
@@ -17,6 +18,8 @@ every 1.0: ``lyapunov_ensemble``'s defaults, the same settings on both devices.
     differences, at several T: the GPU's fused multiply-adds and libm round differently and
     the chaos amplifies it), and the ensemble means at long T in units of their standard
     error.
+  * Angle test and CLVs (``--only angles``, ``--only clv``): their GPU routes' rates, and
+    their agreement with the CPU route for the same seeds.
   * FP64 share (``--flops``): double-precision adds, multiplies and fused multiply-adds per
     thread and step, counted by Nsight Compute (``ncu``) in a child process, against the
     chip's FP64 peak (multiprocessors × 64 FP64 units × 2 × clock, for compute capability
@@ -36,6 +39,7 @@ import warnings
 
 import numpy as np
 
+from ...analyses.clv_ensemble import covariant_ensemble
 from ...analyses.ensemble import member_states_of
 from ...analyses.hyperbolicity import hyperbolicity_ensemble
 from ...analyses.lyapunov import lyapunov_settings
@@ -177,7 +181,7 @@ def main(argv=None) -> int:
                    help="count the FP64 operations per step with Nsight Compute (ncu)")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1,
                    help="CPU processes (default: all cores)")
-    p.add_argument("--only", choices=("lyapunov", "angles"),
+    p.add_argument("--only", choices=("lyapunov", "angles", "clv"),
                    help="one part of the table (default: both)")
     p.add_argument("--probe", help=argparse.SUPPRESS)
     a = p.parse_args(argv)
@@ -195,9 +199,70 @@ def main(argv=None) -> int:
 
     if a.only != "angles":
         _lyapunov_part(a, rows, w, peak)
-    if a.only != "lyapunov":
+    if a.only in (None, "angles"):
         _angle_part(a, w)
+    if a.only in (None, "clv"):
+        _clv_part(a, w)
     return 0
+
+
+def clv_rate(n, members, t_final, t_transient, workers, backend="cuda"):
+    """(wall s of `covariant_ensemble`, window time units per second), its first call
+    compiled before; restricted CLVs."""
+    from ...analyses.clv_ensemble import _device_settings, clvs_on_device
+    S = RotorSystem(n)
+    kw = dict(t_transient=t_transient)
+    if backend == "cuda":
+        covariant_ensemble(S, 2, 1.0, device="cuda", workers=workers, **kw)    # compiles
+    t0 = time.perf_counter()
+    if backend == "cuda":
+        covariant_ensemble(S, members, t_final, device="cuda", workers=workers, **kw)
+    else:                                         # the twin: the same driver on the CPU
+        cfg = _device_settings(S, t_final, "restricted", 0, kw)
+        clvs_on_device(S, cfg, "restricted", list(range(members)), 1.0, backend="cpu",
+                       workers=workers)
+    wall = time.perf_counter() - t0
+    return wall, members * t_final / wall
+
+
+def clv_agreement(n, members, t_final, t_transient, workers):
+    """(max relative difference of a member's CLV exponents, GPU mean, CPU mean, max
+    |Δ mean| / s.e.) for the same seeds on both devices, restricted CLVs."""
+    S = RotorSystem(n)
+    kw = dict(t_transient=t_transient, workers=workers)
+    gpu = covariant_ensemble(S, members, t_final, device="cuda", **kw)
+    cpu = covariant_ensemble(S, members, t_final, **kw)
+    G = np.array([m.exponents for m in gpu.members])
+    C = np.array([m.exponents for m in cpu.members])
+    rel = float(np.max(np.abs(G - C) / np.maximum(np.abs(C), 1e-300)))
+    se = np.hypot(G.std(axis=0, ddof=1), C.std(axis=0, ddof=1)) / np.sqrt(members)
+    return rel, G.mean(axis=0), C.mean(axis=0), float(np.max(np.abs(G.mean(0) - C.mean(0)) / se))
+
+
+def _clv_part(a, w):
+    print("\n## Covariant Lyapunov vectors (restricted; forward on the GPU, Ginelli's backward "
+          "iteration on the host), t_transient = 20")
+    print("| N | D | members | T | wall s | window tu/s |")
+    print("|---|---|---|---|---|---|")
+    rows = ((4, 1024, 50.0),) if a.quick else ((4, 4096, 200.0), (5, 4096, 200.0))
+    for n, members, T in rows:
+        try:
+            wall, win = clv_rate(n, members, T, 20.0, w)
+            print(f"| {n} | {2 * n - 2} | {members} | {T:g} | {wall:.2f} | {win:.3g} |",
+                  flush=True)
+        except Exception as e:
+            print(f"| {n} | {2 * n - 2} | {members} | {T:g} | failed: {type(e).__name__}: {e} ||",
+                  flush=True)
+    print("\n## CLV agreement, N = 4, 64 members (exponents along the CLVs, same seeds)")
+    print("| T | max relative difference of a member | GPU mean | CPU mean | max |Δ mean| / s.e. |")
+    print("|---|---|---|---|---|")
+    for T in (1.0, 100.0):
+        try:
+            rel, g, c, z = clv_agreement(4, 64, T, 20.0, w)
+            print(f"| {T:g} | {rel:.2e} | {np.round(g, 4).tolist()} | {np.round(c, 4).tolist()} "
+                  f"| {z:.2f} |", flush=True)
+        except Exception as e:
+            print(f"| {T:g} | failed: {type(e).__name__}: {e} ||||", flush=True)
 
 
 def angle_rate(n, members, t_final, t_transient, workers, backend="cuda"):
