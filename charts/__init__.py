@@ -47,7 +47,7 @@ _HOMES = {
     "hyperbolicity_angles": ".analyses.hyperbolicity",
     "hyperbolicity_ensemble": ".analyses.hyperbolicity",
     "AngleTally": ".analyses.angle_tally",
-    "hyperbolicity_tally": ".analyses.angle_tally",
+    "hyperbolicity_tally": ".analyses.hyperbolicity",
     "CovariantResult": ".analyses.covariant",
     "covariant_lyapunov_vectors": ".analyses.covariant",
     "covariant_ensemble": ".analyses.clv_ensemble",

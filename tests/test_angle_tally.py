@@ -5,10 +5,11 @@ import numpy as np
 import pytest
 
 from charts.analyses.angle_blocks import angles_on_device
-from charts.analyses.angle_tally import (EDGES, LAW_X0, VARIANTS, AngleTally,
-                                         hyperbolicity_tally, tally_on_device)
+from charts.analyses.angle_tally import EDGES, LAW_X0, VARIANTS, AngleTally
 from charts.analyses.forward_pass import angle_settings
-from charts.analyses.hyperbolicity import hyperbolicity_ensemble, sin_to_angle
+from charts.analyses.hyperbolicity import (StoppedMember, hyperbolicity_ensemble,
+                                           hyperbolicity_tally, tally_on_device)
+from charts.analyses.singular_values import sin_to_angle
 from charts.analyses.statistics import block_minima, small_value_law
 from charts.geometry.system import RotorSystem
 
@@ -186,8 +187,7 @@ def test_bad_blocks_are_refused():
 def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
     """A member that stops (at a singular point) on the GPU route is frozen, not raised: the
     tally keeps its blocks before the stop, records it and warns; the others go on."""
-    import charts.analyses.angle_blocks as blocks
-    from charts.analyses.angle_tally import StoppedMember
+    import charts.analyses.hyperbolicity as hyp
     phi = _angles(3, 300, 11)
 
     def fake(system, cfg, seeds, speed, consume, **kw):
@@ -195,7 +195,7 @@ def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
         stop = [(1, seeds[1], 12.5, "stopped at a singular point")]
         consume(np.sin(phi[:, 100:200]), np.sin(phi[:, 100:200]), stop)
         consume(np.sin(phi[:, 200:]), np.sin(phi[:, 200:]), stop)
-    monkeypatch.setattr(blocks, "angles_on_device", fake)
+    monkeypatch.setattr(hyp, "angles_on_device", fake)
     with pytest.warns(StoppedMember, match="singular point"):
         t = tally_on_device(None, None, AngleTally.empty(3, dict(seed=7, sample_every=0.1)),
                             1.0, backend="cpu")

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import charts.analyses.clv_ensemble as clv
-from charts.analyses.clv_ensemble import (_device_settings, clv_block_bytes, clv_block_plan,
+from charts.analyses.clv_ensemble import (clv_ensemble_settings, clv_block_bytes, clv_block_plan,
                                           clvs_on_device, covariant_ensemble)
 from charts.analyses.covariant import covariant_lyapunov_vectors
 from charts.geometry.system import RotorSystem
@@ -22,7 +22,7 @@ def test_one_block_equals_covariant_lyapunov_vectors_bit_for_bit(variant):
     """The window in one block: each member is `covariant_lyapunov_vectors` with its seed —
     angles, growth rates, Gram–Schmidt rates, states and settings, to the bit."""
     kw = dict(t_transient=2.0)
-    cfg = _device_settings(SYSTEM, 6.0, variant, 0, kw)
+    cfg = clv_ensemble_settings(SYSTEM, 6.0, variant, 0, kw)
     got = clvs_on_device(SYSTEM, cfg, variant, [3, 4], 1.0, backend="cpu")
     for g, s in zip(got, [3, 4]):
         r = covariant_lyapunov_vectors(SYSTEM, *SYSTEM.random_state(seed=s), 6.0, seed=s,
@@ -38,7 +38,7 @@ def test_blocks_keep_the_forward_pass_and_converge_to_the_same_clvs():
     30-unit transient: the angles agree with one block to 1e-3 rad (the error falls as
     e^(−(λ₂ − λ₃) t_transient) ≈ 2e-3 at N = 4; measured 2.8e-4).  The host's backward
     iterations on two threads: each member as alone."""
-    cfg = _device_settings(SYSTEM, 6.0, "restricted", 0, dict(t_transient=30.0))
+    cfg = clv_ensemble_settings(SYSTEM, 6.0, "restricted", 0, dict(t_transient=30.0))
     one = clvs_on_device(SYSTEM, cfg, "restricted", [3], 1.0, backend="cpu")[0]
     three, again = clvs_on_device(SYSTEM, cfg, "restricted", [3, 3], 1.0, backend="cpu",
                                   block=20, workers=2)      # the host's members on threads
@@ -63,7 +63,7 @@ def test_the_kernel_body_with_a_stand_in_for_cuda(monkeypatch):
             state["l"] = l
             fwd(*a[:10], *a[10][:4], a[10][4], *a[11:])
 
-    cfg = _device_settings(SYSTEM, 3.0, "restricted", 0, dict(t_transient=1.0))
+    cfg = clv_ensemble_settings(SYSTEM, 3.0, "restricted", 0, dict(t_transient=1.0))
     twin = clvs_on_device(SYSTEM, cfg, "restricted", [5, 6], 1.0, backend="cpu")
     monkeypatch.setattr(clv, "cuda", fake)
     monkeypatch.setattr(clv, "_forward_cpu", launch)
@@ -74,7 +74,7 @@ def test_the_kernel_body_with_a_stand_in_for_cuda(monkeypatch):
 
 
 def test_the_block_plan_fits_the_budget_or_refuses_with_numbers():
-    cfg = _device_settings(SYSTEM, 100.0, "restricted", 0, dict(t_transient=10.0))
+    cfg = clv_ensemble_settings(SYSTEM, 100.0, "restricted", 0, dict(t_transient=10.0))
     plan = clv_block_plan(cfg, 4, 1000, 1000 * clv_block_bytes(cfg, 4, 250))
     assert max(plan) <= 250 and sum(plan) == cfg.S
     with pytest.raises(ValueError, match=r"1000 members need .* GiB .* budget"):
@@ -91,7 +91,7 @@ def test_the_cpu_route_is_the_members_own_call():
         for a in FIELDS:
             assert np.array_equal(getattr(m, a), getattr(r, a)), a
     with pytest.raises(TypeError, match="unexpected settings"):
-        _device_settings(S, 2.0, "restricted", 0, dict(inner="theta"))
+        clv_ensemble_settings(S, 2.0, "restricted", 0, dict(inner="theta"))
 
 
 @pytest.mark.skipif(cuda_available(), reason="this machine has a GPU")

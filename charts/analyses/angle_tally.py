@@ -14,27 +14,24 @@ bar below.  What a tally keeps per member, for both variants (full, restricted):
   carried into the next;
 * episodes: runs of consecutive samples below `SMALL_ANGLE`.
 
-`hyperbolicity_tally` runs the test and tallies as it goes (on the GPU the blocks of
-``charts.analyses.angle_blocks``; on the CPU the members of `hyperbolicity_ensemble` in
-chunks); `AngleTally.statistics` turns the sums into the verdict's numbers with intervals.
+``charts.analyses.hyperbolicity.hyperbolicity_tally`` runs the test and tallies as it goes
+(on the GPU the blocks of ``charts.analyses.angle_blocks``; on the CPU the members of
+`hyperbolicity_ensemble` in chunks); `AngleTally.statistics` turns the sums into the
+verdict's numbers with intervals.
 """
 from __future__ import annotations
 
-import os
-import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..archive import Archivable, attributes, dataset
 from ..geometry.checks import finite_array
-from ..solvers.device import resolve_device
-from .arguments import progress_reporter
-from .ensemble import ensemble_arguments
+from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
 
-__all__ = ["AngleTally", "hyperbolicity_tally", "tally_on_device", "StoppedMember", "VARIANTS", "EDGES", "LAW_X0", "LADDER",
-           "JACKKNIFE_GROUPS"]
+__all__ = ["AngleTally", "VARIANTS", "EDGES", "LAW_X0", "LADDER", "JACKKNIFE_GROUPS", "SMALL",
+           "carries"]
 
 #: the two angles of the test, in the order of a tally's first axis.
 VARIANTS = ("full", "restricted")
@@ -62,7 +59,7 @@ def _sums(V, L):
                 episodes=np.zeros((V, L), np.int64))
 
 
-def _carries(V, L):
+def carries(V, L):
     """What a tally carries between blocks, per variant: whether each member's last sample
     was below `SMALL`, and the incomplete groups of the ladder's levels."""
     out = {}
@@ -101,7 +98,7 @@ class AngleTally(Archivable):
         if isinstance(members, bool) or not isinstance(members, (int, np.integer)) or members < 1:
             raise ValueError(f"members must be a positive integer, got {members!r}")
         tally = cls(**_sums(len(VARIANTS), int(members)), params=dict(params or {}))
-        tally._open.update(_carries(len(VARIANTS), int(members)))
+        tally._open.update(carries(len(VARIANTS), int(members)))
         return tally
 
     @property
@@ -120,7 +117,6 @@ class AngleTally(Archivable):
         """`add` for the sines of the angles, as the angle test computes them (φ =
         arcsin of the sine clipped to [0, 1], `sin_to_angle`): only the sines below
         sin(`SMALL`) and the minima are turned into angles, with the same result."""
-        from .hyperbolicity import sin_to_angle
         self._add(finite_array("sines", sines, ndim=2), first, variant, "sines", sin_to_angle)
 
     def add_both(self, sines_full, sines_restricted, threads=1, alive=None):
@@ -363,107 +359,3 @@ def _slopes(means, levels):
             se = float("nan")
         out.append([10 ** (levels[i] + 1), 10 ** (levels[i + 1] + 1), float(full), se])
     return out
-
-
-def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                        progress=False, device="cpu", budget=None, chunk=None, checkpoint=None,
-                        **kwargs) -> AngleTally:
-    """The angle test of `hyperbolicity_ensemble` (seeds seed, seed + 1, …; ``kwargs``: its
-    settings), tallied as it runs into an `AngleTally` instead of kept: memory per member
-    independent of ``t_final``.  ``device="cuda"``: every member a GPU thread, the window in
-    the blocks of ``charts.analyses.angle_blocks`` (``budget``: bytes of GPU memory for one
-    block's stores, default half the free memory; the sines tallied on ``workers`` threads);
-    ``"cpu"``: the members in chunks of about ``chunk`` (default 4 per process, at least 2)
-    by `hyperbolicity_ensemble`; with ``checkpoint`` (a path) the tally of the members done
-    is saved there after each chunk, and a run that finds it there (the same call) goes on
-    from it instead of starting again; removed when the run is whole."""
-    from .forward_pass import angle_settings
-    device = resolve_device(device)
-    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
-                                                       workers, progress)
-    workers = workers or os.cpu_count() or 1
-    cfg = angle_settings(system, t_final, seed=seed, **kwargs)
-    params = dict(**system.describe(), dt=cfg.dt, m=cfg.m, t_final=cfg.n_win * cfg.dt,
-                  t_transient=cfg.n_tr * cfg.dt, sample_every=cfg.sample * cfg.dt,
-                  checkpoint_every=cfg.ce * cfg.dt, project_every=cfg.project * cfg.dt or None,
-                  speed=float(speed), seed=int(seed), device=device)
-    rep = progress_reporter(progress, n_trajectories * t_final,
-                            f"angles N={system.n} tally ({device.upper()})")
-    try:
-        if device == "cuda":
-            tally = AngleTally.empty(n_trajectories, params)
-            tally_on_device(system, cfg, tally, speed, workers=workers, budget=budget,
-                            update=rep.update)
-        else:
-            tally = _tally_on_cpu(system, n_trajectories, t_final, params, speed, seed, workers,
-                                  chunk, checkpoint, rep, kwargs)
-    finally:
-        rep.close()
-    tally._open.clear()                     # the run is whole: nothing left to carry
-    return tally
-
-
-def _tally_on_cpu(system, L, t_final, params, speed, seed, workers, chunk, checkpoint, rep,
-                  kwargs) -> AngleTally:
-    """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
-    each chunk's tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
-    from ..archive import load
-    from .hyperbolicity import hyperbolicity_ensemble
-    tally, done = AngleTally.empty(L, params), 0
-    if checkpoint is not None and os.path.exists(checkpoint):
-        saved = load(checkpoint)
-        kept = {k: v for k, v in saved.params.items() if k != "members_done"}
-        if not isinstance(saved, AngleTally) or kept != tally.params or saved.n_members != L:
-            raise ValueError(f"{checkpoint} holds the tally of another run; remove it or "
-                             "name another checkpoint")
-        done = int(saved.params["members_done"])
-        saved._open.update(_carries(len(VARIANTS), L))     # whole members: nothing carried
-        saved.params.pop("members_done")
-        tally = saved
-        rep.update(done * t_final)
-    size = max(2, int(chunk or 4 * workers))                # an ensemble has 2 members or more
-    cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
-    for a, b in zip(cuts[:-1], cuts[1:]):
-        if b <= done:
-            continue
-        if a < done:                                  # a checkpoint of another chunk size
-            raise ValueError(f"{checkpoint} was written with another chunk size")
-        ens = hyperbolicity_ensemble(system, b - a, t_final, speed=speed, seed=seed + a,
-                                     workers=workers, **kwargs)
-        for i, m in enumerate(ens.members):
-            tally.add(m.phi_full[None, :], a + i, variant="full")
-            tally.add(m.phi_restricted[None, :], a + i, variant="restricted")
-        rep.update(len(ens.members) * t_final)
-        if checkpoint is not None and b < L:
-            tally.params["members_done"] = int(b)
-            tally.save(checkpoint)
-            tally.params.pop("members_done")
-    if checkpoint is not None and os.path.exists(checkpoint):
-        os.remove(checkpoint)                    # the run is whole: its result is returned
-    return tally
-
-
-def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **kw):
-    """The angle test of ``tally``'s members (seeds ``tally.params["seed"]`` on) by
-    ``charts.analyses.angle_blocks.angles_on_device`` (``backend``, ``kw``: its arguments),
-    each block's sines added to ``tally`` on ``workers`` threads as they arrive."""
-    from .angle_blocks import angles_on_device
-    seed = int(tally.params.get("seed", 0))
-    seeds = list(range(seed, seed + tally.n_members))
-    alive = np.ones(tally.n_members, bool)
-
-    def consume(sf, sr, stops):
-        for l, s, t, message in stops:
-            if alive[l]:
-                alive[l] = False
-                tally.params.setdefault("stopped", []).append([s, t])
-                warnings.warn(f"{message}; its angles before this block are kept", StoppedMember)
-        tally.add_both(sf, sr, threads=workers, alive=alive)
-    angles_on_device(system, cfg, seeds, speed, backend=backend, workers=workers,
-                     consume=consume, **kw)
-    return tally
-
-
-class StoppedMember(UserWarning):
-    """A member of a tallied angle test stopped (at a singular point, on a non-finite
-    value): the others go on; its angles up to the block before count."""

@@ -42,7 +42,7 @@ from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, memb
                        run_ensemble)
 from ..solvers.device import resolve_device
 
-__all__ = ["covariant_ensemble", "clv_forward_member", "clvs_on_device", "clv_block_plan",
+__all__ = ["covariant_ensemble", "clv_ensemble_settings", "clv_forward_member", "clvs_on_device", "clv_block_plan",
            "clv_block_bytes", "clv_states", "kernel_function"]
 
 
@@ -63,7 +63,7 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
         if kwargs.get("keep_vectors"):
             raise ValueError("keep_vectors is not offered with device='cuda': the CLVs of every "
                              "member would stay in memory; run on the CPU")
-        cfg = _device_settings(system, t_final, variant, seed, kwargs)
+        cfg = clv_ensemble_settings(system, t_final, variant, seed, kwargs)
         rep = progress_reporter(progress, n_trajectories * t_final,
                                 f"CLV N={system.n} ensemble (GPU)")
         try:
@@ -82,7 +82,7 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
                         **kwargs)
 
 
-def _device_settings(system, t_final, variant, seed, kwargs) -> CLVSettings:
+def clv_ensemble_settings(system, t_final, variant, seed, kwargs) -> CLVSettings:
     """`clv_settings` of the call, the defaults those of `covariant_lyapunov_vectors`'s
     signature (one home); a setting it does not take is refused as there."""
     import inspect

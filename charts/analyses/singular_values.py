@@ -17,7 +17,7 @@ from math import copysign, sqrt
 import numpy as np
 from numba import njit
 
-__all__ = ["smallest_singular_values", "smallest_singular_values_into"]
+__all__ = ["smallest_singular_values", "smallest_singular_values_into", "sin_to_angle"]
 
 #: the unit roundoff of float64: rows count as orthogonal below c·_EPS·|a||b|.
 _EPS = 2.0 ** -52
@@ -177,3 +177,9 @@ def smallest_singular_values_into(M, out, A):
             if v < smin:                 # min(smin, v), which the GPU target lacks
                 smin = v
         out[q] = smin
+
+
+def sin_to_angle(sv):
+    """φ = arcsin(sin φ) of sines of angles (the smallest singular values above), clipped to
+    [0, 1] (rounding)."""
+    return np.arcsin(np.clip(sv, 0.0, 1.0))

@@ -158,7 +158,8 @@ def statistics_verdict(system, samples, *, members, device="auto", t_transient=1
     dict: the run (members, window, device, seconds) and `AngleTally.statistics` of both
     variants; the tally saved as ``out`` (a path) when given; ``checkpoint``: the path of
     the partial tally of a run on the CPU (`hyperbolicity_tally`)."""
-    from ..analyses.angle_tally import VARIANTS, hyperbolicity_tally
+    from ..analyses.angle_tally import VARIANTS
+    from ..analyses.hyperbolicity import hyperbolicity_tally
     t_final = members_window(samples, members, sample_every)
     t0 = time.perf_counter()
     tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,

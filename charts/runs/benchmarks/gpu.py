@@ -209,7 +209,7 @@ def main(argv=None) -> int:
 def clv_rate(n, members, t_final, t_transient, workers, backend="cuda"):
     """(wall s of `covariant_ensemble`, window time units per second), its first call
     compiled before; restricted CLVs."""
-    from ...analyses.clv_ensemble import _device_settings, clvs_on_device
+    from ...analyses.clv_ensemble import clv_ensemble_settings, clvs_on_device
     S = RotorSystem(n)
     kw = dict(t_transient=t_transient)
     if backend == "cuda":
@@ -218,7 +218,7 @@ def clv_rate(n, members, t_final, t_transient, workers, backend="cuda"):
     if backend == "cuda":
         covariant_ensemble(S, members, t_final, device="cuda", workers=workers, **kw)
     else:                                         # the twin: the same driver on the CPU
-        cfg = _device_settings(S, t_final, "restricted", 0, kw)
+        cfg = clv_ensemble_settings(S, t_final, "restricted", 0, kw)
         clvs_on_device(S, cfg, "restricted", list(range(members)), 1.0, backend="cpu",
                        workers=workers)
     wall = time.perf_counter() - t0
