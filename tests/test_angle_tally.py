@@ -168,17 +168,17 @@ def test_bad_blocks_are_refused():
     with pytest.raises(ValueError, match="does not fit"):
         t.add(_angles(4, 10))
     with pytest.raises(ValueError, match="≥ 0"):
-        t.add(-_angles(3, 10))
+        t.add(-_angles(3, 10), variant="full")
     with pytest.raises(ValueError, match="finite"):
-        t.add(np.full((3, 10), np.nan))
+        t.add(np.full((3, 10), np.nan), variant="full")
     with pytest.raises(ValueError, match="no angles"):
         t.statistics()
     for v in VARIANTS:
         t.add(_angles(2, 10), variant=v)
     with pytest.raises(ValueError, match="equally many"):
-        t.add(_angles(3, 10))
+        t.add(_angles(3, 10), variant="full")
     with pytest.raises(ValueError, match="sines"):
-        t.add_sines(np.ones((1, 10)), first=2)
+        t.add_sines(np.ones((1, 10)), first=2, variant="full")
     with pytest.raises(ValueError, match="members"):
         AngleTally.empty(0)
     assert EDGES[-1] == 0.05
@@ -234,3 +234,46 @@ def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypa
     resumed = hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
     _same(resumed, whole)
     assert resumed.params == whole.params and not path.exists()
+
+
+def test_the_variants_come_in_order_and_blocks_as_asked():
+    """Each block: its full angles, then its restricted ones, of the same members and
+    samples; anything else is refused before it changes the tally.  A member index must be
+    an integer."""
+    phi = _angles(2, 30, 12)
+    t = AngleTally.empty(2)
+    with pytest.raises(ValueError, match="full angles first"):
+        t.add(phi[:, :10], variant="restricted")
+    t.add(phi[:, :10], variant="full")
+    with pytest.raises(ValueError, match="restricted angles of the last block are missing"):
+        t.add(phi[:, 10:20], variant="full")
+    with pytest.raises(ValueError, match="same members and samples"):
+        t.add(phi[:, :7], variant="restricted")
+    t.add(phi[:, :10], variant="restricted")
+    assert t.n.tolist() == [10, 10]
+    with pytest.raises(ValueError, match="member index"):
+        t.add(phi[:1, 10:20], first=1.7, variant="full")
+
+
+def test_several_zero_sines_give_the_first_zero_as_the_angles_do():
+    sines = np.full((1, 12), 0.5)
+    sines[0, [3, 7]] = [-1e-17, -1e-16]
+    a, b = AngleTally.empty(1), AngleTally.empty(1)
+    for v in VARIANTS:
+        a.add_sines(sines, variant=v)
+        b.add(sin_to_angle(sines), variant=v)
+    assert a.argmin.tolist() == b.argmin.tolist() == [[3], [3]]
+
+
+def test_statistics_are_json_even_where_undefined():
+    """One member: no error bars (None), block minima of every size it holds; an empty
+    tally prints as one line."""
+    import json
+    assert "no angles yet" in repr(AngleTally.empty(2))
+    t = _fed(_angles(1, 2000, 13), _angles(1, 2000, 14), [0, 2000])
+    t.params.pop("sample_every")
+    s = t.statistics()
+    json.dumps(s, allow_nan=False)
+    assert s["min_t"] is None and s["episode_rate"] is None
+    assert [size for size, _, se in s["block_minima"]] == [10, 100, 1000]
+    assert all(se is None for _, _, se in s["block_minima"])

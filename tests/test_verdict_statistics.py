@@ -34,7 +34,7 @@ def test_the_command_runs_saves_and_reads_back(tmp_path, capsys, monkeypatch):
     assert json.loads((tmp_path / "statistics.json").read_text()) == reports
 
 
-def test_a_family_is_its_distinct_systems():
+def test_a_family_of_the_paper_is_its_28_systems():
     systems = verdict.family_systems("families-n4")
     assert len(systems) == 28                          # 4 weight patterns × 7 levels
     assert systems[0][1].describe()["level"] == 0.0
@@ -73,3 +73,28 @@ def test_the_figure_of_a_tally():
     bounded = dict(t.statistics(), cdf=[])                  # N = 3: no angle below 0.05
     fig, axes = plot_angle_law({"N = 3": bounded})
     assert "none below" in axes[0].get_legend().get_texts()[0].get_text()
+
+
+def test_a_family_is_its_distinct_systems_of_rotors():
+    assert len(verdict.family_systems("masses-n4")) == len(
+        {json.dumps(s.describe(), sort_keys=True) for _, s in verdict.family_systems("masses-n4")})
+    with pytest.raises(ValueError, match="linkage"):
+        verdict.family_systems("linkage-epsilon")
+
+
+def test_a_saved_run_is_reused_only_for_the_same_question(tmp_path, capsys):
+    """A folder's tally or report answers a later call only with the same members, window
+    and transient; other systems' reports stay in statistics.json; names keep every digit."""
+    from charts.cli.verdict import _slug
+    from charts.geometry.system import RotorSystem
+    pytest.importorskip("xarray")
+    base = ["verdict", "--statistics", "--n", "3", "--device", "cpu", "--out", str(tmp_path)]
+    assert main(base + ["--members", "2", "--samples", "40", "--t-transient", "1"]) == 0
+    assert main(base + ["--members", "3", "--samples", "60", "--t-transient", "1"]) == 0
+    assert "3 members x T = 2" in capsys.readouterr().out
+    base[3] = "4"
+    assert main(base + ["--members", "2", "--samples", "40", "--t-transient", "1"]) == 0
+    slugs = {r["slug"]: r["members"] for r in
+             json.loads((tmp_path / "statistics.json").read_text())}
+    assert slugs == {"n3-c0-w1,1,1-m1,1,1": 3, "n4-c0-w1,1,1,1-m1,1,1,1": 2}
+    assert _slug(RotorSystem(3, masses=[1, 1, 1.0000001])) != _slug(RotorSystem(3))

@@ -61,12 +61,13 @@ def _sums(V, L):
 
 def carries(V, L):
     """What a tally carries between blocks, per variant: whether each member's last sample
-    was below `SMALL`, and the incomplete groups of the ladder's levels."""
-    out = {}
+    was below `SMALL`, and the incomplete groups of the ladder's levels; and per member the
+    length of a block whose full angles came without their restricted ones yet."""
+    out = {"pending": np.zeros(L, np.int64)}   # a block's length, its full angles added
     for v in range(V):
         out[("last", v)] = np.zeros(L, bool)
         for j in range(LADDER):
-            out[("carry", v, j)] = np.empty((L, 9))
+            out[("carry", v, j)] = np.zeros((L, 9))
     return out
 
 
@@ -144,8 +145,10 @@ class AngleTally(Archivable):
             raise ValueError("this tally was loaded from a file: it is complete, and what "
                              "it carried between blocks was not saved")
         l, s = x.shape
-        rows = (np.arange(int(first), int(first) + l) if np.ndim(first) == 0
-                else np.asarray(first, dtype=np.int64))
+        rows = np.asarray(first)
+        if not np.issubdtype(rows.dtype, np.integer) or rows.ndim > 1:
+            raise ValueError(f"first must be a member index or an array of them, got {first!r}")
+        rows = np.arange(int(first), int(first) + l) if rows.ndim == 0 else rows.astype(np.int64)
         if l == 0 or s == 0 or rows.shape != (l,) or rows[0] < 0 or rows[-1] >= self.n_members \
                 or np.any(np.diff(rows) <= 0):
             raise ValueError(f"a block of shape {x.shape} from member {first} does not fit a "
@@ -155,17 +158,30 @@ class AngleTally(Archivable):
         before = self.n[rows]
         if np.any(before != before[0]):
             raise ValueError("the members of one block must have seen equally many samples")
+        pending = self._open["pending"]
+        if v == 0 and np.any(pending[rows]):
+            raise ValueError("the restricted angles of the last block are missing: add each "
+                             "block's full angles, then its restricted ones")
+        if v == 1 and np.any(pending[rows] != s):
+            raise ValueError("add each block's full angles first, then its restricted ones, "
+                             "of the same members and samples")
         n0 = int(before[0])
         if np.any(x < 0) and kind == "angles":
             raise ValueError("angles must be ≥ 0")
         j = x.argmin(axis=1)
         low = angle(x[np.arange(l), j])
+        zero = low == 0                 # several sines ≤ 0: the first, as of their angles
+        if np.any(zero):
+            j[zero] = (x[zero] <= 0).argmax(axis=1)
         better = low < self.min[v, rows]
         self.min[v, rows] = np.where(better, low, self.min[v, rows])
         self.argmin[v, rows] = np.where(better, n0 + j, self.argmin[v, rows])
         self._small(v, rows, x, angle)
         self._ladder(v, rows, x, n0, angle)
-        if v == len(VARIANTS) - 1:
+        if v == 0:
+            pending[rows] = s
+        else:
+            pending[rows] = 0
             self.n[rows] += s
 
     def _small(self, v, rows, x, angle):
@@ -228,12 +244,15 @@ class AngleTally(Archivable):
         * ``law``: `law_from_batches` (Hill's β̂ ± se, A for β = 2 ± se) at each x₀ of
           `LAW_X0` (None where undefined: no angle below x₀, or the errors where fewer than
           two members have one);
-        * ``block_minima``: [size in samples, members' mean minimum, se] per size 10ʲ held by
-          every member, and ``slopes``: d ln(mean minimum) / d ln(size) between neighbouring
-          sizes with jackknife errors over `JACKKNIFE_GROUPS` groups of members (−1/β for
-          a law A x^β near zero, 0 for angles bounded away from zero);
+        * ``block_minima``: [size in samples, members' mean minimum, se] per size 10ʲ (j ≥ 1)
+          that a member holds, and ``slopes``: d ln(mean minimum) / d ln(size) between
+          neighbouring sizes with jackknife errors over `JACKKNIFE_GROUPS` groups of members
+          (−1/β for a law A x^β near zero, 0 for angles bounded away from zero);
         * ``episodes`` (runs below `SMALL`), their rate per time unit and mean length in
-          samples."""
+          samples.
+
+        Every number is finite or None (an error bar from fewer than two members, a time
+        without ``sample_every`` in ``params``)."""
         v = _variant(variant)
         has = self.n > 0                # a member that stopped in its first block has none
         n = self.n[has].astype(float)
@@ -257,7 +276,7 @@ class AngleTally(Archivable):
                                        np.count_nonzero(self.law_count[v, has, i]))
                       for i, x0 in enumerate(LAW_X0)]
         count, total = self.ladder_count[v], self.ladder_sum[v]
-        levels = [j for j in range(LADDER) if np.count_nonzero(count[:, j]) >= 2]
+        levels = [j for j in range(LADDER) if np.count_nonzero(count[:, j])]
         with np.errstate(invalid="ignore", divide="ignore"):
             means = np.where(count > 0, total / count, np.nan)[:, levels]
         out["block_minima"] = [[10 ** (j + 1), float(np.nanmean(means[:, i])),
@@ -269,7 +288,7 @@ class AngleTally(Archivable):
         ep = int(self.episodes[v].sum())
         out.update(episodes=ep, episode_rate=ep / (N * dt),
                    episode_length=float(self.below[v, :, -1].sum() / ep) if ep else None)
-        return out
+        return _finite_or_none(out)
 
     def plot(self, ax=None, variant="restricted", **kw):
         """The law of the small angles and the block minima of ``variant``
@@ -281,6 +300,8 @@ class AngleTally(Archivable):
         return plot_angle_law({label: self.statistics(variant)}, axes=ax, **kw)
 
     def summary_parts(self):
+        if not self.n.any():
+            return [f"no angles yet, {self.n_members} members"]
         s = self.statistics("restricted")
         return [f"{s['n']:.3g} angles of {s['members']} members",
                 f"min φ restricted {s['min']:.3g} rad"]
@@ -327,6 +348,17 @@ def _one_member_no_error(law, holders):
             for k, x in law.items()}
 
 
+def _finite_or_none(x):
+    """``x`` (nested dicts and lists) with every non-finite float as None: JSON as it is."""
+    if isinstance(x, dict):
+        return {k: _finite_or_none(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_finite_or_none(v) for v in x]
+    if isinstance(x, float) and not np.isfinite(x):
+        return None
+    return x
+
+
 def _same(x):
     return x
 
@@ -349,7 +381,8 @@ def _slopes(means, levels):
         groups = np.array_split(np.arange(L), min(JACKKNIFE_GROUPS, L))
 
         def slope(rows):
-            return np.log(m[rows, 1].mean() / m[rows, 0].mean()) / np.log(10.0)
+            with np.errstate(divide="ignore", invalid="ignore"):    # a mean minimum of 0
+                return np.log(m[rows, 1].mean() / m[rows, 0].mean()) / np.log(10.0)
         full = slope(slice(None))
         if len(groups) >= 2:
             jack = np.array([slope(np.setdiff1d(np.arange(L), g)) for g in groups])

@@ -68,6 +68,11 @@ SMALL_ANGLE = 0.05
 LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
 #: refuse to allocate more than this for the stored forward vectors (bytes).
 MAX_STORE = 1 << 30
+def stored_bytes(cfg: AngleSettings) -> int:
+    """Bytes `hyperbolicity_angles` stores: the forward vectors at every sample."""
+    return cfg.samples * cfg.m * 2 * cfg.n * 8
+
+
 #: forward segments per compiled call (the progress is reported between calls).
 _SEGMENTS = 1000
 
@@ -217,7 +222,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     n, m, dt, n_tr, n_win, sample, ce = cfg.n, cfg.m, cfg.dt, cfg.n_tr, cfg.n_win, cfg.sample, cfg.ce
     project, reorth, S = cfg.project, cfg.reorth, cfg.samples
     theta0, u0 = start_state(system, theta0, u0, dt)
-    need = S * m * 2 * n * 8
+    need = stored_bytes(cfg)
     if need > MAX_STORE:
         raise ValueError(f"storing {S} samples needs {need / 2**20:.0f} MB; increase sample_every "
                          f"or split t_final into several runs")
@@ -318,12 +323,13 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
                         progress=False, device="cpu", budget=None, chunk=None, checkpoint=None,
                         **kwargs) -> AngleTally:
     """The angle test of `hyperbolicity_ensemble` (seeds seed, seed + 1, …; ``kwargs``: its
-    settings), tallied as it runs into an `AngleTally` instead of kept: memory per member
-    independent of ``t_final``.  ``device="cuda"``: every member a GPU thread, the window in
+    settings), tallied as it runs into an `AngleTally` instead of kept.  ``device="cuda"``:
+    memory per member independent of ``t_final``, every member a GPU thread, the window in
     the blocks of ``charts.analyses.angle_blocks`` (``budget``: bytes of GPU memory for one
     block's stores, default half the free memory; the sines tallied on ``workers`` threads);
     ``"cpu"``: the members in chunks of about ``chunk`` (default 4 per process, at least 2)
-    by `hyperbolicity_ensemble`; with ``checkpoint`` (a path) the tally of the members done
+    by `hyperbolicity_ensemble`, each member's window held while it runs (at most
+    `MAX_STORE` bytes of forward vectors: refused beyond, with the remedy); with ``checkpoint`` (a path) the tally of the members done
     is saved there after each chunk, and a run that finds it there (the same call) goes on
     from it instead of starting again; removed when the run is whole."""
     device = resolve_device(device)
@@ -356,11 +362,22 @@ def _tally_on_cpu(system, L, t_final, params, speed, seed, workers, chunk, check
     """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
     each chunk's tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
     from ..archive import load
+    cfg = angle_settings(system, t_final, seed=seed, **kwargs)
+    if stored_bytes(cfg) > MAX_STORE:
+        raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
+                         f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "
+                         f"{MAX_STORE / 2**20:.0f} MB; run more members with a shorter window "
+                         "each, or on a GPU (device='cuda')")
+    if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer))
+                              or chunk < 1):
+        raise ValueError(f"chunk must be a positive integer, got {chunk!r}")
     tally, done = AngleTally.empty(L, params), 0
     if checkpoint is not None and os.path.exists(checkpoint):
         saved = load(checkpoint)
-        kept = {k: v for k, v in saved.params.items() if k != "members_done"}
-        if not isinstance(saved, AngleTally) or kept != tally.params or saved.n_members != L:
+        kept = getattr(saved, "params", {})
+        if not isinstance(saved, AngleTally) or "members_done" not in kept \
+                or {k: v for k, v in kept.items() if k != "members_done"} != tally.params \
+                or saved.n_members != L:
             raise ValueError(f"{checkpoint} holds the tally of another run; remove it or "
                              "name another checkpoint")
         done = int(saved.params["members_done"])

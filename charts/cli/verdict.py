@@ -7,6 +7,8 @@ import sys
 import warnings
 from pathlib import Path
 
+import numpy as np
+
 from ..runs.cli_parser import positive_count
 
 __all__ = ["add_parser", "cmd_verdict"]
@@ -42,8 +44,8 @@ def add_parser(sub) -> None:
     p.add_argument("--json", type=Path, metavar="FILE", help="also write the reports as JSON")
     g = p.add_argument_group(
         "statistics at scale", "--statistics runs the angle test (restricted and full angles) "
-        "on many members instead of the certificates, tallied as it goes (memory independent "
-        "of the run's length), and reports the smallest angle, the law of the small angles, "
+        "on many members instead of the certificates, tallied as it goes (on a GPU the memory "
+        "does not grow with the run's length), and reports the smallest angle, the law of the small angles, "
         "the block minima and the episodes with error bars from the spread between members")
     g.add_argument("--statistics", action="store_true",
                    help="the angle test at scale for each system (see the group's description)")
@@ -95,10 +97,10 @@ def cmd_verdict(args) -> int:
 
 def _statistics(args) -> int:
     """``charts verdict --statistics``: `statistics_verdict` of each system in turn."""
-    from ..analyses.angle_tally import AngleTally
     from ..archive import load
     from ..geometry.system import RotorSystem
-    from ..runs.verdict import family_systems, format_statistics, statistics_verdict
+    from ..runs.verdict import (family_systems, format_statistics, members_window,
+                                statistics_verdict)
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")           # critical levels: stops are reported
@@ -110,6 +112,12 @@ def _statistics(args) -> int:
                                  "one --n")
             systems = [(f"N = {n}", RotorSystem(n, masses=args.masses, weights=args.weights,
                                                  level=args.level)) for n in args.n]
+    if args.members < 2:
+        raise ValueError(f"--members must be at least 2 (an ensemble), got {args.members}")
+    if not (args.samples > 0 and np.isfinite(args.samples)):
+        raise ValueError(f"--samples must be a number > 0, got {args.samples}")
+    t_final = members_window(args.samples, args.members)
+    wanted = dict(members=args.members, t_final=t_final, t_transient=args.t_transient)
     done = {}
     if args.out is not None:
         args.out.mkdir(parents=True, exist_ok=True)
@@ -120,17 +128,14 @@ def _statistics(args) -> int:
     for label, system in systems:
         slug = _slug(system)
         path = None if args.out is None else args.out / f"{slug}.nc"
-        if slug in done and done[slug]["members"] == args.members \
-                and done[slug]["statistics"]["restricted"]["n"] >= args.samples:
+        if slug in done and all(done[slug][k] == v for k, v in wanted.items()):
             rep = done[slug]
-        elif path is not None and path.exists():
+        elif path is not None and path.exists() and _same_run(load(path), wanted):
             tally = load(path)
-            if not isinstance(tally, AngleTally):
-                raise ValueError(f"{path} is not an angle tally")
             rep = dict(label=label, system=system.describe(), members=tally.n_members,
                        t_final=tally.params["t_final"], t_transient=tally.params["t_transient"],
                        sample_every=tally.params["sample_every"], device=tally.params["device"],
-                       seconds=float("nan"), file=str(path),
+                       seconds=None, file=str(path),
                        statistics={v: tally.statistics(v) for v in ("full", "restricted")})
         else:
             rep = statistics_verdict(system, args.samples, members=args.members,
@@ -141,16 +146,29 @@ def _statistics(args) -> int:
         rep["slug"] = slug
         print(format_statistics(rep) + "\n", flush=True)
         reports.append(rep)
-        if args.out is not None:
-            (args.out / "statistics.json").write_text(json.dumps(reports, indent=1),
+        done[slug] = rep
+        if args.out is not None:            # this run's reports and the earlier ones of others
+            (args.out / "statistics.json").write_text(json.dumps(list(done.values()), indent=1),
                                                       encoding="utf-8")
     if args.json is not None:
         args.json.write_text(json.dumps(reports, indent=1), encoding="utf-8")
     return 0
 
 
+def _same_run(tally, wanted) -> bool:
+    """Whether a saved result is the tally of the run ``wanted`` (members, window, transient)
+    asks for."""
+    from ..analyses.angle_tally import AngleTally
+    return isinstance(tally, AngleTally) and tally.n_members == wanted["members"] and \
+        tally.params.get("t_final") == wanted["t_final"] and \
+        tally.params.get("t_transient") == wanted["t_transient"]
+
+
 def _slug(system) -> str:
-    """A file name for a system: n4-c0-w1,1,1,1-m1,1,1,1."""
+    """A file name for a system, every number to its last digit: n4-c0-w1,1,1,1-m1,1,1,1."""
     d = system.describe()
-    join = ",".join(f"{x:g}" for x in d["weights"]), ",".join(f"{x:g}" for x in d["masses"])
-    return f"n{d['n']}-c{d['level']:g}-w{join[0]}-m{join[1]}"
+
+    def num(x):
+        return np.format_float_positional(float(x), trim="-")
+    return (f"n{d['n']}-c{num(d['level'])}-w{','.join(num(x) for x in d['weights'])}"
+            f"-m{','.join(num(x) for x in d['masses'])}")

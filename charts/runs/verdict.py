@@ -176,8 +176,9 @@ def statistics_verdict(system, samples, *, members, device="auto", t_transient=1
 
 
 def family_systems(name) -> list:
-    """[(label, RotorSystem)] of the distinct systems of the bundled sweep ``name`` (its
-    points without their seeds), in the sweep's order."""
+    """[(label, RotorSystem)] of the distinct systems (N, masses, weights, level) of the
+    bundled sweep ``name``, in the sweep's order; the test runs them at unit speed.
+    ValueError for a sweep of the linkage."""
     from ..geometry.system import RotorSystem
     from .sweep.points import sweep_points
     from .sweep.spec import bundled_sweeps, load_sweep
@@ -186,12 +187,16 @@ def family_systems(name) -> list:
         raise ValueError(f"unknown sweep {name!r}; bundled: {', '.join(sorted(sweeps))}")
     out, seen = [], set()
     for point in sweep_points(load_sweep(sweeps[name])):
-        params = {k: v for k, v in point.params.items() if k != "seed"}
-        key = json.dumps(params, sort_keys=True)
-        if key in seen:
+        sysd = point.scene.system
+        if sysd.get("kind", "rotors") != "rotors":
+            raise ValueError(f"the sweep {name!r} runs the {sysd['kind']}: the angle test at "
+                             "scale is the rotors' (charts.linkage_angles for the linkage)")
+        key = json.dumps([sysd["n"], sysd.get("masses"), sysd.get("weights"),
+                          sysd.get("level", 0.0)])
+        if key in seen:                     # points that differ only in seed, speed, …
             continue
         seen.add(key)
-        sysd = point.scene.system
+        params = {k: v for k, v in point.params.items() if k not in ("seed", "speed")}
         with warnings.catch_warnings():       # critical levels: a stopped member is reported
             warnings.simplefilter("ignore")
             system = RotorSystem(sysd["n"], masses=sysd.get("masses"),
@@ -201,25 +206,28 @@ def family_systems(name) -> list:
 
 
 def format_statistics(rep: dict) -> str:
-    """A report of `statistics_verdict` as text: the restricted angles first."""
+    """A report of `statistics_verdict` as text: the restricted angles first ("?" for a
+    number the report leaves undefined)."""
+    def f(x, fmt):
+        return "?" if x is None else format(x, fmt)
     s = rep["system"]
+    took = "read from its saved tally" if rep.get("seconds") is None else f"{rep['seconds']:.0f} s"
     head = (f"{rep['label'] or 'N = ' + str(s['n'])}: masses {s['masses']}, weights "
             f"{s['weights']}, level {s['level']:g}; {rep['members']} members x T = "
             f"{rep['t_final']:g} (transient {rep['t_transient']:g}) on the {rep['device']}, "
-            f"{rep['seconds']:.0f} s")
+            f"{took}")
     lines = [head]
     for variant in ("restricted", "full"):
         st = rep["statistics"][variant]
         lines.append(f"  {variant}: {st['n']:.3g} angles, min {st['min']:.3g} rad (seed "
-                     f"{st['min_seed']}, t = {st['min_t']:g}); {st['episodes']} episodes below "
-                     f"{st['small']:g} rad ({st['episode_rate']:.3g} per time unit)")
-        laws = [f"x0 {d['x0']:g}: beta {d['exponent']:.3f} ± "
-                f"{'?' if d['exponent_se'] is None else format(d['exponent_se'], '.3f')} "
-                f"(n {d['count']})" for d in st["law"] if d["count"]]
+                     f"{st['min_seed']}, t = {f(st['min_t'], 'g')}); {st['episodes']} episodes "
+                     f"below {st['small']:g} rad ({f(st['episode_rate'], '.3g')} per time unit)")
+        laws = [f"x0 {d['x0']:g}: beta {f(d['exponent'], '.3f')} ± "
+                f"{f(d['exponent_se'], '.3f')} (n {d['count']})" for d in st["law"] if d["count"]]
         if laws:
             lines.append("    law P(phi < x) = A x^beta: " + "; ".join(laws))
         lines.append("    mean block minima: " + ", ".join(
-            f"{size:g}: {m:.3g} ± {se:.1g}" for size, m, se in st["block_minima"]))
+            f"{size:g}: {f(m, '.3g')} ± {f(se, '.1g')}" for size, m, se in st["block_minima"]))
         lines.append("    slopes d ln min / d ln size: " + ", ".join(
-            f"{a:g}-{b:g}: {x:.3f} ± {se:.3f}" for a, b, x, se in st["slopes"]))
+            f"{a:g}-{b:g}: {f(x, '.3f')} ± {f(se, '.3f')}" for a, b, x, se in st["slopes"]))
     return "\n".join(lines)
