@@ -172,3 +172,35 @@ def test_the_gpu_threads_give_the_lanes_rows(tmp_path):
         with pytest.raises(SweepError, match=r"--device cuda needs.*Use --device cpu \(or auto\)"):
             run_sweep(load_sweep(sweep_file), tmp_path / "out", device="cuda", quiet=True)
         assert not (tmp_path / "out").exists()
+
+
+def test_the_seeds_angle_tests_together_give_each_seeds_own(tmp_path):
+    """A point's angle tests run together (the GPU route's twin on the CPU, one block):
+    every seed's result and arrays are the ones its own pass gives, bit for bit."""
+    from charts.analyses.hyperbolicity import angle_members
+    raws = [raw(s) for s in (3, 4, 5)]
+    for r in raws:              # the GPU route's transient: whole checkpoint segments
+        r["effects"]["angles"]["t_transient"] = 1.0
+    scenes = [parse_scene(r, source=r["name"]) for r in raws]
+    alone = run_seed_lanes(scenes, [tmp_path / f"a{i}" for i in range(3)])
+    twin = run_seed_lanes(scenes, [tmp_path / f"b{i}" for i in range(3)],
+                          angles=lambda *a: angle_members(*a, backend="cpu"))
+    for i, (x, y) in enumerate(zip(alone, twin)):
+        assert y["status"] == "complete"
+        for key in ("results", "computation"):
+            _same(x[key], y[key], key)
+        with np.load(tmp_path / f"a{i}" / "arrays.npz") as a, \
+                np.load(tmp_path / f"b{i}" / "arrays.npz") as b:
+            assert {"angles_t", "angles_full", "angles_restricted"} <= set(a.files)
+            for k in a.files:
+                assert np.array_equal(a[k], b[k], equal_nan=True), k
+
+
+def test_an_angle_test_that_cannot_run_together_fails_the_seeds_with_its_reason(tmp_path):
+    """The GPU route takes whole checkpoint segments of transient: a scene with 0.5 fails
+    each seed with the route's reason (the main pass's part written)."""
+    from charts.analyses.hyperbolicity import angle_members
+    scenes = [parse_scene(raw(s), source=f"s{s}") for s in (3, 4, 5)]
+    out = run_seed_lanes(scenes, [tmp_path / f"c{i}" for i in range(3)],
+                         angles=lambda *a: angle_members(*a, backend="cpu"))
+    assert all(isinstance(o, RunError) and "multiple of checkpoint_every" in str(o) for o in out)

@@ -13,7 +13,8 @@ from .paper import PAPER_EXPONENTS
 from .scene_schema import api_default
 
 __all__ = ["rotor_system", "rotor_start", "lyapunov_settings_of", "tangent_flow",
-           "rotor_invariants", "rotor_curvature", "rotor_angles_pass", "rotor_paper_exponents"]
+           "rotor_invariants", "rotor_curvature", "angle_settings_of", "rotor_angles_pass",
+           "rotor_paper_exponents"]
 
 
 def rotor_system(scene):
@@ -100,22 +101,30 @@ def rotor_curvature(st, kdir: int, routes: str):
     return Kn, Ke
 
 
+def angle_settings_of(st) -> dict:
+    """The settings of `hyperbolicity_angles` that the scene's angle effect asks for (the
+    API's own checkpoints; the projection of its tangent flow; the scene's seed)."""
+    sc = st.scene
+    a = sc.effects["angles"]
+    dt = sc.integrator["dt"]
+    return dict(dt=dt, n_unstable=a["n_vectors"], t_transient=a["t_transient"],
+                sample_every=a["sample_every"],
+                checkpoint_every=api_default("angles", "checkpoint_every"),
+                project_every=st.flow.project_every * dt or None, seed=sc.initial["seed"] or 0)
+
+
 def rotor_angles_pass(st) -> None:
     """The hyperbolicity test (section 4) from the initial state: forward tangent vectors,
     backward adjoint vectors along the re-integrated trajectory (`hyperbolicity_angles`),
-    recorded as rows [t, φ full, φ restricted]."""
+    recorded as rows [t, φ full, φ restricted]; ``st.angles_result`` instead where it was
+    computed already (a point's seeds together on a GPU, ``charts.runs.seed_lanes``)."""
     from ..analyses.hyperbolicity import hyperbolicity_angles
 
-    sc, sys_ = st.scene, st.system
-    a = sc.effects["angles"]
-    dt = sc.integrator["dt"]
-    n = sys_.n
-    res = hyperbolicity_angles(sys_, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
-                               n_unstable=a["n_vectors"], t_transient=a["t_transient"],
-                               sample_every=a["sample_every"],
-                               checkpoint_every=api_default("angles", "checkpoint_every"),
-                               project_every=st.flow.project_every * dt or None,
-                               seed=sc.initial["seed"] or 0)
+    res = st.angles_result
+    if res is None:
+        n = st.system.n
+        res = hyperbolicity_angles(st.system, st.y0[:n], st.y0[n:], st.scene.run["t_final"],
+                                   **angle_settings_of(st))
     st.rec["angles"] = [list(r) for r in np.column_stack([res.t, res.phi_full,
                                                           res.phi_restricted])]
     st.rec["angles_exponents"] = [list(res.forward_exponents), list(res.adjoint_exponents)]

@@ -40,6 +40,9 @@ class RunState:
         #: the initial state, its speed, and the tangent flow of the kernel engine (state,
         #: vectors, log-norm sums; None for the integrate engine)
         self.nq, self.y0, self.speed, self.flow = scene_kind(scene).start(scene, system, plan)
+        #: the angle test's `AngleResult` where it was computed with other seeds' (on a GPU,
+        #: ``charts.runs.seed_lanes``); None: the angle pass computes it
+        self.angles_result = None
         self._y = self.y0.copy()
         self.lyap_marks = []           # (tick, logsum) at Lyapunov batch boundaries
         self.shares_partial = False    # resumed from a checkpoint without the energy shares

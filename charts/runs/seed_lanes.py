@@ -24,7 +24,7 @@ from .runner import QUIET_BAR, SceneRun
 from .scene import Scene, scene_to_dict
 from .scene_kind import scene_kind
 
-__all__ = ["seed_family", "run_seed_lanes", "lane_flows"]
+__all__ = ["seed_family", "run_seed_lanes", "lane_flows", "lane_angles"]
 
 
 def seed_family(scene: Scene):
@@ -55,11 +55,27 @@ def lane_flows(device: str = "cpu"):
     return LaneFlows
 
 
-def run_seed_lanes(scenes, outdirs, flows=LaneFlows) -> list:
+def lane_angles(device: str = "cpu"):
+    """What runs the angle test of a point's seeds together: None on the CPU (each run's
+    own pass, `hyperbolicity_angles`), with ``"cuda"`` one GPU thread per seed
+    (``charts.analyses.hyperbolicity.angle_members``), ``"auto"`` the GPU when there is
+    one."""
+    from ..solvers.device import resolve_device
+
+    if resolve_device(device) == "cuda":
+        from ..analyses.hyperbolicity import angle_members
+        return lambda system, cfg, seeds, speed: angle_members(system, cfg, seeds, speed,
+                                                               backend="cuda")
+    return None
+
+
+def run_seed_lanes(scenes, outdirs, flows=LaneFlows, angles=None) -> list:
     """Run ``scenes`` (one `seed_family`) into ``outdirs`` (one each, checked and locked as
     `run_scene` does), quietly, their main passes advanced together by ``flows`` (a function
-    of the scenes' `TangentFlow` s, `lane_flows`).  Returns, per scene, its result dict or
-    the `RunError` that `run_scene` would have raised for it (its finished part written)."""
+    of the scenes' `TangentFlow` s, `lane_flows`), their angle tests by ``angles`` where
+    given (`lane_angles`: (system, settings, seeds, speed) → [`AngleResult`]).  Returns, per
+    scene, its result dict or the `RunError` that `run_scene` would have raised for it (its
+    finished part written)."""
     scenes = list(scenes)
     keys = {seed_family(sc) for sc in scenes}
     if not scenes or None in keys or len(keys) != 1:
@@ -78,6 +94,8 @@ def run_seed_lanes(scenes, outdirs, flows=LaneFlows) -> list:
 
         with compile_timer(add_compile_time):
             live = _main_pass(runs, outcome, flows)
+            if angles is not None and "angles" in scenes[0].effects and live:
+                _angle_pass(runs, live, outcome, angles)
             for i in live:
                 try:
                     runs[i].run_chunks(None, QUIET_BAR)
@@ -90,6 +108,28 @@ def run_seed_lanes(scenes, outdirs, flows=LaneFlows) -> list:
             except RunError as exc:
                 results.append(exc)
         return results
+
+
+def _angle_pass(runs, live, outcome, angles) -> None:
+    """The angle test of the running seeds together (``angles``), each result left in its
+    run's state for its own angle pass to record; where it fails, every such run stops with
+    the error, as its own pass would have."""
+    from ..analyses.forward_pass import angle_settings
+    from .rotor_run import angle_settings_of
+
+    lead = runs[live[0]].st
+    kw = angle_settings_of(lead)
+    seeds = [runs[i].st.scene.initial["seed"] or 0 for i in live]
+    try:
+        cfg = angle_settings(lead.system, lead.scene.run["t_final"], **kw)
+        results = angles(lead.system, cfg, seeds, lead.scene.system["speed"])
+    except (ValueError, RuntimeError) as exc:
+        for i in list(live):
+            outcome[i] = runs[i].stop(RunError(f"the angle test of the point's seeds: {exc}"))
+            live.remove(i)
+        return
+    for i, res in zip(live, results):
+        runs[i].st.angles_result = res
 
 
 def _main_pass(runs, outcome, flows) -> list[int]:

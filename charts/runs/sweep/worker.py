@@ -18,7 +18,7 @@ from ...analyses.lyapunov_members import MIN_LANES
 from .. import runner
 from ..outdir import OutputError
 from ..scene import parse_scene
-from ..seed_lanes import lane_flows, run_seed_lanes, seed_family
+from ..seed_lanes import lane_angles, lane_flows, run_seed_lanes, seed_family
 from .statistics import result_statistics
 
 __all__ = ["evaluate_point", "evaluate_points"]
@@ -87,7 +87,8 @@ def evaluate_points(raws: list, keep=None, device="cpu") -> list:
     given); points of one seed family
     (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
     one kernel (the same rows, bit for bit; each point's wall time is the block's share), or
-    with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``).
+    with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``; their
+    angle tests too, `lane_angles`).
 
     The points run with Dask's synchronous scheduler: a point never talks to the cluster
     it runs on."""
@@ -118,7 +119,7 @@ def _evaluate_points(raws: list, keep=None, device="cpu") -> list:
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
         dirs = [Path(td) / f"point-{i}" for i in range(len(scenes))]
-        outcomes = run_seed_lanes(scenes, dirs, lane_flows(device))
+        outcomes = run_seed_lanes(scenes, dirs, lane_flows(device), lane_angles(device))
         share = (time.perf_counter() - t0) / len(scenes)
         return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
 
