@@ -277,3 +277,24 @@ def test_statistics_are_json_even_where_undefined():
     assert s["min_t"] is None and s["episode_rate"] is None
     assert [size for size, _, se in s["block_minima"]] == [10, 100, 1000]
     assert all(se is None for _, _, se in s["block_minima"])
+
+
+def test_tallies_of_other_seeds_merge_into_the_tally_of_all():
+    """Members run apart (two machines, say) and merged: the tally of one run of them all,
+    each member with its seed; the same seed twice or another test is refused."""
+    S = RotorSystem(3)
+    kw = dict(t_transient=1.0, workers=1)
+    whole = hyperbolicity_tally(S, 4, 2.0, seed=5, **kw)
+    parts = [hyperbolicity_tally(S, 2, 2.0, seed=s, **kw) for s in (7, 5)]
+    merged = AngleTally.merged(parts)
+    order = np.argsort(merged.seeds)
+    for f in FIELDS:
+        x = getattr(merged, f)
+        x = x[order] if f == "n" else x[:, order]
+        assert np.array_equal(x, getattr(whole, f)), f
+    assert merged.statistics()["min"] == whole.statistics()["min"]
+    assert merged.statistics()["min_seed"] == whole.statistics()["min_seed"]
+    with pytest.raises(ValueError, match="appears in more than one"):
+        AngleTally.merged([parts[0], parts[0]])
+    with pytest.raises(ValueError, match="different tests"):
+        AngleTally.merged([parts[0], hyperbolicity_tally(S, 2, 3.0, seed=1, **kw)])

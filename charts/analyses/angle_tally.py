@@ -89,6 +89,8 @@ class AngleTally(Archivable):
     ladder_sumsq: np.ndarray
     episodes: np.ndarray
     params: dict = field(default_factory=dict)
+    #: (members,) each member's seed (its initial state and vectors)
+    seeds: np.ndarray | None = None
     _open: dict = field(default_factory=dict)       # carried between blocks: not saved
 
     KIND = "angle_tally"
@@ -98,9 +100,43 @@ class AngleTally(Archivable):
         """A tally of ``members`` members with nothing added yet."""
         if isinstance(members, bool) or not isinstance(members, (int, np.integer)) or members < 1:
             raise ValueError(f"members must be a positive integer, got {members!r}")
-        tally = cls(**_sums(len(VARIANTS), int(members)), params=dict(params or {}))
+        params = dict(params or {})
+        seeds = int(params.get("seed", 0)) + np.arange(int(members), dtype=np.int64)
+        tally = cls(**_sums(len(VARIANTS), int(members)), params=params, seeds=seeds)
         tally._open.update(carries(len(VARIANTS), int(members)))
         return tally
+
+    @classmethod
+    def merged(cls, tallies) -> "AngleTally":
+        """One tally of the members of finished ``tallies`` of the same test on other seeds
+        (runs on several machines, or one after another): the members side by side, each
+        with its seed.  ValueError where their settings differ (seed and device aside) or a
+        seed appears twice."""
+        tallies = list(tallies)
+        if not tallies or not all(isinstance(t, cls) for t in tallies):
+            raise ValueError("merged takes one or more AngleTally")
+        own = ("seed", "device", "stopped")
+
+        def settings(t):
+            return {k: v for k, v in t.params.items() if k not in own}
+        if any(settings(t) != settings(tallies[0]) for t in tallies):
+            raise ValueError("the tallies are of different tests (system or settings differ)")
+        if any(np.any(t._open.get("pending", np.zeros(1))) for t in tallies):
+            raise ValueError("a tally has a block whose restricted angles are missing")
+        seeds = np.concatenate([t.seeds for t in tallies])
+        if np.unique(seeds).size != seeds.size:
+            raise ValueError("a seed appears in more than one tally: its member would count twice")
+        names = ("n", "min", "argmin", "zeros", "below", "law_count", "law_logsum",
+                 "ladder_count", "ladder_sum", "ladder_sumsq", "episodes")
+        arrays = {k: np.concatenate([getattr(t, k) for t in tallies], axis=0 if k == "n" else 1)
+                  for k in names}
+        params = dict(tallies[0].params, seed=int(seeds[0]),
+                      device="+".join(sorted({str(t.params.get("device", "?")) for t in tallies})))
+        stopped = [s for t in tallies for s in t.params.get("stopped") or []]
+        params.pop("stopped", None)
+        if stopped:
+            params["stopped"] = stopped
+        return cls(**arrays, params=params, seeds=seeds)
 
     @property
     def n_members(self) -> int:
@@ -262,7 +298,7 @@ class AngleTally(Archivable):
         dt = float(self.params.get("sample_every", np.nan))
         l = int(np.argmin(self.min[v]))
         out = dict(variant=VARIANTS[v], n=N, members=self.n_members,
-                   min=float(self.min[v, l]), min_seed=int(self.params.get("seed", 0)) + l,
+                   min=float(self.min[v, l]), min_seed=int(self.seeds[l]),
                    min_t=float(self.params.get("t_transient", 0.0) + self.argmin[v, l] * dt),
                    zeros=int(self.zeros[v].sum()), small=SMALL)
         below = self.below[v][has]
@@ -324,7 +360,8 @@ class AngleTally(Archivable):
             "ladder_sumsq": (member + ("size",), self.ladder_sumsq, "rad2",
                              "sum of the squared minima"),
             "episodes": (member, self.episodes, "1",
-                         f"runs of consecutive angles below {SMALL} rad")},
+                         f"runs of consecutive angles below {SMALL} rad"),
+            "seed": (("member",), self.seeds, "1", "the member's seed (its initial state)")},
             coords={"variant": (("variant",), np.array(VARIANTS), "1"),
                     "edge": (("edge",), EDGES, "rad"),
                     "x0": (("x0",), np.array(LAW_X0), "rad"),
@@ -336,7 +373,8 @@ class AngleTally(Archivable):
     def from_xarray(cls, ds):
         names = ("n", "min", "argmin", "zeros", "below", "law_count", "law_logsum",
                  "ladder_count", "ladder_sum", "ladder_sumsq", "episodes")
-        return cls(**{k: ds[k].values for k in names}, params=attributes(ds)["params"])
+        return cls(**{k: ds[k].values for k in names}, params=attributes(ds)["params"],
+                   seeds=ds["seed"].values)
 
 
 def _one_member_no_error(law, holders):
