@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from charts import RotorSystem, hyperbolicity_angles
-from charts.analyses.hyperbolicity import SMALL_ANGLE
+from charts.analyses.angle_tally import SMALL_ANGLE
 from charts.analyses.statistics import block_minima, pool_small_value_laws, small_value_law
 from charts.geometry.system import critical_levels
 from charts.plotting.style import new_figure, save_png

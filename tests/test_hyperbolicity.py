@@ -4,7 +4,8 @@ import pytest
 
 import charts
 from charts import lyapunov_spectrum
-from charts.analyses.hyperbolicity import (SMALL_ANGLE, AngleResult, angle_statistics,
+from charts.analyses.angle_tally import SMALL_ANGLE
+from charts.analyses.hyperbolicity import (AngleResult, angle_statistics,
                                            hyperbolicity_angles, hyperbolicity_ensemble)
 from charts.geometry.system import RotorSystem
 

@@ -30,15 +30,16 @@ from ..geometry.checks import finite_array
 from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
 
-__all__ = ["AngleTally", "VARIANTS", "EDGES", "LAW_X0", "LADDER", "JACKKNIFE_GROUPS", "SMALL",
+__all__ = ["AngleTally", "VARIANTS", "EDGES", "LAW_X0", "LADDER", "JACKKNIFE_GROUPS", "SMALL_ANGLE",
            "carries"]
 
 #: the two angles of the test, in the order of a tally's first axis.
 VARIANTS = ("full", "restricted")
-#: the near-tangency threshold of the episodes (rad): `hyperbolicity.SMALL_ANGLE`.
-SMALL = 0.05
+#: the near-tangency threshold (rad): the episodes here, the fraction of small angles of
+#: ``charts.analyses.hyperbolicity.angle_statistics``.
+SMALL_ANGLE = 0.05
 #: edges of the angle grid (rad), ascending: 0.05 · 10^(−j/10), j = 80 … 0 (5e-10 to 0.05).
-EDGES = SMALL * 10.0 ** (-np.arange(80, -1, -1) / 10)
+EDGES = SMALL_ANGLE * 10.0 ** (-np.arange(80, -1, -1) / 10)
 #: thresholds x₀ of the small-angle law (rad).
 LAW_X0 = (0.05, 0.02, 0.01, 0.005, 0.002)
 #: the ladder of block minima: groups of 10 samples, 10 minima, … (sizes 10¹ … 10^LADDER).
@@ -61,7 +62,7 @@ def _sums(V, L):
 
 def carries(V, L):
     """What a tally carries between blocks, per variant: whether each member's last sample
-    was below `SMALL`, and the incomplete groups of the ladder's levels; and per member the
+    was below `SMALL_ANGLE`, and the incomplete groups of the ladder's levels; and per member the
     length of a block whose full angles came without their restricted ones yet."""
     out = {"pending": np.zeros(L, np.int64)}   # a block's length, its full angles added
     for v in range(V):
@@ -153,7 +154,7 @@ class AngleTally(Archivable):
     def add_sines(self, sines, first=0, variant="restricted"):
         """`add` for the sines of the angles, as the angle test computes them (φ =
         arcsin of the sine clipped to [0, 1], `sin_to_angle`): only the sines below
-        sin(`SMALL`) and the minima are turned into angles, with the same result."""
+        sin(`SMALL_ANGLE`) and the minima are turned into angles, with the same result."""
         self._add(finite_array("sines", sines, ndim=2), first, variant, "sines", sin_to_angle)
 
     def add_both(self, sines_full, sines_restricted, threads=1, alive=None):
@@ -222,12 +223,12 @@ class AngleTally(Archivable):
 
     def _small(self, v, rows, x, angle):
         """Zeros, the grid counts, the law's sums and the episodes of the samples below
-        `SMALL`: the candidates found on ``x``, then decided on their angles."""
+        `SMALL_ANGLE`: the candidates found on ``x``, then decided on their angles."""
         l = x.shape[0]
-        below = x < (SMALL if angle is _same else np.sin(SMALL) * (1 + 1e-9))
+        below = x < (SMALL_ANGLE if angle is _same else np.sin(SMALL_ANGLE) * (1 + 1e-9))
         flat = np.flatnonzero(below)
         phi = angle(x.ravel()[flat] if x.flags.c_contiguous else x[below])
-        out = phi >= SMALL
+        out = phi >= SMALL_ANGLE
         below.ravel()[flat[out]] = False
         r, phi = flat[~out] // x.shape[1], phi[~out]
         last = self._open[("last", v)]
@@ -284,7 +285,7 @@ class AngleTally(Archivable):
           that a member holds, and ``slopes``: d ln(mean minimum) / d ln(size) between
           neighbouring sizes with jackknife errors over `JACKKNIFE_GROUPS` groups of members
           (−1/β for a law A x^β near zero, 0 for angles bounded away from zero);
-        * ``episodes`` (runs below `SMALL`), their rate per time unit and mean length in
+        * ``episodes`` (runs below `SMALL_ANGLE`), their rate per time unit and mean length in
           samples.
 
         Every number is finite or None (an error bar from fewer than two members, a time
@@ -300,7 +301,7 @@ class AngleTally(Archivable):
         out = dict(variant=VARIANTS[v], n=N, members=self.n_members,
                    min=float(self.min[v, l]), min_seed=int(self.seeds[l]),
                    min_t=float(self.params.get("t_transient", 0.0) + self.argmin[v, l] * dt),
-                   zeros=int(self.zeros[v].sum()), small=SMALL)
+                   zeros=int(self.zeros[v].sum()), small=SMALL_ANGLE)
         below = self.below[v][has]
         out["cdf"] = [[float(x), float(below[:, e].sum() / N),
                        float(standard_error(below[:, e] / n))]
@@ -360,7 +361,7 @@ class AngleTally(Archivable):
             "ladder_sumsq": (member + ("size",), self.ladder_sumsq, "rad2",
                              "sum of the squared minima"),
             "episodes": (member, self.episodes, "1",
-                         f"runs of consecutive angles below {SMALL} rad"),
+                         f"runs of consecutive angles below {SMALL_ANGLE} rad"),
             "seed": (("member",), self.seeds, "1", "the member's seed (its initial state)")},
             coords={"variant": (("variant",), np.array(VARIANTS), "1"),
                     "edge": (("edge",), EDGES, "rad"),

@@ -50,7 +50,7 @@ from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
-from .angle_tally import VARIANTS, AngleTally, carries
+from .angle_tally import SMALL_ANGLE, VARIANTS, AngleTally, carries
 from .arguments import positive_time, progress_reporter, start_state, Documented
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settings, forward_kernel
@@ -60,10 +60,8 @@ from .statistics import small_value_law
 __all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
            "hyperbolicity_ensemble", "hyperbolicity_tally", "tally_on_device", "StoppedMember",
            "angle_statistics",
-           "SMALL_ANGLE", "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
+           "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
-#: threshold of the "near-tangency" fraction reported by `angle_statistics` (rad).
-SMALL_ANGLE = 0.05
 #: the fields of `small_value_law` that `angle_statistics` reports as ``law_<field>``.
 LAW_KEYS = ("count", "exponent", "exponent_se", "coef2", "coef2_se")
 #: refuse to allocate more than this for the stored forward vectors (bytes).

@@ -209,7 +209,7 @@ def _fmt_table(rows):
 
 
 def _report(out, preset, rows, curv, ang, elapsed, workers, clv_lines):
-    from ..analyses.hyperbolicity import SMALL_ANGLE
+    from ..analyses.angle_tally import SMALL_ANGLE
     L = [f"# Reproduction of Kuznetsov, rotators with Σcos θ = 0 — preset `{preset}`", "",
          f"Command: `charts reproduce --{preset} -o {out}`; wall time {elapsed:.0f} s on "
          f"{workers} worker processes ({platform.processor() or platform.machine()}, "

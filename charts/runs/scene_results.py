@@ -13,7 +13,8 @@ import numpy as np
 from ..analyses.lyapunov import exponents_from_marks
 
 from ..analyses.curvature import gaussian_curvature_eq22
-from ..analyses.hyperbolicity import SMALL_ANGLE, angle_statistics
+from ..analyses.angle_tally import SMALL_ANGLE
+from ..analyses.hyperbolicity import angle_statistics
 from ..analyses.spectra import power_spectrum
 from ..archive import require_xarray
 from ..geometry.energy_shares import LOCALISED_SHARE, localised_fraction

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ...analyses.hyperbolicity import SMALL_ANGLE
+from ...analyses.angle_tally import SMALL_ANGLE
 from ...result_words import RATE
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
