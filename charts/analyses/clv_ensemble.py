@@ -17,11 +17,12 @@ where the block's own samples end and restored after the block, so the forward p
 continuous run: its Gram–Schmidt rates do not depend on the blocks.  With one block each
 member equals `covariant_lyapunov_vectors` bit for bit; with several, the CLVs after the
 first block differ by the backward iteration's convergence error over t_transient
-(tests/test_clv_blocks.py).
+(tests/test_clv_ensemble.py).
 """
 from __future__ import annotations
 
 import functools
+import os
 from concurrent.futures import ThreadPoolExecutor
 from math import isfinite
 
@@ -29,7 +30,7 @@ import numpy as np
 from numba import njit
 
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
-                              load_member, store_member)
+                              load_member, resolve_device, store_member)
 from ..solvers.driver import Phases
 from ..solvers.status import NONFINITE, RUNNING, status_error
 from ..solvers.tangent import (Records, Rotors, Stack, Stepping, check_memory, memory_budget,
@@ -40,10 +41,9 @@ from .covariant import (CLVSettings, backward_coefficients, clv_flow, clv_sample
                         ginelli_start)
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, member_states_of,
                        run_ensemble)
-from ..solvers.device import resolve_device
 
-__all__ = ["covariant_ensemble", "clv_ensemble_settings", "clv_forward_member", "clvs_on_device", "clv_block_plan",
-           "clv_block_bytes", "clv_states", "kernel_function"]
+__all__ = ["covariant_ensemble", "clv_ensemble_settings", "clv_forward_member", "clvs_on_device",
+           "clv_block_plan", "clv_block_bytes", "clv_states", "kernel_function"]
 
 
 def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted", speed=1.0,
@@ -69,13 +69,14 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
         try:
             members = clvs_on_device(system, cfg, variant,
                                      list(range(seed, seed + n_trajectories)), speed,
-                                     workers=workers or 1, update=rep.update)
+                                     workers=workers or os.cpu_count() or 1,
+                                     update=rep.update)
         finally:
             rep.close()
         return ensemble_result(members, system, seed, speed, t_final,
                                {**kwargs, "variant": variant, "device": "cuda"})
-    every = kwargs.get("sample_every", 0.1)
-    short = (2 * every, {"t_transient": 0.0})       # the priming call: two samples
+    tau = clv_ensemble_settings(system, t_final, variant, seed, kwargs).tau
+    short = (2 * tau, {"t_transient": 0.0})         # the priming call: two samples
     return run_ensemble(covariant_lyapunov_vectors, system, n_trajectories, t_final,
                         speed=speed, seed=seed, workers=workers, progress=progress,
                         desc=f"CLV N={system.n} ensemble", prime=short, variant=variant,
