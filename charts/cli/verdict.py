@@ -101,6 +101,7 @@ def _statistics(args) -> int:
     from ..geometry.system import RotorSystem
     from ..runs.verdict import (family_systems, format_statistics, members_window,
                                 statistics_verdict)
+    from ..solvers.device import resolve_device
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")           # critical levels: stops are reported
@@ -117,6 +118,12 @@ def _statistics(args) -> int:
     if not (args.samples > 0 and np.isfinite(args.samples)):
         raise ValueError(f"--samples must be a number > 0, got {args.samples}")
     t_final = members_window(args.samples, args.members)
+    if resolve_device(args.device) == "cpu":
+        integrated = args.members * (2 * t_final + 3 * args.t_transient)
+        print(f"charts: the angle test at scale runs on the CPU here: {args.members} members x "
+              f"T = {t_final:g} per system, {integrated:.3g} time units to integrate (both "
+              "passes; on an H100 10⁸ angles took about 5 s). With --out DIR the members done are kept: "
+              "Ctrl-C, then the same command, goes on from them", file=sys.stderr, flush=True)
     wanted = dict(members=args.members, t_final=t_final, t_transient=args.t_transient)
     done = {}
     if args.out is not None:
