@@ -219,7 +219,8 @@ def clv_block_plan(cfg: CLVSettings, n, members, budget, block=None) -> tuple:
     """The blocks' lengths in samples: as many as fit ``budget`` bytes for ``members`` (or
     ``block`` at most); ValueError with the numbers when not even one sample fits."""
     if members * clv_block_bytes(cfg, n, 1) > budget:
-        raise ValueError(f"{members} members need {members * clv_block_bytes(cfg, n, 1) / 2**30:.2f}"
+        need = members * clv_block_bytes(cfg, n, 1) / 2**30
+        raise ValueError(f"{members} members need {need:.2f}"
                          f" GiB for the shortest block (one sample and the backward transient's "
                          f"{cfg.total - cfg.S}), more than the {budget / 2**30:.2f} GiB budget; "
                          "run fewer members at once or raise sample_every")

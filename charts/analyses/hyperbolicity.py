@@ -327,9 +327,10 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
     block's stores, default half the free memory; the sines tallied on ``workers`` threads);
     ``"cpu"``: the members in chunks of about ``chunk`` (default 4 per process, at least 2)
     by `hyperbolicity_ensemble`, each member's window held while it runs (at most
-    `MAX_STORE` bytes of forward vectors: refused beyond, with the remedy); with ``checkpoint`` (a path) the tally of the members done
-    is saved there after each chunk, and a run that finds it there (the same call) goes on
-    from it instead of starting again; removed when the run is whole."""
+    `MAX_STORE` bytes of forward vectors: refused beyond, with the remedy); with
+    ``checkpoint`` (a path) the tally of the members done is saved there after each chunk,
+    and a run that finds it there (the same call) goes on from it instead of starting
+    again; removed when the run is whole."""
     device = resolve_device(device)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)

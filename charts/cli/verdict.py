@@ -45,8 +45,9 @@ def add_parser(sub) -> None:
     g = p.add_argument_group(
         "statistics at scale", "--statistics runs the angle test (restricted and full angles) "
         "on many members instead of the certificates, tallied as it goes (on a GPU the memory "
-        "does not grow with the run's length), and reports the smallest angle, the law of the small angles, "
-        "the block minima and the episodes with error bars from the spread between members")
+        "does not grow with the run's length), and reports the smallest angle, the law of the "
+        "small angles, the block minima and the episodes with error bars from the spread "
+        "between members")
     g.add_argument("--statistics", action="store_true",
                    help="the angle test at scale for each system (see the group's description)")
     g.add_argument("--samples", type=float, default=1e8, metavar="S",
@@ -122,8 +123,9 @@ def _statistics(args) -> int:
         integrated = args.members * (2 * t_final + 3 * args.t_transient)
         print(f"charts: the angle test at scale runs on the CPU here: {args.members} members x "
               f"T = {t_final:g} per system, {integrated:.3g} time units to integrate (both "
-              "passes; on an H100 10⁸ angles took about 5 s). With --out DIR the members done are kept: "
-              "Ctrl-C, then the same command, goes on from them", file=sys.stderr, flush=True)
+              "passes; on an H100 10⁸ angles took about 5 s). With --out DIR the members done "
+              "are kept: Ctrl-C, then the same command, goes on from them", file=sys.stderr,
+              flush=True)
     wanted = dict(members=args.members, t_final=t_final, t_transient=args.t_transient)
     done = {}
     if args.out is not None:
