@@ -87,3 +87,16 @@ def test_the_block_plan_fits_the_budget_or_refuses_with_numbers():
 def test_the_ensemble_asks_for_a_gpu_by_name():
     with pytest.raises(DeviceUnavailable, match="needs an NVIDIA GPU"):
         hyperbolicity_ensemble(SYSTEM, 2, 2.0, device="cuda")
+
+
+def test_a_stopped_member_is_named_with_its_pass_and_seed():
+    """The device routes' stops (``solvers.device.member_stops``): each the error the CPU
+    route raises, naming the pass and the member's seed, at its time."""
+    from charts.analyses.angle_blocks import BACKWARD, _stops
+    from charts.solvers.device import DeviceArrays
+    from charts.solvers.status import RUNNING, SINGULAR, SingularPointError
+    dev = {"status": np.array([RUNNING, SINGULAR]), "stopped": np.array([0, 1234]),
+           "phase": np.array([0, BACKWARD])}
+    (l, seed, t, err), = _stops(DeviceArrays("cpu"), dev, [7, 8], 0.01)
+    assert (l, seed, t) == (1, 8, 12.34)
+    assert isinstance(err, SingularPointError) and "backward RK4, member seed=8" in str(err)

@@ -34,8 +34,8 @@ import numpy as np
 from numba import njit
 
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
-                              load_member, store_member)
-from ..solvers.status import RUNNING, status_error
+                              load_member, member_stops, store_member)
+from ..solvers.status import RUNNING
 from ..solvers.tangent import (Rotors, Stack, Stepping, check_memory, memory_budget,
                                orthonormalize, stacked_work, tangent_loop)
 from .adjoint_pass import backward_loop
@@ -272,7 +272,7 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
     seed.  ``consume(sf, sr, stops)``: takes each block's sines (L, block's samples) in turn
     instead, and the sines returned are None (``charts.analyses.angle_tally``: memory
     independent of the window); a member that stops is then frozen, not raised, and
-    ``stops`` lists every stopped member as (index, seed, time, message): its block's sines
+    ``stops`` lists every stopped member as (index, seed, time, error): its block's sines
     are not its angles."""
     L = len(seeds)
     arr = DeviceArrays(backend)
@@ -343,10 +343,10 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
         bwd(dev["status"], dev["stopped"], dev["phase"], arr.put(W), dev["CK"], dev["Vrec"],
             dev["blogs"], dev["SF"], dev["SR"], arrays, level, dt,
             (ce, first, sample, cfg.reorth, nseg, S, origin), no_events, none)
-        if not keep_going:
-            _raise_first_stop(arr, dev, seeds, dt)
-        consume(arr.get(dev["SF"])[:, :S], arr.get(dev["SR"])[:, :S],
-                _stops(arr, dev, seeds, dt))
+        stops = _stops(arr, dev, seeds, dt)
+        if stops and not keep_going:
+            raise stops[0][3]
+        consume(arr.get(dev["SF"])[:, :S], arr.get(dev["SR"])[:, :S], stops)
         back_steps += nseg * ce - first
         done += B
         if i + 1 < len(plan.lengths):
@@ -365,26 +365,8 @@ def _seeded(cfg, s):
 
 
 def _stops(arr, dev, seeds, dt):
-    """[(index, seed, time, message)] of the members that stopped, in member order."""
-    status = arr.get(dev["status"])
-    bad = np.flatnonzero(status != RUNNING)
-    if not bad.size:
-        return []
-    phase, stopped = arr.get(dev["phase"]), arr.get(dev["stopped"])
-    out = []
-    for l in bad:
-        where = "backward" if phase[l] == BACKWARD else "forward"
-        err = status_error(int(status[l]), int(stopped[l]) * dt,
-                           f"hyperbolicity_ensemble ({where} RK4, member seed={seeds[l]})")
-        out.append((int(l), int(seeds[l]), float(stopped[l] * dt), str(err)))
-    return out
-
-
-def _raise_first_stop(arr, dev, seeds, dt):
-    status = arr.get(dev["status"])
-    bad = np.flatnonzero(status != RUNNING)
-    if bad.size:
-        l = int(bad[0])
-        where = ("backward" if arr.get(dev["phase"])[l] == BACKWARD else "forward")
-        raise status_error(int(status[l]), int(arr.get(dev["stopped"])[l]) * dt,
-                           f"hyperbolicity_ensemble ({where} RK4, member seed={seeds[l]})")
+    """`member_stops` of the angle test, naming the pass (forward, backward) of each."""
+    phase = arr.get(dev["phase"])
+    return member_stops(arr, dev, seeds, dt, lambda l: (
+        f"hyperbolicity_ensemble ({'backward' if phase[l] == BACKWARD else 'forward'} RK4, "
+        f"member seed={seeds[l]})"))

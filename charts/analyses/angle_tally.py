@@ -48,6 +48,11 @@ LADDER = 9
 JACKKNIFE_GROUPS = 32
 
 
+#: the per-member sums of a tally, its fields in the order of `AngleTally`.
+SUMS = ("n", "min", "argmin", "zeros", "below", "law_count", "law_logsum", "ladder_count",
+        "ladder_sum", "ladder_sumsq", "episodes")
+
+
 def _sums(V, L):
     """Zeroed per-member sums of a tally of ``L`` members, for ``V`` variants."""
     return dict(n=np.zeros(L, np.int64), min=np.full((V, L), np.inf),
@@ -127,10 +132,8 @@ class AngleTally(Archivable):
         seeds = np.concatenate([t.seeds for t in tallies])
         if np.unique(seeds).size != seeds.size:
             raise ValueError("a seed appears in more than one tally: its member would count twice")
-        names = ("n", "min", "argmin", "zeros", "below", "law_count", "law_logsum",
-                 "ladder_count", "ladder_sum", "ladder_sumsq", "episodes")
         arrays = {k: np.concatenate([getattr(t, k) for t in tallies], axis=0 if k == "n" else 1)
-                  for k in names}
+                  for k in SUMS}
         params = dict(tallies[0].params, seed=int(seeds[0]),
                       device="+".join(sorted({str(t.params.get("device", "?")) for t in tallies})))
         stopped = [s for t in tallies for s in t.params.get("stopped") or []]
@@ -372,9 +375,7 @@ class AngleTally(Archivable):
 
     @classmethod
     def from_xarray(cls, ds):
-        names = ("n", "min", "argmin", "zeros", "below", "law_count", "law_logsum",
-                 "ladder_count", "ladder_sum", "ladder_sumsq", "episodes")
-        return cls(**{k: ds[k].values for k in names}, params=attributes(ds)["params"],
+        return cls(**{k: ds[k].values for k in SUMS}, params=attributes(ds)["params"],
                    seeds=ds["seed"].values)
 
 

@@ -30,9 +30,9 @@ import numpy as np
 from numba import njit
 
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
-                              load_member, resolve_device, store_member)
+                              load_member, member_stops, resolve_device, store_member)
 from ..solvers.driver import Phases
-from ..solvers.status import NONFINITE, RUNNING, status_error
+from ..solvers.status import NONFINITE, RUNNING
 from ..solvers.tangent import (Records, Rotors, Stack, Stepping, check_memory, memory_budget,
                                stacked_work, tangent_loop)
 from .arguments import progress_reporter
@@ -298,7 +298,10 @@ def clvs_on_device(system, cfg: CLVSettings, variant, seeds, speed, *, backend="
                     dev["speeds"], dt, steps, cfg.tau, no_events, none)
             if saved is None:                       # the flow where the block's samples end
                 saved = {k: arr.copy(dev[k]) for k in ("Zs", "scs", "counters", "logsums")}
-        _raise_first_stop(arr, dev, seeds, dt, variant)
+        stops = member_stops(arr, dev, seeds, dt, lambda l: (
+            f"covariant_ensemble (RK4, {variant}, member seed={seeds[l]})"))
+        if stops:
+            raise stops[0][3]
         Q, R, Y, G = (arr.get(dev[k]) for k in ("Q", "R", "Y", "GS"))
 
         def backward(l, i=i, a=a, B=B):
@@ -326,12 +329,3 @@ def clvs_on_device(system, cfg: CLVSettings, variant, seeds, speed, *, backend="
                              gs[l], states[l], None, float(speeds[l]),
                              system.random_state(seed=s, speed=speed))
             for l, s in enumerate(seeds)]
-
-
-def _raise_first_stop(arr, dev, seeds, dt, variant):
-    status = arr.get(dev["status"])
-    bad = np.flatnonzero(status != RUNNING)
-    if bad.size:
-        l = int(bad[0])
-        raise status_error(int(status[l]), int(arr.get(dev["stopped"])[l]) * dt,
-                           f"covariant_ensemble (RK4, {variant}, member seed={seeds[l]})")

@@ -58,7 +58,7 @@ from .singular_values import sin_to_angle, smallest_singular_values
 from .statistics import small_value_law
 
 __all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
-           "hyperbolicity_ensemble", "hyperbolicity_tally", "tally_on_device", "StoppedMember",
+           "hyperbolicity_ensemble", "angle_params", "hyperbolicity_tally", "tally_on_device", "StoppedMember",
            "angle_statistics",
            "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
@@ -260,17 +260,24 @@ def angle_result(system, cfg: AngleSettings, sf, sr, forward_logs, adjoint_expon
     forward pass's log-norm sums over [0, t_transient + t_final] and the adjoint's rates;
     ``start``: the initial state (theta0, u0), recorded so that a saved result can repeat
     its call."""
-    dt = cfg.dt
-    t = (cfg.n_tr + np.arange(cfg.samples) * cfg.sample) * dt
-    params = dict(**system.describe(), dt=dt, m=cfg.m, n_unstable=cfg.m, t_final=cfg.n_win * dt,
-                  t_transient=cfg.n_tr * dt, sample_every=cfg.sample * dt, speed=speed,
-                  checkpoint_every=cfg.ce * dt, project_every=cfg.project * dt or None,
-                  seed=cfg.seed)
+    t = (cfg.n_tr + np.arange(cfg.samples) * cfg.sample) * cfg.dt
+    params = angle_params(system, cfg, speed)
     if start is not None:
         params.update(theta0=np.asarray(start[0], dtype=float).tolist(),
                       u0=np.asarray(start[1], dtype=float).tolist())
     return AngleResult(t, sin_to_angle(sf), sin_to_angle(sr),
-                       forward_logs / ((cfg.n_tr + cfg.n_win) * dt), adjoint_exponents, params)
+                       forward_logs / ((cfg.n_tr + cfg.n_win) * cfg.dt), adjoint_exponents,
+                       params)
+
+
+def angle_params(system, cfg: AngleSettings, speed) -> dict:
+    """The settings of an angle test with ``cfg`` as its results record them (the system,
+    every duration in time units, the speed, the seed)."""
+    dt = cfg.dt
+    return dict(**system.describe(), dt=dt, m=cfg.m, n_unstable=cfg.m, t_final=cfg.n_win * dt,
+                t_transient=cfg.n_tr * dt, sample_every=cfg.sample * dt, speed=speed,
+                checkpoint_every=cfg.ce * dt, project_every=cfg.project * dt or None,
+                seed=cfg.seed)
 
 
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
@@ -336,10 +343,7 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
                                                        workers, progress)
     workers = workers or os.cpu_count() or 1
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
-    params = dict(**system.describe(), dt=cfg.dt, m=cfg.m, t_final=cfg.n_win * cfg.dt,
-                  t_transient=cfg.n_tr * cfg.dt, sample_every=cfg.sample * cfg.dt,
-                  checkpoint_every=cfg.ce * cfg.dt, project_every=cfg.project * cfg.dt or None,
-                  speed=float(speed), seed=int(seed), device=device)
+    params = dict(angle_params(system, cfg, float(speed)), device=device)
     rep = progress_reporter(progress, n_trajectories * t_final,
                             f"angles N={system.n} tally ({device.upper()})")
     try:
@@ -348,20 +352,19 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
             tally_on_device(system, cfg, tally, speed, workers=workers, budget=budget,
                             update=rep.update)
         else:
-            tally = _tally_on_cpu(system, n_trajectories, t_final, params, speed, seed, workers,
-                                  chunk, checkpoint, rep, kwargs)
+            tally = _tally_on_cpu(system, cfg, n_trajectories, t_final, params, speed, seed,
+                                  workers, chunk, checkpoint, rep, kwargs)
     finally:
         rep.close()
     tally._open.clear()                     # the run is whole: nothing left to carry
     return tally
 
 
-def _tally_on_cpu(system, L, t_final, params, speed, seed, workers, chunk, checkpoint, rep,
-                  kwargs) -> AngleTally:
+def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, checkpoint,
+                  rep, kwargs) -> AngleTally:
     """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
     each chunk's tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
     from ..archive import load
-    cfg = angle_settings(system, t_final, seed=seed, **kwargs)
     if stored_bytes(cfg) > MAX_STORE:
         raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
                          f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "

@@ -101,7 +101,7 @@ def _statistics(args) -> int:
     from ..archive import load
     from ..geometry.system import RotorSystem
     from ..runs.verdict import (family_systems, format_statistics, members_window,
-                                statistics_verdict)
+                                statistics_verdict, tally_report)
     from ..solvers.device import resolve_device
 
     with warnings.catch_warnings():
@@ -140,12 +140,7 @@ def _statistics(args) -> int:
         if slug in done and all(done[slug][k] == v for k, v in wanted.items()):
             rep = done[slug]
         elif path is not None and path.exists() and _same_run(load(path), wanted):
-            tally = load(path)
-            rep = dict(label=label, system=system.describe(), members=tally.n_members,
-                       t_final=tally.params["t_final"], t_transient=tally.params["t_transient"],
-                       sample_every=tally.params["sample_every"], device=tally.params["device"],
-                       seconds=None, file=str(path),
-                       statistics={v: tally.statistics(v) for v in ("full", "restricted")})
+            rep = dict(tally_report(load(path), label), file=str(path))
         else:
             rep = statistics_verdict(system, args.samples, members=args.members,
                                      device=args.device, t_transient=args.t_transient,

@@ -19,7 +19,8 @@ from ..analyses.lyapunov import lyapunov_spectrum
 from ..analyses.surface_integrals import surface_integrals
 
 __all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed",
-           "statistics_verdict", "family_systems", "format_statistics", "members_window"]
+           "statistics_verdict", "tally_report", "family_systems", "format_statistics",
+           "members_window"]
 
 
 def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict:
@@ -158,21 +159,29 @@ def statistics_verdict(system, samples, *, members, device="auto", t_transient=1
     dict: the run (members, window, device, seconds) and `AngleTally.statistics` of both
     variants; the tally saved as ``out`` (a path) when given; ``checkpoint``: the path of
     the partial tally of a run on the CPU (`hyperbolicity_tally`)."""
-    from ..analyses.angle_tally import VARIANTS
     from ..analyses.hyperbolicity import hyperbolicity_tally
     t_final = members_window(samples, members, sample_every)
     t0 = time.perf_counter()
     tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,
                                 t_transient=t_transient, sample_every=sample_every,
                                 progress=progress, checkpoint=checkpoint)
-    seconds = time.perf_counter() - t0
-    rep = dict(label=label, system=system.describe(), members=int(members), t_final=t_final,
-               t_transient=float(t_transient), sample_every=float(sample_every),
-               device=tally.params["device"], seconds=seconds,
-               statistics={v: tally.statistics(v) for v in VARIANTS})
+    rep = tally_report(tally, label, time.perf_counter() - t0)
     if out is not None:
         rep["file"] = str(tally.save(out))
     return rep
+
+
+def tally_report(tally, label="", seconds=None) -> dict:
+    """The report of an `AngleTally` as `statistics_verdict` writes it: the run (system,
+    members, window, transient, sample step, device, ``seconds`` or None for a tally read
+    from a file) and `AngleTally.statistics` of both variants."""
+    from ..analyses.angle_tally import VARIANTS
+    p = tally.params
+    system = {k: p[k] for k in ("n", "masses", "weights", "level") if k in p}
+    return dict(label=label, system=system, members=tally.n_members, t_final=p["t_final"],
+                t_transient=p["t_transient"], sample_every=p["sample_every"],
+                device=p["device"], seconds=seconds,
+                statistics={v: tally.statistics(v) for v in VARIANTS})
 
 
 def family_systems(name) -> list:

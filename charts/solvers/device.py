@@ -31,7 +31,7 @@ from .driver import Phases
 from .tangent import Records, Rotors, Stack, Stepping, stacked_loop, tangent_vectors_rate
 
 __all__ = ["DeviceFlows", "DeviceUnavailable", "cuda_module", "cuda_available",
-           "member_advance", "device_bytes", "DeviceArrays", "flow_states", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
+           "member_advance", "member_stops", "device_bytes", "DeviceArrays", "flow_states", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
            "THREADS_PER_BLOCK"]
 
 #: Threads per CUDA block (one trajectory each); their local memory, not registers, bounds
@@ -204,6 +204,20 @@ def kernel_function(n, k):
                         cuda.local.array(n, float64), cuda.local.array(n, float64)))
 
     return kernel
+
+
+def member_stops(arr, dev, seeds, dt, where):
+    """[(member index, seed, time, error)] of the members of a device route that stopped, in
+    member order, from its ``status`` and ``stopped`` arrays (``dev``, where ``arr`` keeps
+    them): each error the one the CPU route raises, ``where(l)`` naming the route and member
+    l."""
+    status = arr.get(dev["status"])
+    bad = np.flatnonzero(status != RUNNING)
+    if not bad.size:
+        return []
+    stopped = arr.get(dev["stopped"])
+    return [(int(l), int(seeds[l]), float(stopped[l] * dt),
+             status_error(int(status[l]), int(stopped[l]) * dt, where(l))) for l in bad]
 
 
 class DeviceArrays:
