@@ -58,7 +58,8 @@ def test_ensemble_members_equal_lyapunov_spectrum(name, members):
     `MIN_LANES` members) and one after the other (fewer)."""
     system = SYSTEMS[name]
     kw = dict(t_transient=2.0, n_batches=4, record_every=2.0)
-    ens = lyapunov_ensemble(system, members, 8.0, seed=7, workers=1, speed=1.3, **kw)
+    ens = lyapunov_ensemble(system, members, 8.0, seed=7, workers=1, speed=1.3, lanes=True,
+                            **kw)
     assert len(ens.members) == members
     for i, m in enumerate(ens.members):
         th, u = system.random_state(seed=7 + i, speed=1.3)
@@ -123,7 +124,7 @@ def test_ensemble_reports_the_member_that_stops(members):
     system = Aimed(4)
     with pytest.raises(charts.SingularPointError, match=r"seed=11\).*t = 0\.9899999"):
         lyapunov_ensemble(system, members, 4.0, seed=10, workers=1, t_transient=0.0,
-                          n_batches=2)
+                          n_batches=2, lanes=True)
     with pytest.raises(charts.SingularPointError, match=r"t = 0\.9899999"):
         lyapunov_spectrum(system, *THROUGH, 4.0, t_transient=0.0, n_batches=2)
 
@@ -143,3 +144,70 @@ def test_lanes_refuse_mixed_settings():
         LaneFlows([a, b])
     with pytest.raises(ValueError, match="at least one"):
         LaneFlows([])
+
+
+def test_lanes_pay_where_compiled_or_where_the_run_pays_for_compiling():
+    """`lanes_pay`: never below MIN_LANES; with the lane kernel compiled for (N, k), always;
+    else only where the time the lanes save (SAVED_SECONDS per lane, step and entry of Z)
+    exceeds a compilation (COMPILE_SECONDS)."""
+    from charts.solvers import lanes as L
+
+    entries = (1 + 3) * 2 * 5                                  # N = 5, k = 3
+    even = L.COMPILE_SECONDS / (16 * entries * L.SAVED_SECONDS)  # steps where saving = compiling
+    compiled = {"yes": False}
+    real = L.lanes_compiled
+    try:
+        L.lanes_compiled = lambda n, k: compiled["yes"]
+        assert not L.lanes_pay(5, 3, 16, int(even * 0.9))
+        assert L.lanes_pay(5, 3, 16, int(even * 1.1) + 1)
+        assert not L.lanes_pay(5, 3, MIN_LANES - 1, 10**12)
+        compiled["yes"] = True
+        assert L.lanes_pay(5, 3, MIN_LANES, 1)
+        assert not L.lanes_pay(5, 3, MIN_LANES - 1, 1)
+    finally:
+        L.lanes_compiled = real
+
+
+def test_lanes_compiled_reads_this_process_and_the_disk_cache():
+    """After a lane kernel for (N = 3, k = 1) ran here, `lanes_compiled` says so, here and in
+    a new process that shares numba's disk cache (nothing in its memory); not for a (N, k)
+    never compiled."""
+    import subprocess
+    import sys
+
+    from charts.solvers.lanes import lanes_compiled
+
+    system = RotorSystem(3)
+    LaneFlows(_flows(system, [system.random_state(seed=s) for s in range(3)], 1)).advance(2)
+    assert lanes_compiled(3, 1) and not lanes_compiled(3, 29)
+    out = subprocess.run([sys.executable, "-c", "from charts.solvers.lanes import lanes_compiled;"
+                          "print(lanes_compiled(3, 1), lanes_compiled(3, 29))"],
+                         capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["True", "False"]
+
+
+def test_ensemble_takes_the_lanes_where_they_pay(monkeypatch):
+    """`lyapunov_ensemble` with lanes=None asks `lanes_pay` (the blocks' size and the steps of
+    transient and averaging) and takes the lanes or the one-trajectory kernel accordingly;
+    lanes=True / False decide for it; both routes give the same bits; another value is
+    refused."""
+    from charts.analyses import lyapunov_members as M
+
+    system = RotorSystem(3)
+    asked, built = [], []
+    monkeypatch.setattr(M, "lanes_pay", lambda n, k, lanes, steps: asked.append(
+        (n, k, lanes, steps)) or pay)
+    monkeypatch.setattr(M, "LaneFlows", lambda flows: built.append(1) or LaneFlows(flows))
+    kw = dict(seed=3, workers=1, t_transient=1.0, n_batches=2)
+    pay = False
+    one = lyapunov_ensemble(system, 4, 2.0, **kw)
+    assert asked == [(3, 1, 4, 300)] and built == []
+    pay = True
+    both = lyapunov_ensemble(system, 4, 2.0, **kw)
+    assert built == [1]
+    for a, b in zip(one.members, both.members):
+        assert np.array_equal(a.exponents, b.exponents) and np.array_equal(a.batches, b.batches)
+    lyapunov_ensemble(system, 4, 2.0, lanes=False, **kw)
+    assert built == [1] and len(asked) == 2
+    with pytest.raises(ValueError, match="lanes must be None"):
+        lyapunov_ensemble(system, 4, 2.0, lanes="yes", **kw)

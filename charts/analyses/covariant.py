@@ -143,8 +143,10 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
             if not isfinite(logs[r]):
                 return NONFINITE
             gs[j, r] = logs[r] / tau
-        bq[j - a] = Z[1:]
-        by[j - a] = Z[0]
+        for i in range(Z.shape[1]):     # loops, not bq[j - a] = Z[1:]: an array assignment
+            by[j - a, i] = Z[0, i]      # compiles numba's shape-mismatch message (3 s)
+            for r in range(D):
+                bq[j - a, r, i] = Z[1 + r, i]
         j += 1
     return RUNNING
 
@@ -157,7 +159,9 @@ def backward_coefficients(R, C, Cs, lost):
     B, D, _ = R.shape
     x = np.empty(D)
     for b in range(B - 1, -1, -1):
-        Cs[b] = C
+        for r in range(D):              # (a loop: see `_forward_kernel`)
+            for i in range(D):
+                Cs[b, r, i] = C[r, i]
         for i in range(D):
             for r in range(D - 1, -1, -1):
                 a = C[r, i]

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..geometry.energy_shares import SHARE_BINS
 from ..solvers.device import DeviceFlows, cuda_module, device_bytes, flow_states, resolve_device
-from ..solvers.lanes import LaneFlows
+from ..solvers.lanes import MIN_LANES, LaneFlows, lanes_pay
 from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
@@ -26,7 +26,7 @@ __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_sta
 
 
 def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                      progress=False, device="cpu", **kwargs) -> EnsembleResult:
+                      progress=False, device="cpu", lanes=None, **kwargs) -> EnsembleResult:
     """`lyapunov_spectrum` from ``n_trajectories`` independent random initial states of speed
     ``speed`` (seeds seed, seed+1, …; also the seeds of their tangent vectors; ``kwargs``:
     the settings of `lyapunov_spectrum`).
@@ -35,7 +35,11 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     (``charts.solvers.lanes``), in blocks of up to `LANE_BLOCK`, the blocks in ``workers``
     parallel processes (default: all cores; 1: in this process).  Each member is the
     `LyapunovResult` of `lyapunov_spectrum` on its state, bit for bit
-    (tests/test_lanes.py).  A member that stops (e.g. at a singular point) raises the error
+    (tests/test_lanes.py).  ``lanes``: None (default) takes the lanes where they pay
+    (``charts.solvers.lanes.lanes_pay``: their kernel is compiled for this N and k, or the run
+    is long enough to pay for the 20 s of compiling it), True always (from `MIN_LANES`
+    members), False never: the members then run one after the other in each block, with the
+    same bits.  A member that stops (e.g. at a singular point) raises the error
     `lyapunov_spectrum` raises for it, naming its seed.  Returns an `EnsembleResult`:
     ``members``, and ``exponents`` / ``stderr``, the mean over the trajectories and its
     standard error.
@@ -52,6 +56,8 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     device = resolve_device(device)
+    if lanes not in (None, True, False):
+        raise ValueError(f"lanes must be None (where they pay), True or False, got {lanes!r}")
     if transient_rule(kwargs.get("t_transient")) == "auto":   # one transient for all members:
         pilot = {k: kwargs[k] for k in ("dt", "n_exponents", "inner", "space") if k in kwargs}
         tr = auto_transient(system, *system.random_state(seed=seed, speed=speed), seed=seed,
@@ -76,15 +82,18 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
     jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
     desc = f"Lyapunov N={system.n} ensemble"
+    if lanes is None:
+        lanes = lanes_pay(system.n, cfg.k, max(np.diff(cut)), cfg.transient + cfg.total)
+    run = partial(lyapunov_lanes, lanes=lanes)
     if n_blocks == 1 or workers == 1:        # in this process: progress chunk by chunk
         rep = progress_reporter(progress, n_trajectories * t_final, desc)
-        members = [m for job in jobs for m in lyapunov_lanes(job, rep.update)]
+        members = [m for job in jobs for m in run(job, rep.update)]
         rep.close()
     else:
-        # the first block's route (lanes or one by one) over two re-orthonormalisations
+        # the blocks' route (lanes or one by one) over two re-orthonormalisations
         short = replace(cfg, transient=0, total=2 * cfg.reorth, n_batches=2, record=cfg.reorth)
-        members = map_jobs(lyapunov_lanes, jobs, np.diff(cut), workers, t_final, progress, desc,
-                           prime=(lyapunov_lanes, (system, short, jobs[0][2], speed)),
+        members = map_jobs(run, jobs, np.diff(cut), workers, t_final, progress, desc,
+                           prime=(run, (system, short, jobs[0][2], speed)),
                            name="lyapunov_ensemble", n=system.n)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
@@ -122,23 +131,21 @@ def plan_memory(system, cfg, members, device) -> None:
 
 #: Most trajectories one lane kernel advances together (larger ensembles: several blocks).
 LANE_BLOCK = 64
-#: Fewest trajectories worth one lane kernel: below, the members run one after the other in
-#: the one-trajectory kernel, which is as fast there (the lanes are padded to blocks of 8;
-#: N = 5, paired: 0.98x the one-trajectory kernel's pace at 2 lanes, 1.44x at 3, 1.83x at
-#: 4, 3.6x at 8; docs/performance.md, "Ensembles in vector lanes").
-MIN_LANES = 3
 
 
-def lyapunov_lanes(job, update=None):
+def lyapunov_lanes(job, update=None, lanes=None):
     """[`LyapunovResult`] of the seeds of ``job`` = (system, settings, seeds, speed), from
-    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows` (fewer
-    than `MIN_LANES`: one after the other); ``update(t)`` (optional) gets the averaging time
-    done by all members after each chunk."""
+    ``system.random_state(seed=s, speed=speed)``, advanced together by `LaneFlows` where
+    ``lanes`` (None: where they pay, ``charts.solvers.lanes.lanes_pay``; never for fewer than
+    `MIN_LANES`), else one after the other (the same bits); ``update(t)`` (optional) gets the
+    averaging time done by all members after each chunk."""
     system, cfg, seeds, speed = job
+    if lanes is None:
+        lanes = lanes_pay(system.n, cfg.k, len(seeds), cfg.transient + cfg.total)
     cfgs = [replace(cfg, seed=s) for s in seeds]
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
              for s, c in zip(seeds, cfgs)]
-    if len(seeds) < MIN_LANES:
+    if not lanes or len(seeds) < MIN_LANES:
         logs = []
         starts = [f.y.copy() for f in flows]
         for f, c, s in zip(flows, cfgs, seeds):

@@ -307,7 +307,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="rotor counts (default 3 4 5 6)")
     p.add_argument("--analysis", nargs="+", metavar="NAME",
                    help="lyapunov, lanes, integrate, integrate_ambient, curvature, angles, "
-                   "clv (default all)")
+                   "clv (default all but lanes: an ensemble takes the lanes only where they "
+                   "are compiled or where it runs long enough to pay for compiling them)")
     p.add_argument("--workers", type=int, default=None, metavar="W",
                    help="parallel processes (default: one per core)")
     p.add_argument("--quiet", "-q", action="store_true", help="print nothing")

@@ -59,8 +59,8 @@ PRESETS = {
 
 # ------------------------------------------------------------------------ worker tasks
 def _task_lyapunov(n, seeds, t, batches):
-    """The members ``seeds`` of N in the lanes of one kernel (`lyapunov_lanes`: one by one
-    below ``MIN_LANES``; each equal to ``lyapunov_spectrum`` from ``random_state(seed)``),
+    """The members ``seeds`` of N by `lyapunov_lanes` (in the lanes of one kernel where they
+    pay, else one by one; each equal to ``lyapunov_spectrum`` from ``random_state(seed)``),
     stacked along a first member axis."""
     from ..analyses.lyapunov import lyapunov_settings
     from ..analyses.lyapunov_members import lyapunov_lanes
@@ -169,8 +169,8 @@ def _compile_first(pool, quiet):
     with the cache filled, the workers load them here (what the tasks would do anyway)."""
     from ..compilation import announce
     from .warmup import warmup
-    spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "lanes", "angles", "clv",
-                                                  "curvature"], pool=pool))
+    spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "angles", "clv", "curvature"],
+                                             pool=pool))
     if not quiet:
         announce("reproduce", spent, where=" (in its workers, before the tasks)")
 

@@ -28,7 +28,7 @@ from ..compilation import compile_timer
 from ..geometry.system import RotorSystem
 from ..solvers.integrate import integrate
 
-__all__ = ["TASKS", "DEFAULT_N", "warmup", "stages"]
+__all__ = ["TASKS", "DEFAULT_N", "DEFAULT_ANALYSES", "warmup", "stages"]
 
 #: The rotor counts warmed up by default: those whose chart kernels are shipped.
 DEFAULT_N = (3, 4, 5, 6)
@@ -42,8 +42,13 @@ TASKS = {
     "angles": lambda S, th, u: hyperbolicity_angles(S, th, u, 0.2, t_transient=0.0),
     "clv": lambda S, th, u: covariant_lyapunov_vectors(S, th, u, 0.4, t_transient=0.1),
     "lanes": lambda S, th, u: lyapunov_ensemble(S, MIN_LANES, 0.2, workers=1, t_transient=0.0,
-                                                n_batches=2),
+                                                n_batches=2, lanes=True),
 }
+#: What `warmup` compiles unless asked otherwise: every analysis's first call.  Not the
+#: lanes of the ensembles (``"lanes"``: 20 s for each N): an ensemble takes them only where
+#: they are compiled or where it runs long enough to pay for compiling them
+#: (``charts.solvers.lanes.lanes_pay``), so no first call waits for them.
+DEFAULT_ANALYSES = tuple(name for name in TASKS if name != "lanes")
 
 #: The analyses whose kernels are compiled per N (chart kernels); the others' are N-generic.
 PER_N = ("integrate", "curvature")
@@ -81,13 +86,13 @@ def _call(task):
 
 
 def warmup(ns=DEFAULT_N, analyses=None, report=None, workers=None, pool=None) -> list[dict]:
-    """Call each analysis in ``analyses`` (names of `TASKS`; default all) once for every N in
+    """Call each analysis in ``analyses`` (names of `TASKS`; default `DEFAULT_ANALYSES`) once for every N in
     ``ns``, compiling its kernels (or loading them from the cache), in ``workers`` processes
     (default: one per core; 1: in this process) or in the executor ``pool``, stage by stage
     (`stages`).  Returns one row per call, in the order of ``ns`` then ``analyses``:
     {analysis, n, compile, cpu (s, in the process that made the call)}; ``report(row)`` is
     called as each finishes."""
-    names = list(TASKS) if analyses is None else list(analyses)
+    names = list(DEFAULT_ANALYSES) if analyses is None else list(analyses)
     unknown = [a for a in names if a not in TASKS]
     if unknown:
         raise ValueError(f"analyses: unknown {unknown}; choose from {list(TASKS)}")

@@ -44,7 +44,8 @@ from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_statu
 from .driver import Phases, borrowed, keep_alive, no_record, phased_loop
 from .tangent import orthonormalize_lanes, shift_sincos_lanes, substeps
 
-__all__ = ["lanes_kernel", "LaneFlows"]
+__all__ = ["lanes_kernel", "LaneFlows", "MIN_LANES", "lanes_compiled", "lanes_pay",
+           "COMPILE_SECONDS", "SAVED_SECONDS"]
 
 _CAP = CAP_FRACTION["rk4"]
 
@@ -371,6 +372,53 @@ def _same_system(a, b) -> bool:
 
 _NO_EVENTS = np.empty(0, dtype=np.int64)
 _NO_LOGS = np.empty((0, 0, 0))
+
+
+#: Fewest trajectories worth one lane kernel: below, the members run one after the other in
+#: the one-trajectory kernel, which is as fast there (the lanes are padded to blocks of 8;
+#: N = 5, paired: 0.98x the one-trajectory kernel's pace at 2 lanes, 1.44x at 3, 1.83x at
+#: 4, 3.6x at 8; docs/performance.md, "Ensembles in vector lanes").
+MIN_LANES = 3
+#: CPU seconds `_lanes_run` takes to compile for a new (N, k): 18–23 s at N = 3, 4, 5 with
+#: k = N − 2 on the 2-core VM (docs/performance.md, "First use").
+COMPILE_SECONDS = 20.0
+#: CPU seconds the lanes save against the one-trajectory kernel per lane, step and entry
+#: of the stacked state Z = [y; X]: N = 5, k = 3 (40 entries) ran 89,822 time units per CPU
+#: second and lane against 27,191 alone (docs/performance.md), 9.2 ns per entry and step
+#: alone, of which the lanes save 70 %.
+SAVED_SECONDS = 6e-9
+
+
+def lanes_compiled(n, k) -> bool:
+    """Whether `_lanes_run` for N = ``n`` rotors and ``k`` vectors is compiled in this process
+    or in numba's disk cache (loaded, then, in well under a second); False where the cache
+    cannot be read."""
+    def ours(sig):
+        return len(sig) > 2 and len(sig[-2]) == n and len(sig[-1]) == k
+
+    if any(ours(sig) for sig in _lanes_run.overloads):
+        return True
+    try:
+        cache = _lanes_run._cache
+        codegen = _lanes_run.targetctx.codegen()
+        index = cache._cache_file._load_index()
+        return any(ours(key[0]) and key == cache._index_key(key[0], codegen) for key in index)
+    except Exception:                   # noqa: BLE001 - no readable cache: not compiled
+        return False
+
+
+def lanes_pay(n, k, lanes, steps) -> bool:
+    """Whether ``lanes`` trajectories of N = ``n`` rotors with ``k`` tangent vectors, each
+    advanced ``steps`` steps, should run in the lanes of one kernel (`LaneFlows`) rather than
+    one after the other in the one-trajectory kernel (the same bits either way): at least
+    `MIN_LANES` of them, and the lane kernel for (N, k) compiled already (`lanes_compiled`)
+    or the time the lanes save (`SAVED_SECONDS`) larger than its compilation
+    (`COMPILE_SECONDS`).  A short ensemble on an empty cache then costs seconds, not the
+    lanes' 20 s of compiling."""
+    if lanes < MIN_LANES:
+        return False
+    saved = lanes * steps * (1 + k) * 2 * n * SAVED_SECONDS
+    return saved > COMPILE_SECONDS or lanes_compiled(n, k)
 
 
 class LaneFlows:

@@ -49,7 +49,7 @@ def _lanes(n, members, t_final):
     """(CPU s, exponents (members, k)) of the ensemble in lanes, one process."""
     S = RotorSystem(n)
     c0 = time.process_time()
-    ens = lyapunov_ensemble(S, members, t_final, workers=1, **_settings(n, t_final))
+    ens = lyapunov_ensemble(S, members, t_final, workers=1, lanes=True, **_settings(n, t_final))
     return time.process_time() - c0, np.array([m.exponents for m in ens.members])
 
 

@@ -94,7 +94,7 @@ def cpu_rate(n, k, members, t_final, workers):
     """(wall s, time units/s) of ``lyapunov_ensemble(device="cpu")`` on ``workers`` cores,
     warm (a first call compiles)."""
     S = RotorSystem(n)
-    kw = dict(n_exponents=k, t_transient=0.0, n_batches=2)
+    kw = dict(n_exponents=k, t_transient=0.0, n_batches=2, lanes=True)
     lyapunov_ensemble(S, members, 1.0, workers=workers, **kw)   # compiles the lanes
     t0 = time.perf_counter()
     lyapunov_ensemble(S, members, t_final, workers=workers, **kw)
