@@ -91,6 +91,7 @@ def test_warmup_stages_compile_each_shared_kernel_before_its_users():
     for user in ("angles", "curvature", "clv", "lanes"):
         assert where[("lyapunov", 3)] < where[(user, 3)]
     assert where[("angles", 3)] < where[("clv", 3)]
+    assert max(where[("lyapunov", 3)], where[("integrate", 3)]) < where[("integrate_ambient", 3)]
     for name in warm.PER_N:
         assert where[(name, 4)] == where[(name, 3)] + 1
     assert where[("lyapunov", 4)] == where[("angles", 4)] == len(plan) - 1
