@@ -13,6 +13,7 @@ import pytest
 from charts import RotorSystem
 from charts.analyses.lyapunov_members import LANE_BLOCK, MIN_LANES
 from charts.runs.runner import RunError, run_scene
+from charts.runs.plan import plan_scene
 from charts.runs.scene import parse_scene
 from charts.runs.seed_lanes import run_seed_lanes, seed_family
 from charts.runs.sweep.execute import lane_blocks
@@ -133,13 +134,26 @@ def test_lane_blocks(members, workers, sizes):
     assert [g for b in blocks for g in b] == groups          # every group once, in order
 
 
-def test_sweep_worker_rows_are_the_points_rows(tmp_path):
-    """`evaluate_points` on `MIN_LANES` seeds (in lanes) gives each point the statistics
-    `evaluate_point` gives it alone."""
+@pytest.mark.parametrize("pay", [True, False])
+def test_sweep_worker_rows_are_the_points_rows(tmp_path, monkeypatch, pay):
+    """`evaluate_points` on `MIN_LANES` seeds gives each point the statistics `evaluate_point`
+    gives it alone, in lanes where they pay (``lanes_pay``, asked with N, k, the seeds and
+    the steps of transient and run) and each alone where they do not."""
+    from charts.runs.sweep import worker
+    from charts.solvers import lanes
+
+    asked, together_runs = [], []
+    monkeypatch.setattr(lanes, "lanes_pay", lambda *a: asked.append(a) or pay)
+    monkeypatch.setattr(worker, "run_seed_lanes",
+                        lambda *a: together_runs.append(1) or run_seed_lanes(*a))
     eff = {"lyapunov": {"n_batches": 2}, "curvature": {"route": "numerical",
                                                        "sample_every": 0.5}}
     raws = [raw(s, effects=eff) for s in range(MIN_LANES)]
     together = evaluate_points(raws)
+    sc = parse_scene(raws[0], source="x")
+    steps = round((sc.run["t_final"] + (sc.run["t_transient"] or 0.0)) / sc.integrator["dt"])
+    assert asked == [(sc.system["n"], plan_scene(sc).tangent_vectors, MIN_LANES, steps)]
+    assert together_runs == ([1] if pay else [])
     for r, got in zip(raws, together):
         alone = evaluate_point(r)
         assert got["status"] == alone["status"] == "complete"

@@ -86,7 +86,8 @@ def evaluate_points(raws: list, keep=None, device="cpu") -> list:
     """`evaluate_point` of each of ``raws`` (in the folders ``keep``, one per point, if
     given); points of one seed family
     (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
-    one kernel (the same rows, bit for bit; each point's wall time is the block's share), or
+    one kernel where the lanes pay (`_lanes_pay`; the same rows, bit for bit; each point's
+    wall time is the block's share), or
     with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``; their
     angle tests too, `lane_angles`).
 
@@ -113,7 +114,8 @@ def _own_scheduler():
 def _evaluate_points(raws: list, keep=None, device="cpu") -> list:
     scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
     families = {seed_family(sc) for sc in scenes}
-    if len(scenes) < MIN_LANES or None in families or len(families) != 1:
+    if (len(scenes) < MIN_LANES or None in families or len(families) != 1
+            or not _lanes_pay(scenes, device)):
         keep = keep if keep is not None else [None] * len(raws)
         return [evaluate_point(raw, k) for raw, k in zip(raws, keep)]
     t0 = time.perf_counter()
@@ -122,6 +124,21 @@ def _evaluate_points(raws: list, keep=None, device="cpu") -> list:
         outcomes = run_seed_lanes(scenes, dirs, lane_flows(device), lane_angles(device))
         share = (time.perf_counter() - t0) / len(scenes)
         return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
+
+
+def _lanes_pay(scenes, device) -> bool:
+    """Whether the seeds' main passes run together: on a GPU always, on the CPU where the
+    lanes pay (``charts.solvers.lanes.lanes_pay``: compiled for this N and k, or long enough
+    to pay for compiling them), else each point alone (the same rows)."""
+    from ...solvers.device import resolve_device
+    from ...solvers.lanes import lanes_pay
+    from ..plan import plan_scene, ticks
+
+    if resolve_device(device) == "cuda":
+        return True
+    sc = scenes[0]
+    steps = ticks(sc.run["t_final"] + (sc.run.get("t_transient") or 0.0), sc.integrator["dt"])
+    return lanes_pay(sc.system["n"], plan_scene(sc).tangent_vectors, len(scenes), steps)
 
 
 def _point_outcome(outcome, folder: Path, wall_s: float) -> dict:
