@@ -19,6 +19,15 @@ def test_warmup_calls_each_analysis_once_per_n_and_reports_compile_time():
     assert again[0]["compile"] == 0.0
 
 
+def test_warmup_leaves_the_lanes_to_the_runs_that_pay_for_them():
+    """By default every analysis's first call, not the ensembles' lanes (compiled per N and
+    k where a run pays for them: ``charts.solvers.lanes.lanes_pay``), which stay a task."""
+    assert set(warm.DEFAULT_ANALYSES) == set(warm.TASKS) - {"lanes"}
+    seen = []
+    warm.warmup((3,), workers=1, report=lambda row: seen.append(row["analysis"]))
+    assert sorted(seen) == sorted(warm.DEFAULT_ANALYSES)
+
+
 def test_warmup_refuses_unknown_analyses():
     with pytest.raises(ValueError, match="unknown \\['lyapunv'\\]; choose from"):
         warm.warmup((3,), ["lyapunv"])

@@ -114,7 +114,7 @@ def test_device_members_equal_the_ensemble_members():
     """`lyapunov_device` (the GPU driver, its states built in two processes) on the CPU twin
     gives `lyapunov_ensemble`'s members: exponents, errors, history and settings."""
     kw = dict(t_transient=2.0, n_batches=4, record_every=2.0)
-    ens = lyapunov_ensemble(SYSTEM, 4, 8.0, seed=7, workers=1, speed=1.3, **kw)
+    ens = lyapunov_ensemble(SYSTEM, 4, 8.0, seed=7, workers=1, speed=1.3, lanes=True, **kw)
     cfg = lyapunov_settings(SYSTEM, 8.0, seed=7, **kw)
     got = lyapunov_device((SYSTEM, cfg, [7, 8, 9, 10], 1.3), backend="cpu", workers=2)
     for m, r in zip(ens.members, got):

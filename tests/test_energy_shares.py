@@ -82,7 +82,7 @@ def test_ensemble_fractions_and_files_keep_the_counts(tmp_path):
     a saved ensemble reads back with the same counts."""
     import charts
     pytest.importorskip("xarray")
-    ens = lyapunov_ensemble(SYSTEM, 3, 10.0, seed=2, workers=1)
+    ens = lyapunov_ensemble(SYSTEM, 3, 10.0, seed=2, workers=1, lanes=True)
     fr = ens.localised_fractions(0.3)
     assert fr.shape == (3,)
     assert np.array_equal(fr, [m.localised_fraction(0.3) for m in ens.members])

@@ -178,9 +178,31 @@ def test_chart_outside_its_domain_is_a_clear_error():
     with pytest.raises(ValueError, match="outside the domain of chart 0"):
         s.metric(on_edge, chart=0)
     assert s.metric(on_edge).shape == (3, 3)                     # the best chart works
+    # within ~1e-8 of the edge |sin θ₀| passes the tolerance but the chart's divisor
+    # D = a₀² − (Σ a cos q − c)² rounds to 0: refused as outside the chart (not inf, nan)
+    near = s.project_point(np.array([1e-9, 1.2, 2.0, 1.0]))
+    assert 1e-10 < abs(np.sin(near[0])) < 1e-8
+    for f in (s.metric, s.christoffel, s.riemann):
+        with pytest.raises(ValueError, match="outside the domain of chart 0"):
+            f(near, chart=0)
+    assert np.isfinite(s.riemann(near)).all()
     # round trip through every chart whose domain holds the point
     for k in range(4):
         if abs(np.sin(theta[k])) > 0.05:
             q, v = s.to_chart(theta, u, k)
             th2, u2 = s.from_chart(q, v, k, int(np.sign(np.sin(theta[k]))))
             assert _angle_gap(th2, theta) < 1e-12 and np.abs(u2 - u).max() < 1e-12
+
+
+def test_exact_curvature_at_a_singular_point_is_a_clear_error():
+    """Route (b) at a cone point (every sin θ = 0 on the critical level of the family
+    (1, 2, 1, 2)): no chart's Riemann tensor is defined there, and the route says so instead
+    of returning nan."""
+    import warnings
+
+    from charts.analyses.curvature import exact_curvature_matrix
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")                  # the critical level's own warning
+        s = RotorSystem(4, weights=[1.0, 2.0, 1.0, 2.0])
+    with pytest.raises(ValueError, match=r"theta\[0\] = .* singular point of the manifold"):
+        exact_curvature_matrix(s, np.array([0.0, 0.0, np.pi, np.pi]), np.eye(4)[:3])

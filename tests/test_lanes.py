@@ -146,26 +146,29 @@ def test_lanes_refuse_mixed_settings():
         LaneFlows([])
 
 
-def test_lanes_pay_where_compiled_or_where_the_run_pays_for_compiling():
-    """`lanes_pay`: never below MIN_LANES; with the lane kernel compiled for (N, k), always;
-    else only where the time the lanes save (SAVED_SECONDS per lane, step and entry of Z)
-    exceeds a compilation (COMPILE_SECONDS)."""
+def test_lanes_pay_where_compiled_or_where_the_run_pays_for_compiling(monkeypatch):
+    """`lanes_pay`: never below MIN_LANES to a kernel; with the lane kernel compiled for
+    (N, k), always; else only where the time the lanes save (the one-trajectory kernel's
+    time per entry and step, less the lanes' pace at that count) exceeds a compilation, with
+    every run that shares the compilation counted."""
     from charts.solvers import lanes as L
 
-    entries = (1 + 3) * 2 * 5                                  # N = 5, k = 3
-    even = L.COMPILE_SECONDS / (16 * entries * L.SAVED_SECONDS)  # steps where saving = compiling
+    entries = (1 + 3) * 2 * 5                                    # N = 5, k = 3
+    alone = 16 * entries * L.ALONE_SECONDS                       # per step, 16 alone
+    assert L.lanes_saving(5, 3, 16, 1) == pytest.approx(alone * (1 - 1 / 3.3), rel=1e-12)
+    assert L.lanes_saving(5, 3, 3, 1, runs=16) == pytest.approx(alone * (1 - 1 / 1.44))
+    assert L.lanes_saving(5, 3, 6, 1, runs=16) == pytest.approx(alone * (1 - 1 / 1.83))
+    assert L.lanes_saving(5, 3, MIN_LANES - 1, 10**9) == 0.0
+    even = L.COMPILE_SECONDS / L.lanes_saving(5, 3, 16, 1)       # steps: saving = compiling
     compiled = {"yes": False}
-    real = L.lanes_compiled
-    try:
-        L.lanes_compiled = lambda n, k: compiled["yes"]
-        assert not L.lanes_pay(5, 3, 16, int(even * 0.9))
-        assert L.lanes_pay(5, 3, 16, int(even * 1.1) + 1)
-        assert not L.lanes_pay(5, 3, MIN_LANES - 1, 10**12)
-        compiled["yes"] = True
-        assert L.lanes_pay(5, 3, MIN_LANES, 1)
-        assert not L.lanes_pay(5, 3, MIN_LANES - 1, 1)
-    finally:
-        L.lanes_compiled = real
+    monkeypatch.setattr(L, "lanes_compiled", lambda n, k: compiled["yes"])
+    assert not L.lanes_pay(5, 3, 16, int(even * 0.99))
+    assert L.lanes_pay(5, 3, 16, int(even * 1.01) + 1)
+    assert L.lanes_pay(5, 3, 16, int(even * 0.26) + 1, runs=64)  # four blocks, one compilation
+    assert not L.lanes_pay(5, 3, MIN_LANES - 1, 10**12)
+    compiled["yes"] = True
+    assert L.lanes_pay(5, 3, MIN_LANES, 1)
+    assert not L.lanes_pay(5, 3, MIN_LANES - 1, 1)
 
 
 def test_lanes_compiled_reads_this_process_and_the_disk_cache():
@@ -195,13 +198,13 @@ def test_ensemble_takes_the_lanes_where_they_pay(monkeypatch):
 
     system = RotorSystem(3)
     asked, built = [], []
-    monkeypatch.setattr(M, "lanes_pay", lambda n, k, lanes, steps: asked.append(
-        (n, k, lanes, steps)) or pay)
+    monkeypatch.setattr(M, "lanes_pay", lambda n, k, lanes, steps, runs=None: asked.append(
+        (n, k, lanes, steps, runs)) or pay)
     monkeypatch.setattr(M, "LaneFlows", lambda flows: built.append(1) or LaneFlows(flows))
     kw = dict(seed=3, workers=1, t_transient=1.0, n_batches=2)
     pay = False
     one = lyapunov_ensemble(system, 4, 2.0, **kw)
-    assert asked == [(3, 1, 4, 300)] and built == []
+    assert asked == [(3, 1, 4, 300, 4)] and built == []
     pay = True
     both = lyapunov_ensemble(system, 4, 2.0, **kw)
     assert built == [1]
@@ -209,5 +212,6 @@ def test_ensemble_takes_the_lanes_where_they_pay(monkeypatch):
         assert np.array_equal(a.exponents, b.exponents) and np.array_equal(a.batches, b.batches)
     lyapunov_ensemble(system, 4, 2.0, lanes=False, **kw)
     assert built == [1] and len(asked) == 2
-    with pytest.raises(ValueError, match="lanes must be None"):
-        lyapunov_ensemble(system, 4, 2.0, lanes="yes", **kw)
+    for bad in ("yes", 1):
+        with pytest.raises(ValueError, match="lanes must be None"):
+            lyapunov_ensemble(system, 4, 2.0, lanes=bad, **kw)

@@ -127,11 +127,24 @@ class _P:
     (2 * MIN_LANES - 1, 2, [2 * MIN_LANES - 1]),        # two would be too small
     (LANE_BLOCK + 1, 1, [LANE_BLOCK // 2, LANE_BLOCK // 2 + 1]),   # at most LANE_BLOCK
 ])
-def test_lane_blocks(members, workers, sizes):
-    groups = [[_P(parse_scene(raw(s), source="x"))] for s in range(members)]
-    blocks = lane_blocks(groups, workers)
-    assert [len(b) for b in blocks] == sizes
-    assert [g for b in blocks for g in b] == groups          # every group once, in order
+def test_lane_blocks(members, workers, sizes, monkeypatch):
+    """Where the lanes pay (asked with a block's seeds and the seeds of one worker's
+    compilation), a family's seeds in blocks of MIN_LANES to LANE_BLOCK; where they do not,
+    each seed a block of its own."""
+    from charts.runs.sweep import execute
+
+    asked = []
+    for pay in (True, False):
+        monkeypatch.setattr(execute, "seeds_pay", lambda scenes, device, runs: asked.append(
+            (len(scenes), device, runs)) or pay)
+        groups = [[_P(parse_scene(raw(s), source="x"))] for s in range(members)]
+        blocks = lane_blocks(groups, workers)
+        assert [len(b) for b in blocks] == (sizes if pay or members < MIN_LANES
+                                            else [1] * members)
+        assert [g for b in blocks for g in b] == groups          # every group once, in order
+    if members >= MIN_LANES:
+        nb = len(sizes)
+        assert asked == [(max(sizes), "cpu", -(-members // min(nb, workers)))] * 2
 
 
 @pytest.mark.parametrize("pay", [True, False])
@@ -151,8 +164,8 @@ def test_sweep_worker_rows_are_the_points_rows(tmp_path, monkeypatch, pay):
     raws = [raw(s, effects=eff) for s in range(MIN_LANES)]
     together = evaluate_points(raws)
     sc = parse_scene(raws[0], source="x")
-    steps = round((sc.run["t_final"] + (sc.run["t_transient"] or 0.0)) / sc.integrator["dt"])
-    assert asked == [(sc.system["n"], plan_scene(sc).tangent_vectors, MIN_LANES, steps)]
+    steps = round((sc.run["t_final"] + sc.run["t_transient"]) / sc.integrator["dt"])
+    assert asked == [(sc.system["n"], plan_scene(sc).tangent_vectors, MIN_LANES, steps, None)]
     assert together_runs == ([1] if pay else [])
     for r, got in zip(raws, together):
         alone = evaluate_point(r)

@@ -431,11 +431,15 @@ def test_summary_keeps_integers_integers():
     assert _num("0.5") == 0.5 and _num("1e-3") == 1e-3 and _num("(1,1,1,m)") == "(1,1,1,m)"
 
 
-def test_the_seeds_of_a_point_run_in_lanes_with_the_rows_of_single_runs(tmp_path):
-    """`MIN_LANES` seeds of one point share a lane kernel on the cluster; every row equals
-    the row of its point run alone (`evaluate_point`)."""
+def test_the_seeds_of_a_point_run_in_lanes_with_the_rows_of_single_runs(tmp_path, monkeypatch):
+    """`MIN_LANES` seeds of one point share a lane kernel on the cluster (here where the
+    lanes would not pay for their compilation: told they do); every row equals the row of its
+    point run alone (`evaluate_point`)."""
     from charts.analyses.lyapunov_members import MIN_LANES
+    from charts.runs.sweep import execute
     from charts.runs.sweep.execute import lane_blocks, same_scene_groups
+
+    monkeypatch.setattr(execute, "seeds_pay", lambda scenes, device, runs: True)
     from charts.runs.sweep.table import point_row
     from charts.runs.sweep.worker import evaluate_point
 

@@ -143,8 +143,11 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
             if not isfinite(logs[r]):
                 return NONFINITE
             gs[j, r] = logs[r] / tau
-        for i in range(Z.shape[1]):     # loops, not bq[j - a] = Z[1:]: an array assignment
-            by[j - a, i] = Z[0, i]      # compiles numba's shape-mismatch message (3 s)
+        # loops, not bq[j - a] = Z[1:]: an array assignment compiles numba's shape-mismatch
+        # message (3 s); the shapes are the caller's (`covariant_lyapunov_vectors` allocates
+        # bq, by for this flow), so the check it made cannot fail
+        for i in range(Z.shape[1]):
+            by[j - a, i] = Z[0, i]
             for r in range(D):
                 bq[j - a, r, i] = Z[1 + r, i]
         j += 1

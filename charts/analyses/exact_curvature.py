@@ -51,6 +51,10 @@ def exact_curvatures(system, theta, P, route="chart"):
     # the same loop in Python
     run = _riemann_frames_compiled() if isinstance(riemann, Dispatcher) else _riemann_frames
     run(riemann, theta, P, charts_, idx, lm, lw, float(system.level), K)
+    bad = np.flatnonzero(~np.isfinite(K).reshape(S, -1).all(axis=1))
+    if bad.size:
+        raise ValueError(f"theta[{bad[0]}] = {theta[bad[0]].tolist()} is (to rounding) a singular "
+                         "point of the manifold: no chart's Riemann tensor is defined there")
     return K
 
 

@@ -31,15 +31,15 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     ``speed`` (seeds seed, seed+1, …; also the seeds of their tangent vectors; ``kwargs``:
     the settings of `lyapunov_spectrum`).
 
-    The trajectories advance together in the vector lanes of one kernel
-    (``charts.solvers.lanes``), in blocks of up to `LANE_BLOCK`, the blocks in ``workers``
-    parallel processes (default: all cores; 1: in this process).  Each member is the
-    `LyapunovResult` of `lyapunov_spectrum` on its state, bit for bit
-    (tests/test_lanes.py).  ``lanes``: None (default) takes the lanes where they pay
-    (``charts.solvers.lanes.lanes_pay``: their kernel is compiled for this N and k, or the run
-    is long enough to pay for the 20 s of compiling it), True always (from `MIN_LANES`
-    members), False never: the members then run one after the other in each block, with the
-    same bits.  A member that stops (e.g. at a singular point) raises the error
+    The trajectories run in blocks of up to `LANE_BLOCK`, the blocks in ``workers`` parallel
+    processes (default: all cores; 1: in this process), a block's members together in the
+    vector lanes of one kernel (``charts.solvers.lanes``) or one after the other in the
+    one-trajectory kernel: ``lanes`` None (default) takes the lanes where they pay
+    (``charts.solvers.lanes.lanes_pay``: their kernel is compiled for this N and k, or the
+    ensemble is long enough to pay for compiling it), True always (from `MIN_LANES` members
+    a block), False never; a GPU run (``device="cuda"``) ignores it.  Each member is the
+    `LyapunovResult` of `lyapunov_spectrum` on its state, bit for bit, on either route
+    (tests/test_lanes.py).  A member that stops (e.g. at a singular point) raises the error
     `lyapunov_spectrum` raises for it, naming its seed.  Returns an `EnsembleResult`:
     ``members``, and ``exponents`` / ``stderr``, the mean over the trajectories and its
     standard error.
@@ -56,7 +56,7 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     device = resolve_device(device)
-    if lanes not in (None, True, False):
+    if lanes is not None and not isinstance(lanes, bool):
         raise ValueError(f"lanes must be None (where they pay), True or False, got {lanes!r}")
     if transient_rule(kwargs.get("t_transient")) == "auto":   # one transient for all members:
         pilot = {k: kwargs[k] for k in ("dt", "n_exponents", "inner", "space") if k in kwargs}
@@ -82,8 +82,8 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
     jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
     desc = f"Lyapunov N={system.n} ensemble"
-    if lanes is None:
-        lanes = lanes_pay(system.n, cfg.k, max(np.diff(cut)), cfg.transient + cfg.total)
+    if lanes is None:                   # decided once: the parent compiles for every block
+        lanes = _pay(system, cfg, max(np.diff(cut)), n_trajectories)
     run = partial(lyapunov_lanes, lanes=lanes)
     if n_blocks == 1 or workers == 1:        # in this process: progress chunk by chunk
         rep = progress_reporter(progress, n_trajectories * t_final, desc)
@@ -141,7 +141,7 @@ def lyapunov_lanes(job, update=None, lanes=None):
     averaging time done by all members after each chunk."""
     system, cfg, seeds, speed = job
     if lanes is None:
-        lanes = lanes_pay(system.n, cfg.k, len(seeds), cfg.transient + cfg.total)
+        lanes = _pay(system, cfg, len(seeds))
     cfgs = [replace(cfg, seed=s) for s in seeds]
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
              for s, c in zip(seeds, cfgs)]
@@ -156,6 +156,12 @@ def lyapunov_lanes(job, update=None, lanes=None):
         return [lyapunov_result(system, c, lg, f.speed, f.shares, y0)
                 for c, lg, f, y0 in zip(cfgs, logs, flows, starts)]
     return _members_of(LaneFlows(flows), system, cfg, seeds, update)
+
+
+def _pay(system, cfg, lanes, runs=None) -> bool:
+    """`lanes_pay` for members of the settings ``cfg`` (their transient and averaging steps),
+    ``lanes`` to a kernel and ``runs`` in all."""
+    return lanes_pay(system.n, cfg.k, lanes, cfg.transient + cfg.total, runs)
 
 
 def lyapunov_device(job, update=None, backend="cuda", workers=1):

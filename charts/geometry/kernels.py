@@ -4,8 +4,8 @@
 Σ aᵢ cos θᵢ = c; with ``paper``, ``rotor_n{n}_paper``, its member a = 1, c = 0 specialised
 before code generation), shipped for N = 3..6, or for 7 <= N <= ``MAX_N`` derives it on demand
 through ``charts.codegen.cache``.  ``compiled(n, paper)`` returns the same functions compiled
-with ``numba.njit(cache=True)``.  The generated modules import nothing but ``math``: the
-loader registers their kernels (``KERNEL_FUNCTIONS``) with numba, so that compiled code (the
+with ``numba.njit(cache=True)`` and numpy's error model.  The generated modules import
+nothing but ``math``: the loader registers their kernels (``KERNEL_FUNCTIONS``) with numba, so that compiled code (the
 other generated functions, ``charts.flows.chart``) can call them.
 ``geometry(n, weights, level)`` is what the library uses: the compiled generated functions
 for the shipped N (``GENERATED_N``; the paper's module for weights all 1 and level 0, so the
@@ -99,11 +99,13 @@ def compiled(n: int, paper: bool = False) -> SimpleNamespace:
     for name in GENERATED_FUNCTIONS:
         fn = getattr(mod, name)
         jit = name in KERNEL_FUNCTIONS or _lines(fn) <= JIT_MAX_LINES
-        # the divisors (masses, D, G, sin²θₖ) are positive wherever a chart is used (its
-        # domain is checked before): without Python's zero-division checks the kernels'
-        # arrays need no reference counting (one branch per division kept 8 atomic
+        # the divisors (masses, D, G, sin²θₖ) are positive wherever a chart is used: the
+        # public entry points check the chart's domain first (``RotorSystem._in_chart``)
+        # or the result (``exact_curvatures``).  Without Python's zero-division checks the
+        # kernels' arrays need no reference counting (one branch per division kept 8 atomic
         # operations per call), and the long functions compile in two thirds of the time
-        # (N = 6 Riemann: 13 s against 19 s; the same bits)
+        # (N = 6 Riemann: 13 s against 19 s; the same bits).  (numba's disk cache does not
+        # key on the error model: a cache written before keeps raising at a zero divisor.)
         out[name] = numba.njit(cache=True, error_model="numpy")(fn) if jit else fn
     return SimpleNamespace(**out)
 

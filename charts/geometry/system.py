@@ -238,19 +238,29 @@ class RotorSystem:
         k = self.best_chart(theta) if chart is None else chart
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= k < self.n:
             raise ValueError(f"chart must be an integer in 0..{self.n - 1}, got {chart!r}")
-        sk = np.sin(theta[k])
-        if abs(sk) < TOL["chart_domain"]:
+        if not self._in_chart(theta, k):
             best = self.best_chart(theta)
-            if abs(np.sin(theta[best])) < TOL["chart_domain"]:
+            if not self._in_chart(theta, best):
                 raise ValueError(f"theta = {theta.tolist()} is a singular point of the manifold "
                                  "(every sin theta_i = 0: the gradient of sum(a cos theta) "
                                  "vanishes); the metric and curvature are not defined there in "
                                  "any chart")
-            raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = {sk:.2e}; "
-                             f"use chart={best} (the best conditioned) or chart=None")
+            raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = "
+                             f"{np.sin(theta[k]):.2e}; use chart={best} (the best conditioned) "
+                             "or chart=None")
         idx = chart_coordinates(self.n, k)
         return (int(k), idx, theta[idx], local_masses(self.masses, k),
                 local_weights(self.weights, k))
+
+    def _in_chart(self, theta, k) -> bool:
+        """Whether theta lies in the domain of chart k: |sin θₖ| ≥ the tolerance, and the
+        chart's functions' divisor D = aₖ² − (Σ_{α≠k} a_α cos θ_α − c)², computed from the
+        local angles as they compute it, positive (it rounds to 0 within ~1e-8 of the edge)."""
+        if abs(np.sin(theta[k])) < TOL["chart_domain"]:
+            return False
+        idx = chart_coordinates(self.n, k)
+        return eliminated_angle(theta[idx], self.dim, local_weights(self.weights, k),
+                                self.level, 1.0)[2] > 0.0
 
     def to_chart(self, theta, u, chart):
         """Local coordinates and velocity components of (theta, u) in ``chart``."""

@@ -117,8 +117,7 @@ def _task_waveform(n, seed, t):
 def _tasks(cfg):
     tasks = {}
     for n in NS:
-        seeds = list(range(100, 100 + cfg["lyap_members"]))     # one task (lyapunov_lanes)
-        tasks[("lyap", n, 0)] = (_task_lyapunov, (n, seeds, cfg["lyap_t"], cfg["lyap_batches"]))
+        tasks.update(_lyapunov_tasks(n, cfg))
         for i in range(cfg["angle_members"]):
             a = (n, 200 + i, cfg["angle_t"], cfg["angle_transient"])
             tasks[("angle", n, i)] = (_task_angles, a)
@@ -126,6 +125,31 @@ def _tasks(cfg):
         tasks[("curv", n, 0)] = (_task_curvature, (n, 300, cfg["curv_t"]))
         tasks[("wave", n, 0)] = (_task_waveform, (n, 400, cfg["wave_t"]))
     return tasks
+
+
+def _lyapunov_tasks(n, cfg):
+    """The Lyapunov members of N: one task in the lanes of one kernel where they pay
+    (``charts.solvers.lanes.lanes_pay``: compiled for N, or long enough), else one task per
+    member, so that the pool balances them (the same numbers either way)."""
+    from ..analyses.lyapunov import lyapunov_settings
+    from ..geometry.system import RotorSystem
+    from ..solvers.lanes import lanes_pay
+
+    seeds = list(range(100, 100 + cfg["lyap_members"]))
+    t, batches = cfg["lyap_t"], cfg["lyap_batches"]
+    c = lyapunov_settings(RotorSystem(n), t, n_batches=batches)
+    if lanes_pay(n, c.k, len(seeds), c.transient + c.total):
+        return {("lyap", n, 0): (_task_lyapunov, (n, seeds, t, batches))}
+    return {("lyap", n, i): (_task_lyapunov, (n, [s], t, batches)) for i, s in enumerate(seeds)}
+
+
+def _lyapunov_members(results, n):
+    """The Lyapunov task results of N (one task, or one per member) as one, stacked along
+    the member axis."""
+    parts = [results[k] for k in sorted(k for k in results if k[:2] == ("lyap", n))]
+    out = {k: np.concatenate([p[k] for p in parts]) for k in ("exponents", "stderr", "batches",
+                                                             "history")}
+    return dict(out, history_t=parts[0]["history_t"])
 
 
 def _run_all(cfg, workers, quiet, pieces=None):
@@ -188,8 +212,9 @@ def _quiet_interrupt():
 def _lyapunov_table(results, cfg):
     rows = {}
     for n in NS:
-        E = np.asarray(results[("lyap", n, 0)]["exponents"])
-        B = np.concatenate(results[("lyap", n, 0)]["batches"])
+        lyap = _lyapunov_members(results, n)
+        E = np.asarray(lyap["exponents"])
+        B = np.concatenate(lyap["batches"])
         mean = E.mean(0)
         se_batch = standard_error(B)   # pooled batch means
         se_ens = standard_error(E)     # spread of the trajectories

@@ -45,7 +45,7 @@ from .driver import Phases, borrowed, keep_alive, no_record, phased_loop
 from .tangent import orthonormalize_lanes, shift_sincos_lanes, substeps
 
 __all__ = ["lanes_kernel", "LaneFlows", "MIN_LANES", "lanes_compiled", "lanes_pay",
-           "COMPILE_SECONDS", "SAVED_SECONDS"]
+           "lanes_saving", "COMPILE_SECONDS", "ALONE_SECONDS", "LANE_PACE"]
 
 _CAP = CAP_FRACTION["rk4"]
 
@@ -382,43 +382,57 @@ MIN_LANES = 3
 #: CPU seconds `_lanes_run` takes to compile for a new (N, k): 18–23 s at N = 3, 4, 5 with
 #: k = N − 2 on the 2-core VM (docs/performance.md, "First use").
 COMPILE_SECONDS = 20.0
-#: CPU seconds the lanes save against the one-trajectory kernel per lane, step and entry
-#: of the stacked state Z = [y; X]: N = 5, k = 3 (40 entries) ran 89,822 time units per CPU
-#: second and lane against 27,191 alone (docs/performance.md), 9.2 ns per entry and step
-#: alone, of which the lanes save 70 %.
-SAVED_SECONDS = 6e-9
+#: CPU seconds of the one-trajectory kernel per step and entry of the stacked state
+#: Z = [y; X]: N = 5, k = 3 (40 entries) ran 27,191 time units per CPU second
+#: (docs/performance.md, "Every target in one run").
+ALONE_SECONDS = 9.2e-9
+#: The lanes' pace against the one-trajectory kernel, (lane count, ratio) from that count on:
+#: N = 5, paired, 1.44x at 3 lanes, 1.83x at 4, 3.3x at 8 and more (docs/performance.md,
+#: "Ensembles in vector lanes"; 5–7 lanes taken at the pace of 4).
+LANE_PACE = ((3, 1.44), (4, 1.83), (8, 3.3))
 
 
 def lanes_compiled(n, k) -> bool:
     """Whether `_lanes_run` for N = ``n`` rotors and ``k`` vectors is compiled in this process
-    or in numba's disk cache (loaded, then, in well under a second); False where the cache
-    cannot be read."""
+    or in numba's disk cache (loaded, then, in well under a second); False where that cannot
+    be read (numba's cache index is private API: a failure only costs the lanes' speed,
+    the numbers are the same on both routes)."""
     def ours(sig):
         return len(sig) > 2 and len(sig[-2]) == n and len(sig[-1]) == k
 
-    if any(ours(sig) for sig in _lanes_run.overloads):
-        return True
     try:
+        if any(ours(sig) for sig in _lanes_run.overloads):
+            return True
         cache = _lanes_run._cache
         codegen = _lanes_run.targetctx.codegen()
         index = cache._cache_file._load_index()
         return any(ours(key[0]) and key == cache._index_key(key[0], codegen) for key in index)
-    except Exception:                   # noqa: BLE001 - no readable cache: not compiled
+    except Exception:                   # noqa: BLE001 - not readable: taken as not compiled
         return False
 
 
-def lanes_pay(n, k, lanes, steps) -> bool:
-    """Whether ``lanes`` trajectories of N = ``n`` rotors with ``k`` tangent vectors, each
-    advanced ``steps`` steps, should run in the lanes of one kernel (`LaneFlows`) rather than
-    one after the other in the one-trajectory kernel (the same bits either way): at least
-    `MIN_LANES` of them, and the lane kernel for (N, k) compiled already (`lanes_compiled`)
-    or the time the lanes save (`SAVED_SECONDS`) larger than its compilation
-    (`COMPILE_SECONDS`).  A short ensemble on an empty cache then costs seconds, not the
-    lanes' 20 s of compiling."""
+def lanes_saving(n, k, lanes, steps, runs=None) -> float:
+    """CPU seconds the lanes save against the one-trajectory kernel: ``runs`` (default
+    ``lanes``) trajectories of N = ``n`` rotors with ``k`` tangent vectors, ``steps`` steps
+    each, advanced ``lanes`` to a kernel (`ALONE_SECONDS`, `LANE_PACE`; 0 below `MIN_LANES`)."""
+    if lanes < MIN_LANES:
+        return 0.0
+    pace = [ratio for count, ratio in LANE_PACE if count <= lanes][-1]
+    alone = (lanes if runs is None else runs) * steps * (1 + k) * 2 * n * ALONE_SECONDS
+    return alone * (1.0 - 1.0 / pace)
+
+
+def lanes_pay(n, k, lanes, steps, runs=None) -> bool:
+    """Whether trajectories of N = ``n`` rotors with ``k`` tangent vectors, ``steps`` steps
+    each, ``lanes`` to a kernel and ``runs`` (default ``lanes``) in all that share one
+    compilation, should run in the lanes of one kernel (`LaneFlows`) rather than one after
+    the other in the one-trajectory kernel (the same bits either way): at least `MIN_LANES`
+    to a kernel, and the lane kernel for (N, k) compiled already (`lanes_compiled`) or the
+    time the lanes save (`lanes_saving`) larger than its compilation (`COMPILE_SECONDS`).  A
+    short ensemble on an empty cache then costs seconds, not the lanes' compilation."""
     if lanes < MIN_LANES:
         return False
-    saved = lanes * steps * (1 + k) * 2 * n * SAVED_SECONDS
-    return saved > COMPILE_SECONDS or lanes_compiled(n, k)
+    return lanes_saving(n, k, lanes, steps, runs) > COMPILE_SECONDS or lanes_compiled(n, k)
 
 
 class LaneFlows:

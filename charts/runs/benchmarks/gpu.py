@@ -12,7 +12,7 @@ every 1.0: ``lyapunov_ensemble``'s defaults, the same settings on both devices.
   * Throughput: the GPU kernel (``charts.solvers.device``, one thread per member) advancing
     M members by T, timed after a launch that compiles it (the members' initial states and
     the compilation are reported apart); time units (summed over the members) per second.
-  * CPU: ``lyapunov_ensemble(device="cpu")`` on every core (the lanes of
+  * CPU: ``lyapunov_ensemble(device="cpu", lanes=True)`` on every core (the lanes of
     ``charts.solvers.lanes``, one block per process), warm, wall time of the whole call.
   * Agreement: the members' exponents of both routes for the same seeds (relative
     differences, at several T: the GPU's fused multiply-adds and libm round differently and
@@ -91,8 +91,8 @@ def kernel_rate(n, k, members, t_final, workers, repeat=3, backend="cuda"):
 
 
 def cpu_rate(n, k, members, t_final, workers):
-    """(wall s, time units/s) of ``lyapunov_ensemble(device="cpu")`` on ``workers`` cores,
-    warm (a first call compiles)."""
+    """(wall s, time units/s) of ``lyapunov_ensemble(device="cpu", lanes=True)`` on
+    ``workers`` cores, warm (a first call compiles)."""
     S = RotorSystem(n)
     kw = dict(n_exponents=k, t_transient=0.0, n_batches=2, lanes=True)
     lyapunov_ensemble(S, members, 1.0, workers=workers, **kw)   # compiles the lanes

@@ -25,7 +25,7 @@ from .table import (TABLE, TableAppender, finish_table, point_columns, point_row
                     prepare_table)
 from ...analyses.lyapunov_members import LANE_BLOCK, MIN_LANES
 from ..seed_lanes import seed_family
-from .worker import evaluate_points
+from .worker import evaluate_points, seeds_pay
 
 __all__ = ["run_sweep", "dask_client", "same_scene_groups", "lane_blocks",
            "check_scheduler_address", "META", "POINTS", "SCHEDULER_TIMEOUT_S"]
@@ -266,14 +266,14 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
                   f"{len(todo)} to compute) on {where}", flush=True)
         bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
         # identical scenes are computed once; the seeds of a point together, in lanes
-        for block in lane_blocks(groups, max(nw, 1)):
+        for block in lane_blocks(groups, max(nw, 1), device):
             # a point computed alone keeps its checkpoints in points/<id> until its row is
             # written, so that a resumed sweep continues a long point where it stopped
             keep = [str(outdir / POINTS / g[0].point_id) for g in block] if len(block) == 1 \
                 else None
             fut = client.submit(evaluate_points, [group[0].raw for group in block], keep,
-                                device, key=f"charts-sweep-{block[0][0].point_id}",
-                                pure=False)
+                                device, len(block) >= MIN_LANES,
+                                key=f"charts-sweep-{block[0][0].point_id}", pure=False)
             futures[fut] = block
         for fut in as_completed(list(futures)):
             block = futures[fut]
@@ -325,10 +325,11 @@ def _add_rows(group, out, columns, app, info, bar, on_point, n_done, total):
             on_point(n_done + len(info["computed"]), total)
 
 
-def lane_blocks(groups, n_workers: int) -> list[list]:
+def lane_blocks(groups, n_workers: int, device="cpu") -> list[list]:
     """The groups of identical points (`same_scene_groups`) cut into the blocks one task
     computes: the groups of one seed family (``charts.runs.seed_lanes.seed_family``) share a
-    lane kernel, in blocks of `MIN_LANES` to `LANE_BLOCK` (as many as give the
+    lane kernel where the lanes pay (``charts.runs.sweep.worker.seeds_pay``, the family's
+    seeds counted in all), in blocks of `MIN_LANES` to `LANE_BLOCK` (as many as give the
     ``n_workers`` work where the family is large enough); every other group is a block of its
     own."""
     families = {}
@@ -345,5 +346,10 @@ def lane_blocks(groups, n_workers: int) -> list[list]:
         share = -(-n_workers * g // total)          # this family's part of the workers
         nb = max(-(-g // LANE_BLOCK), min(share, g // MIN_LANES))
         cut = [g * b // nb for b in range(nb + 1)]
+        lanes = max(b - a for a, b in zip(cut, cut[1:]))
+        per_worker = -(-g // min(nb, n_workers))    # seeds of one worker's compilation
+        if not seeds_pay([group[0].scene for group in fam[:lanes]], device, runs=per_worker):
+            blocks += [[group] for group in fam]
+            continue
         blocks += [fam[a:b] for a, b in zip(cut, cut[1:])]
     return blocks

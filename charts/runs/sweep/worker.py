@@ -21,7 +21,7 @@ from ..scene import parse_scene
 from ..seed_lanes import lane_angles, lane_flows, run_seed_lanes, seed_family
 from .statistics import result_statistics
 
-__all__ = ["evaluate_point", "evaluate_points"]
+__all__ = ["evaluate_point", "evaluate_points", "seeds_pay"]
 
 
 def evaluate_point(raw: dict, keep=None) -> dict:
@@ -82,19 +82,19 @@ def _run(scene, folder, resume):
         return exc
 
 
-def evaluate_points(raws: list, keep=None, device="cpu") -> list:
+def evaluate_points(raws: list, keep=None, device="cpu", lanes=None) -> list:
     """`evaluate_point` of each of ``raws`` (in the folders ``keep``, one per point, if
     given); points of one seed family
     (``charts.runs.seed_lanes``), at least `MIN_LANES` of them, run together in the lanes of
-    one kernel where the lanes pay (`_lanes_pay`; the same rows, bit for bit; each point's
-    wall time is the block's share), or
+    one kernel where the lanes pay (``lanes``: None asks `seeds_pay`; the same rows, bit for
+    bit; each point's wall time is the block's share), or
     with ``device="cuda"`` in one GPU thread each (``charts.runs.seed_lanes.lane_flows``; their
     angle tests too, `lane_angles`).
 
     The points run with Dask's synchronous scheduler: a point never talks to the cluster
     it runs on."""
     with _own_scheduler():
-        return _evaluate_points(raws, keep, device)
+        return _evaluate_points(raws, keep, device, lanes)
 
 
 def _own_scheduler():
@@ -111,11 +111,11 @@ def _own_scheduler():
     return dask.config.set(scheduler="synchronous")
 
 
-def _evaluate_points(raws: list, keep=None, device="cpu") -> list:
+def _evaluate_points(raws: list, keep=None, device="cpu", lanes=None) -> list:
     scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
     families = {seed_family(sc) for sc in scenes}
     if (len(scenes) < MIN_LANES or None in families or len(families) != 1
-            or not _lanes_pay(scenes, device)):
+            or not (seeds_pay(scenes, device) if lanes is None else lanes)):
         keep = keep if keep is not None else [None] * len(raws)
         return [evaluate_point(raw, k) for raw, k in zip(raws, keep)]
     t0 = time.perf_counter()
@@ -126,10 +126,11 @@ def _evaluate_points(raws: list, keep=None, device="cpu") -> list:
         return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
 
 
-def _lanes_pay(scenes, device) -> bool:
-    """Whether the seeds' main passes run together: on a GPU always, on the CPU where the
-    lanes pay (``charts.solvers.lanes.lanes_pay``: compiled for this N and k, or long enough
-    to pay for compiling them), else each point alone (the same rows)."""
+def seeds_pay(scenes, device="cpu", runs=None) -> bool:
+    """Whether the seeds ``scenes`` (one `seed_family`, ``runs`` of them in all that share one
+    compilation: default these) run their main passes together: on a GPU always, on the CPU
+    where the lanes pay (``charts.solvers.lanes.lanes_pay`` with their N, tangent vectors and
+    steps of transient and run), else each point alone (the same rows)."""
     from ...solvers.device import resolve_device
     from ...solvers.lanes import lanes_pay
     from ..plan import plan_scene, ticks
@@ -137,8 +138,9 @@ def _lanes_pay(scenes, device) -> bool:
     if resolve_device(device) == "cuda":
         return True
     sc = scenes[0]
-    steps = ticks(sc.run["t_final"] + (sc.run.get("t_transient") or 0.0), sc.integrator["dt"])
-    return lanes_pay(sc.system["n"], plan_scene(sc).tangent_vectors, len(scenes), steps)
+    dt = sc.integrator["dt"]
+    steps = ticks(sc.run["t_transient"], dt) + ticks(sc.run["t_final"], dt)
+    return lanes_pay(sc.system["n"], plan_scene(sc).tangent_vectors, len(scenes), steps, runs)
 
 
 def _point_outcome(outcome, folder: Path, wall_s: float) -> dict:
