@@ -76,7 +76,8 @@ def test_the_kernel_body_with_a_stand_in_for_cuda(monkeypatch):
 def test_the_block_plan_fits_the_budget_or_refuses_with_numbers():
     cfg = clv_ensemble_settings(SYSTEM, 100.0, "restricted", 0, dict(t_transient=10.0))
     plan = clv_block_plan(cfg, 4, 1000, 1000 * clv_block_bytes(cfg, 4, 250))
-    assert max(plan) <= 250 and sum(plan) == cfg.S
+    assert max(plan) == 250 and sum(plan) == cfg.S                 # as many as fit
+    assert clv_block_plan(cfg, 4, 1000, 1000 * clv_block_bytes(cfg, 4, 250) - 1)[0] == 249
     with pytest.raises(ValueError, match=r"1000 members need .* GiB .* budget"):
         clv_block_plan(cfg, 4, 1000, 1000)
 

@@ -224,10 +224,9 @@ def clv_block_plan(cfg: CLVSettings, n, members, budget, block=None) -> tuple:
                          f" GiB for the shortest block (one sample and the backward transient's "
                          f"{cfg.total - cfg.S}), more than the {budget / 2**30:.2f} GiB budget; "
                          "run fewer members at once or raise sample_every")
-    per = budget // members // clv_block_bytes(cfg, n, 1)        # an upper bound
-    fit = max(1, min(cfg.S, int(per)))
-    while fit > 1 and members * clv_block_bytes(cfg, n, fit) > budget:
-        fit -= 1
+    fixed = clv_block_bytes(cfg, n, 0)                   # the backward transient's samples
+    per = clv_block_bytes(cfg, n, 1) - fixed              # and each sample of the block
+    fit = max(1, min(cfg.S, (budget // members - fixed) // per))
     if block is not None:
         fit = max(1, min(fit, int(block)))
     full, rest = divmod(cfg.S, fit)
