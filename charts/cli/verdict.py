@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from ..runs.cli_parser import positive_count
+from ..runs.io import atomic_text
 
 __all__ = ["add_parser", "cmd_verdict"]
 
@@ -75,10 +76,10 @@ def cmd_verdict(args) -> int:
     from ..geometry.system import RotorSystem
     from ..runs.verdict import format_verdict, surface_verdict, torus_verdict, verdict_passed
 
-    if args.statistics:
-        return _statistics(args)
     if len(args.n) > 1 and (args.masses or args.weights or args.level != 0.0):
         raise ValueError("--masses, --weights and --level describe one system: give one --n")
+    if args.statistics:
+        return _statistics(args)
     reports = []
     for n in args.n:
         with warnings.catch_warnings():
@@ -92,7 +93,7 @@ def cmd_verdict(args) -> int:
         print(format_verdict(rep) + "\n", flush=True)
         reports.append(rep)
     if args.json is not None:
-        args.json.write_text(json.dumps(reports, indent=1), encoding="utf-8")
+        atomic_text(args.json, json.dumps(reports, indent=1))
     return 0 if all(verdict_passed(r) for r in reports) else 1
 
 
@@ -109,9 +110,6 @@ def _statistics(args) -> int:
         if args.family:
             systems = family_systems(args.family)
         else:
-            if len(args.n) > 1 and (args.masses or args.weights or args.level != 0.0):
-                raise ValueError("--masses, --weights and --level describe one system: give "
-                                 "one --n")
             systems = [(f"N = {n}", RotorSystem(n, masses=args.masses, weights=args.weights,
                                                  level=args.level)) for n in args.n]
     if args.members < 2:
@@ -139,8 +137,8 @@ def _statistics(args) -> int:
         path = None if args.out is None else args.out / f"{slug}.nc"
         if slug in done and all(done[slug][k] == v for k, v in wanted.items()):
             rep = done[slug]
-        elif path is not None and path.exists() and _same_run(load(path), wanted):
-            rep = dict(tally_report(load(path), label), file=str(path))
+        elif path is not None and path.exists() and _same_run(saved := load(path), wanted):
+            rep = dict(tally_report(saved, label), file=str(path))
         else:
             rep = statistics_verdict(system, args.samples, members=args.members,
                                      device=args.device, t_transient=args.t_transient,
@@ -152,10 +150,9 @@ def _statistics(args) -> int:
         reports.append(rep)
         done[slug] = rep
         if args.out is not None:            # this run's reports and the earlier ones of others
-            (args.out / "statistics.json").write_text(json.dumps(list(done.values()), indent=1),
-                                                      encoding="utf-8")
+            atomic_text(args.out / "statistics.json", json.dumps(list(done.values()), indent=1))
     if args.json is not None:
-        args.json.write_text(json.dumps(reports, indent=1), encoding="utf-8")
+        atomic_text(args.json, json.dumps(reports, indent=1))
     return 0
 
 
