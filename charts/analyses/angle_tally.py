@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..archive import Archivable, attributes, dataset
-from ..geometry.checks import finite_array
+from ..geometry.checks import finite_array, integer
 from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
 
@@ -104,8 +104,7 @@ class AngleTally(Archivable):
     @classmethod
     def empty(cls, members, params=None) -> "AngleTally":
         """A tally of ``members`` members with nothing added yet."""
-        if isinstance(members, bool) or not isinstance(members, (int, np.integer)) or members < 1:
-            raise ValueError(f"members must be a positive integer, got {members!r}")
+        members = integer("members", members, 1)
         params = dict(params or {})
         seeds = int(params.get("seed", 0)) + np.arange(int(members), dtype=np.int64)
         tally = cls(**_sums(len(VARIANTS), int(members)), params=params, seeds=seeds)
@@ -206,7 +205,7 @@ class AngleTally(Archivable):
             raise ValueError("add each block's full angles first, then its restricted ones, "
                              "of the same members and samples")
         n0 = int(before[0])
-        if np.any(x < 0) and kind == "angles":
+        if kind == "angles" and np.any(x < 0):
             raise ValueError("angles must be ≥ 0")
         j = x.argmin(axis=1)
         low = angle(x[np.arange(l), j])

@@ -51,7 +51,7 @@ from ..solvers.tangent import check_memory
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
 from .angle_tally import SMALL_ANGLE, VARIANTS, AngleTally, carries
-from .arguments import positive_time, progress_reporter, start_state, Documented
+from .arguments import positive_int, positive_time, progress_reporter, start_state, Documented
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settings, forward_kernel
 from .singular_values import sin_to_angle, smallest_singular_values
@@ -370,9 +370,8 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
                          f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "
                          f"{MAX_STORE / 2**20:.0f} MB; run more members with a shorter window "
                          "each, or on a GPU (device='cuda')")
-    if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer))
-                              or chunk < 1):
-        raise ValueError(f"chunk must be a positive integer, got {chunk!r}")
+    if chunk is not None:
+        chunk = positive_int("chunk", chunk)
     tally, done = AngleTally.empty(L, params), 0
     if checkpoint is not None and os.path.exists(checkpoint):
         saved = load(checkpoint)
@@ -413,8 +412,7 @@ def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **k
     """The angle test of ``tally``'s members (seeds ``tally.params["seed"]`` on) by
     ``charts.analyses.angle_blocks.angles_on_device`` (``backend``, ``kw``: its arguments),
     each block's sines added to ``tally`` on ``workers`` threads as they arrive."""
-    seed = int(tally.params.get("seed", 0))
-    seeds = list(range(seed, seed + tally.n_members))
+    seeds = tally.seeds.tolist()
     alive = np.ones(tally.n_members, bool)
 
     def consume(sf, sr, stops):
