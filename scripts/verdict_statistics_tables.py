@@ -34,12 +34,13 @@ def _p(st, x=0.005):
     return f"{rows[0][1]:.3g} ± {1.96 * rows[0][2]:.1g}" if rows else "0"
 
 
-def _slope(st):
-    """The last block-minima slope ± 1.96 jackknife se, with its sizes in time units."""
+def _slope(st, dt):
+    """The last block-minima slope ± 1.96 jackknife se, with its sizes in time units (``dt``
+    per sample)."""
     if not st["slopes"]:
         return "—"
     a, b, s, se = st["slopes"][-1]
-    return f"{s:.3f} ± {1.96 * se:.1g} ({a / 10:g}–{b / 10:g})"
+    return f"{s:.3f} ± {1.96 * se:.1g} ({a * dt:g}–{b * dt:g})"
 
 
 def paper_table(reports) -> str:
@@ -53,7 +54,7 @@ def paper_table(reports) -> str:
             mins = ", ".join(f"{m:.3g}" for _, m, _ in st["block_minima"][-2:])
             lines.append(
                 f"| {r['system']['n']} | {st['n']:.2g} | {r['members']} × {r['t_final']:g} | {v} "
-                f"| {st['min']:.3g} | {_p(st)} | {_law(st)} | {mins} | {_slope(st)} "
+                f"| {st['min']:.3g} | {_p(st)} | {_law(st)} | {mins} | {_slope(st, r['sample_every'])} "
                 f"| {1e3 * st['episode_rate']:.3g} | {r['seconds']:.0f} |")
     return "\n".join(lines)
 
@@ -66,7 +67,7 @@ def families_table(reports) -> str:
         st, full = r["statistics"]["restricted"], r["statistics"]["full"]
         w = "(" + ",".join(f"{x:g}" for x in r["system"]["weights"]) + ")"
         lines.append(f"| {w} | {r['system']['level']:g} | {st['min']:.2g} | {_p(st)} | "
-                     f"{_law(st)} | {_slope(st).split(' (')[0]} | "
+                     f"{_law(st)} | {_slope(st, r['sample_every']).split(' (')[0]} | "
                      f"{1e3 * st['episode_rate']:.3g} | {full['min']:.2g} |")
     return "\n".join(lines)
 

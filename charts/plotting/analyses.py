@@ -209,7 +209,7 @@ def plot_angle_law(statistics, *, axes=None, title=None, sample_every=0.1):
             xs.append(x)
         else:
             axes[0].plot([], [], color=color,
-                         label=f"{label}: none below 0.05 (min {st['min']:.2g} rad)")
+                         label=f"{label}: none below {st['small']:g} (min {st['min']:.2g} rad)")
         if st["block_minima"]:
             size, mean, se = (np.array(c, dtype=float) for c in zip(*st["block_minima"]))
             axes[1].errorbar(size * sample_every, mean, yerr=se, color=color, marker="o",
