@@ -135,8 +135,8 @@ def test_lane_blocks(members, workers, sizes, monkeypatch):
 
     asked = []
     for pay in (True, False):
-        monkeypatch.setattr(execute, "seeds_pay", lambda scenes, device, runs: asked.append(
-            (len(scenes), device, runs)) or pay)
+        monkeypatch.setattr(execute, "seeds_pay", lambda scene, lanes, device, runs: asked.append(
+            (lanes, device, runs)) or pay)
         groups = [[_P(parse_scene(raw(s), source="x"))] for s in range(members)]
         blocks = lane_blocks(groups, workers)
         assert [len(b) for b in blocks] == (sizes if pay or members < MIN_LANES

@@ -439,7 +439,7 @@ def test_the_seeds_of_a_point_run_in_lanes_with_the_rows_of_single_runs(tmp_path
     from charts.runs.sweep import execute
     from charts.runs.sweep.execute import lane_blocks, same_scene_groups
 
-    monkeypatch.setattr(execute, "seeds_pay", lambda scenes, device, runs: True)
+    monkeypatch.setattr(execute, "seeds_pay", lambda scene, lanes, device, runs: True)
     from charts.runs.sweep.table import point_row
     from charts.runs.sweep.worker import evaluate_point
 

@@ -21,7 +21,7 @@ from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_
 from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, end_transient, lyapunov_flow,
                        lyapunov_result, lyapunov_schedule, lyapunov_settings, transient_rule)
 
-__all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states",
+__all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states", "members_pay",
            "plan_memory", "result_bytes", "LANE_BLOCK", "MIN_LANES"]
 
 
@@ -83,7 +83,7 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
     desc = f"Lyapunov N={system.n} ensemble"
     if lanes is None:                   # decided once: the parent compiles for every block
-        lanes = _pay(system, cfg, max(np.diff(cut)), n_trajectories)
+        lanes = members_pay(system, cfg, max(np.diff(cut)), n_trajectories)
     run = partial(lyapunov_lanes, lanes=lanes)
     if n_blocks == 1 or workers == 1:        # in this process: progress chunk by chunk
         rep = progress_reporter(progress, n_trajectories * t_final, desc)
@@ -141,7 +141,7 @@ def lyapunov_lanes(job, update=None, lanes=None):
     averaging time done by all members after each chunk."""
     system, cfg, seeds, speed = job
     if lanes is None:
-        lanes = _pay(system, cfg, len(seeds))
+        lanes = members_pay(system, cfg, len(seeds))
     cfgs = [replace(cfg, seed=s) for s in seeds]
     flows = [lyapunov_flow(system, *system.random_state(seed=s, speed=speed), c)
              for s, c in zip(seeds, cfgs)]
@@ -158,7 +158,7 @@ def lyapunov_lanes(job, update=None, lanes=None):
     return _members_of(LaneFlows(flows), system, cfg, seeds, update)
 
 
-def _pay(system, cfg, lanes, runs=None) -> bool:
+def members_pay(system, cfg, lanes, runs=None) -> bool:
     """`lanes_pay` for members of the settings ``cfg`` (their transient and averaging steps),
     ``lanes`` to a kernel and ``runs`` in all."""
     return lanes_pay(system.n, cfg.k, lanes, cfg.transient + cfg.total, runs)

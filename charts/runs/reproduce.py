@@ -132,13 +132,13 @@ def _lyapunov_tasks(n, cfg):
     (``charts.solvers.lanes.lanes_pay``: compiled for N, or long enough), else one task per
     member, so that the pool balances them (the same numbers either way)."""
     from ..analyses.lyapunov import lyapunov_settings
+    from ..analyses.lyapunov_members import members_pay
     from ..geometry.system import RotorSystem
-    from ..solvers.lanes import lanes_pay
 
     seeds = list(range(100, 100 + cfg["lyap_members"]))
     t, batches = cfg["lyap_t"], cfg["lyap_batches"]
-    c = lyapunov_settings(RotorSystem(n), t, n_batches=batches)
-    if lanes_pay(n, c.k, len(seeds), c.transient + c.total):
+    system = RotorSystem(n)
+    if members_pay(system, lyapunov_settings(system, t, n_batches=batches), len(seeds)):
         return {("lyap", n, 0): (_task_lyapunov, (n, seeds, t, batches))}
     return {("lyap", n, i): (_task_lyapunov, (n, [s], t, batches)) for i, s in enumerate(seeds)}
 

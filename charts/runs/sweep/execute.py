@@ -348,7 +348,7 @@ def lane_blocks(groups, n_workers: int, device="cpu") -> list[list]:
         cut = [g * b // nb for b in range(nb + 1)]
         lanes = max(b - a for a, b in zip(cut, cut[1:]))
         per_worker = -(-g // min(nb, n_workers))    # seeds of one worker's compilation
-        if not seeds_pay([group[0].scene for group in fam[:lanes]], device, runs=per_worker):
+        if not seeds_pay(fam[0][0].scene, lanes, device, runs=per_worker):
             blocks += [[group] for group in fam]
             continue
         blocks += [fam[a:b] for a, b in zip(cut, cut[1:])]

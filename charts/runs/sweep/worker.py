@@ -115,7 +115,7 @@ def _evaluate_points(raws: list, keep=None, device="cpu", lanes=None) -> list:
     scenes = [parse_scene(raw, source=raw.get("name", "<point>")) for raw in raws]
     families = {seed_family(sc) for sc in scenes}
     if (len(scenes) < MIN_LANES or None in families or len(families) != 1
-            or not (seeds_pay(scenes, device) if lanes is None else lanes)):
+            or not (seeds_pay(scenes[0], len(scenes), device) if lanes is None else lanes)):
         keep = keep if keep is not None else [None] * len(raws)
         return [evaluate_point(raw, k) for raw, k in zip(raws, keep)]
     t0 = time.perf_counter()
@@ -126,21 +126,21 @@ def _evaluate_points(raws: list, keep=None, device="cpu", lanes=None) -> list:
         return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
 
 
-def seeds_pay(scenes, device="cpu", runs=None) -> bool:
-    """Whether the seeds ``scenes`` (one `seed_family`, ``runs`` of them in all that share one
-    compilation: default these) run their main passes together: on a GPU always, on the CPU
-    where the lanes pay (``charts.solvers.lanes.lanes_pay`` with their N, tangent vectors and
-    steps of transient and run), else each point alone (the same rows)."""
+def seeds_pay(scene, lanes, device="cpu", runs=None) -> bool:
+    """Whether ``lanes`` seeds of ``scene`` (one `seed_family`; ``runs`` of them in all that
+    share one compilation: default ``lanes``) run their main passes together: on a GPU
+    always, on the CPU where the lanes pay (``charts.solvers.lanes.lanes_pay`` with their N,
+    tangent vectors and steps of transient and run), else each point alone (the same
+    rows)."""
     from ...solvers.device import resolve_device
     from ...solvers.lanes import lanes_pay
     from ..plan import plan_scene, ticks
 
     if resolve_device(device) == "cuda":
         return True
-    sc = scenes[0]
-    dt = sc.integrator["dt"]
-    steps = ticks(sc.run["t_transient"], dt) + ticks(sc.run["t_final"], dt)
-    return lanes_pay(sc.system["n"], plan_scene(sc).tangent_vectors, len(scenes), steps, runs)
+    dt = scene.integrator["dt"]
+    steps = ticks(scene.run["t_transient"], dt) + ticks(scene.run["t_final"], dt)
+    return lanes_pay(scene.system["n"], plan_scene(scene).tangent_vectors, lanes, steps, runs)
 
 
 def _point_outcome(outcome, folder: Path, wall_s: float) -> dict:
