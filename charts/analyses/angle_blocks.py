@@ -36,7 +36,7 @@ from numba import njit
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
                               load_member, member_stops, store_member)
 from ..solvers.status import RUNNING
-from ..solvers.tangent import (Rotors, Stack, Stepping, check_memory, memory_budget,
+from ..solvers.tangent import (Rotors, Stack, Stepping, check_memory,
                                orthonormalize, stacked_work, tangent_loop)
 from .adjoint_pass import backward_loop
 from .ensemble import member_states_of
@@ -277,8 +277,7 @@ def angles_on_device(system, cfg: AngleSettings, seeds, speed, *, backend="cuda"
     L = len(seeds)
     arr = DeviceArrays(backend)
     if budget is None:
-        budget = (arr.cuda.current_context().get_memory_info()[0] // 2 if arr.cuda
-                  else memory_budget())
+        budget = arr.budget()
     plan = block_plan(cfg, L, budget, block)
     check_memory(L * block_bytes(cfg, plan.largest), f"the angle test's stores of {L} members",
                  "run fewer members at once")

@@ -33,7 +33,7 @@ from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow
                               load_member, member_stops, resolve_device, store_member)
 from ..solvers.driver import Phases
 from ..solvers.status import NONFINITE, RUNNING
-from ..solvers.tangent import (Records, Rotors, Stack, Stepping, check_memory, memory_budget,
+from ..solvers.tangent import (Records, Rotors, Stack, Stepping, check_memory,
                                stacked_work, tangent_loop)
 from .arguments import progress_reporter
 from .covariant import (CLVSettings, backward_coefficients, clv_flow, clv_samples, clv_settings,
@@ -256,8 +256,7 @@ def clvs_on_device(system, cfg: CLVSettings, variant, seeds, speed, *, backend="
     L, n = len(seeds), system.n
     arr = DeviceArrays(backend)
     if budget is None:
-        budget = (arr.cuda.current_context().get_memory_info()[0] // 2 if arr.cuda
-                  else memory_budget())
+        budget = arr.budget()
     plan = clv_block_plan(cfg, n, L, budget, block)
     extra = cfg.total - cfg.S                       # the backward transient's samples
     rows = max(plan) + extra

@@ -28,7 +28,8 @@ from numba import njit
 
 from .status import RUNNING, status_error
 from .driver import Phases
-from .tangent import Records, Rotors, Stack, Stepping, stacked_loop, tangent_vectors_rate
+from .tangent import (Records, Rotors, Stack, Stepping, memory_budget, stacked_loop,
+                      tangent_vectors_rate)
 
 __all__ = ["DeviceFlows", "DeviceUnavailable", "cuda_module", "cuda_available",
            "member_advance", "member_stops", "device_bytes", "DeviceArrays", "flow_states", "load_member", "store_member", "cpu_members", "resolve_device", "cuda_kernel", "kernel_function",
@@ -230,6 +231,13 @@ class DeviceArrays:
             raise ValueError(f"backend must be 'cuda' or 'cpu', got {backend!r}")
         self.backend = backend
         self.cuda = cuda_module() if backend == "cuda" else None
+
+    def budget(self) -> int:
+        """The bytes the members' stores may take by default: half the GPU's free memory,
+        or on the CPU twin ``charts.solvers.tangent.memory_budget``."""
+        if self.cuda is None:
+            return memory_budget()
+        return self.cuda.current_context().get_memory_info()[0] // 2
 
     def put(self, a):
         """A contiguous copy of the host array ``a`` where the members live."""
