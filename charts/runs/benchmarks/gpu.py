@@ -111,12 +111,19 @@ def agreement(n, k, members, times, workers):
         kw = dict(n_exponents=k, n_batches=2)
         gpu = lyapunov_ensemble(S, members, T, device="cuda", workers=workers, **kw)
         cpu = lyapunov_ensemble(S, members, T, workers=workers, **kw)
-        G = np.array([m.exponents for m in gpu.members])
-        C = np.array([m.exponents for m in cpu.members])
-        rel = float(np.max(np.abs(G - C) / np.abs(C)))
-        z = np.abs(gpu.exponents - cpu.exponents) / np.hypot(gpu.stderr, cpu.stderr)
-        out.append((T, rel, gpu.exponents, cpu.exponents, float(z.max())))
+        out.append((T, *compare_ensembles(gpu, cpu)))
     return out
+
+
+def compare_ensembles(gpu, cpu):
+    """(largest relative difference of a member's exponents GPU vs CPU, mean GPU, mean CPU,
+    largest |difference of the means| / their combined standard error) of two
+    `EnsembleResult` s of the same seeds."""
+    G = np.array([m.exponents for m in gpu.members])
+    C = np.array([m.exponents for m in cpu.members])
+    rel = float(np.max(np.abs(G - C) / np.maximum(np.abs(C), 1e-300)))
+    z = np.abs(gpu.exponents - cpu.exponents) / np.hypot(gpu.stderr, cpu.stderr)
+    return rel, gpu.exponents, cpu.exponents, float(z.max())
 
 
 def fp64_peak(cuda):
@@ -230,13 +237,8 @@ def clv_agreement(n, members, t_final, t_transient, workers):
     |Δ mean| / s.e.) for the same seeds on both devices, restricted CLVs."""
     S = RotorSystem(n)
     kw = dict(t_transient=t_transient, workers=workers)
-    gpu = covariant_ensemble(S, members, t_final, device="cuda", **kw)
-    cpu = covariant_ensemble(S, members, t_final, **kw)
-    G = np.array([m.exponents for m in gpu.members])
-    C = np.array([m.exponents for m in cpu.members])
-    rel = float(np.max(np.abs(G - C) / np.maximum(np.abs(C), 1e-300)))
-    se = np.hypot(G.std(axis=0, ddof=1), C.std(axis=0, ddof=1)) / np.sqrt(members)
-    return rel, G.mean(axis=0), C.mean(axis=0), float(np.max(np.abs(G.mean(0) - C.mean(0)) / se))
+    return compare_ensembles(covariant_ensemble(S, members, t_final, device="cuda", **kw),
+                             covariant_ensemble(S, members, t_final, **kw))
 
 
 def _clv_part(a, w):
