@@ -1,0 +1,81 @@
+"""numba's typing of a call, remembered: each function type answers once per argument types.
+
+numba types every call in a function it compiles — each ``*`` and ``+``, ``math.sin``, an
+``@overload`` — by asking the callee's function type for a signature
+(``types.BaseFunction.get_call_type``), which orders the callee's templates and tries them
+one by one; type inference asks again each time it revisits the call, and numba keeps no
+memo.  The generated chart kernels are long straight-line code (thousands of arithmetic
+operations), so a chart kernel's first compilation spent half its type inference there:
+`integrate` in a chart at a new N took 4.5 s CPU, 2.2 s with this memo (docs/performance.md,
+First use).
+
+`install` gives each function type a memo: (typing context, target, argument types, keyword
+types) → the signature found and the implementation key numba recorded with it.  A template's
+answer depends only on those, so the signatures, the IR and the compiled code are the same;
+only found signatures are kept (a failure is asked again, as numba does), and a hit records
+the implementation key again, as numba's own call does.  The memo lives on the function type
+object (dropped with it; a function type augmented by a new ``@overload`` is a new object).
+It serves every compilation in the process, charts' or not.  numba calls `install` through
+its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
+compiles anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should
+a numba version need it).
+"""
+from __future__ import annotations
+
+import os
+
+__all__ = ["install", "ACTIVE", "memo_size"]
+
+#: Whether numba's function types remember their signatures in this process.
+ACTIVE = False
+
+_MEMO = "_charts_call_types"
+
+
+def _remembering(original):
+    """``BaseFunction.get_call_type`` with the memo (see the module's docstring)."""
+    from numba.core.target_extension import get_local_target
+
+    def get_call_type(self, context, args, kws):
+        try:
+            key = (context, get_local_target(context), tuple(args),
+                   tuple(sorted(kws.items())) if kws else ())
+            hash(key)
+        except TypeError:                      # an unhashable argument type: numba's own way
+            return original(self, context, args, kws)
+        memo = self.__dict__.get(_MEMO)
+        if memo is None:
+            memo = self.__dict__[_MEMO] = {}
+        hit = memo.get(key)
+        if hit is not None:
+            sig, impl_key = hit
+            self._impl_keys[sig.args] = impl_key
+            return sig
+        sig = original(self, context, args, kws)
+        if sig is not None and sig.args in self._impl_keys:
+            memo[key] = (sig, self._impl_keys[sig.args])
+        return sig
+
+    get_call_type._charts_memo = True
+    get_call_type.__wrapped__ = original
+    get_call_type.__doc__ = original.__doc__
+    return get_call_type
+
+
+def memo_size(fnty) -> int:
+    """The number of argument-type combinations the function type ``fnty`` remembers."""
+    return len(fnty.__dict__.get(_MEMO, {}))
+
+
+def install() -> None:
+    """Give numba's function types the memo (idempotent)."""
+    global ACTIVE
+    if os.environ.get("CHARTS_NUMBA_TYPING", "1").strip() == "0":
+        return
+    from numba.core.types.functions import BaseFunction
+
+    if getattr(BaseFunction.get_call_type, "_charts_memo", False):
+        ACTIVE = True
+        return
+    BaseFunction.get_call_type = _remembering(BaseFunction.get_call_type)
+    ACTIVE = True

@@ -1,0 +1,81 @@
+"""numba's typing of calls remembered (``charts.numba_typing``): installed by numba's entry
+point, off when asked, and the compiled code the same with and without it."""
+import operator
+import os
+import subprocess
+import sys
+
+from numba import njit
+from numba.core import types
+
+from charts import numba_typing
+
+#: Compiles a generated chart kernel afresh (no cache) in a new process and prints whether
+#: the memo is on and a digest of the optimised LLVM IR of what numba compiled.
+_PROBE = """
+import hashlib, numpy as np
+from numba import njit
+from numba.core.types.functions import BaseFunction
+from charts.generated import rotor_n4 as g
+f = njit(error_model="numpy")(g.transport_rate_sc)
+d = g.DIM
+x = np.linspace(0.2, 0.9, d)
+f(x, x + 1.0, x, x, np.ones(d + 1), np.ones(d + 1), 0.0, np.empty(d))
+ir = "".join(f.inspect_llvm().values())
+print(getattr(BaseFunction.get_call_type, "_charts_memo", False), hashlib.sha1(ir.encode()).hexdigest())
+"""
+
+
+def _probe(memo: bool):
+    env = dict(os.environ, CHARTS_NUMBA_TYPING="1" if memo else "0")
+    r = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, text=True,
+                       timeout=300, env=env)
+    assert r.returncode == 0, r.stderr
+    on, digest = r.stdout.split()
+    return on == "True", digest
+
+
+def test_installed_by_numbas_entry_point_and_off_when_asked():
+    """A process that never imports charts before compiling gets the memo from numba's entry
+    point; ``CHARTS_NUMBA_TYPING=0`` leaves numba's own function.  Either way the generated
+    kernel compiles to the same LLVM IR, byte for byte."""
+    on, with_memo = _probe(True)
+    off, without = _probe(False)
+    assert on and not off
+    assert with_memo == without
+
+
+def test_install_is_idempotent_and_keeps_numbas_function():
+    from numba.core.types.functions import BaseFunction
+
+    numba_typing.install()
+    numba_typing.install()
+    assert numba_typing.ACTIVE
+    patched = BaseFunction.get_call_type
+    assert patched._charts_memo
+    assert not getattr(patched.__wrapped__, "_charts_memo", False)
+
+
+def test_a_hit_returns_the_signature_and_implementation_numba_found():
+    """The memo answers the second question with the first answer: the same signature object,
+    and the implementation key numba recorded for it."""
+    @njit
+    def f(x, y):
+        return x * y + x * y
+
+    assert f(2.0, 3.0) == 12.0
+    fnty = types.Function  # the function type numba built for operator.mul
+    from numba.core.registry import cpu_target
+
+    ctx = cpu_target.typing_context
+    mul = ctx.resolve_value_type(operator.mul)
+    assert isinstance(mul, fnty)
+    args = (types.float64, types.float64)
+    first = mul.get_call_type(ctx, args, {})
+    assert numba_typing.memo_size(mul) >= 1
+    key = mul._impl_keys[first.args]
+    mul._impl_keys[first.args] = None          # a later resolution wrote another key
+    again = mul.get_call_type(ctx, args, {})
+    assert again is first
+    assert mul._impl_keys[first.args] == key   # the hit records it again, as numba's call does
+    assert again.return_type == types.float64
