@@ -24,6 +24,8 @@ the chart right-hand side.
 """
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
@@ -74,11 +76,31 @@ def _function(name, args, doc, outputs, printer, scalar=False, atoms=()):
         lines.append(f"    {sym} = {printer.doprint(e)}")
     if scalar:
         lines.append(f"    return {printer.doprint(reduced[0])}")
-    else:
+    elif len(_shape(outputs)) == 1:
         for (index, _), e in zip(flat, reduced):
-            lines.append(f"    out[{', '.join(map(str, index))}] = {printer.doprint(e)}")
+            lines.append(f"    out[{index[0]}] = {printer.doprint(e)}")
         lines.append("    return out")
+    else:
+        lines += _flat_stores(_shape(outputs), [i for i, _ in flat], reduced, printer)
     return "\n".join(lines) + "\n"
+
+
+def _flat_stores(shape, indices, reduced, printer):
+    """The stores of a multi-index output ``out`` (C-contiguous, ``shape``) through its flat
+    view, zeros by one fill: numba lowers every store to an N-d array with a copy of the
+    array's descriptor that LLVM must then take apart (its SROA pass), and the N = 6 Riemann
+    tensor's 625 stores compiled for 7 s this way against 1.6 s through the flat view with
+    the 345 zeros filled (the values are the same, bit for bit)."""
+    strides = [math.prod(shape[i + 1:]) for i in range(len(shape))]
+    lines = ["    o = out.reshape(-1)"]
+    if any(e == 0 for e in reduced):
+        lines.append("    o[:] = 0.0")
+    for index, e in zip(indices, reduced):
+        if e != 0:
+            flat = sum(i * s for i, s in zip(index, strides))
+            lines.append(f"    o[{flat}] = {printer.doprint(e)}  # {', '.join(map(str, index))}")
+    lines.append("    return out")
+    return lines
 
 
 def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = None) -> str:
