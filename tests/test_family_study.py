@@ -192,6 +192,22 @@ def test_small_value_law_errors_see_correlated_samples():
     assert rep["coef2_se"] / naive_coef == pytest.approx(3.0, rel=SE_RTOL)
 
 
+def test_no_error_from_one_batch_holding_the_small_samples():
+    """Where one batch holds every sample below x0, the batch-means errors are undefined
+    (NaN), not 0: the ratio estimator's residual then vanishes by construction.  From two such
+    batches on they are finite and positive; the estimates themselves are unchanged."""
+    x = np.full(1000, 0.5)
+    x[10:13] = [0.01, 0.02, 0.05]                     # all in the first of 10 batches
+    one = small_value_law(x, 0.1, n_batches=10)
+    assert one["count"] == 3 and one["exponent"] == pytest.approx(3 / np.log(0.1 / x[10:13]).sum())
+    assert math.isnan(one["exponent_se"]) and math.isnan(one["coef2_se"])
+    x[510] = 0.03                                      # a second batch holds one
+    two = small_value_law(x, 0.1, n_batches=10)
+    assert two["exponent_se"] > 0 and two["coef2_se"] > 0
+    pooled = pool_small_value_laws([one, two])         # an unknown part: an unknown whole
+    assert math.isnan(pooled["exponent_se"]) and math.isnan(pooled["coef2_se"])
+
+
 def test_pooled_laws_equal_the_law_of_the_whole_sample():
     rng = np.random.default_rng(11)
     x = _law_samples(rng, 4.0, 2.0, 90_000)

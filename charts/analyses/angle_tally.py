@@ -308,11 +308,10 @@ class AngleTally(Archivable):
         out["cdf"] = [[float(x), float(below[:, e].sum() / N),
                        float(standard_error(below[:, e] / n))]
                       for e, x in enumerate(EDGES) if below[:, e].any()]
-        out["law"] = [_one_member_no_error(law_from_batches(int(self.law_count[v, :, i].sum()),
+        out["law"] = [_finite_or_none(law_from_batches(int(self.law_count[v, :, i].sum()),
                                        float(self.law_logsum[v, :, i].sum()), N,
                                        self.law_count[v, has, i], self.law_logsum[v, has, i],
-                                       self.law_count[v, has, i] / n, x0),
-                                       np.count_nonzero(self.law_count[v, has, i]))
+                                       self.law_count[v, has, i] / n, x0))
                       for i, x0 in enumerate(LAW_X0)]
         count, total = self.ladder_count[v], self.ladder_sum[v]
         levels = [j for j in range(LADDER) if np.count_nonzero(count[:, j])]
@@ -376,15 +375,6 @@ class AngleTally(Archivable):
     def from_xarray(cls, ds):
         return cls(**{k: ds[k].values for k in SUMS}, params=attributes(ds)["params"],
                    seeds=ds["seed"].values)
-
-
-def _one_member_no_error(law, holders):
-    """``law`` with its errors undefined (None) where fewer than two members hold samples
-    below x₀ (the spread between members is then unknown, not 0), NaN as None."""
-    if holders < 2:
-        law.update(exponent_se=None, coef2_se=None)
-    return {k: (None if isinstance(x, float) and not np.isfinite(x) else x)
-            for k, x in law.items()}
 
 
 def _finite_or_none(x):

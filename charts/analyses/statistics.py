@@ -55,7 +55,8 @@ def small_value_law(samples, x0, n_batches=10):
     means over ``n_batches`` contiguous blocks (β̂ as a ratio estimator, sums per block), so
     that correlated neighbours (one tangency passage gives several small samples) are not
     counted as independent.  For independent samples they tend to β/√k and
-    √(p(1−p)/n)/x0².  NaN where undefined (no sample below x0, fewer than two batches).
+    √(p(1−p)/n)/x0².  NaN where undefined (no sample below x0, fewer than two batches
+    holding samples below it: `law_from_batches`).
     """
     x = np.asarray(samples, dtype=float)
     if x.ndim != 1 or x.size == 0:
@@ -82,12 +83,16 @@ def law_from_batches(count, logsum, n, kb, Lb, fb, x0):
     ``logsum`` Σ ln(x0/xᵢ); per batch (B,) the counts ``kb``, log sums ``Lb`` and fractions
     below ``fb`` (the batches: blocks of one series, or independent series such as the
     members of an ensemble).  β̂ = count / logsum; its error by the batch-means ratio
-    estimator, A's by the spread of ``fb``."""
+    estimator, A's by the spread of ``fb``.  Both errors are NaN (undefined) where fewer than
+    two batches hold samples below ``x0``: the spread between batches is then unknown, not
+    small (with one such batch the ratio estimator's residuals vanish by construction, and a
+    zero error would claim an exact exponent)."""
     kb, Lb, fb = (np.asarray(a, dtype=float) for a in (kb, Lb, fb))
     k, L = int(count), float(logsum)
     beta = k / L if L > 0 else np.nan
     B = len(kb)
-    if B >= 2 and L > 0:
+    spread = B >= 2 and np.count_nonzero(kb) >= 2
+    if spread and L > 0:
         beta_se = float(np.sqrt(B / (B - 1) * np.sum((kb - beta * Lb) ** 2)) / L)
     else:
         beta_se = np.nan
@@ -95,7 +100,7 @@ def law_from_batches(count, logsum, n, kb, Lb, fb, x0):
         x02 = float(np.float64(x0) ** 2)
     return dict(count=k, n=int(n), x0=float(x0), exponent=float(beta),
                 exponent_se=beta_se, coef2=k / n / x02 if x02 > 0 else np.nan,
-                coef2_se=float(standard_error(fb)) / x02 if x02 > 0 else np.nan)
+                coef2_se=float(standard_error(fb)) / x02 if x02 > 0 and spread else np.nan)
 
 
 def block_minima(samples, sizes):
