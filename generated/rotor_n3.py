@@ -3,7 +3,8 @@
 """Rotor manifold, N = 3: geometry of the canonical chart (eliminates θ_2) on
 the constraint sum(a_i cos(theta_i)) = c.  Arguments: q = local angles, shape (2,);
 m = masses and a = weights, shape (3,) each, local order with the eliminated rotor's
-last; c = level (float); v, p, x, y = local vector components, shape (2,).
+last; c = level (float); v, p, x, y = local vector components, shape (2,);
+out = a C-contiguous array of the shape each function names, written whole.
 Index conventions: see charts/codegen/symbolic.py.
 """
 import math

@@ -3,7 +3,8 @@
 """Rotor manifold, N = 4: geometry of the canonical chart (eliminates θ_3) on
 the constraint sum(a_i cos(theta_i)) = c.  Arguments: q = local angles, shape (3,);
 m = masses and a = weights, shape (4,) each, local order with the eliminated rotor's
-last; c = level (float); v, p, x, y = local vector components, shape (3,).
+last; c = level (float); v, p, x, y = local vector components, shape (3,);
+out = a C-contiguous array of the shape each function names, written whole.
 Index conventions: see charts/codegen/symbolic.py.
 """
 import math

@@ -3,7 +3,8 @@
 """Rotor manifold, N = 5: geometry of the canonical chart (eliminates θ_4) on
 the constraint sum(a_i cos(theta_i)) = c.  Arguments: q = local angles, shape (4,);
 m = masses and a = weights, shape (5,) each, local order with the eliminated rotor's
-last; c = level (float); v, p, x, y = local vector components, shape (4,).
+last; c = level (float); v, p, x, y = local vector components, shape (4,);
+out = a C-contiguous array of the shape each function names, written whole.
 Index conventions: see charts/codegen/symbolic.py.
 """
 import math

@@ -3,7 +3,8 @@
 """Rotor manifold, N = 6: geometry of the canonical chart (eliminates θ_5) on
 the constraint sum(a_i cos(theta_i)) = c.  Arguments: q = local angles, shape (5,);
 m = masses and a = weights, shape (6,) each, local order with the eliminated rotor's
-last; c = level (float); v, p, x, y = local vector components, shape (5,).
+last; c = level (float); v, p, x, y = local vector components, shape (5,);
+out = a C-contiguous array of the shape each function names, written whole.
 Index conventions: see charts/codegen/symbolic.py.
 """
 import math

@@ -4,7 +4,8 @@
 the paper's constraint sum(cos(theta_i)) = 0 (a = 1, c = 0 substituted before code
 generation; a and c are accepted and ignored).  Arguments: q = local angles, shape (5,);
 m = masses and a = weights, shape (6,) each, local order with the eliminated rotor's
-last; c = level (float); v, p, x, y = local vector components, shape (5,).
+last; c = level (float); v, p, x, y = local vector components, shape (5,);
+out = a C-contiguous array of the shape each function names, written whole.
 Index conventions: see charts/codegen/symbolic.py.
 """
 import math

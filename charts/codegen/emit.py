@@ -172,7 +172,8 @@ def module_source(n: int, paper: bool = False, geometry: ChartGeometry | None = 
         f'"""Rotor manifold, N = {n}: geometry of the canonical chart (eliminates θ_{n - 1}) on\n'
         + what +
         f"m = masses and a = weights, shape ({n},) each, local order with the eliminated rotor's\n"
-        f"last; c = level (float); v, p, x, y = local vector components, shape ({d},).\n"
+        f"last; c = level (float); v, p, x, y = local vector components, shape ({d},);\n"
+        f"out = a C-contiguous array of the shape each function names, written whole.\n"
         f'Index conventions: see charts/codegen/symbolic.py.\n"""\n'
         "import math\n\nN = {n}\nDIM = {d}\n".format(n=n, d=d),
         function("metric", ["q", "m", "a", "c", "out"],
