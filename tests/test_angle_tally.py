@@ -149,6 +149,28 @@ def test_the_cpu_route_tallies_the_ensemble():
     assert "\n" not in repr(t) and "angles of 3 members" in repr(t)
 
 
+def test_the_cpu_tally_runs_all_its_chunks_in_one_pool(monkeypatch):
+    """Three chunks on two workers: one process pool for the whole tally (none started per
+    chunk), and the tally of the run in one process."""
+    import concurrent.futures
+    import charts.analyses.ensemble as ens_mod
+    import charts.analyses.hyperbolicity as hyp
+    S = RotorSystem(3)
+    kw = dict(t_transient=1.0, seed=4, chunk=2)
+    ref = hyperbolicity_tally(S, 5, 2.0, workers=1, **kw)
+    started = []
+
+    class Counted(concurrent.futures.ProcessPoolExecutor):
+        def __init__(self, *a, **k):
+            started.append(k.get("max_workers"))
+            super().__init__(*a, **k)
+    monkeypatch.setattr(hyp, "ProcessPoolExecutor", Counted)
+    monkeypatch.setattr(ens_mod, "ProcessPoolExecutor", Counted)
+    got = hyperbolicity_tally(S, 5, 2.0, workers=2, **kw)
+    assert started == [2]
+    _same(got, ref)
+
+
 def test_saved_and_loaded(tmp_path):
     pytest.importorskip("xarray")
     from charts import load
@@ -215,18 +237,18 @@ def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypa
     S = RotorSystem(3)
     kw = dict(t_transient=1.0, workers=1, chunk=2)
     whole = hyperbolicity_tally(S, 5, 3.0, **kw)
-    real, calls = hyp.hyperbolicity_ensemble, []
+    real, calls = hyp._ensemble_on_cpu, []
 
     def cut(*a, **k):
         calls.append(1)
         if len(calls) == 2:
             raise KeyboardInterrupt
         return real(*a, **k)
-    monkeypatch.setattr(hyp, "hyperbolicity_ensemble", cut)
+    monkeypatch.setattr(hyp, "_ensemble_on_cpu", cut)
     path = tmp_path / "partial.nc"
     with pytest.raises(KeyboardInterrupt):
         hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
-    monkeypatch.setattr(hyp, "hyperbolicity_ensemble", real)
+    monkeypatch.setattr(hyp, "_ensemble_on_cpu", real)
     from charts import load
     assert load(path).params["members_done"] == 2 and load(path).n[:2].tolist() == [30, 30]
     with pytest.raises(ValueError, match="another run"):

@@ -191,13 +191,14 @@ def _member(job):
 
 
 def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                 progress=False, desc="ensemble", prime=None, **kwargs) -> EnsembleResult:
+                 progress=False, desc="ensemble", prime=None, pool=None,
+                 **kwargs) -> EnsembleResult:
     """``fn(system, theta0, u0, t_final, seed=s, **kwargs)`` on ``n_trajectories`` random
     states of speed ``speed`` (seeds seed, seed+1, …), in ``workers`` processes (default:
-    all cores; 1: in this process).  Members whose results have ``exponents`` give the
-    ensemble's mean and standard error.  ``prime``: (t_final, settings overriding kwargs) of
-    a short call that compiles the kernels in this process before the workers start
-    (`map_jobs`)."""
+    all cores; 1: in this process) or in the process pool ``pool`` (a caller's, kept across
+    its ensembles).  Members whose results have ``exponents`` give the ensemble's mean and
+    standard error.  ``prime``: (t_final, settings overriding kwargs) of a short call that
+    compiles the kernels in this process before the workers start (`map_jobs`)."""
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     jobs = [(fn, system, seed + i, speed, t_final, kwargs)
@@ -206,7 +207,7 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     if prime is not None:
         first = (_member, (fn, system, seed, speed, prime[0], {**kwargs, **prime[1]}))
     members = map_jobs(_member, jobs, [1] * len(jobs), workers, t_final, progress, desc,
-                       prime=first, name=fn.__name__, n=system.n)
+                       prime=first, name=fn.__name__, n=system.n, pool=pool)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
 
@@ -222,10 +223,12 @@ def ensemble_arguments(n_trajectories, t_final, speed, seed, workers, progress):
     return n_trajectories, seed, workers
 
 
-def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name=None, n=None):
+def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name=None, n=None,
+             pool=None):
     """The members of ``fn(job)`` for the jobs, in order (each returns a list of ``sizes[i]``
-    members), in ``workers`` processes (default all cores; 1: in this process); progress in
-    simulated time (members done × t_final).
+    members), in ``workers`` processes (default all cores; 1: in this process) or in the
+    executor ``pool`` (a caller's, not shut down here); progress in simulated time (members
+    done × t_final).
 
     With workers, the kernels are compiled once: ``prime`` = (function, job), a short call
     that compiles them, runs here first, so that the workers load them from numba's disk
@@ -234,13 +237,16 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
     (``name``, ``n``: the analysis and N the notice names).  Never more processes than jobs
     (``workers=10**6`` for two jobs starts two)."""
     workers = min(workers or os.cpu_count() or 1, max(1, len(jobs)))
-    if workers == 1:
+    if workers == 1 and pool is None:
         return _collect(map(fn, jobs), sizes, t_final, progress, desc)
     name = name or getattr(fn, "__name__", "ensemble")
     if prime is not None:
         announce(name, timed_call(*prime)[1], n)
-    with ProcessPoolExecutor(max_workers=workers) as pool:
+    if pool is not None:
         timed = pool.map(_timed_job, [(fn, job) for job in jobs])
+        return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
+    with ProcessPoolExecutor(max_workers=workers) as own:
+        timed = own.map(_timed_job, [(fn, job) for job in jobs])
         return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
 
 

@@ -37,6 +37,8 @@ from __future__ import annotations
 
 import os
 import warnings
+from concurrent.futures import ProcessPoolExecutor
+from contextlib import ExitStack
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -305,12 +307,21 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
                                 workers=workers or os.cpu_count() or 1, update=rep.update)
         rep.close()
         return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
-    # the priming call: two samples on the members' own grid (whole steps of their dt)
+    return _ensemble_on_cpu(system, cfg, n_trajectories, t_final, speed, seed, workers,
+                            progress, None, kwargs)
+
+
+def _ensemble_on_cpu(system, cfg, n_trajectories, t_final, speed, seed, workers, progress,
+                     pool, kwargs) -> EnsembleResult:
+    """`hyperbolicity_ensemble` on the CPU: its members in ``workers`` processes or in the
+    executor ``pool``, after a priming call here (two samples on the members' own grid,
+    whole steps of their dt) that compiles their kernels once."""
     every = cfg.sample * cfg.dt
     short = (2 * every, {"t_transient": 0.0, "sample_every": every})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
                         seed=seed, workers=workers, progress=progress,
-                        desc=f"angles N={system.n} ensemble", prime=short, **kwargs)
+                        desc=f"angles N={system.n} ensemble", prime=short, pool=pool,
+                        **kwargs)
 
 
 def angle_members(system, cfg: AngleSettings, seeds, speed, **kw):
@@ -363,7 +374,8 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
 def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, checkpoint,
                   rep, kwargs) -> AngleTally:
     """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
-    each chunk's tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
+    all in one pool of ``workers`` processes (started once, not per chunk), each chunk's
+    tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
     from ..archive import load
     if stored_bytes(cfg) > MAX_STORE:
         raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
@@ -388,13 +400,32 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
         rep.update(done * t_final)
     size = max(2, int(chunk or 4 * workers))                # an ensemble has 2 members or more
     cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
+    widest = int(np.diff(cuts).max())
+    check_memory(widest * 8 * (3 * cfg.samples + 2 * cfg.m),
+                 f"the angles of a chunk of {widest} members ({cfg.samples} samples each)",
+                 "run smaller chunks (chunk) or sample less often (sample_every)")
+    with ExitStack() as stack:
+        pool = None
+        if workers > 1 and L - done > 0:
+            pool = stack.enter_context(ProcessPoolExecutor(max_workers=min(workers, widest)))
+        _chunks(system, cfg, tally, cuts, done, t_final, speed, seed, workers, pool, checkpoint,
+                L, rep, kwargs)
+    if checkpoint is not None and os.path.exists(checkpoint):
+        os.remove(checkpoint)                    # the run is whole: its result is returned
+    return tally
+
+
+def _chunks(system, cfg, tally, cuts, done, t_final, speed, seed, workers, pool, checkpoint, L,
+            rep, kwargs):
+    """The chunks [a, b) of `_tally_on_cpu` not yet ``done``, each added to ``tally`` and
+    saved to ``checkpoint``."""
     for a, b in zip(cuts[:-1], cuts[1:]):
         if b <= done:
             continue
         if a < done:                                  # a checkpoint of another chunk size
             raise ValueError(f"{checkpoint} was written with another chunk size")
-        ens = hyperbolicity_ensemble(system, b - a, t_final, speed=speed, seed=seed + a,
-                                     workers=workers, **kwargs)
+        ens = _ensemble_on_cpu(system, cfg, int(b - a), t_final, speed, seed + int(a), workers,
+                               False, pool, kwargs)
         for i, m in enumerate(ens.members):
             tally.add(m.phi_full[None, :], a + i, variant="full")
             tally.add(m.phi_restricted[None, :], a + i, variant="restricted")
@@ -403,9 +434,6 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
             tally.params["members_done"] = int(b)
             tally.save(checkpoint)
             tally.params.pop("members_done")
-    if checkpoint is not None and os.path.exists(checkpoint):
-        os.remove(checkpoint)                    # the run is whole: its result is returned
-    return tally
 
 
 def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **kw):
