@@ -9,11 +9,15 @@ operations), so a chart kernel's first compilation spent half its type inference
 `integrate` in a chart at a new N took 4.5 s CPU, 2.2 s with this memo (docs/performance.md,
 First use).
 
-`install` gives each function type a memo: (typing context, target, argument types, keyword
-types) → the signature found and the implementation key numba recorded with it.  A template's
-answer depends only on those, so the signatures, the IR and the compiled code are the same;
-only found signatures are kept (a failure is asked again, as numba does), and a hit records
-the implementation key again, as numba's own call does.  The memo lives on the function type
+`install` gives each function type a memo: (typing context, target, the calling function's
+compiler flags, argument types, keyword types) → the signature found and the implementation
+key numba recorded with it.  The flags belong in the key because an ``@overload``'s
+implementation inherits the caller's (its error model, fastmath, …: numba builds one
+implementation per set, ``_OverloadFunctionTemplate._get_impl``).  Only found signatures are
+kept (a failure is asked again, as numba does), and a hit records the implementation key
+again, as numba's own call does.  Function types with an ``@overload(inline=...)`` template
+other than "never" are left to numba: it rebuilds the callee's IR for the inliner at each
+typing (``_inline_overloads``), which a hit would skip.  The memo lives on the function type
 object (dropped with it; a function type augmented by a new ``@overload`` is a new object).
 It serves every compilation in the process, charts' or not.  numba calls `install` through
 its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
@@ -32,20 +36,34 @@ ACTIVE = False
 _MEMO = "_charts_call_types"
 
 
+def _inlines(fnty) -> bool:
+    """Whether any of the function type's templates is an ``@overload`` inlined at numba-IR
+    level (its ``_inline`` option other than "never")."""
+    for template in getattr(fnty, "templates", ()):
+        inline = getattr(template, "_inline", None)
+        if inline is not None and not inline.is_never_inline:
+            return True
+    return False
+
+
 def _remembering(original):
     """``BaseFunction.get_call_type`` with the memo (see the module's docstring)."""
     from numba.core.target_extension import get_local_target
+    from numba.core.targetconfig import ConfigStack
 
     def get_call_type(self, context, args, kws):
+        memo = self.__dict__.get(_MEMO)
+        if memo is None:
+            memo = self.__dict__[_MEMO] = False if _inlines(self) else {}
+        if memo is False:                       # an inlined @overload: numba's own way
+            return original(self, context, args, kws)
+        flags = ConfigStack.top_or_none()       # compared by their values
         try:
-            key = (context, get_local_target(context), tuple(args),
+            key = (context, get_local_target(context), flags, tuple(args),
                    tuple(sorted(kws.items())) if kws else ())
             hash(key)
         except TypeError:                      # an unhashable argument type: numba's own way
             return original(self, context, args, kws)
-        memo = self.__dict__.get(_MEMO)
-        if memo is None:
-            memo = self.__dict__[_MEMO] = {}
         hit = memo.get(key)
         if hit is not None:
             sig, impl_key = hit
@@ -53,7 +71,8 @@ def _remembering(original):
             return sig
         sig = original(self, context, args, kws)
         if sig is not None and sig.args in self._impl_keys:
-            memo[key] = (sig, self._impl_keys[sig.args])
+            frozen = key if flags is None else key[:2] + (flags.copy(),) + key[3:]
+            memo[frozen] = (sig, self._impl_keys[sig.args])
         return sig
 
     get_call_type._charts_memo = True
@@ -63,8 +82,9 @@ def _remembering(original):
 
 
 def memo_size(fnty) -> int:
-    """The number of argument-type combinations the function type ``fnty`` remembers."""
-    return len(fnty.__dict__.get(_MEMO, {}))
+    """The number of argument-type combinations the function type ``fnty`` remembers (0 where
+    it is left to numba)."""
+    return len(fnty.__dict__.get(_MEMO) or ())
 
 
 def install() -> None:

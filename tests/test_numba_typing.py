@@ -5,8 +5,11 @@ import os
 import subprocess
 import sys
 
+import numpy as np
+import pytest
 from numba import njit
 from numba.core import types
+from numba.extending import overload
 
 from charts import numba_typing
 
@@ -79,3 +82,74 @@ def test_a_hit_returns_the_signature_and_implementation_numba_found():
     assert again is first
     assert mul._impl_keys[first.args] == key   # the hit records it again, as numba's call does
     assert again.return_type == types.float64
+
+
+def _divide(a, b):
+    pass
+
+
+@overload(_divide)
+def _divide_impl(a, b):
+    def impl(a, b):
+        return a / b
+    return impl
+
+
+def test_an_overload_keeps_each_callers_error_model():
+    """An ``@overload``'s implementation inherits its caller's compiler flags (numba builds
+    one per set): a caller with numba's default error model raises at a zero divisor, one
+    with numpy's returns inf, in either order of compilation (the flags are in the key)."""
+    def python_model(a, b):
+        return _divide(a, b)
+
+    def numpy_model(a, b):
+        return _divide(a, b)
+
+    for order in ((python_model, numpy_model), (numpy_model, python_model)):
+        compiled = {f: (njit(error_model="numpy") if f is numpy_model else njit)(f)
+                    for f in order}
+        for f in order:
+            if f is numpy_model:
+                assert compiled[f](1.0, 0.0) == np.inf
+            else:
+                with pytest.raises(ZeroDivisionError):
+                    compiled[f](1.0, 0.0)
+
+
+_OFFSET = 1
+
+
+def _plus_offset(x):
+    pass
+
+
+@overload(_plus_offset, inline="always")
+def _plus_offset_impl(x):
+    def impl(x):
+        return x + _OFFSET
+    return impl
+
+
+def test_inlined_overloads_are_left_to_numba():
+    """numba rebuilds an inlined overload's IR at each typing (the inliner reads it): such
+    function types keep no memo, and a function compiled after the global it reads changed
+    sees the new value, as without the memo."""
+    global _OFFSET
+
+    @njit
+    def first(x):
+        return _plus_offset(x)
+
+    assert first(0) == 1
+    _OFFSET = 2
+    try:
+        @njit
+        def second(x):
+            return _plus_offset(x)
+
+        assert second(0) == 2
+        from numba.core.registry import cpu_target
+        fnty = cpu_target.typing_context.resolve_value_type(_plus_offset)
+        assert numba_typing.memo_size(fnty) == 0
+    finally:
+        _OFFSET = 1
