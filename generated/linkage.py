@@ -236,3 +236,7 @@ def third_form(q, v, w, par, out):
     out[2] = w[2]*(v[4]*x44*x48 - v[5]*x46*x48 + x4*x49 + x43*(x45*x51 + x47*x52) + x50) + w[4]*(x43*x45 + x6) + w[5]*(-x13 - x43*x47) + w[6]*(x23 + x25 + x4*(2*par[1]*x10*x52 - x26*x51) + x43*x49 + x50)
     out[3] = w[3]*(-v[4]*x54*x58 - v[5]*x56*x58 + x4*x59 + x53*(-x55*x62 + x57*x61) + x60) + w[4]*(-x12 - x53*x55) + w[5]*(-x33 - x53*x57) + w[6]*(x4*(x26*x61 + x27*x62) - x41 + x42 + x53*x59 + x60)
     return out
+
+
+#: The file's last line: a file cut short lacks it.
+COMPLETE = True

@@ -219,3 +219,7 @@ def eliminated_component(q, x, a, sin_k):
     ws0 = a[0]*math.sin(q[0])
     ws1 = a[1]*math.sin(q[1])
     return (-x[0]*ws0 - x[1]*ws1)/(a[2]*sin_k)
+
+
+#: The file's last line: a file cut short lacks it.
+COMPLETE = True

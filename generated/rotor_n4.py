@@ -435,3 +435,7 @@ def eliminated_component(q, x, a, sin_k):
     ws1 = a[1]*math.sin(q[1])
     ws2 = a[2]*math.sin(q[2])
     return (-x[0]*ws0 - x[1]*ws1 - x[2]*ws2)/(a[3]*sin_k)
+
+
+#: The file's last line: a file cut short lacks it.
+COMPLETE = True

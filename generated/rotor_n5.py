@@ -790,3 +790,7 @@ def eliminated_component(q, x, a, sin_k):
     ws2 = a[2]*math.sin(q[2])
     ws3 = a[3]*math.sin(q[3])
     return (-x[0]*ws0 - x[1]*ws1 - x[2]*ws2 - x[3]*ws3)/(a[4]*sin_k)
+
+
+#: The file's last line: a file cut short lacks it.
+COMPLETE = True

@@ -802,3 +802,7 @@ def curvature_operator(q, x, y, m, a, c, out):
 def eliminated_component(q, x, a, sin_k):
     """Ambient component of the eliminated angle of tangent vector x (tangency)."""
     return (-x[0]*math.sin(q[0]) - x[1]*math.sin(q[1]) - x[2]*math.sin(q[2]) - x[3]*math.sin(q[3]))/sin_k
+
+
+#: The file's last line: a file cut short lacks it.
+COMPLETE = True

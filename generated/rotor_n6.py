@@ -1352,3 +1352,7 @@ def eliminated_component(q, x, a, sin_k):
     ws3 = a[3]*math.sin(q[3])
     ws4 = a[4]*math.sin(q[4])
     return (-x[0]*ws0 - x[1]*ws1 - x[2]*ws2 - x[3]*ws3 - x[4]*ws4)/(a[5]*sin_k)
+
+
+#: The file's last line: a file cut short lacks it.
+COMPLETE = True

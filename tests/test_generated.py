@@ -319,8 +319,10 @@ def test_a_damaged_shipped_module_names_itself_and_the_repair(tmp_path, monkeypa
     source = (ROOT / "generated" / "rotor_n3.py").read_text()
     (tmp_path / "rotor_n97.py").write_text(source[: len(source) // 2])      # truncated
     (tmp_path / "rotor_n98.py").write_bytes(b"\x00\x89PNG garbage")
+    # cut short between two functions: still valid Python, but without its last line
+    (tmp_path / "rotor_n96.py").write_text(source[: source.index("\ndef riemann")])
     monkeypatch.setattr(charts.generated, "__path__", [str(tmp_path), *charts.generated.__path__])
-    for name in ("rotor_n97", "rotor_n98"):
+    for name in ("rotor_n96", "rotor_n97", "rotor_n98"):
         with pytest.raises(DamagedModuleError) as info:
             import_shipped(name)
         message = str(info.value)

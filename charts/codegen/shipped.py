@@ -12,6 +12,7 @@ from __future__ import annotations
 import difflib
 import importlib
 import importlib.util
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -98,10 +99,14 @@ def _origin(full: str) -> str:
 
 def import_shipped(name: str):
     """``charts.generated.<name>``; `DamagedModuleError` naming the file and `REPAIR` when it
-    exists but does not import."""
+    exists but does not import, or imports without its last line (``COMPLETE``: cut short)."""
     full = f"charts.generated.{name}"
     try:
-        return importlib.import_module(full)
+        mod = importlib.import_module(full)
+        if getattr(mod, "COMPLETE", False) is not True:
+            sys.modules.pop(full, None)
+            raise ImportError("the file ends before its last line (COMPLETE = True): cut short")
+        return mod
     except ModuleNotFoundError as exc:
         if exc.name in (full, "charts.generated"):
             raise DamagedModuleError(f"{full} is missing from this installation; repair it "
