@@ -10,14 +10,14 @@ operations), so a chart kernel's first compilation spent half its type inference
 First use).
 
 `install` gives each function type a memo: (typing context, target, the calling function's
-compiler flags, argument types, keyword types) → the signature found and the implementation
+compiler flags but those of its own wrapper, `OWN_FLAGS`, argument types, keyword types) → the signature found and the implementation
 key numba recorded with it.  The flags belong in the key because an ``@overload``'s
 implementation inherits the caller's (its error model, fastmath, …: numba builds one
 implementation per set, ``_OverloadFunctionTemplate._get_impl``).  Only found signatures are
 kept (a failure is asked again, as numba does), and a hit records the implementation key
-again, as numba's own call does.  Function types with an ``@overload(inline=...)`` template
-other than "never" are left to numba: it rebuilds the callee's IR for the inliner at each
-typing (``_inline_overloads``), which a hit would skip.  The memo lives on the function type
+again, as numba's own call does.  A call answered by an ``@overload(inline=...)`` other than
+"never" is not kept: numba rebuilds the callee's IR for the inliner at each typing
+(``_inline_overloads``), which a hit would skip.  The memo lives on the function type
 object (dropped with it; a function type augmented by a new ``@overload`` is a new object).
 It serves every compilation in the process, charts' or not.  numba calls `install` through
 its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
@@ -34,16 +34,35 @@ __all__ = ["install", "ACTIVE", "memo_size"]
 ACTIVE = False
 
 _MEMO = "_charts_call_types"
+_INLINING = "_charts_inlining_templates"
 
 
-def _inlines(fnty) -> bool:
-    """Whether any of the function type's templates is an ``@overload`` inlined at numba-IR
-    level (its ``_inline`` option other than "never")."""
+def _inlining(fnty) -> tuple:
+    """The function type's templates that are ``@overload``s inlined at numba-IR level (their
+    ``_inline`` option other than "never")."""
+    out = []
     for template in getattr(fnty, "templates", ()):
         inline = getattr(template, "_inline", None)
         if inline is not None and not inline.is_never_inline:
-            return True
-    return False
+            out.append(template)
+    return tuple(out)
+
+
+#: The calling function's compiler flags that concern only its own wrapper, its own inlining
+#: or object mode: left out of the key (they differ between functions, and no callee's
+#: implementation depends on them).  Every other flag is in it, by value.
+OWN_FLAGS = frozenset({"no_compile", "no_cpython_wrapper", "no_cfunc_wrapper", "inline",
+                       "enable_looplift", "enable_pyobject_looplift"})
+
+
+def _caller_flags(flags):
+    """The calling function's compiler flags as a key (None outside a compilation), or False
+    where one's text is not stable (an object's address)."""
+    if flags is None:
+        return None
+    key = tuple(sorted((name, repr(value)) for name, value in flags.values().items()
+                       if name not in OWN_FLAGS))
+    return False if any(" at 0x" in text for _, text in key) else key
 
 
 def _remembering(original):
@@ -54,10 +73,11 @@ def _remembering(original):
     def get_call_type(self, context, args, kws):
         memo = self.__dict__.get(_MEMO)
         if memo is None:
-            memo = self.__dict__[_MEMO] = False if _inlines(self) else {}
-        if memo is False:                       # an inlined @overload: numba's own way
+            memo = self.__dict__[_MEMO] = {}
+            self.__dict__[_INLINING] = _inlining(self)
+        flags = _caller_flags(ConfigStack.top_or_none())
+        if flags is False:                      # flags without a stable text: numba's own way
             return original(self, context, args, kws)
-        flags = ConfigStack.top_or_none()       # compared by their values
         try:
             key = (context, get_local_target(context), flags, tuple(args),
                    tuple(sorted(kws.items())) if kws else ())
@@ -70,9 +90,9 @@ def _remembering(original):
             self._impl_keys[sig.args] = impl_key
             return sig
         sig = original(self, context, args, kws)
-        if sig is not None and sig.args in self._impl_keys:
-            frozen = key if flags is None else key[:2] + (flags.copy(),) + key[3:]
-            memo[frozen] = (sig, self._impl_keys[sig.args])
+        if sig is not None and sig.args in self._impl_keys and not any(
+                sig.args in t._inline_overloads for t in self.__dict__[_INLINING]):
+            memo[key] = (sig, self._impl_keys[sig.args])
         return sig
 
     get_call_type._charts_memo = True
@@ -82,8 +102,7 @@ def _remembering(original):
 
 
 def memo_size(fnty) -> int:
-    """The number of argument-type combinations the function type ``fnty`` remembers (0 where
-    it is left to numba)."""
+    """The number of argument-type combinations the function type ``fnty`` remembers."""
     return len(fnty.__dict__.get(_MEMO) or ())
 
 
