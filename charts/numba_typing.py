@@ -17,8 +17,9 @@ implementation per set, ``_OverloadFunctionTemplate._get_impl``).  Only found si
 kept (a failure is asked again, as numba does), and a hit records the implementation key
 again, as numba's own call does.  A call answered by an ``@overload(inline=...)`` other than
 "never" is not kept: numba rebuilds the callee's IR for the inliner at each typing
-(``_inline_overloads``), which a hit would skip.  The memo lives on the function type
-object (dropped with it; a function type augmented by a new ``@overload`` is a new object).
+(``_inline_overloads``), which a hit would skip.  The memo is held beside the function
+type object (dropped with it; a function type augmented by a new ``@overload`` is a new
+object), not in it: numba pickles types with their attributes.
 It serves every compilation in the process, charts' or not.  numba calls `install` through
 its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
 compiles anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should
@@ -27,14 +28,17 @@ a numba version need it).
 from __future__ import annotations
 
 import os
+import weakref
 
 __all__ = ["install", "ACTIVE", "memo_size"]
 
 #: Whether numba's function types remember their signatures in this process.
 ACTIVE = False
 
-_MEMO = "_charts_call_types"
-_INLINING = "_charts_inlining_templates"
+#: function type -> (its memo, its inlined @overload templates); held beside the type, not
+#: in it: numba pickles a type with its ``__dict__`` (its disk cache's index does, for a
+#: function-pointer argument), and the memo holds typing contexts.
+_HELD = weakref.WeakKeyDictionary()
 
 
 def _inlining(fnty) -> tuple:
@@ -71,10 +75,10 @@ def _remembering(original):
     from numba.core.targetconfig import ConfigStack
 
     def get_call_type(self, context, args, kws):
-        memo = self.__dict__.get(_MEMO)
-        if memo is None:
-            memo = self.__dict__[_MEMO] = {}
-            self.__dict__[_INLINING] = _inlining(self)
+        held = _HELD.get(self)
+        if held is None:
+            held = _HELD[self] = ({}, _inlining(self))
+        memo, inlining = held
         flags = _caller_flags(ConfigStack.top_or_none())
         if flags is False:                      # flags without a stable text: numba's own way
             return original(self, context, args, kws)
@@ -91,7 +95,7 @@ def _remembering(original):
             return sig
         sig = original(self, context, args, kws)
         if sig is not None and sig.args in self._impl_keys and not any(
-                sig.args in t._inline_overloads for t in self.__dict__[_INLINING]):
+                sig.args in t._inline_overloads for t in inlining):
             memo[key] = (sig, self._impl_keys[sig.args])
         return sig
 
@@ -103,7 +107,8 @@ def _remembering(original):
 
 def memo_size(fnty) -> int:
     """The number of argument-type combinations the function type ``fnty`` remembers."""
-    return len(fnty.__dict__.get(_MEMO) or ())
+    held = _HELD.get(fnty)
+    return 0 if held is None else len(held[0])
 
 
 def install() -> None:

@@ -153,3 +153,31 @@ def test_inlined_overloads_are_left_to_numba():
         assert numba_typing.memo_size(fnty) == 0
     finally:
         _OFFSET = 1
+
+
+_POINTER_PROBE = """
+import ctypes, ctypes.util
+from numba import njit
+libm = ctypes.CDLL(ctypes.util.find_library("m"))
+cos = libm.cos
+cos.restype, cos.argtypes = ctypes.c_double, (ctypes.c_double,)
+
+@njit(cache=True)
+def call(fn, x):
+    return fn(x)
+
+print(call(cos, 0.0))
+"""
+
+
+def test_a_cached_function_of_a_function_pointer_still_saves(tmp_path):
+    """numba's disk cache pickles the argument types with their attributes; the memo is held
+    beside the function types (a ctypes pointer's type is one), so they still pickle."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), CHARTS_NUMBA_TYPING="1")
+    script = tmp_path / "pointer_probe.py"            # numba caches only functions in files
+    script.write_text(_POINTER_PROBE)
+    r = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                       timeout=300, env=env, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "1.0"
+    assert list(tmp_path.rglob("*.nbi")), "nothing was cached"
