@@ -5,25 +5,24 @@ numba types every call in a function it compiles — each ``*`` and ``+``, ``mat
 (``types.BaseFunction.get_call_type``), which orders the callee's templates and tries them
 one by one; type inference asks again each time it revisits the call, and numba keeps no
 memo.  The generated chart kernels are long straight-line code (thousands of arithmetic
-operations), so a chart kernel's first compilation spent half its type inference there:
-`integrate` in a chart at a new N took 4.5 s CPU, 2.2 s with this memo (docs/performance.md,
-First use).
+operations): `integrate` in a chart at N = 6, after N = 3, took 5.2 s CPU, 3.1 s with this
+memo (docs/performance.md, First use).
 
 `install` gives each function type a memo: (typing context, target, the calling function's
-compiler flags but those of its own wrapper, `OWN_FLAGS`, argument types, keyword types) → the signature found and the implementation
-key numba recorded with it.  The flags belong in the key because an ``@overload``'s
-implementation inherits the caller's (its error model, fastmath, …: numba builds one
-implementation per set, ``_OverloadFunctionTemplate._get_impl``).  Only found signatures are
-kept (a failure is asked again, as numba does), and a hit records the implementation key
-again, as numba's own call does.  A call answered by an ``@overload(inline=...)`` other than
-"never" is not kept: numba rebuilds the callee's IR for the inliner at each typing
-(``_inline_overloads``), which a hit would skip.  The memo is held beside the function
-type object (dropped with it; a function type augmented by a new ``@overload`` is a new
-object), not in it: numba pickles types with their attributes.
-It serves every compilation in the process, charts' or not.  numba calls `install` through
-its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
-compiles anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should
-a numba version need it).
+compiler flags but those of its own wrapper, `OWN_FLAGS`, argument types, keyword types) →
+the signature found and the implementation key numba recorded with it.  The flags belong in
+the key because an ``@overload``'s implementation inherits the caller's (its error model,
+fastmath, NRT: numba builds one implementation per set, ``_OverloadFunctionTemplate._get_impl``).
+Only found signatures are kept (a failure is asked again, as numba does), and a hit records
+the implementation key again, as numba's own call does.  A call answered by an
+``@overload(inline=...)`` other than "never" is not kept: numba rebuilds the callee's IR for
+the inliner at each typing (``_inline_overloads``), which a hit would skip.  The memo is held
+beside the function type object (dropped with it; a function type augmented by a new
+``@overload`` is a new object), not in it: numba pickles types with their attributes.  It
+serves every compilation in the process, charts' or not.  numba calls `install` through its
+``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it compiles
+anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should a numba
+version need it).
 """
 from __future__ import annotations
 
