@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
+from ..archive import Archivable, attributes, dataset, load
 from ..geometry.checks import finite_array, integer
 from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
@@ -140,6 +140,22 @@ class AngleTally(Archivable):
         if stopped:
             params["stopped"] = stopped
         return cls(**arrays, params=params, seeds=seeds)
+
+    @classmethod
+    def resumed(cls, path, members, params) -> tuple:
+        """(the tally saved at ``path`` by an interrupted run of ``members`` members with
+        ``params``, members done): its whole members, ``params["members_done"]`` of them;
+        ValueError where the file holds another run's tally."""
+        saved = load(path)
+        kept = getattr(saved, "params", {})
+        if not isinstance(saved, AngleTally) or "members_done" not in kept \
+                or {k: v for k, v in kept.items() if k != "members_done"} != params \
+                or saved.n_members != members:
+            raise ValueError(f"{path} holds the tally of another run; remove it or name "
+                             "another checkpoint")
+        done = int(saved.params.pop("members_done"))
+        saved._open.update(carries(len(VARIANTS), members))     # whole members: no carry
+        return saved, done
 
     @property
     def n_members(self) -> int:

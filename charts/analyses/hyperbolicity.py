@@ -52,7 +52,7 @@ from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
-from .angle_tally import SMALL_ANGLE, VARIANTS, AngleTally, carries
+from .angle_tally import SMALL_ANGLE, AngleTally
 from .arguments import positive_int, positive_time, progress_reporter, start_state, Documented
 from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settings, forward_kernel
@@ -376,7 +376,6 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
     """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
     all in one pool of ``workers`` processes (started once, not per chunk), each chunk's
     tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
-    from ..archive import load
     if stored_bytes(cfg) > MAX_STORE:
         raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
                          f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "
@@ -386,17 +385,7 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
         chunk = positive_int("chunk", chunk)
     tally, done = AngleTally.empty(L, params), 0
     if checkpoint is not None and os.path.exists(checkpoint):
-        saved = load(checkpoint)
-        kept = getattr(saved, "params", {})
-        if not isinstance(saved, AngleTally) or "members_done" not in kept \
-                or {k: v for k, v in kept.items() if k != "members_done"} != tally.params \
-                or saved.n_members != L:
-            raise ValueError(f"{checkpoint} holds the tally of another run; remove it or "
-                             "name another checkpoint")
-        done = int(saved.params["members_done"])
-        saved._open.update(carries(len(VARIANTS), L))     # whole members: nothing carried
-        saved.params.pop("members_done")
-        tally = saved
+        tally, done = AngleTally.resumed(checkpoint, L, tally.params)
         rep.update(done * t_final)
     size = max(2, int(chunk or 4 * workers))                # an ensemble has 2 members or more
     cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
