@@ -152,12 +152,13 @@ def test_the_cpu_route_tallies_the_ensemble():
 def test_the_cpu_tally_runs_all_its_chunks_in_one_pool(monkeypatch):
     """Three chunks on two workers: one process pool for the whole tally (none started per
     chunk), and the tally of the run in one process."""
+    assert np.diff(np.linspace(0, 6, 6 // 2 + 1).round()).tolist() == [2, 2, 2]
     import concurrent.futures
     import charts.analyses.ensemble as ens_mod
     import charts.analyses.hyperbolicity as hyp
     S = RotorSystem(3)
     kw = dict(t_transient=1.0, seed=4, chunk=2)
-    ref = hyperbolicity_tally(S, 5, 2.0, workers=1, **kw)
+    ref = hyperbolicity_tally(S, 6, 2.0, workers=1, **kw)
     started = []
 
     class Counted(concurrent.futures.ProcessPoolExecutor):
@@ -166,7 +167,7 @@ def test_the_cpu_tally_runs_all_its_chunks_in_one_pool(monkeypatch):
             super().__init__(*a, **k)
     monkeypatch.setattr(hyp, "ProcessPoolExecutor", Counted)
     monkeypatch.setattr(ens_mod, "ProcessPoolExecutor", Counted)
-    got = hyperbolicity_tally(S, 5, 2.0, workers=2, **kw)
+    got = hyperbolicity_tally(S, 6, 2.0, workers=2, **kw)
     assert started == [2]
     _same(got, ref)
 
@@ -228,14 +229,16 @@ def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
     assert s["min"] == pytest.approx(min(phi[0].min(), phi[1, :100].min(), phi[2].min()))
 
 
-def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypatch):
+@pytest.mark.parametrize("workers", [1, 2])
+def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypatch, workers):
     """On the CPU the tally of the members done is saved after each chunk; a run interrupted
     in its second chunk and called again goes on from there, to the tally of a run never
-    interrupted, and removes it; a checkpoint of another run is refused."""
+    interrupted, and removes it; a checkpoint of another run is refused.  In this process
+    and in a pool of two."""
     pytest.importorskip("xarray")
     import charts.analyses.hyperbolicity as hyp
     S = RotorSystem(3)
-    kw = dict(t_transient=1.0, workers=1, chunk=2)
+    kw = dict(t_transient=1.0, workers=workers, chunk=2)
     whole = hyperbolicity_tally(S, 5, 3.0, **kw)
     real, calls = hyp._ensemble_on_cpu, []
 

@@ -224,6 +224,10 @@ def test_pooled_laws_equal_the_law_of_the_whole_sample():
     assert empty["count"] == 0 and math.isnan(empty["exponent"])
     more = pool_small_value_laws(parts + [empty])
     assert more["n"] == whole["n"] + 1000 and more["exponent"] == pooled["exponent"]
+    assert math.isnan(empty["coef2_se"])                # no sample: its own error undefined,
+    assert more["exponent_se"] == pooled["exponent_se"]  # but it adds no spread to the pool
+    assert more["coef2_se"] == pytest.approx(pooled["coef2_se"] * whole["n"] / more["n"],
+                                             rel=1e-12)
     with pytest.raises(ValueError, match="share one x0"):
         pool_small_value_laws([whole, small_value_law(x, 0.05, 10)])
 

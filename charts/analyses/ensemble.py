@@ -4,6 +4,7 @@ from __future__ import annotations
 import os
 import warnings
 from concurrent.futures import ProcessPoolExecutor
+from contextlib import nullcontext
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -242,11 +243,8 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
     name = name or getattr(fn, "__name__", "ensemble")
     if prime is not None:
         announce(name, timed_call(*prime)[1], n)
-    if pool is not None:
-        timed = pool.map(_timed_job, [(fn, job) for job in jobs])
-        return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
-    with ProcessPoolExecutor(max_workers=workers) as own:
-        timed = own.map(_timed_job, [(fn, job) for job in jobs])
+    with nullcontext(pool) if pool is not None else ProcessPoolExecutor(workers) as executor:
+        timed = executor.map(_timed_job, [(fn, job) for job in jobs])
         return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
 
 

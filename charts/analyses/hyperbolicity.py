@@ -155,9 +155,10 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     * the law of the small angles P(φ < x) = A x^β below ``small``
       (``charts.analyses.statistics.small_value_law``, 10 batches): ``law_exponent`` β̂ ±
       ``law_exponent_se``, ``law_coef2`` A for β = 2 ± ``law_coef2_se``, ``law_count`` the
-      samples below ``small`` — each None where undefined (a single batch, or an angle of
-      exactly 0; with no angle below ``small`` the exponent and its error are None, while
-      ``law_count`` = 0 and A = 0 ± 0 record that none fell below)."""
+      samples below ``small`` — each None where undefined (fewer than two batches holding
+      angles below ``small``, or an angle of exactly 0; with no angle below ``small`` the
+      exponent and both errors are None, while ``law_count`` = 0 and A = 0 record that none
+      fell below)."""
     phi = finite_array("phi", phi, ndim=1)
     if phi.size == 0:
         raise ValueError("phi must hold at least one angle, got an empty array")
@@ -395,8 +396,9 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
                  "run smaller chunks (chunk) or sample less often (sample_every)")
     with ExitStack() as stack:
         pool = None
-        if workers > 1 and L - done > 0:
-            pool = stack.enter_context(ProcessPoolExecutor(max_workers=min(workers, widest)))
+        if workers > 1 and L - done > 0:        # one pool; an interrupt cancels what is queued
+            pool = ProcessPoolExecutor(max_workers=min(workers, widest))
+            stack.callback(pool.shutdown, cancel_futures=True)
         _chunks(system, cfg, tally, cuts, done, t_final, speed, seed, workers, pool, checkpoint,
                 L, rep, kwargs)
     if checkpoint is not None and os.path.exists(checkpoint):

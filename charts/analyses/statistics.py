@@ -132,9 +132,10 @@ def pool_small_value_laws(laws):
     """One :func:`small_value_law` from those of independent samples with the same ``x0``
     (e.g. the seeds of a sweep point): counts and log sums add, so the pooled exponent and
     coefficient equal those of the concatenated samples exactly; the errors add the
-    per-sample batch-means variances of the same sums.  Each law is a dict with count, n,
-    x0, exponent, exponent_se, coef2, coef2_se (exponent and its error may be NaN/None
-    where count is 0)."""
+    per-sample batch-means variances of the same sums (a sample without values below x0
+    adds none; one whose error is undefined makes the pooled error undefined).  Each law is
+    a dict with count, n, x0, exponent, exponent_se, coef2, coef2_se (the errors, and the
+    exponent where count is 0, may be NaN/None)."""
     laws = list(laws)
     if not laws:
         raise ValueError("laws must hold at least one small_value_law result")
@@ -151,6 +152,7 @@ def pool_small_value_laws(laws):
     beta_p = K / Lt if Lt > 0 else np.nan
     beta_se = float(np.sqrt(np.sum(np.where(k > 0, bse * L, 0.0) ** 2)) / Lt) if Lt > 0 \
         else np.nan
-    cse = np.array([d["coef2_se"] for d in laws], dtype=float)
+    # a part without samples below x0 adds to n, not to the spread (its own error is undefined)
+    cse = np.where(k > 0, np.array([d["coef2_se"] for d in laws], dtype=float), 0.0)
     return dict(count=int(K), n=int(N), x0=x0, exponent=float(beta_p), exponent_se=beta_se,
                 coef2=float(K / N / x0 ** 2), coef2_se=float(np.sqrt(np.sum((n * cse) ** 2)) / N))
