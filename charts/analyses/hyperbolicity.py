@@ -314,9 +314,8 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
 
 def _ensemble_on_cpu(system, cfg, n_trajectories, t_final, speed, seed, workers, progress,
                      pool, kwargs) -> EnsembleResult:
-    """`hyperbolicity_ensemble` on the CPU: its members in ``workers`` processes or in the
-    executor ``pool``, after a priming call here (two samples on the members' own grid,
-    whole steps of their dt) that compiles their kernels once."""
+    """`hyperbolicity_ensemble` on the CPU: its members in ``workers`` processes or in ``pool``,
+    after a priming call here (two samples on the members' grid) that compiles their kernels."""
     every = cfg.sample * cfg.dt
     short = (2 * every, {"t_transient": 0.0, "sample_every": every})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
@@ -374,9 +373,8 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
 
 def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, checkpoint,
                   rep, kwargs) -> AngleTally:
-    """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks,
-    all in one pool of ``workers`` processes (started once, not per chunk), each chunk's
-    tally saved to ``checkpoint`` (params ``members_done``), resumed from it."""
+    """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks in
+    one pool, each chunk's tally saved to ``checkpoint`` (``members_done``), resumed from it."""
     if stored_bytes(cfg) > MAX_STORE:
         raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
                          f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "
