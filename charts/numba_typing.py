@@ -19,10 +19,11 @@ the implementation key again, as numba's own call does.  A call answered by an
 the inliner at each typing (``_inline_overloads``), which a hit would skip.  The memo is held
 beside the function type object (dropped with it; a function type augmented by a new
 ``@overload`` is a new object), not in it: numba pickles types with their attributes.  It
-serves every compilation in the process, charts' or not.  numba calls `install` through its
-``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it compiles
-anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should a numba
-version need it).
+serves every CPU compilation in the process, charts' or not (the GPU's are left to numba:
+not measured there).  numba calls `install` through its ``numba_extensions`` entry point
+(``charts.numba_init``, pyproject.toml) before it compiles anything;
+``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should a numba version
+need it).
 """
 from __future__ import annotations
 
@@ -70,7 +71,7 @@ def _caller_flags(flags):
 
 def _remembering(original):
     """``BaseFunction.get_call_type`` with the memo (see the module's docstring)."""
-    from numba.core.target_extension import get_local_target
+    from numba.core.target_extension import CPU, get_local_target
     from numba.core.targetconfig import ConfigStack
 
     def get_call_type(self, context, args, kws):
@@ -78,11 +79,12 @@ def _remembering(original):
         if held is None:
             held = _HELD[self] = ({}, _inlining(self))
         memo, inlining = held
+        target = get_local_target(context)
         flags = _caller_flags(ConfigStack.top_or_none())
-        if flags is False:                      # flags without a stable text: numba's own way
-            return original(self, context, args, kws)
+        if flags is False or not issubclass(target, CPU):   # numba's own way: flags without
+            return original(self, context, args, kws)       # a stable text, other targets
         try:
-            key = (context, get_local_target(context), flags, tuple(args),
+            key = (context, target, flags, tuple(args),
                    tuple(sorted(kws.items())) if kws else ())
             hash(key)
         except TypeError:                      # an unhashable argument type: numba's own way
