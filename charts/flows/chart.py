@@ -23,13 +23,14 @@ from __future__ import annotations
 
 import math
 from functools import cache
+from types import FunctionType
 
 import numpy as np
 from numba import njit
 
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
-from ..geometry.kernels import chart_module, module_digest, source
+from ..geometry.kernels import chart_module, inlined, module_digest, source
 from ..geometry.primitives import SHIFT_MAX, shifted
 from ..packed import layout, value, view
 
@@ -151,17 +152,29 @@ def structured_rates(y, par, dy):
     return rates(y, par, dy, structured.geodesic_acceleration_sc, structured.transport_rate_sc)
 
 
-def _bound_rates(ga, tr, digest):
-    """`rates` bound to a generated module's kernels ``ga``, ``tr`` (the caller's signature).
-    numba caches a closure on disk under a key that hashes its cells: the kernels (by module
-    and name) and ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``),
-    so a regenerated module is compiled afresh and each module has its own entry."""
+#: The generated kernels of one `_bound_rates` function: none here; each bound function reads
+#: its own from its copy of this module's globals.
+_ga = _tr = None
+
+
+def _bound_rates(kernels, digest):
+    """`rates` bound to a generated module's kernels (``kernels``:
+    ``charts.geometry.kernels.inlined``, numba functions inlined where called; the caller's
+    signature).  numba caches a closure on disk under a key that hashes its cells: here only
+    ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``), so a
+    regenerated module is compiled afresh and each module has its own entry.  The kernels
+    reach the function as its globals (``_ga``, ``_tr`` in a copy of this module's), not as
+    cells: a numba function pickles differently in every process, and would make every
+    process compile afresh."""
 
     def generated_rates(y, par, dy):
         digest  # noqa: B018 - a cell of the closure, so a part of numba's cache key
-        return rates(y, par, dy, ga, tr)
+        return rates(y, par, dy, _ga, _tr)
 
-    return generated_rates
+    names = dict(globals(), _ga=kernels.geodesic_acceleration_sc,
+                 _tr=kernels.transport_rate_sc)
+    return FunctionType(generated_rates.__code__, names, generated_rates.__name__, None,
+                        generated_rates.__closure__)
 
 
 @cache
@@ -174,5 +187,4 @@ def chart_rates(n: int, paper: bool = False):
     `rates` inlines the kernels into them."""
     if source(n) == "structured":
         return structured_rates
-    mod = chart_module(n, paper)
-    return _bound_rates(mod.geodesic_acceleration_sc, mod.transport_rate_sc, module_digest(mod))
+    return _bound_rates(inlined(n, paper), module_digest(chart_module(n, paper)))
