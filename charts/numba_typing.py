@@ -19,16 +19,19 @@ the implementation key again, as numba's own call does.  A call answered by an
 the inliner at each typing (``_inline_overloads``), which a hit would skip.  The memo is held
 beside the function type object (dropped with it; a function type augmented by a new
 ``@overload`` is a new object), not in it: numba pickles types with their attributes.  It
-serves every CPU compilation in the process, charts' or not (the GPU's are left to numba:
-not measured there).  numba calls `install` through its ``numba_extensions`` entry point
-(``charts.numba_init``, pyproject.toml) before it compiles anything;
-``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or should a numba version
-need it).
+serves the typing of charts' own functions (``charts.numba_inliner.ours``: the package, its
+generated and on-demand modules), on the CPU; every other compilation in the process, and
+the GPU's (not measured there), is left to numba as it is.  numba calls `install` through
+its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
+compiles anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or
+should a numba version need it).
 """
 from __future__ import annotations
 
 import os
 import weakref
+
+from .numba_inliner import ours
 
 __all__ = ["install", "ACTIVE", "memo_size"]
 
@@ -75,6 +78,9 @@ def _remembering(original):
     from numba.core.targetconfig import ConfigStack
 
     def get_call_type(self, context, args, kws):
+        frames = context.callstack             # [0]: the function being typed
+        if len(frames) == 0 or not ours(frames[0].func_id.modname):
+            return original(self, context, args, kws)     # not charts' own: numba's way
         held = _HELD.get(self)
         if held is None:
             held = _HELD[self] = ({}, _inlining(self))

@@ -4,6 +4,8 @@ import operator
 import os
 import subprocess
 import sys
+from contextlib import contextmanager
+from types import ModuleType, SimpleNamespace
 
 import numpy as np
 import pytest
@@ -59,29 +61,54 @@ def test_install_is_idempotent_and_keeps_numbas_function():
     assert not getattr(patched.__wrapped__, "_charts_memo", False)
 
 
-def test_a_hit_returns_the_signature_and_implementation_numba_found():
-    """The memo answers the second question with the first answer: the same signature object,
-    and the implementation key numba recorded for it."""
-    @njit
-    def f(x, y):
-        return x * y + x * y
+@contextmanager
+def _typing_in(ctx, modname):
+    """``ctx``'s type inference as if inside a function of module ``modname`` (a frame on
+    its call stack, as numba pushes while typing a function)."""
+    from numba.core.target_extension import CPU
+    frame = SimpleNamespace(func_id=SimpleNamespace(modname=modname), target=CPU)
+    ctx.callstack._stack.append(frame)
+    try:
+        yield
+    finally:
+        ctx.callstack._stack.pop()
 
-    assert f(2.0, 3.0) == 12.0
-    fnty = types.Function  # the function type numba built for operator.mul
+
+def test_a_hit_returns_the_signature_and_implementation_numba_found():
+    """Typing a charts function, the memo answers the second question with the first answer:
+    the same signature object, and the implementation key numba recorded for it; typing
+    anyone else's function, it remembers nothing."""
     from numba.core.registry import cpu_target
 
+    numba_typing.install()                       # (numba installs it at its first compile)
     ctx = cpu_target.typing_context
+    ctx.refresh()                                # numba's registries, loaded lazily
     mul = ctx.resolve_value_type(operator.mul)
-    assert isinstance(mul, fnty)
-    args = (types.float64, types.float64)
-    first = mul.get_call_type(ctx, args, {})
-    assert numba_typing.memo_size(mul) >= 1
-    key = mul._impl_keys[first.args]
-    mul._impl_keys[first.args] = None          # a later resolution wrote another key
-    again = mul.get_call_type(ctx, args, {})
+    assert isinstance(mul, types.Function)
+    args = (types.int16, types.float32)          # a pair nothing in charts multiplies
+    before = numba_typing.memo_size(mul)
+    with _typing_in(ctx, "users_own.module"):
+        mul.get_call_type(ctx, args, {})
+    assert numba_typing.memo_size(mul) == before
+    with _typing_in(ctx, "charts.probe"):
+        first = mul.get_call_type(ctx, args, {})
+        assert numba_typing.memo_size(mul) == before + 1
+        key = mul._impl_keys[first.args]
+        mul._impl_keys[first.args] = None        # a later resolution wrote another key
+        again = mul.get_call_type(ctx, args, {})
     assert again is first
-    assert mul._impl_keys[first.args] == key   # the hit records it again, as numba's call does
-    assert again.return_type == types.float64
+    assert mul._impl_keys[first.args] == key     # the hit records it again, as numba's does
+    assert again.return_type == first.return_type == types.float32
+
+
+def _charts_module(name, source, **names):
+    """A module named as charts' on-demand modules are (``charts_ondemand_…``), holding
+    ``names`` and the functions of ``source``: their typing takes the memo."""
+    mod = ModuleType(name)
+    mod.__dict__.update(names)
+    sys.modules[name] = mod
+    exec(compile(source, f"<{name}>", "exec"), mod.__dict__)
+    return mod
 
 
 def _divide(a, b):
@@ -99,21 +126,21 @@ def test_an_overload_keeps_each_callers_error_model():
     """An ``@overload``'s implementation inherits its caller's compiler flags (numba builds
     one per set): a caller with numba's default error model raises at a zero divisor, one
     with numpy's returns inf, in either order of compilation (the flags are in the key)."""
-    def python_model(a, b):
-        return _divide(a, b)
-
-    def numpy_model(a, b):
-        return _divide(a, b)
-
-    for order in ((python_model, numpy_model), (numpy_model, python_model)):
-        compiled = {f: (njit(error_model="numpy") if f is numpy_model else njit)(f)
-                    for f in order}
-        for f in order:
-            if f is numpy_model:
-                assert compiled[f](1.0, 0.0) == np.inf
+    for i, order in enumerate((("python_model", "numpy_model"), ("numpy_model", "python_model"))):
+        mod = _charts_module(f"charts_ondemand_typing_divide{i}", """
+def python_model(a, b):
+    return _divide(a, b)
+def numpy_model(a, b):
+    return _divide(a, b)
+""", _divide=_divide)
+        compiled = {name: (njit(error_model="numpy") if name == "numpy_model" else njit)(
+            getattr(mod, name)) for name in order}
+        for name in order:
+            if name == "numpy_model":
+                assert compiled[name](1.0, 0.0) == np.inf
             else:
                 with pytest.raises(ZeroDivisionError):
-                    compiled[f](1.0, 0.0)
+                    compiled[name](1.0, 0.0)
 
 
 _OFFSET = 1
@@ -132,21 +159,21 @@ def _plus_offset_impl(x):
 
 def test_inlined_overloads_are_left_to_numba():
     """numba rebuilds an inlined overload's IR at each typing (the inliner reads it): such
-    function types keep no memo, and a function compiled after the global it reads changed
-    sees the new value, as without the memo."""
+    answers are not kept, and a function compiled after the global it reads changed sees
+    the new value, as without the memo."""
     global _OFFSET
-
-    @njit
-    def first(x):
-        return _plus_offset(x)
-
+    source = """
+def first(x):
+    return _plus_offset(x)
+def second(x):
+    return _plus_offset(x)
+"""
+    mod = _charts_module("charts_ondemand_typing_inline", source, _plus_offset=_plus_offset)
+    first = njit(mod.first)
     assert first(0) == 1
     _OFFSET = 2
     try:
-        @njit
-        def second(x):
-            return _plus_offset(x)
-
+        second = njit(mod.second)
         assert second(0) == 2
         from numba.core.registry import cpu_target
         fnty = cpu_target.typing_context.resolve_value_type(_plus_offset)
