@@ -30,7 +30,7 @@ from numba import njit
 
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
-from ..geometry.kernels import chart_module, inlined, module_digest, source
+from ..geometry.kernels import chart_module, module_digest, source
 from ..geometry.primitives import SHIFT_MAX, shifted
 from ..packed import layout, value, view
 
@@ -158,9 +158,9 @@ _ga = _tr = None
 
 
 def _bound_rates(kernels, digest):
-    """`rates` bound to a generated module's kernels (``kernels``:
-    ``charts.geometry.kernels.inlined``, numba functions inlined where called; the caller's
-    signature).  numba caches a closure on disk under a key that hashes its cells: here only
+    """`rates` bound to a generated module's kernels (``kernels``: the module, as
+    ``charts.geometry.kernels.chart_module`` gives it, its kernels numba functions inlined
+    where called; the caller's signature).  numba caches a closure on disk under a key that hashes its cells: here only
     ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``), so a
     regenerated module is compiled afresh and each module has its own entry.  The kernels
     reach the function as its globals (``_ga``, ``_tr`` in a copy of this module's), not as
@@ -187,4 +187,5 @@ def chart_rates(n: int, paper: bool = False):
     `rates` inlines the kernels into them."""
     if source(n) == "structured":
         return structured_rates
-    return _bound_rates(inlined(n, paper), module_digest(chart_module(n, paper)))
+    mod = chart_module(n, paper)
+    return _bound_rates(mod, module_digest(mod))

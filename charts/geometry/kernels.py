@@ -5,8 +5,9 @@
 before code generation), shipped for N = 3..6, or for 7 <= N <= ``MAX_N`` derives it on demand
 through ``charts.codegen.cache``.  ``compiled(n, paper)`` returns the same functions compiled
 with ``numba.njit(cache=True)`` and numpy's error model.  The generated modules import
-nothing but ``math``: the loader registers their kernels (``KERNEL_FUNCTIONS``) with numba, so that compiled code (the
-other generated functions, ``charts.flows.chart``) can call them.
+nothing but ``math``: the loader makes their kernels (``KERNEL_FUNCTIONS``) numba functions
+inlined where called, so that compiled code (the other generated functions,
+``charts.flows.chart``) inlines them.
 ``geometry(n, weights, level)`` is what the library uses: the compiled generated functions
 for the shipped N (``GENERATED_N``; the paper's module for weights all 1 and level 0, so the
 paper's numbers keep their bits), the structured ones (``charts.geometry.structured``, one
@@ -23,12 +24,12 @@ from types import SimpleNamespace
 
 import numba
 import numpy as np
-from numba.extending import register_jitable
+from numba.core.dispatcher import Dispatcher
 
 from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 from ..codegen.shipped import import_shipped
 
-__all__ = ["chart_module", "inlined", "module_digest", "compiled", "geometry", "source", "is_paper",
+__all__ = ["chart_module", "module_digest", "compiled", "geometry", "source", "is_paper",
            "GENERATED_N", "MAX_N"]
 
 #: Largest N whose generated module can be derived on demand (tests compare it with the
@@ -63,21 +64,15 @@ def chart_module(n: int, paper: bool = False):
     else:
         raise ValueError(f"N={n} is not supported: generated geometry exists for 3 <= N <= {MAX_N}")
     for name in KERNEL_FUNCTIONS:
-        # inlined where called, as the hand-written kernels are (inline="always")
-        register_jitable(inline="always")(getattr(mod, name))
+        # numba functions inlined at numba-IR level where called, as the hand-written kernels
+        # are: by the module's own wrappers and by the chart right-hand side
+        # (``charts.flows.chart``).  (Made callable by ``register_jitable`` instead, an
+        # @overload, numba compiled each in full once more just to type a call: 0.96 + 0.62 s
+        # of a new N's 3.1 s of chart code at N = 6.)
+        fn = getattr(mod, name)
+        if not isinstance(fn, Dispatcher):
+            setattr(mod, name, numba.njit(inline="always")(fn))
     return mod
-
-
-@cache
-def inlined(n: int, paper: bool = False) -> SimpleNamespace:
-    """The generated kernels that compiled code calls (`KERNEL_FUNCTIONS`) as numba functions
-    inlined at numba-IR level where called (the chart right-hand side,
-    ``charts.flows.chart``): typed and compiled only inside their callers.  (Called through
-    `chart_module`'s ``register_jitable`` instead, numba compiles each in full once more just
-    to type the call: 0.96 + 0.62 s of a new N's 3.1 s at N = 6.)"""
-    mod = chart_module(n, paper)
-    return SimpleNamespace(**{name: numba.njit(inline="always")(getattr(mod, name))
-                              for name in KERNEL_FUNCTIONS})
 
 
 def module_digest(mod) -> str:
@@ -111,6 +106,7 @@ def compiled(n: int, paper: bool = False) -> SimpleNamespace:
     out = {}
     for name in GENERATED_FUNCTIONS:
         fn = getattr(mod, name)
+        fn = getattr(fn, "py_func", fn)           # the kernels: compiled here on their own too
         jit = name in KERNEL_FUNCTIONS or _lines(fn) <= JIT_MAX_LINES
         # the divisors (masses, D, G, sin²θₖ) are positive wherever a chart is used: the
         # public entry points check the chart's domain first (``RotorSystem._in_chart``)
