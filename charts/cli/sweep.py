@@ -34,8 +34,8 @@ def add_parser(sub) -> None:
                    help="worker processes of the local cluster (default: every core)")
     p.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu",
                    help="where the seeds of a point advance together: the CPU's vector lanes "
-                   "where they pay for their compilation (default), one GPU thread per seed (cuda; pip install 'charts[gpu]'), or "
-                   "the GPU when there is one (auto)")
+                   "where they pay for their compilation (default), one GPU thread per seed "
+                   "(cuda; pip install 'charts[gpu]'), or the GPU when there is one (auto)")
     p.add_argument("--resume", action="store_true",
                    help="continue the table in DIR without recomputing finished points")
     p.add_argument("--no-plots", action="store_true", help="skip DIR/figures")

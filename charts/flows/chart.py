@@ -157,11 +157,11 @@ def structured_rates(y, par, dy):
 _ga = _tr = None
 
 
-def _bound_rates(kernels, digest):
-    """`rates` bound to a generated module's kernels (``kernels``: the module, as
-    ``charts.geometry.kernels.chart_module`` gives it, its kernels numba functions inlined
-    where called; the caller's signature).  numba caches a closure on disk under a key that hashes its cells: here only
-    ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``), so a
+def _bound_rates(module, digest):
+    """`rates` bound to a generated module's kernels (``module`` as
+    ``charts.geometry.kernels.chart_module`` gives it: its kernels numba functions inlined
+    where called; the caller's signature).  numba caches a closure on disk under a key that
+    hashes its cells: here only ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``), so a
     regenerated module is compiled afresh and each module has its own entry.  The kernels
     reach the function as its globals (``_ga``, ``_tr`` in a copy of this module's), not as
     cells: a numba function pickles differently in every process, and would make every
@@ -171,8 +171,8 @@ def _bound_rates(kernels, digest):
         digest  # noqa: B018 - a cell of the closure, so a part of numba's cache key
         return rates(y, par, dy, _ga, _tr)
 
-    names = dict(globals(), _ga=kernels.geodesic_acceleration_sc,
-                 _tr=kernels.transport_rate_sc)
+    names = dict(globals(), _ga=module.geodesic_acceleration_sc,
+                 _tr=module.transport_rate_sc)
     return FunctionType(generated_rates.__code__, names, generated_rates.__name__, None,
                         generated_rates.__closure__)
 

@@ -89,9 +89,9 @@ def _call(task):
 
 def warmup(ns=DEFAULT_N, analyses=None, report=None, workers=None, pool=None) -> list[dict]:
     """Call each analysis in ``analyses`` (names of `TASKS`; default `DEFAULT_ANALYSES`) once
-    for every N in ``ns``, compiling its kernels (or loading them from the cache), in ``workers`` processes
-    (default: one per core; 1: in this process) or in the executor ``pool``, stage by stage
-    (`stages`).  Returns one row per call, in the order of ``ns`` then ``analyses``:
+    for every N in ``ns``, compiling its kernels (or loading them from the cache), in
+    ``workers`` processes (default: one per core; 1: in this process) or in the executor
+    ``pool``, stage by stage (`stages`).  Returns one row per call, in the order of ``ns`` then ``analyses``:
     {analysis, n, compile, cpu (s, in the process that made the call)}; ``report(row)`` is
     called as each finishes."""
     names = list(DEFAULT_ANALYSES) if analyses is None else list(analyses)
