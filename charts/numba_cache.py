@@ -1,50 +1,103 @@
-"""numba's on-disk cache of charts' kernels, healed: a damaged entry is removed and compiled
-again, once, with a notice.
+"""numba's on-disk cache of charts' kernels, safe for processes that share it and healed: its
+index and object files are read and written under a lock, and a damaged entry is removed and
+compiled again, once, with a notice.
 
-numba reads a cached kernel with ``pickle`` and rebuilds it; an index (``.nbi``) or object
-file (``.nbc``) that was truncated by a full disk, overwritten or left by another version of
-the source raises from deep inside numba (``UnpicklingError``, ``EOFError``, a ``KeyError``
-while rebuilding) on every call.  `install` wraps numba's ``Cache.load_overload``: for a
-function of this package such a failure removes that function's index and object files,
-says so on stderr and lets numba compile and cache it anew.  Other packages' caches are left
-to numba.  numba calls `install` through its ``numba_extensions`` entry point
-(``charts.numba_init``, pyproject.toml) before it creates its first kernel, so it covers every
-process that uses charts.
+numba saves a new entry by reading the function's index (``.nbi``: key -> object file),
+choosing the first free file number, writing the index, then the object file (``.nbc``).
+Two processes that add entries to one index at once (`charts warmup`'s pool compiling the
+chart kernels of N = 4, 5 and 6, ``pytest -n 2``, a sweep's workers) can both choose the same
+number: the index then names one entry's key and the file holds the other's code, and every
+later process loads the wrong kernel — a chart right-hand side of another N — without an
+error.  And a process that reads the index between another's two writes can load an old
+file under a new key.  `install` therefore wraps numba's ``Cache.save_overload`` and
+``Cache.load_overload`` for this package's functions: a save holds an exclusive lock on a
+file beside the index (``<index>.lock``, ``fcntl.flock``) from reading the index to writing
+the object file, a load a shared one from reading the index to reading the object file.
+Where the platform has no ``fcntl`` (Windows) or the lock file cannot be opened (a
+read-only cache), numba goes on without it.
+
+numba reads a cached kernel with ``pickle`` and rebuilds it; an index or object file that was
+truncated by a full disk, overwritten or left by another version of the source raises from
+deep inside numba (``UnpicklingError``, ``EOFError``, a ``KeyError`` while rebuilding) on
+every call.  The wrapped ``load_overload``, for a function of this package, removes that
+function's index and object files on such a failure, says so on stderr and lets numba
+compile and cache it anew.  Other packages' caches are left to numba.  numba calls `install`
+through its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before
+it creates its first kernel, so it covers every process that uses charts.
 """
 from __future__ import annotations
 
 import glob
 import os
 import sys
+from contextlib import contextmanager
+
+try:
+    import fcntl
+except ImportError:                         # Windows: no advisory locks here
+    fcntl = None
 
 from .numba_inliner import ours
 
-__all__ = ["install", "HEALED"]
+__all__ = ["install", "index_lock", "HEALED"]
 
 #: Functions healed in this process: qualified name -> the error that was read.
 HEALED: dict = {}
 
 
 def install() -> None:
-    """Wrap numba's cache loading once (idempotent)."""
+    """Wrap numba's cache saving and loading once (idempotent)."""
     from numba.core.caching import Cache
 
     if getattr(Cache.load_overload, "_charts_heals", False):
         return
-    original = Cache.load_overload
+    original_load = Cache.load_overload
+    original_save = Cache.save_overload
 
     def load_overload(self, sig, target_context):
+        if not _ours(self):
+            return original_load(self, sig, target_context)
         try:
-            return original(self, sig, target_context)
+            with index_lock(self, fcntl and fcntl.LOCK_SH):
+                return original_load(self, sig, target_context)
         except Exception as exc:            # noqa: BLE001 - any failure to read the entry
-            if not _ours(self):
-                raise
-            _heal(self, exc)
+            with index_lock(self, fcntl and fcntl.LOCK_EX):
+                _heal(self, exc)
             return None                     # a miss: numba compiles and saves it again
 
+    def save_overload(self, sig, data):
+        if not _ours(self):
+            return original_save(self, sig, data)
+        with index_lock(self, fcntl and fcntl.LOCK_EX):
+            return original_save(self, sig, data)
+
     load_overload._charts_heals = True
-    load_overload.__wrapped__ = original
+    load_overload.__wrapped__ = original_load
+    save_overload.__wrapped__ = original_save
     Cache.load_overload = load_overload
+    Cache.save_overload = save_overload
+
+
+@contextmanager
+def index_lock(cache, mode):
+    """Hold the lock ``mode`` (``fcntl.LOCK_SH`` or ``LOCK_EX``) on the file beside numba's
+    index of ``cache`` while the block runs; without it where there is no ``fcntl`` or the
+    lock file cannot be opened (the cache folder missing or read-only)."""
+    fd = None
+    if fcntl is not None:
+        try:
+            path = cache._cache_file._index_path + ".lock"
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+        except OSError:
+            fd = None
+    try:
+        if fd is not None:
+            fcntl.flock(fd, mode)
+        yield
+    finally:
+        if fd is not None:
+            os.close(fd)                    # (closing releases the lock)
 
 
 def _ours(cache) -> bool:
