@@ -23,8 +23,8 @@ ROOT = Path(__file__).resolve().parent.parent
 #: module may import from its own layer and from the layers below it.
 LAYERS = (
     ("generated",),                         # the generated kernels: see GENERATED_MAY_IMPORT
-    ("version", "atomic", "compilation", "packed", "numba_cache", "numba_inliner", "numba_typing",
-     "numba_init", "result_words", "file_settings"),      # no imports from other layers: any layer
+    ("version", "atomic", "compilation", "kernel_calls", "packed", "numba_cache", "numba_inliner",
+     "numba_typing", "numba_init", "result_words", "file_settings"),  # no imports of other layers
     ("archive",),                           # save/load of results (result types by name)
     ("codegen",),                           # the symbolic derivation and its emitter
     ("geometry",),                          # the manifold, the atlas, projections, kernels

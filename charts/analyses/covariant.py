@@ -47,7 +47,9 @@ from ..compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
 from ..solvers.driver import Phases
-from ..solvers.tangent import Records, TangentFlow, check_memory, orthonormalize, tangent_kernel
+from ..kernel_calls import CallsKernel
+from ..solvers.tangent import (Records, TangentFlow, check_memory, orthonormalize, tangent_kernel,
+                               tangent_kernel_types)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .finite_time import domination, finite_time_statistics
@@ -108,10 +110,10 @@ def _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by, gs
                            flow.reorth_every, sample, n_tr, a, b, tau, Xraw, bq, br, by, gs, logs)
 
 
-@njit(cache=True)
-def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample, n_tr, a, b,
-                    tau, Xraw, bq, br, by, gs, logs):
-    """If a = 0, the transient first: n_tr steps of the tangent kernel, `factor_sample`-ed every
+def _forward_pass(kernel, stack, rotors, stepping, project_every, reorth_every, sample, n_tr, a,
+                  b, tau, Xraw, bq, br, by, gs, logs):
+    """If a = 0, the transient first: n_tr steps of ``kernel`` (`tangent_kernel`, called by
+    address: `_forward_kernel`), `factor_sample`-ed every
     ``sample`` steps.  Then samples j = a … b−1: advance ``sample`` steps (not before j = 0),
     `factor_sample` the vectors and store Q, R, y in row j − a of bq, br, by and the Gram–Schmidt
     rates in gs[j].  Returns the kernel's status (NONFINITE for a norm that is not finite)."""
@@ -130,7 +132,7 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
         transient = a == 0 and done < n_tr
         k = min(sample, n_tr - done) if transient else (sample if j > 0 else 0)
         if k > 0:
-            status, _ = tangent_kernel(stack, rotors, stepping, phases, records, k, None)
+            status, _ = kernel(stack, rotors, stepping, phases, records, k, None)
             if status != RUNNING:
                 return status
         if transient:
@@ -152,6 +154,11 @@ def _forward_kernel(stack, rotors, stepping, project_every, reorth_every, sample
                 bq[j - a, r, i] = Z[1 + r, i]
         j += 1
     return RUNNING
+
+
+#: `_forward_pass` compiled with the tangent kernel called by address (its code not compiled
+#: into the forward pass a second time: ``charts.kernel_calls``)
+_forward_kernel = CallsKernel(_forward_pass, tangent_kernel, tangent_kernel_types)
 
 
 @njit(cache=True, nogil=True)

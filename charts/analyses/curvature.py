@@ -35,6 +35,7 @@ from numba import njit
 from ..archive import Archivable, attributes, dataset, index_coordinate
 from ..result_words import ANGULAR_VELOCITY
 from ..compilation import announces_compilation
+from ..kernel_calls import CallsKernel
 from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
                              tangent_rate, transport_rate)
 from ..geometry.primitives import sincos
@@ -44,7 +45,7 @@ from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
 from ..solvers.driver import Phases
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reorth_steps,
-                               shift_sincos, tangent_kernel)
+                               shift_sincos, tangent_kernel, tangent_kernel_types)
 from .arguments import (flag, positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
@@ -218,9 +219,10 @@ def curvature_work(n, k):
 _BLOCK = 64
 
 
-@njit(cache=True)
-def _sample_curvature(stack, rotors, stepping, project_every, reorth, sample_steps, Ka, Ys, Ps):
-    """Advance the tangent flow Z = [y; X] (``stack``: `Stack`) ``sample_steps`` steps per
+def _sample_curvature(kernel, stack, rotors, stepping, project_every, reorth, sample_steps, Ka,
+                      Ys, Ps):
+    """Advance the tangent flow Z = [y; X] (``stack``: `Stack`) by ``kernel``
+    (`tangent_kernel`, called by address: `sample_curvature`) ``sample_steps`` steps per
     sample (re-orthonormalised every ``reorth`` steps, a divisor of ``sample_steps``),
     `_BLOCK` samples per kernel call with their states recorded, and at each sample store y,
     the frame and the route-(a) matrix.  Returns (status, samples done).  ``stepping`` comes
@@ -243,7 +245,7 @@ def _sample_curvature(stack, rotors, stepping, project_every, reorth, sample_ste
     records = Records(buf, no_events, buf)
     for a in range(0, S, _BLOCK):
         nb = min(_BLOCK, S - a)
-        status, done = tangent_kernel(
+        status, done = kernel(
             frames, rotors, stepping,
             Phases(project_every, reorth, counter[0] + sample_steps, sample_steps), records,
             nb * sample_steps, None)
@@ -260,6 +262,11 @@ def _sample_curvature(stack, rotors, stepping, project_every, reorth, sample_ste
                     Ps[a + b, r, i] = P[r, i]
             numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[a + b], work)
     return RUNNING, S
+
+
+#: `_sample_curvature` compiled with the tangent kernel called by address (its code not
+#: compiled into the sampler a second time: ``charts.kernel_calls``)
+sample_curvature = CallsKernel(_sample_curvature, tangent_kernel, tangent_kernel_types)
 
 
 @dataclass(eq=False, repr=False)
@@ -392,8 +399,8 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     Ps = np.empty((S, k + 1, n))
     for ch in np.array_split(np.arange(S), min(S, 50)):
         a, b = ch[0], ch[-1] + 1
-        status, done = _sample_curvature(flow.stack(), flow.rotors(), flow.stepping(), project,
-                                         reorth, sample, Ka[a:b], Ys[a:b], Ps[a:b])
+        status, done = sample_curvature(flow.stack(), flow.rotors(), flow.stepping(), project,
+                                        reorth, sample, Ka[a:b], Ys[a:b], Ps[a:b])
         if status != RUNNING:
             raise status_error(status, flow.steps * dt, where)
         rep.update((b - a) * sample * dt)

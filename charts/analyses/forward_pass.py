@@ -11,8 +11,9 @@ from numba import njit
 
 from ..solvers.driver import Phases
 from ..solvers.status import RUNNING
+from ..kernel_calls import CallsKernel
 from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reorth_steps,
-                               tangent_kernel)
+                               tangent_kernel, tangent_kernel_types)
 from .arguments import (Documented, positive_int, positive_time, project_steps, samples_of,
                         steps_of, unstable_dimension)
 
@@ -74,13 +75,18 @@ def adjoint_start(cfg: AngleSettings, w, block=None):
     return W
 
 
-@njit(cache=True)
-def forward_kernel(stack, rotors, stepping, project, reorth, ce, rec_start, rec_every, states,
-                   ck, a, b, vec_end):
-    """`forward_segments` on the CPU: with `tangent_kernel`, which allocates its work."""
+def _forward_kernel(kernel, stack, rotors, stepping, project, reorth, ce, rec_start, rec_every,
+                    states, ck, a, b, vec_end):
+    """`forward_segments` on the CPU: with ``kernel``, `tangent_kernel` (which allocates its
+    work), called by address (`forward_kernel`)."""
     return forward_segments(stack, rotors, stepping, project, reorth, ce, rec_start, rec_every,
                             states, ck, a, b, vec_end, np.empty(0, dtype=np.int64),
-                            np.empty((0, 0)), None, tangent_kernel)
+                            np.empty((0, 0)), None, kernel)
+
+
+#: `_forward_kernel` compiled with the tangent kernel called by address (its code not
+#: compiled into the forward pass a second time: ``charts.kernel_calls``)
+forward_kernel = CallsKernel(_forward_kernel, tangent_kernel, tangent_kernel_types)
 
 
 @njit(cache=True, inline="always")

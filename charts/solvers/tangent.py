@@ -25,7 +25,7 @@ from collections import namedtuple
 from math import cos, gcd, isfinite, sin
 
 import numpy as np
-from numba import njit
+from numba import njit, typeof, types
 
 from ..flows.ambient import multiplier, stage_work, state_rate, tangent_factors, tangent_rate
 from ..geometry.energy_shares import record_share
@@ -43,7 +43,8 @@ __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "or
            "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
            "tangent_vectors_rate", "reorth_steps", "substeps", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes", "RotorStack", "stacked_step", "stacked_project",
-           "stacked_reorth", "stacked_record", "Stack", "Rotors", "Stepping", "Records"]
+           "stacked_reorth", "stacked_record", "Stack", "Rotors", "Stepping", "Records",
+           "tangent_kernel_types"]
 
 #: Time between re-orthonormalisations where an analysis only needs the spans of its vectors
 #: at sample points (curvature frames, angles): eq (18) costs O(N·k²) against O(N·k) for a
@@ -413,6 +414,14 @@ def tangent_loop(stack, rotors, stepping, phases, records, nsteps, work):
                         work)
 
 
+def tangent_kernel_types(stack, rotors, stepping, *_):
+    """The argument types with which the drivers call `tangent_kernel` (from the numba types of
+    their first three arguments: `Stack`, `Rotors`, `Stepping`): the phases and the record
+    rows as `TangentFlow.advance` passes them, int64 steps, no work arrays (the
+    ``kernel_types`` of ``charts.kernel_calls.CallsKernel``)."""
+    return (stack, rotors, stepping, _PHASES_TYPE, _RECORDS_TYPE, types.int64, types.none)
+
+
 def reorth_steps(dt, *multiples) -> int:
     """Steps between re-orthonormalisations: the largest count <= REORTH_TIME/dt (at least 1)
     that divides every one of ``multiples`` (step counts; zeros are ignored), so that the
@@ -444,6 +453,8 @@ def inner_weights(system, inner):
 
 _NO_ROWS = np.empty((0, 0))
 _NO_EVENTS = np.empty(0, dtype=np.int64)
+_PHASES_TYPE = typeof(Phases(0, 0, 0, 0))
+_RECORDS_TYPE = typeof(Records(_NO_ROWS, _NO_EVENTS, _NO_ROWS))
 
 
 #: Floats per entry of the stacked state Z = [y; X] that a tangent flow holds at once: Z, the

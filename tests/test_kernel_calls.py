@@ -1,0 +1,78 @@
+"""A kernel called by address (`charts.kernel_calls.CallsKernel`): the same numbers as a direct
+call, the kernel's code not compiled into the driver, its exceptions propagated, one
+compilation per argument types, and the analyses' drivers leaving the tangent kernel with the
+one signature `TangentFlow.advance` gives it."""
+import numpy as np
+import pytest
+from numba import njit
+
+from charts.kernel_calls import CallsKernel
+
+
+@njit(cache=True)
+def _kernel(x, scale, out):
+    """Something the driver calls: a loop with a branch that raises."""
+    if scale == 0.0:
+        raise ValueError("scale must not be zero")
+    acc = 0.0
+    for i in range(x.size):
+        acc += np.sin(x[i]) * scale
+        out[i] = acc
+    return acc
+
+
+def _kernel_types(x, scale, out, times):
+    return (x, scale, out)
+
+
+def _drive(kernel, x, scale, out, times):
+    total = 0.0
+    for _ in range(times):
+        total += kernel(x, scale, out)
+    return total
+
+
+@njit
+def _drive_direct(x, scale, out, times):
+    total = 0.0
+    for _ in range(times):
+        total += _kernel(x, scale, out)
+    return total
+
+
+drive = CallsKernel(_drive, _kernel, _kernel_types)
+
+
+def test_same_numbers_as_the_direct_call():
+    x = np.linspace(0.0, 3.0, 17)
+    a, b = np.empty(17), np.empty(17)
+    assert drive(x, 0.7, a, 3) == _drive_direct(x, 0.7, b, 3)
+    assert np.array_equal(a, b)
+
+
+def test_the_kernel_is_not_compiled_into_the_driver():
+    """The driver's LLVM code holds none of the kernel's work (its sines); a direct call's
+    does (numba links a copy of the callee's code into its caller, where LLVM inlines this
+    small one).  Neither is cached: numba inspects only code it compiled in this process."""
+    inspected = CallsKernel(_drive, _kernel, _kernel_types, cache=False)
+    x = np.linspace(0.0, 3.0, 5)
+    inspected(x, 1.0, np.empty(5), 1)
+    _drive_direct(x, 1.0, np.empty(5), 1)
+    (compiled,) = inspected._compiled.values()
+    assert "llvm.sin.f64" not in compiled.inspect_llvm(compiled.signatures[0])
+    assert "llvm.sin.f64" in _drive_direct.inspect_llvm(_drive_direct.signatures[0])
+
+
+def test_the_kernels_exception_reaches_the_caller():
+    with pytest.raises(ValueError, match="scale must not be zero"):
+        drive(np.ones(3), 0.0, np.empty(3), 2)
+
+
+def test_one_compilation_per_argument_types():
+    x = np.ones(4)
+    drive(x, 1.0, np.empty(4), 1)
+    drive(np.zeros(9), 2.0, np.empty(9), 5)
+    assert len(drive._compiled) == 1
+    assert len(_kernel.signatures) == 1
+    drive(np.ones((2, 2))[:, 0], 1.0, np.empty(2), 1)     # a strided view: its own types
+    assert len(drive._compiled) == 2
