@@ -74,7 +74,7 @@ def _replay(system, theta, u, t_final, dt, project):
     n, d = system.n, system.n - 1
     form = ChartFlow(system, project=project, cap_fraction=CAP_FRACTION["rk4"])
     y, par, ipar = form.initial(theta, u, np.zeros((0, n)))
-    rhs, _, cap, post, _, _ = form.hooks("rk4")
+    rhs, _, cap, post, _, _ = form.hooks("rk4", 0)
     K, ytmp, ynew = np.zeros((16, y.size)), np.zeros(y.size), np.zeros(y.size)
     log = np.zeros((8, 3))
     t, switches = 0.0, list(form.initial_switches)

@@ -34,7 +34,7 @@ from ..geometry.kernels import chart_module, module_digest, source
 from ..geometry.primitives import SHIFT_MAX, shifted
 from ..packed import layout, value, view
 
-__all__ = ["rates", "chart_rates", "structured_rates", "local_parameters", "point_sincos",
+__all__ = ["rates", "chart_rates", "structured_rates", "no_transport", "local_parameters", "point_sincos",
            "start_sincos", "work_area", "WORK", "HEAD", "HEAD_FIELDS"]
 
 #: Floats per local coordinate of the work area at the end of ``par``: the last point q
@@ -152,40 +152,53 @@ def structured_rates(y, par, dy):
     return rates(y, par, dy, structured.geodesic_acceleration_sc, structured.transport_rate_sc)
 
 
+@njit(cache=True, inline="always")
+def no_transport(ws, wc, v, p, m, a, c, out):
+    """The transport kernel of a right-hand side that carries no vectors (`chart_rates` with
+    ``transport=False``): never called by a state without vectors; NaN in every rate of a
+    vector, should one be given, which the loop's invariant monitor stops at."""
+    for i in range(out.size):
+        out[i] = math.nan
+
+
 #: The generated kernels of one `_bound_rates` function: none here; each bound function reads
 #: its own from its copy of this module's globals.
 _ga = _tr = None
 
 
-def _bound_rates(module, digest):
+def _bound_rates(module, digest, transport):
     """`rates` bound to a generated module's kernels (``module`` as
     ``charts.geometry.kernels.chart_module`` gives it: its kernels numba functions inlined
-    where called; the caller's signature).  numba caches a closure on disk under a key that
-    hashes its cells: here only ``digest``, the module's source hash (``charts.geometry.kernels.module_digest``), so a
-    regenerated module is compiled afresh and each module has its own entry.  The kernels
-    reach the function as its globals (``_ga``, ``_tr`` in a copy of this module's), not as
-    cells: a numba function pickles differently in every process, and would make every
-    process compile afresh."""
+    where called; the caller's signature), with `no_transport` for its transport kernel
+    unless ``transport``.  numba caches a closure on disk under a key that hashes its cells:
+    here only ``key`` = (``digest``, ``transport``), ``digest`` the module's source hash
+    (``charts.geometry.kernels.module_digest``), so a regenerated module is compiled afresh
+    and each module and variant has its own entry.  The kernels reach the function as its
+    globals (``_ga``, ``_tr`` in a copy of this module's), not as cells: a numba function
+    pickles differently in every process, and would make every process compile afresh."""
+    key = (digest, bool(transport))
 
     def generated_rates(y, par, dy):
-        digest  # noqa: B018 - a cell of the closure, so a part of numba's cache key
+        key  # noqa: B018 - a cell of the closure, so a part of numba's cache key
         return rates(y, par, dy, _ga, _tr)
 
     names = dict(globals(), _ga=module.geodesic_acceleration_sc,
-                 _tr=module.transport_rate_sc)
+                 _tr=module.transport_rate_sc if transport else no_transport)
     return FunctionType(generated_rates.__code__, names, generated_rates.__name__, None,
                         generated_rates.__closure__)
 
 
 @cache
-def chart_rates(n: int, paper: bool = False):
+def chart_rates(n: int, paper: bool = False, transport: bool = True):
     """The right-hand side ``rhs(y, par, dy) -> health`` of eqs (14) + (16) for N = ``n``
     (any chart and member: ``par`` selects them), to be compiled by the caller with its
     signature: `structured_rates` unless N's kernels are generated, else `rates` bound to the
     kernels of the generated module (``paper``: the paper's module,
-    ``charts.geometry.kernels.chart_module``).  Both compilations are cached on disk, and
-    `rates` inlines the kernels into them."""
+    ``charts.geometry.kernels.chart_module``) — without eq (16) unless ``transport``: a run
+    that transports no vector does not compile it (at N = 6, a third of a new N's
+    compilation).  Both compilations are cached on disk, and `rates` inlines the kernels
+    into them; the structured one, compiled once for every N, always has eq (16)."""
     if source(n) == "structured":
         return structured_rates
     mod = chart_module(n, paper)
-    return _bound_rates(mod, module_digest(mod))
+    return _bound_rates(mod, module_digest(mod), transport)

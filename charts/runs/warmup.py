@@ -36,7 +36,8 @@ DEFAULT_N = (3, 4, 5, 6)
 #: name -> a tiny call of the analysis (as short as its arguments allow).
 TASKS = {
     "lyapunov": lambda S, th, u: lyapunov_spectrum(S, th, u, 0.2, t_transient=0.0, n_batches=2),
-    "integrate": lambda S, th, u: integrate(S, th, u, 0.1),
+    "integrate": lambda S, th, u: (integrate(S, th, u, 0.1),     # without transport, and with
+                                   integrate(S, th, u, 0.1, transport=u)),
     "integrate_ambient": lambda S, th, u: integrate(S, th, u, 0.1, formulation="ambient"),
     "curvature": lambda S, th, u: curvature_along_trajectory(S, th, u, 0.2, t_transient=0.0),
     "angles": lambda S, th, u: hyperbolicity_angles(S, th, u, 0.2, t_transient=0.0),

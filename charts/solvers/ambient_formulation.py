@@ -227,8 +227,8 @@ class AmbientFlow(Formulation):
 
     name = "ambient"
 
-    def hooks(self, method):
-        rhs, cap, post, out, inv = _hooks()
+    def hooks(self, method, vectors):
+        rhs, cap, post, out, inv = _hooks()   # (N-generic: eq (19) for any number of vectors)
         if method == "rk4":
             cap, step = _rk4_hooks()
         else:

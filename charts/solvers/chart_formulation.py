@@ -247,11 +247,12 @@ def _invariants(y, par, ipar, inv):
 
 
 @cache
-def chart_rhs(n: int, paper: bool = False):
+def chart_rhs(n: int, paper: bool = False, transport: bool = True):
     """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop and
-    cached on disk: the structured right-hand side once for every N, a generated one per N
-    and per module (``paper``: the paper's Σ cos θ = 0, else the family)."""
-    rates = chart_rates(n, paper)
+    cached on disk: the structured right-hand side once for every N, a generated one per N,
+    per module (``paper``: the paper's Σ cos θ = 0, else the family) and with eq (16) or
+    without it (``transport``: ``charts.flows.chart.chart_rates``)."""
+    rates = chart_rates(n, paper, transport)
     if rates is structured_rates:
         return _structured_rhs()
     return njit(RHS_SIG, cache=True, error_model="numpy")(rates)
@@ -288,8 +289,9 @@ class ChartFlow(Formulation):
             raise ValueError(f"chart must be None or an integer in 0..{self.n - 1}, got {chart!r}")
         self.chart = chart
 
-    def hooks(self, method):
-        return (chart_rhs(self.n, self.system.is_paper_family), None) + _common_hooks()
+    def hooks(self, method, vectors):
+        rhs = chart_rhs(self.n, self.system.is_paper_family, transport=vectors > 0)
+        return (rhs, None) + _common_hooks()
 
     def initial(self, theta, u, P):
         n = self.n

@@ -378,8 +378,9 @@ dense_sample = _CompiledOnUse(_dense_sample, _i8(_OUT_TYPE, _m, _im, _i8, _iv, _
 class Formulation:
     """Base of the formulations driven by :func:`drive`.  A subclass supplies
 
-    * ``hooks(method)`` → ``(rhs, step, cap, post, to_ambient, invariants)`` (the order of
-      :data:`drive`'s arguments) for ``method`` ("rk4" or "dop853"), compiled with
+    * ``hooks(method, vectors)`` → ``(rhs, step, cap, post, to_ambient, invariants)`` (the
+      order of :data:`drive`'s arguments) for ``method`` ("rk4" or "dop853") and a state
+      with ``vectors`` transported vectors, compiled with
       :data:`charts.solvers.rk.RHS_SIG`, :data:`STEP_SIG`, :data:`CAP_SIG`, :data:`POST_SIG`,
       :data:`OUT_SIG`, :data:`INV_SIG` (see the module docstring; ``step`` is only called by
       RK4, and may be None: the generic step);
@@ -400,7 +401,7 @@ class Formulation:
         self.project = bool(project)
         self.cap_fraction = float(cap_fraction)
 
-    def hooks(self, method):  # pragma: no cover - contract
+    def hooks(self, method, vectors):  # pragma: no cover - contract
         raise NotImplementedError
 
     def initial(self, theta, u, P):  # pragma: no cover - contract

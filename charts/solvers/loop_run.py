@@ -97,7 +97,8 @@ class LoopRun:
         self.form = _FORMULATION_CLASSES[args.formulation](
             system, project=args.project, cap_fraction=CAP_FRACTION[args.method], **kw)
         self.y, self.par, self.ipar = self.form.initial(args.theta0, args.sign * args.u0, args.P)
-        self.hooks = self.form.hooks(args.method)   # (rhs, step, cap, post, to_ambient, invariants)
+        # (rhs, step, cap, post, to_ambient, invariants)
+        self.hooks = self.form.hooks(args.method, args.P.shape[0])
         self.st, self.ist = D.new_state(_METHOD_CODES[args.method], args.t_final, args.dt,
                                         args.rtol, args.atol, float(system.energy(args.u0)),
                                         TOLERANCES["singular_S"], args.use_eval,
