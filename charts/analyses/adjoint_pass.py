@@ -8,9 +8,10 @@ from __future__ import annotations
 
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from ..flows.ambient import adjoint_factors, adjoint_rate
+from ..kernel_calls import CallsKernel
 from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.status import RUNNING
@@ -91,9 +92,8 @@ def sample_sines(rec, row, V, q, w, y, sc, Wr, ga, gb, M, sv, A):
     smallest_singular_values_into(M, sv, A)
 
 
-@njit(cache=True)
-def backward_kernel(ck, W, rotors, stepping, ck_every, first_sample, sample_every, reorth, V,
-                    logs, sf, sr):
+def _backward_pass(sines, ck, W, rotors, stepping, ck_every, first_sample, sample_every, reorth,
+                   V, logs, sf, sr):
     """Backward pass over the segments (last first) down to step ``first_sample``: each
     segment from its checkpoint ck[seg + 1] by the stacked flows' one time loop
     (``charts.solvers.tangent.stacked_loop``, with the adjoint hook and step −dt of the
@@ -102,7 +102,8 @@ def backward_kernel(ck, W, rotors, stepping, ck_every, first_sample, sample_ever
     ``logs``) and recorded at the sample steps; at the k-th sample step the sines of
     `sample_sines` into sf[k] (full) and sr[k] (restricted), V_k the forward pass's record
     V[k] (shape (S, (1 + m)·2N)).  Returns (status, step): RUNNING, or NONFINITE / SINGULAR
-    (the forward kernel's tests) at that step.  The work of `backward_loop`, allocated."""
+    (the forward kernel's tests) at that step.  The work of `backward_loop`, allocated;
+    ``sines``: `sample_sines`, called by address (`backward_kernel`)."""
     d = ck.shape[1]
     n = d // 2
     kk = W.shape[0]
@@ -118,17 +119,34 @@ def backward_kernel(ck, W, rotors, stepping, ck_every, first_sample, sample_ever
     return backward_loop(ck, Z, np.empty((2, n)), np.zeros(1, dtype=np.int64), rec, rotors,
                          stepping, ck_every, first_sample, sample_every, reorth, V, logs, sf, sr,
                          np.empty(0, dtype=np.int64), np.empty((0, 0)), stacked_work(1 + kk, d),
-                         samples)
+                         samples, sines)
+
+
+def sample_sines_types(ck, W, rotors, stepping, ck_every, first_sample, sample_every, reorth, V,
+                       logs, sf, sr):
+    """The argument types with which `backward_loop` calls `sample_sines` in `backward_kernel`
+    (from the numba types of its arguments): its record, row and sample indices, the forward
+    record V, the weights of ``stepping`` and the work arrays `_backward_pass` allocates."""
+    f8 = types.float64
+    vector, matrix = f8[::1], f8[:, ::1]
+    return (matrix, types.int64, V, types.int64, stepping.types[2], vector, matrix, matrix,
+            vector, vector, f8[:, :, ::1], vector, matrix)
+
+
+#: `_backward_pass` compiled with the sines called by address (their code, with the singular
+#: values', not compiled into the backward pass a second time: ``charts.kernel_calls``)
+backward_kernel = CallsKernel(_backward_pass, sample_sines, sample_sines_types)
 
 
 @njit(cache=True, inline="always")
 def backward_loop(ck, Z, sc, counter, rec, rotors, stepping, ck_every, first_sample,
-                  sample_every, reorth, V, logs, sf, sr, no_events, none, work, samples):
+                  sample_every, reorth, V, logs, sf, sr, no_events, none, work, samples, sines):
     """`backward_kernel` on arrays given by the caller, allocating nothing (it also runs in
     a GPU thread: ``charts.analyses.angle_blocks``): Z (1 + m, 2N) holds W in its rows
     after the first; sc (2, N), counter (1,) and rec (segment samples + 1, (2 + m)·2N)
     are work space, as are ``work`` (``charts.solvers.tangent.stacked_work``) and
-    ``samples`` (the work arrays of `sample_sines`); no_events (0,), none (0, 0)."""
+    ``samples`` (the work arrays of `sample_sines`); no_events (0,), none (0, 0); ``sines``:
+    `sample_sines` (or its address)."""
     d = ck.shape[1]
     n = d // 2
     ys, scs, Wr, ga, gb, M, sv, A = samples
@@ -154,8 +172,8 @@ def backward_loop(ck, Z, sc, counter, rec, rotors, stepping, ck_every, first_sam
         for i in range(rec_start if rec_start > 0 else sample_every, nsteps + 1, sample_every):
             q = (top - i - first_sample) // sample_every
             if q < S:
-                sample_sines(rec, (i - rec_start) // sample_every, V, q, w, ys, scs, Wr, ga,
-                             gb, M, sv, A)
+                sines(rec, (i - rec_start) // sample_every, V, q, w, ys, scs, Wr, ga, gb, M,
+                      sv, A)
                 sf[q] = sv[0]
                 sr[q] = sv[1]
     return RUNNING, first_sample

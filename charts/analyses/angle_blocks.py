@@ -38,7 +38,7 @@ from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow
 from ..solvers.status import RUNNING
 from ..solvers.tangent import (Rotors, Stack, Stepping, check_memory,
                                orthonormalize, stacked_work, tangent_loop)
-from .adjoint_pass import backward_loop
+from .adjoint_pass import backward_loop, sample_sines
 from .ensemble import member_states_of
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, forward_segments
 
@@ -96,7 +96,7 @@ def backward_member(l, status, stopped, phase, Ws, CK, Vrec, blogs, SF, SR, arra
     code, step = backward_loop(CK[l, :nseg + 1], Z, sc, counter, rec,
                                Rotors(minv, m, wts, level), Stepping(0.0, dt, w, True), ce,
                                first, sample, reorth, Vrec[l, :S], blogs[l], SF[l, :S],
-                               SR[l, :S], no_events, none, work, samples)
+                               SR[l, :S], no_events, none, work, samples, sample_sines)
     if code != RUNNING:
         status[l] = code
         stopped[l] = origin + step
