@@ -5,47 +5,107 @@ callee's code into its own and having LLVM optimise and translate the whole agai
 analysis that drives the tangent kernel from its own kernel (the angle test's forward pass,
 the curvature's sampler, the CLVs' forward pass) compiled the tangent kernel's code a second
 time in its first call, 0.7–0.9 s each (docs/performance.md).  `CallsKernel` compiles such a
-driver with the kernel as an argument typed as a numba first-class function: the driver calls
-the kernel's one compiled code through its address, in numba's own calling convention (its
-exceptions propagate as from a direct call), and its own compilation holds only itself.  The
-same machine code runs either way, so the numbers are the same bit for bit; a call costs an
-indirect jump, once per chunk of steps.  Any layer may use it (no package imports).
+driver with the kernel as an argument, a numba first-class function (`KernelAddressType`):
+the driver calls the kernel's one compiled code through its address, in numba's own calling
+convention (its exceptions propagate as from a direct call), and its own compilation holds
+only itself.  The same machine code runs either way, so the numbers are the same bit for
+bit; a call costs an indirect jump, once per chunk of steps.  Any layer may use it (no
+package imports).
 """
 from __future__ import annotations
 
 from numba import njit, typeof, types
+from numba.core import cgutils
+from numba.experimental.function_type import FunctionModel
+from numba.extending import NativeValue, register_model, typeof_impl, unbox
 
-__all__ = ["CallsKernel"]
+__all__ = ["CallsKernel", "KernelAddress", "KernelAddressType"]
+
+
+class KernelAddressType(types.FunctionType):
+    """numba's first-class function type of one compiled kernel, for a `KernelAddress`: its
+    two addresses are read from the Python object when a call passes it (numba's own
+    dispatcher argument looks its compiled code up anew at each call: 40 µs with the tangent
+    kernel's signature of named tuples)."""
+
+
+register_model(KernelAddressType)(FunctionModel)
+
+
+class KernelAddress:
+    """The compiled code of the numba dispatcher ``kernel`` for the argument types ``argtypes``
+    (compiled or loaded from the cache here), as a driver receives it."""
+
+    def __init__(self, kernel, argtypes):
+        kernel.compile(argtypes)
+        cres = kernel.overloads[tuple(argtypes)]
+        self.numba_type = KernelAddressType(cres.signature)
+        self.jit_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_func_name)
+        self.c_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_cfunc_wrapper_name)
+        self.kernel = kernel                # (its code lives as long as the dispatcher)
+
+
+@typeof_impl.register(KernelAddress)
+def _typeof_kernel_address(val, c):
+    return val.numba_type
+
+
+@unbox(KernelAddressType)
+def _unbox_kernel_address(typ, obj, c):
+    fn = cgutils.create_struct_proxy(typ)(c.context, c.builder)
+    for field in ("c_addr", "jit_addr"):
+        addr = c.pyapi.object_getattr_string(obj, field)
+        setattr(fn, field, c.pyapi.long_as_voidptr(addr))
+        c.pyapi.decref(addr)
+    fn.py_addr = c.builder.ptrtoint(obj, c.context.get_value_type(types.voidptr))
+    return NativeValue(fn._getvalue())
 
 
 class CallsKernel:
     """``fn(kernel, *args)`` as ``driver(*args)``, compiled (cached on disk) for the types of
-    ``args`` with ``kernel``, a numba dispatcher, given as a first-class function of the
-    signature it is called with: ``kernel_types(*types of args)`` gives its argument types,
-    and it is compiled (or loaded from the cache) for them before the driver.  ``options``:
-    numba's (``cache=False`` for a driver whose code is to be inspected)."""
+    ``args`` with ``kernel``, a numba dispatcher, given by address (`KernelAddress`):
+    ``kernel_types(*types of args)`` gives the argument types it is called with, and it is
+    compiled (or loaded from the cache) for them before the driver.  ``options``: numba's
+    (``cache=False`` for a driver whose code is to be inspected).
+
+    A call goes straight to numba's dispatcher with the last kernel address, and numba
+    matches the arguments to the signatures compiled so far (in C: typing them here in
+    Python cost 85 µs a call); only arguments of new types, which numba answers with a
+    ``TypeError``, compile a new signature (numba compiles none of its own)."""
 
     def __init__(self, fn, kernel, kernel_types, **options):
         self.py_func = fn
         self.kernel = kernel
         self.kernel_types = kernel_types
-        self.options = options
-        self._compiled = {}
+        self.dispatcher = njit(**dict({"cache": True}, **options))(fn)
+        self._address = None                # the last kernel address called with
+        self._addresses = {}                # the kernel's argument types -> its address
         self.__doc__ = fn.__doc__
         self.__name__ = fn.__name__
 
     def __call__(self, *args):
-        argtypes = tuple(typeof(a) for a in args)
-        compiled = self._compiled.get(argtypes)
-        if compiled is None:
-            compiled = self._compile(argtypes)
-        return compiled(self.kernel, *args)
+        if self._address is not None:
+            try:
+                return self.dispatcher(self._address, *args)
+            except TypeError:
+                address, signature = self._resolve(args)
+                if address is self._address and signature in self.dispatcher.overloads:
+                    raise                   # raised by the driver, not by the matching
+        address, signature = self._resolve(args)
+        if signature not in self.dispatcher.overloads:
+            self.dispatcher.disable_compile(False)
+            try:
+                self.dispatcher.compile(signature)
+            finally:
+                self.dispatcher.disable_compile()
+        self._address = address
+        return self.dispatcher(address, *args)
 
-    def _compile(self, argtypes):
+    def _resolve(self, args):
+        """(the kernel's address, the driver's signature) for ``args``."""
+        argtypes = tuple(typeof(a) for a in args)
         ktypes = tuple(self.kernel_types(*argtypes))
-        self.kernel.compile(ktypes)
-        ftype = types.FunctionType(self.kernel.overloads[ktypes].signature)
-        options = dict({"cache": True}, **self.options)
-        compiled = njit((ftype,) + argtypes, **options)(self.py_func)
-        self._compiled[argtypes] = compiled
-        return compiled
+        address = self._addresses.get(ktypes)
+        if address is None:
+            address = self._addresses[ktypes] = KernelAddress(self.kernel, ktypes)
+        return address, (address.numba_type,) + argtypes

@@ -14,6 +14,8 @@ def _kernel(x, scale, out):
     """Something the driver calls: a loop with a branch that raises."""
     if scale == 0.0:
         raise ValueError("scale must not be zero")
+    if scale < 0.0:
+        raise TypeError("a negative scale")        # a TypeError from inside the call
     acc = 0.0
     for i in range(x.size):
         acc += np.sin(x[i]) * scale
@@ -58,8 +60,8 @@ def test_the_kernel_is_not_compiled_into_the_driver():
     x = np.linspace(0.0, 3.0, 5)
     inspected(x, 1.0, np.empty(5), 1)
     _drive_direct(x, 1.0, np.empty(5), 1)
-    (compiled,) = inspected._compiled.values()
-    assert "llvm.sin.f64" not in compiled.inspect_llvm(compiled.signatures[0])
+    (signature,) = inspected.dispatcher.signatures
+    assert "llvm.sin.f64" not in inspected.dispatcher.inspect_llvm(signature)
     assert "llvm.sin.f64" in _drive_direct.inspect_llvm(_drive_direct.signatures[0])
 
 
@@ -72,7 +74,18 @@ def test_one_compilation_per_argument_types():
     x = np.ones(4)
     drive(x, 1.0, np.empty(4), 1)
     drive(np.zeros(9), 2.0, np.empty(9), 5)
-    assert len(drive._compiled) == 1
+    assert len(drive.dispatcher.signatures) == 1
     assert len(_kernel.signatures) == 1
     drive(np.ones((2, 2))[:, 0], 1.0, np.empty(2), 1)     # a strided view: its own types
-    assert len(drive._compiled) == 2
+    assert len(drive.dispatcher.signatures) == 2
+    drive(np.ones(3), 1.0, np.empty(3), 1)                # the first types again: no third
+    assert len(drive.dispatcher.signatures) == 2
+
+
+def test_a_type_error_from_inside_the_call_is_not_taken_for_new_types():
+    x = np.ones(3)
+    drive(x, 1.0, np.empty(3), 1)
+    before = list(drive.dispatcher.signatures)
+    with pytest.raises(TypeError, match="a negative scale"):
+        drive(x, -1.0, np.empty(3), 1)
+    assert drive.dispatcher.signatures == before
