@@ -89,3 +89,24 @@ def test_a_type_error_from_inside_the_call_is_not_taken_for_new_types():
     with pytest.raises(TypeError, match="a negative scale"):
         drive(x, -1.0, np.empty(3), 1)
     assert drive.dispatcher.signatures == before
+
+
+def test_a_new_process_loads_the_driver_from_the_disk_cache(tmp_path):
+    """The driver's signature (with the kernel's address type) is saved with numba's cache
+    and found again: a second process compiles nothing."""
+    import os
+    import subprocess
+    import sys
+    probe = ("import sys; sys.path.insert(0, {tests!r})\n"
+             "import numpy as np\n"
+             "from numba.core.event import install_recorder\n"
+             "import test_kernel_calls as t\n"
+             "with install_recorder('numba:compile') as rec:\n"
+             "    t.drive(np.ones(4), 1.0, np.empty(4), 2)\n"
+             "print(sum(1 for _, ev in rec.buffer if ev.is_start))\n").format(
+        tests=os.path.dirname(__file__))
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    counts = [int(subprocess.run([sys.executable, "-c", probe], env=env, text=True,
+                                 capture_output=True, check=True).stdout.split()[-1])
+              for _ in range(2)]
+    assert counts[0] >= 2 and counts[1] == 0
