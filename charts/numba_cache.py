@@ -13,8 +13,8 @@ file under a new key.  `install` therefore wraps numba's ``Cache.save_overload``
 ``Cache.load_overload`` for this package's functions: a save holds an exclusive lock on a
 file beside the index (``<index>.lock``, ``fcntl.flock``) from reading the index to writing
 the object file, a load a shared one from reading the index to reading the object file.
-Where the platform has no ``fcntl`` (Windows) or the lock file cannot be opened (a
-read-only cache), numba goes on without it.
+Where the platform has no ``fcntl`` (Windows), the lock file cannot be opened (a read-only
+cache) or the file system refuses locks (a notice, once), numba goes on without it.
 
 numba reads a cached kernel with ``pickle`` and rebuilds it; an index or object file that was
 truncated by a full disk, overwritten or left by another version of the source raises from
@@ -39,7 +39,7 @@ except ImportError:                         # Windows: no advisory locks here
 
 from .numba_inliner import ours
 
-__all__ = ["install", "index_lock", "HEALED"]
+__all__ = ["install", "index_lock", "HEALED", "UNLOCKED"]
 
 #: Functions healed in this process: qualified name -> the error that was read.
 HEALED: dict = {}
@@ -57,13 +57,14 @@ def install() -> None:
     def load_overload(self, sig, target_context):
         if not _ours(self):
             return original_load(self, sig, target_context)
-        try:
-            with index_lock(self, fcntl and fcntl.LOCK_SH):
+        with index_lock(self, fcntl and fcntl.LOCK_SH):
+            try:
                 return original_load(self, sig, target_context)
-        except Exception as exc:            # noqa: BLE001 - any failure to read the entry
-            with index_lock(self, fcntl and fcntl.LOCK_EX):
-                _heal(self, exc)
-            return None                     # a miss: numba compiles and saves it again
+            except Exception as exc:        # noqa: BLE001 - any failure to read the entry
+                failure = exc
+        with index_lock(self, fcntl and fcntl.LOCK_EX):
+            _heal(self, failure)
+        return None                         # a miss: numba compiles and saves it again
 
     def save_overload(self, sig, data):
         if not _ours(self):
@@ -81,23 +82,54 @@ def install() -> None:
 @contextmanager
 def index_lock(cache, mode):
     """Hold the lock ``mode`` (``fcntl.LOCK_SH`` or ``LOCK_EX``) on the file beside numba's
-    index of ``cache`` while the block runs; without it where there is no ``fcntl`` or the
-    lock file cannot be opened (the cache folder missing or read-only)."""
-    fd = None
-    if fcntl is not None:
+    index of ``cache`` while the block runs.  The file is opened read-only where it cannot be
+    opened for writing (another user's, in a shared cache: ``flock`` needs no write access);
+    without a lock where there is no ``fcntl``, the file cannot be opened at all (a read-only
+    cache) or the file system refuses locks (NFS without its lock daemon, some FUSE mounts):
+    there numba goes on as it would without charts, and `UNLOCKED` says so once."""
+    fd = _lock_file(cache) if fcntl is not None else None
+    if fd is not None:
         try:
-            path = cache._cache_file._index_path + ".lock"
-            os.makedirs(os.path.dirname(path), exist_ok=True)
-            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
-        except OSError:
-            fd = None
-    try:
-        if fd is not None:
             fcntl.flock(fd, mode)
+        except OSError as exc:
+            os.close(fd)
+            fd = None
+            _unlocked(cache, exc)
+    try:
         yield
     finally:
         if fd is not None:
             os.close(fd)                    # (closing releases the lock)
+
+
+def _lock_file(cache):
+    """A descriptor of the lock file beside the index of ``cache``, or None."""
+    path = cache._cache_file._index_path + ".lock"
+    try:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        return os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+    except OSError:
+        pass
+    try:
+        return os.open(path, os.O_RDONLY)
+    except OSError:
+        return None
+
+
+#: The cache folders where locks were refused, and why (said on stderr for the first).
+UNLOCKED: dict = {}
+
+
+def _unlocked(cache, exc) -> None:
+    folder = os.path.dirname(cache._cache_file._index_path)
+    if folder in UNLOCKED:
+        return
+    UNLOCKED[folder] = f"{type(exc).__name__}: {exc}"
+    if len(UNLOCKED) == 1:
+        print(f"charts: the file system of numba's cache ({folder}) refuses locks "
+              f"({UNLOCKED[folder]}); kernels are cached there without them (processes that "
+              "compile at once may then mix entries: give each its own NUMBA_CACHE_DIR)",
+              file=sys.stderr, flush=True)
 
 
 def _ours(cache) -> bool:

@@ -60,3 +60,21 @@ def test_the_guard_is_installed_by_numba_itself_and_leaves_other_packages_alone(
             self._py_func = type("F", (), {"__module__": module})()
     assert _ours(Fake("charts.solvers.tangent")) and _ours(Fake("charts_ondemand_rotor_n7"))
     assert not _ours(Fake("chartsy.other")) and not _ours(Fake("scipy.x"))
+
+
+def test_a_file_system_that_refuses_locks_caches_without_them_and_says_so_once(tmp_path):
+    """flock failing (NFS without its lock daemon, some FUSE mounts): the kernels compile,
+    load and give the same numbers as with the lock, and one notice says why there is none."""
+    refuse = ("import errno, fcntl\n"
+              "def _refuse(fd, mode):\n"
+              "    raise OSError(errno.ENOLCK, 'No locks available')\n"
+              "fcntl.flock = _refuse\n")
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    expected, _ = _run(tmp_path / "locked")
+    for _ in range(2):                   # compiled and saved, then loaded
+        r = subprocess.run([sys.executable, "-c", refuse + CALL], capture_output=True,
+                           text=True, env=env, timeout=300)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout == expected
+        notes = [line for line in r.stderr.splitlines() if line.startswith("charts:")]
+        assert len(notes) == 1 and "refuses locks" in notes[0]
