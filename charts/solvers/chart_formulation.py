@@ -246,12 +246,16 @@ def _invariants(y, par, ipar, inv):
     return 0.0
 
 
-@cache
 def chart_rhs(n: int, paper: bool = False, transport: bool = True):
     """Eqs (14) + (16) for N = ``n`` (``charts.flows.chart``), compiled for the loop and
     cached on disk: the structured right-hand side once for every N, a generated one per N,
     per module (``paper``: the paper's Σ cos θ = 0, else the family) and with eq (16) or
     without it (``transport``: ``charts.flows.chart.chart_rates``)."""
+    return _chart_rhs(int(n), bool(paper), bool(transport))   # one entry however it is called
+
+
+@cache
+def _chart_rhs(n, paper, transport):
     rates = chart_rates(n, paper, transport)
     if rates is structured_rates:
         return _structured_rhs()
