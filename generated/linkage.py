@@ -65,6 +65,8 @@ def jacobian(q, par, out):
     x34 = par[0]*math.cos(q[3])
     x35 = 2*x34
     x36 = -q[5] - x20 - x34
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[0] = x3*x5 + x8*x9  # 0, 0
@@ -145,6 +147,8 @@ def hessian_vector(q, w, par, out):
     x54 = 2*x51
     x55 = -q[5] - x35 - x49
     x56 = 2*x49
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[0] = w[0]*(x0**2*x13 + x11*x16 + x13*x3**2 - x14*x8) + w[6]*x12 - x1*x2 - x4*x5  # 0, 0

@@ -21,6 +21,8 @@ def metric(q, m, a, c, out):
     ws1 = a[1]*math.sin(q[1])
     x0 = m[2]/(a[2]**2 - (-c + wc0 + wc1)**2)
     x1 = x0*ws0*ws1
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0*ws0**2  # 0, 0
     o[1] = x1  # 0, 1
@@ -41,6 +43,8 @@ def metric_inverse(q, m, a, c, out):
     x3 = ws1**2
     x4 = m[2]/(a[2]**2 + m[2]*(x0*x1 + x2*x3) - (-c + wc0 + wc1)**2)
     x5 = -x0*x2*x4*ws0*ws1
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x1*x4/m[0]**2  # 0, 0
     o[1] = x5  # 0, 1
@@ -82,6 +86,8 @@ def christoffel(q, m, a, c, out):
     x24 = x21*ws0 - x23
     x25 = x10 - x11*x13/m[1]**2
     x26 = x0*x10*x11*x12*x16*x18*x5*x9 - x23*x25
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x14*x8 + x15*x17  # 0, 0, 0
     o[1] = x20  # 0, 0, 1
@@ -110,6 +116,8 @@ def riemann(q, m, a, c, out):
     x7 = x0*x1*x3/x4**2 - (x0*x2*x6 - wc0)*(x1*x2*x6 - wc1)
     x8 = -x5*x7
     x9 = x5*x7
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[5] = x8  # 0, 1, 0, 1

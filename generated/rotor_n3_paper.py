@@ -20,6 +20,8 @@ def metric(q, m, a, c, out):
     x1 = m[2]/(1 - (math.cos(q[0]) + math.cos(q[1]))**2)
     x2 = math.sin(q[1])
     x3 = x0*x1*x2
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0**2*x1  # 0, 0
     o[1] = x3  # 0, 1
@@ -38,6 +40,8 @@ def metric_inverse(q, m, a, c, out):
     x5 = x4**2
     x6 = m[2]/(m[2]*(x0*x2 + x3*x5) - (math.cos(q[0]) + math.cos(q[1]))**2 + 1)
     x7 = -x0*x1*x3*x4*x6
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x2*x6/m[0]**2  # 0, 0
     o[1] = x7  # 0, 1
@@ -80,6 +84,8 @@ def christoffel(q, m, a, c, out):
     x29 = x0*x26 - x28
     x30 = x14 - x16*x18/m[1]**2
     x31 = x12*x14*x16*x17*x23*x3*x8*x9 - x28*x30
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x11*x19 - x21*x22  # 0, 0, 0
     o[1] = x25  # 0, 0, 1
@@ -106,6 +112,8 @@ def riemann(q, m, a, c, out):
     x9 = -x0*x1*x5/x6**2 + (x0*x4*x8 - x2)*(x1*x4*x8 - x3)
     x10 = x7*x9
     x11 = -x7*x9
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[5] = x10  # 0, 1, 0, 1

@@ -26,6 +26,8 @@ def metric(q, m, a, c, out):
     x2 = x1*ws1
     x3 = x1*ws2
     x4 = x0*ws1*ws2
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0*ws0**2  # 0, 0
     o[1] = x2  # 0, 1
@@ -60,6 +62,8 @@ def metric_inverse(q, m, a, c, out):
     x10 = x4*ws2
     x11 = -x10*x7
     x12 = -x10*x6*x8
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x1*x6/m[0]**2  # 0, 0
     o[1] = x9  # 0, 1
@@ -158,6 +162,8 @@ def christoffel(q, m, a, c, out):
     x74 = x17*x32
     x75 = -x59*x72 + x65*x74 + x66
     x76 = x35*x74 + x36 - x57*x72
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x23*x9 - x27*x28 + x30*x31  # 0, 0, 0
     o[1] = x37  # 0, 0, 1
@@ -230,6 +236,8 @@ def riemann(q, m, a, c, out):
     x30 = -x11*x23 + x17*x2
     x31 = -x30*x6
     x32 = x30*x6
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[10] = x13  # 0, 1, 0, 1

@@ -24,6 +24,8 @@ def metric(q, m, a, c, out):
     x5 = math.sin(q[2])
     x6 = x3*x5
     x7 = x1*x2*x5
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0**2*x1  # 0, 0
     o[1] = x4  # 0, 1
@@ -55,6 +57,8 @@ def metric_inverse(q, m, a, c, out):
     x13 = x6*x7
     x14 = -x10*x13
     x15 = -x11*x13*x9
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x2*x9/m[0]**2  # 0, 0
     o[1] = x12  # 0, 1
@@ -154,6 +158,8 @@ def christoffel(q, m, a, c, out):
     x81 = x24*x39
     x82 = -x66*x79 + x72*x81 + x73
     x83 = x42*x81 + x43 - x64*x79
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x15*x30 - x34*x35 + x37*x38  # 0, 0, 0
     o[1] = x44  # 0, 0, 1
@@ -228,6 +234,8 @@ def riemann(q, m, a, c, out):
     x38 = -x14*x3*x5 + x18*x30
     x39 = x12*x38
     x40 = -x12*x38
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[10] = x20  # 0, 1, 0, 1

@@ -32,6 +32,8 @@ def metric(q, m, a, c, out):
     x6 = x5*ws2
     x7 = x5*ws3
     x8 = x0*ws2*ws3
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0*ws0**2  # 0, 0
     o[1] = x2  # 0, 1
@@ -82,6 +84,8 @@ def metric_inverse(q, m, a, c, out):
     x17 = -x12*x16
     x18 = -x14*x16
     x19 = -x12*x14*x8
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x1*x8/m[0]**2  # 0, 0
     o[1] = x11  # 0, 1
@@ -266,6 +270,8 @@ def christoffel(q, m, a, c, out):
     x151 = x127*x34*x40 - x128*x144 + x145*x42*ws2 + x145*x48*ws1
     x152 = -x100*x144 + x140 + x42*x74 + x45
     x153 = -x102*x144 + x123 + x48*x74 + x51
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x26*x9 - x27*x31 - x33*x35 + x37*x38  # 0, 0, 0
     o[1] = x46  # 0, 0, 1
@@ -425,6 +431,8 @@ def riemann(q, m, a, c, out):
     x78 = x3*x41 - x35*x52
     x79 = -x7*x78
     x80 = x7*x78
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[17] = x14  # 0, 1, 0, 1

@@ -29,6 +29,8 @@ def metric(q, m, a, c, out):
     x10 = x5*x9
     x11 = x7*x9
     x12 = x1*x5*x7
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0**2*x1  # 0, 0
     o[1] = x4  # 0, 1
@@ -75,6 +77,8 @@ def metric_inverse(q, m, a, c, out):
     x21 = -x16*x20
     x22 = -x18*x20
     x23 = -x12*x16*x18
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x12*x2/m[0]**2  # 0, 0
     o[1] = x15  # 0, 1
@@ -260,6 +264,8 @@ def christoffel(q, m, a, c, out):
     x160 = x0*x154*x57 + x136*x43*x49 - x137*x153 + x154*x23*x51
     x161 = -x109*x153 + x149 + x51*x83 + x54
     x162 = -x111*x153 + x132 + x57*x83 + x60
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x16*x35 - x36*x40 - x42*x44 + x46*x47  # 0, 0, 0
     o[1] = x55  # 0, 0, 1
@@ -422,6 +428,8 @@ def riemann(q, m, a, c, out):
     x89 = x44*x61 - x50*x7
     x90 = x15*x89
     x91 = -x15*x89
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[17] = x23  # 0, 1, 0, 1

@@ -39,6 +39,8 @@ def metric(q, m, a, c, out):
     x11 = x10*ws3
     x12 = x10*ws4
     x13 = x0*ws3*ws4
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0*ws0**2  # 0, 0
     o[1] = x2  # 0, 1
@@ -108,6 +110,8 @@ def metric_inverse(q, m, a, c, out):
     x25 = -x16*x24
     x26 = -x18*x24
     x27 = -x10*x16*x18
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x1*x10/m[0]**2  # 0, 0
     o[1] = x13  # 0, 1
@@ -442,6 +446,8 @@ def christoffel(q, m, a, c, out):
     x290 = x120*x289 - x240*x275 + x271*x63*ws2 + x286*x56 + x289*x47
     x291 = -x154*x270 + x187 + x265 + x56*x95 + x60
     x292 = -x156*x270 + x191 + x235 + x63*x95 + x67
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x29*x9 - x30*x34 - x36*x38 - x40*x42 + x44*x45  # 0, 0, 0
     o[1] = x54  # 0, 0, 1
@@ -738,6 +744,8 @@ def riemann(q, m, a, c, out):
     x152 = x4*x74 - x68*x87
     x153 = -x152*x8
     x154 = x152*x8
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[26] = x15  # 0, 1, 0, 1

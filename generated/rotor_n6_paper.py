@@ -35,6 +35,8 @@ def metric(q, m, a, c, out):
     x16 = x15*x7
     x17 = x15*x9
     x18 = x1*x7*x9
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = m[0] + x0**2*x1  # 0, 0
     o[1] = x4  # 0, 1
@@ -99,6 +101,8 @@ def metric_inverse(q, m, a, c, out):
     x30 = -x21*x29
     x31 = -x23*x29
     x32 = -x15*x21*x23
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = x0 - x15*x2/m[0]**2  # 0, 0
     o[1] = x18  # 0, 1
@@ -437,6 +441,8 @@ def christoffel(q, m, a, c, out):
     x304 = x130*x284 + x132*x303 + x24*x284*x74 - x252*x288 + x303*x58
     x305 = x106*x67 - x166*x283 + x199 + x278 + x71
     x306 = x106*x74 - x168*x283 + x203 + x247 + x78
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[0] = -x17*x40 - x41*x45 - x47*x49 - x51*x53 + x55*x56  # 0, 0, 0
     o[1] = x65  # 0, 0, 1
@@ -736,6 +742,8 @@ def riemann(q, m, a, c, out):
     x165 = x79*x98 - x85*x9
     x166 = x165*x18
     x167 = -x165*x18
+    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)
+        raise ValueError("out must be a C-contiguous array")
     o = out.reshape(-1)
     o[:] = 0.0
     o[26] = x26  # 0, 1, 0, 1

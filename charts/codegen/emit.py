@@ -95,9 +95,12 @@ def _flat_stores(shape, indices, reduced, printer):
     view, zeros by one fill: numba lowers every store to an N-d array with a copy of the
     array's descriptor that LLVM must then take apart (its SROA pass), and the N = 6 Riemann
     tensor's 625 stores compiled for 7 s this way against 1.6 s through the flat view with
-    the 345 zeros filled (the values are the same, bit for bit)."""
+    the 345 zeros filled (the values are the same, bit for bit).  An ``out`` that is not
+    C-contiguous is refused with a ValueError: NumPy's reshape would write into a copy."""
     strides = [math.prod(shape[i + 1:]) for i in range(len(shape))]
-    lines = ["    o = out.reshape(-1)"]
+    lines = ["    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)",
+             "        raise ValueError(\"out must be a C-contiguous array\")",
+             "    o = out.reshape(-1)"]
     if any(e == 0 for e in reduced):
         lines.append("    o[:] = 0.0")
     for index, e in zip(indices, reduced):
