@@ -37,7 +37,7 @@ class KernelAddress:
     (compiled or loaded from the cache here), as a driver receives it."""
 
     def __init__(self, kernel, argtypes):
-        kernel.compile(argtypes)
+        kernel.compile(argtypes)                # (loaded from the cache where it is there)
         cres = kernel.overloads[tuple(argtypes)]
         self.numba_type = KernelAddressType(cres.signature)
         self.jit_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_func_name)
@@ -62,50 +62,53 @@ def _unbox_kernel_address(typ, obj, c):
 
 
 class CallsKernel:
-    """``fn(kernel, *args)`` as ``driver(*args)``, compiled (cached on disk) for the types of
-    ``args`` with ``kernel``, a numba dispatcher, given by address (`KernelAddress`):
-    ``kernel_types(*types of args)`` gives the argument types it is called with, and it is
-    compiled (or loaded from the cache) for them before the driver.  ``options``: numba's
-    (``cache=False`` for a driver whose code is to be inspected).
+    """``fn(*kernels, *args)`` as ``driver(*args)``, compiled (cached on disk) for the types of
+    ``args`` with each kernel, a numba dispatcher, given by address (`KernelAddress`).  Each
+    of ``calls`` is a pair (kernel, kernel_types): ``kernel_types(*types of args)`` gives the
+    argument types the driver calls that kernel with, and the kernel is compiled (or loaded
+    from the cache) for them before the driver.  ``options``: numba's (``cache=False`` for a
+    driver whose code is to be inspected).
 
-    A call goes straight to numba's dispatcher with the last kernel address, and numba
+    A call goes straight to numba's dispatcher with the last kernel addresses, and numba
     matches the arguments to the signatures compiled so far (in C: typing them here in
     Python cost 85 µs a call); only arguments of new types, which numba answers with a
     ``TypeError``, compile a new signature (numba compiles none of its own)."""
 
-    def __init__(self, fn, kernel, kernel_types, **options):
+    def __init__(self, fn, *calls, **options):
         self.py_func = fn
-        self.kernel = kernel
-        self.kernel_types = kernel_types
+        self.calls = calls
         self.dispatcher = njit(**dict({"cache": True}, **options))(fn)
-        self._address = None                # the last kernel address called with
-        self._addresses = {}                # the kernel's argument types -> its address
+        self._kernels = None                # the kernel addresses of the last call
+        self._addresses = {}                # (kernel, its argument types) -> its address
         self.__doc__ = fn.__doc__
         self.__name__ = fn.__name__
 
     def __call__(self, *args):
-        if self._address is not None:
+        if self._kernels is not None:
             try:
-                return self.dispatcher(self._address, *args)
+                return self.dispatcher(*self._kernels, *args)
             except TypeError:
-                address, signature = self._resolve(args)
-                if address is self._address and signature in self.dispatcher.overloads:
+                kernels, signature = self._resolve(args)
+                if kernels == self._kernels and signature in self.dispatcher.overloads:
                     raise                   # raised by the driver, not by the matching
-        address, signature = self._resolve(args)
+        kernels, signature = self._resolve(args)
         if signature not in self.dispatcher.overloads:
             self.dispatcher.disable_compile(False)
             try:
                 self.dispatcher.compile(signature)
             finally:
                 self.dispatcher.disable_compile()
-        self._address = address
-        return self.dispatcher(address, *args)
+        self._kernels = kernels
+        return self.dispatcher(*kernels, *args)
 
     def _resolve(self, args):
-        """(the kernel's address, the driver's signature) for ``args``."""
+        """(the kernels' addresses, the driver's signature) for ``args``."""
         argtypes = tuple(typeof(a) for a in args)
-        ktypes = tuple(self.kernel_types(*argtypes))
-        address = self._addresses.get(ktypes)
-        if address is None:
-            address = self._addresses[ktypes] = KernelAddress(self.kernel, ktypes)
-        return address, (address.numba_type,) + argtypes
+        kernels = []
+        for kernel, kernel_types in self.calls:
+            key = (kernel, tuple(kernel_types(*argtypes)))
+            if key not in self._addresses:
+                self._addresses[key] = KernelAddress(*key)
+            kernels.append(self._addresses[key])
+        kernels = tuple(kernels)
+        return kernels, tuple(k.numba_type for k in kernels) + argtypes

@@ -42,7 +42,7 @@ def _drive_direct(x, scale, out, times):
     return total
 
 
-drive = CallsKernel(_drive, _kernel, _kernel_types)
+drive = CallsKernel(_drive, (_kernel, _kernel_types))
 
 
 def test_same_numbers_as_the_direct_call():
@@ -56,7 +56,7 @@ def test_the_kernel_is_not_compiled_into_the_driver():
     """The driver's LLVM code holds none of the kernel's work (its sines); a direct call's
     does (numba links a copy of the callee's code into its caller, where LLVM inlines this
     small one).  Neither is cached: numba inspects only code it compiled in this process."""
-    inspected = CallsKernel(_drive, _kernel, _kernel_types, cache=False)
+    inspected = CallsKernel(_drive, (_kernel, _kernel_types), cache=False)
     x = np.linspace(0.0, 3.0, 5)
     inspected(x, 1.0, np.empty(5), 1)
     _drive_direct(x, 1.0, np.empty(5), 1)
@@ -110,3 +110,25 @@ def test_a_new_process_loads_the_driver_from_the_disk_cache(tmp_path):
                                  capture_output=True, check=True).stdout.split()[-1])
               for _ in range(2)]
     assert counts[0] >= 2 and counts[1] == 0
+
+
+@njit(cache=True)
+def _twice(x, out):
+    """A second kernel."""
+    for i in range(x.size):
+        out[i] = 2.0 * x[i]
+    return out[0]
+
+
+def _drive_two(kernel, second, x, scale, out, times):
+    return kernel(x, scale, out) + second(x, out)
+
+
+def test_several_kernels_each_by_address_in_the_order_given():
+    both = CallsKernel(_drive_two, (_kernel, _kernel_types), (_twice, lambda x, *_: (x, x)))
+    x = np.linspace(0.0, 1.0, 6)
+    out = np.empty(6)
+    got = both(x, 0.5, out, 1)
+    want_first = _kernel(x, 0.5, np.empty(6))
+    assert got == want_first + 2.0 * x[0]
+    assert np.array_equal(out, 2.0 * x)

@@ -135,7 +135,7 @@ def sample_sines_types(ck, W, rotors, stepping, ck_every, first_sample, sample_e
 
 #: `_backward_pass` compiled with the sines called by address (their code, with the singular
 #: values', not compiled into the backward pass a second time: ``charts.kernel_calls``)
-backward_kernel = CallsKernel(_backward_pass, sample_sines, sample_sines_types)
+backward_kernel = CallsKernel(_backward_pass, (sample_sines, sample_sines_types))
 
 
 @njit(cache=True, inline="always")

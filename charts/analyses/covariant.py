@@ -158,7 +158,7 @@ def _forward_pass(kernel, stack, rotors, stepping, project_every, reorth_every, 
 
 #: `_forward_pass` compiled with the tangent kernel called by address (its code not compiled
 #: into the forward pass a second time: ``charts.kernel_calls``)
-_forward_kernel = CallsKernel(_forward_pass, tangent_kernel, tangent_kernel_types)
+_forward_kernel = CallsKernel(_forward_pass, (tangent_kernel, tangent_kernel_types))
 
 
 @njit(cache=True, nogil=True)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from math import sqrt
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from ..archive import Archivable, attributes, dataset, index_coordinate
 from ..result_words import ANGULAR_VELOCITY
@@ -219,13 +219,14 @@ def curvature_work(n, k):
 _BLOCK = 64
 
 
-def _sample_curvature(kernel, stack, rotors, stepping, project_every, reorth, sample_steps, Ka,
-                      Ys, Ps):
+def _sample_curvature(kernel, frame, curvature, stack, rotors, stepping, project_every, reorth,
+                      sample_steps, Ka, Ys, Ps):
     """Advance the tangent flow Z = [y; X] (``stack``: `Stack`) by ``kernel``
-    (`tangent_kernel`, called by address: `sample_curvature`) ``sample_steps`` steps per
-    sample (re-orthonormalised every ``reorth`` steps, a divisor of ``sample_steps``),
-    `_BLOCK` samples per kernel call with their states recorded, and at each sample store y,
-    the frame and the route-(a) matrix.  Returns (status, samples done).  ``stepping`` comes
+    (`tangent_kernel`) ``sample_steps`` steps per sample (re-orthonormalised every ``reorth``
+    steps, a divisor of ``sample_steps``), `_BLOCK` samples per kernel call with their states
+    recorded, and at each sample store y, the frame (``frame``: `curvature_frame`) and the
+    route-(a) matrix (``curvature``: `numerical_curvature`); the three called by address
+    (`sample_curvature`).  Returns (status, samples done).  ``stepping`` comes
     from the caller (restricted True): a literal True here would compile the tangent kernel
     a second time, beside the signature `TangentFlow.advance` compiled for the transient
     (10 s at the first call)."""
@@ -254,19 +255,34 @@ def _sample_curvature(kernel, stack, rotors, stepping, project_every, reorth, sa
         for b in range(nb):
             zb = buf[b].reshape((k + 1, 2 * n))
             y = zb[0]
-            uu = curvature_frame(y, zb[1:], minv, wts, m, Xj, P)
+            uu = frame(y, zb[1:], minv, wts, m, Xj, P)
             for i in range(2 * n):
                 Ys[a + b, i] = y[i]
             for r in range(k + 1):
                 for i in range(n):
                     Ps[a + b, r, i] = P[r, i]
-            numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[a + b], work)
+            curvature(y, Xj, P, minv, wts, m, dt, uu, Ka[a + b], work)
     return RUNNING, S
 
 
-#: `_sample_curvature` compiled with the tangent kernel called by address (its code not
-#: compiled into the sampler a second time: ``charts.kernel_calls``)
-sample_curvature = CallsKernel(_sample_curvature, tangent_kernel, tangent_kernel_types)
+def _frame_types(*_):
+    """The argument types with which `_sample_curvature` calls `curvature_frame`."""
+    vector, matrix = types.float64[::1], types.float64[:, ::1]
+    return (vector, matrix, vector, vector, vector, matrix, matrix)
+
+
+def _curvature_types(*_):
+    """The argument types with which `_sample_curvature` calls `numerical_curvature`."""
+    vector, matrix = types.float64[::1], types.float64[:, ::1]
+    return (vector, matrix, matrix, vector, vector, vector, types.float64, types.float64,
+            matrix, vector)
+
+
+#: `_sample_curvature` compiled with the tangent kernel, the frames and route (a) called by
+#: address (their code not compiled into the sampler a second time: ``charts.kernel_calls``)
+sample_curvature = CallsKernel(_sample_curvature, (tangent_kernel, tangent_kernel_types),
+                               (curvature_frame, _frame_types),
+                               (numerical_curvature, _curvature_types))
 
 
 @dataclass(eq=False, repr=False)

@@ -86,7 +86,7 @@ def _forward_kernel(kernel, stack, rotors, stepping, project, reorth, ce, rec_st
 
 #: `_forward_kernel` compiled with the tangent kernel called by address (its code not
 #: compiled into the forward pass a second time: ``charts.kernel_calls``)
-forward_kernel = CallsKernel(_forward_kernel, tangent_kernel, tangent_kernel_types)
+forward_kernel = CallsKernel(_forward_kernel, (tangent_kernel, tangent_kernel_types))
 
 
 @njit(cache=True, inline="always")
