@@ -14,6 +14,8 @@ package imports).
 """
 from __future__ import annotations
 
+import threading
+
 from numba import njit, typeof, types
 from numba.core import cgutils
 from numba.experimental.function_type import FunctionModel
@@ -80,6 +82,7 @@ class CallsKernel:
         self.dispatcher = njit(**dict({"cache": True}, **options))(fn)
         self._kernels = None                # the kernel addresses of the last call
         self._addresses = {}                # (kernel, its argument types) -> its address
+        self._lock = threading.Lock()       # (threads meeting new types compile in turn)
         self.__doc__ = fn.__doc__
         self.__name__ = fn.__name__
 
@@ -91,14 +94,15 @@ class CallsKernel:
                 kernels, signature = self._resolve(args)
                 if kernels == self._kernels and signature in self.dispatcher.overloads:
                     raise                   # raised by the driver, not by the matching
-        kernels, signature = self._resolve(args)
-        if signature not in self.dispatcher.overloads:
-            self.dispatcher.disable_compile(False)
-            try:
-                self.dispatcher.compile(signature)
-            finally:
-                self.dispatcher.disable_compile()
-        self._kernels = kernels
+        with self._lock:
+            kernels, signature = self._resolve(args)
+            if signature not in self.dispatcher.overloads:
+                self.dispatcher.disable_compile(False)
+                try:
+                    self.dispatcher.compile(signature)
+                finally:
+                    self.dispatcher.disable_compile()
+            self._kernels = kernels
         return self.dispatcher(*kernels, *args)
 
     def _resolve(self, args):

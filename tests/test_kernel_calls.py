@@ -132,3 +132,14 @@ def test_several_kernels_each_by_address_in_the_order_given():
     want_first = _kernel(x, 0.5, np.empty(6))
     assert got == want_first + 2.0 * x[0]
     assert np.array_equal(out, 2.0 * x)
+
+
+def test_threads_meeting_new_types_at_once_compile_in_turn():
+    """numba's dispatcher is opened for compilation only while a signature is added; two
+    threads adding theirs at once must not close it under each other."""
+    from concurrent.futures import ThreadPoolExecutor
+    fresh = CallsKernel(_drive, (_kernel, _kernel_types), cache=False)
+    inputs = [np.ones(3), np.ones((2, 3))[:, 0], np.ones((3, 2))[:, 1], np.ones(5)] * 4
+    with ThreadPoolExecutor(4) as pool:
+        got = list(pool.map(lambda x: fresh(x, 1.0, np.empty(x.size), 1), inputs))
+    assert got == [_drive_direct(x, 1.0, np.empty(x.size), 1) for x in inputs]
