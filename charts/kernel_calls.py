@@ -44,7 +44,8 @@ class KernelAddress:
         self.numba_type = KernelAddressType(cres.signature)
         self.jit_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_func_name)
         self.c_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_cfunc_wrapper_name)
-        self.kernel = kernel                # (its code lives as long as the dispatcher)
+        self.kernel = kernel
+        self.cres = cres                    # (its code and environment live as long as this)
 
 
 @typeof_impl.register(KernelAddress)
@@ -73,13 +74,17 @@ class CallsKernel:
 
     A call goes straight to numba's dispatcher with the last kernel addresses, and numba
     matches the arguments to the signatures compiled so far (in C: typing them here in
-    Python cost 85 µs a call); only arguments of new types, which numba answers with a
-    ``TypeError``, compile a new signature (numba compiles none of its own)."""
+    Python cost 85 µs a call) — exactly or by a safe conversion, never a lossy one, as
+    numba does while it may compile.  Arguments that match no signature reach numba's hook
+    for compiling (``_compile_for_args``), which is `_new_types` here: the kernels' addresses
+    and the driver's signature for their types, compiled under a lock (numba compiles none
+    of its own: it would link the kernels in)."""
 
     def __init__(self, fn, *calls, **options):
         self.py_func = fn
         self.calls = calls
         self.dispatcher = njit(**dict({"cache": True}, **options))(fn)
+        self.dispatcher._compile_for_args = self._new_types
         self._kernels = None                # the kernel addresses of the last call
         self._addresses = {}                # (kernel, its argument types) -> its address
         self._lock = threading.Lock()       # (threads meeting new types compile in turn)
@@ -87,23 +92,29 @@ class CallsKernel:
         self.__name__ = fn.__name__
 
     def __call__(self, *args):
-        if self._kernels is not None:
-            try:
-                return self.dispatcher(*self._kernels, *args)
-            except TypeError:
-                kernels, signature = self._resolve(args)
-                if kernels == self._kernels and signature in self.dispatcher.overloads:
-                    raise                   # raised by the driver, not by the matching
+        kernels = self._kernels
+        if kernels is None:
+            kernels, _ = self._prepare(args)
+        return self.dispatcher(*kernels, *args)
+
+    def _new_types(self, *args, **kws):
+        """numba's hook for arguments (the kernels first) that match no compiled signature:
+        the driver compiled for their types, and what numba then calls with them — the
+        compiled driver itself, with the kernels' addresses for these types, not the ones
+        given (no second matching: numba may miss one while another thread compiles)."""
+        args = args[len(self.calls):]
+        kernels, entry = self._prepare(args)
+        return lambda *_given: entry(*kernels, *args)
+
+    def _prepare(self, args):
+        """(the kernels' addresses for ``args``, the driver's compiled entry point for their
+        types), compiling it where it is new."""
         with self._lock:
             kernels, signature = self._resolve(args)
             if signature not in self.dispatcher.overloads:
-                self.dispatcher.disable_compile(False)
-                try:
-                    self.dispatcher.compile(signature)
-                finally:
-                    self.dispatcher.disable_compile()
+                self.dispatcher.compile(signature)
             self._kernels = kernels
-        return self.dispatcher(*kernels, *args)
+            return kernels, self.dispatcher.overloads[signature].entry_point
 
     def _resolve(self, args):
         """(the kernels' addresses, the driver's signature) for ``args``."""

@@ -84,9 +84,10 @@ def index_lock(cache, mode):
     """Hold the lock ``mode`` (``fcntl.LOCK_SH`` or ``LOCK_EX``) on the file beside numba's
     index of ``cache`` while the block runs.  The file is opened read-only where it cannot be
     opened for writing (another user's, in a shared cache: ``flock`` needs no write access);
-    without a lock where there is no ``fcntl``, the file cannot be opened at all (a read-only
-    cache) or the file system refuses locks (NFS without its lock daemon, some FUSE mounts):
-    there numba goes on as it would without charts, and `UNLOCKED` says so once."""
+    without a lock where there is no ``fcntl`` or the file cannot be opened at all (a
+    read-only cache), silently, and where the lock is refused (NFS without its lock daemon,
+    some FUSE mounts; an exclusive lock on a file opened read-only, on NFS), with one notice
+    (`UNLOCKED`): there numba goes on as it would without charts."""
     fd = _lock_file(cache) if fcntl is not None else None
     if fd is not None:
         try:
@@ -126,9 +127,9 @@ def _unlocked(cache, exc) -> None:
         return
     UNLOCKED[folder] = f"{type(exc).__name__}: {exc}"
     if len(UNLOCKED) == 1:
-        print(f"charts: the file system of numba's cache ({folder}) refuses locks "
-              f"({UNLOCKED[folder]}); kernels are cached there without them (processes that "
-              "compile at once may then mix entries: give each its own NUMBA_CACHE_DIR)",
+        print(f"charts: numba's cache ({folder}) could not be locked ({UNLOCKED[folder]}); "
+              "kernels are cached there without the lock (processes that compile at once may "
+              "then mix entries: give each its own NUMBA_CACHE_DIR)",
               file=sys.stderr, flush=True)
 
 

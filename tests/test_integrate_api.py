@@ -17,7 +17,8 @@ def _uncached(f):
     """The library's stepper ``f`` compiled here without numba's disk cache: called from
     Python with this module's right-hand side, it is specialised to that function, a new
     entry of the stepper's cache index in every process (see tests/test_switch_rule.py)."""
-    return njit(**{k: v for k, v in f.targetoptions.items() if k != "cache"})(f.py_func)
+    return njit(**{k: v for k, v in f.targetoptions.items()
+                   if k not in ("cache", "nopython")})(f.py_func)
 
 
 rk4_step, dop853_step, dop853_dense = map(_uncached, (rk.rk4_step, rk.dop853_step,

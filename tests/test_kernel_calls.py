@@ -134,12 +134,37 @@ def test_several_kernels_each_by_address_in_the_order_given():
     assert np.array_equal(out, 2.0 * x)
 
 
-def test_threads_meeting_new_types_at_once_compile_in_turn():
-    """numba's dispatcher is opened for compilation only while a signature is added; two
-    threads adding theirs at once must not close it under each other."""
+def test_threads_meeting_new_types_at_once_get_their_own_numbers():
+    """Threads calling with arguments of several types at once, before and after a first
+    call: each gets the direct call's numbers (the kernels' addresses and the driver's
+    signatures are resolved under a lock; numba matches the rest)."""
     from concurrent.futures import ThreadPoolExecutor
-    fresh = CallsKernel(_drive, (_kernel, _kernel_types), cache=False)
     inputs = [np.ones(3), np.ones((2, 3))[:, 0], np.ones((3, 2))[:, 1], np.ones(5)] * 4
-    with ThreadPoolExecutor(4) as pool:
-        got = list(pool.map(lambda x: fresh(x, 1.0, np.empty(x.size), 1), inputs))
-    assert got == [_drive_direct(x, 1.0, np.empty(x.size), 1) for x in inputs]
+    want = [_drive_direct(x, 1.0, np.empty(x.size), 1) for x in inputs]
+    for first in (None, np.ones(2)):
+        fresh = CallsKernel(_drive, (_kernel, _kernel_types), cache=False)
+        if first is not None:
+            fresh(first, 1.0, np.empty(2), 1)
+        with ThreadPoolExecutor(4) as pool:
+            got = list(pool.map(lambda x: fresh(x, 1.0, np.empty(x.size), 1), inputs))
+        assert got == want
+
+
+@njit(cache=True)
+def _scaled(x, scale):
+    return x[0] * scale
+
+
+def _drive_scaled(kernel, x, scale):
+    return kernel(x, scale)
+
+
+def test_arguments_of_new_types_compile_and_are_never_converted_lossily():
+    """After an int scale, a float scale is not converted to the int signature (numba
+    would, were the driver closed to compilation): it compiles its own."""
+    scaled = CallsKernel(_drive_scaled, (_scaled, lambda x, scale: (x, scale)), cache=False)
+    x = np.array([2.0])
+    assert scaled(x, 3) == 6.0
+    assert scaled(x, 1.5) == 3.0
+    assert scaled(x, 3) == 6.0
+    assert len(scaled.dispatcher.signatures) == 2

@@ -77,4 +77,4 @@ def test_a_file_system_that_refuses_locks_caches_without_them_and_says_so_once(t
         assert r.returncode == 0, r.stderr
         assert r.stdout == expected
         notes = [line for line in r.stderr.splitlines() if line.startswith("charts:")]
-        assert len(notes) == 1 and "refuses locks" in notes[0]
+        assert len(notes) == 1 and "could not be locked" in notes[0]

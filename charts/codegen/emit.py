@@ -96,7 +96,8 @@ def _flat_stores(shape, indices, reduced, printer):
     array's descriptor that LLVM must then take apart (its SROA pass), and the N = 6 Riemann
     tensor's 625 stores compiled for 7 s this way against 1.6 s through the flat view with
     the 345 zeros filled (the values are the same, bit for bit).  An ``out`` that is not
-    C-contiguous is refused with a ValueError: NumPy's reshape would write into a copy."""
+    C-contiguous is refused with a ValueError (NumPy's reshape would write into a copy);
+    compiled by numba, a strided one is refused earlier, by its typing of the reshape."""
     strides = [math.prod(shape[i + 1:]) for i in range(len(shape))]
     lines = ["    if not out.flags.c_contiguous:  # (reshape would copy it: written, then lost)",
              "        raise ValueError(\"out must be a C-contiguous array\")",
