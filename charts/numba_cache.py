@@ -14,7 +14,9 @@ file under a new key.  `install` therefore wraps numba's ``Cache.save_overload``
 file beside the index (``<index>.lock``, ``fcntl.flock``) from reading the index to writing
 the object file, a load a shared one from reading the index to reading the object file.
 Where the platform has no ``fcntl`` (Windows), the lock file cannot be opened (a read-only
-cache) or the file system refuses locks (a notice, once), numba goes on without it.
+cache) or the file system refuses locks (a notice, once), numba goes on without it.  An
+entry keyed on a compiled function passed as an argument, which no other process could
+find, is neither saved nor looked up (`_per_process`).
 
 numba reads a cached kernel with ``pickle`` and rebuilds it; an index or object file that was
 truncated by a full disk, overwritten or left by another version of the source raises from
@@ -57,6 +59,8 @@ def install() -> None:
     def load_overload(self, sig, target_context):
         if not _ours(self):
             return original_load(self, sig, target_context)
+        if _per_process(sig):
+            return None                     # never saved (`_per_process`): a miss
         with index_lock(self, fcntl and fcntl.LOCK_SH):
             try:
                 return original_load(self, sig, target_context)
@@ -69,6 +73,8 @@ def install() -> None:
     def save_overload(self, sig, data):
         if not _ours(self):
             return original_save(self, sig, data)
+        if _per_process(sig):
+            return None
         with index_lock(self, fcntl and fcntl.LOCK_EX):
             return original_save(self, sig, data)
 
@@ -131,6 +137,18 @@ def _unlocked(cache, exc) -> None:
               "kernels are cached there without the lock (processes that compile at once may "
               "then mix entries: give each its own NUMBA_CACHE_DIR)",
               file=sys.stderr, flush=True)
+
+
+def _per_process(sig) -> bool:
+    """Whether a signature holds a compiled function as an argument (a kernel called from
+    Python with a right-hand side of the caller's: ``rk4_step(f, …)``).  numba keys such an
+    entry on the function object of the process that compiled it, so no other process ever
+    finds it: each would add one more to the index, and numba rebuilds every entry's function
+    to save the next (a ReferenceError once one of them has been collected).  Such entries are
+    neither saved nor looked up."""
+    from numba.core import types
+
+    return any(isinstance(t, types.Dispatcher) for t in getattr(sig, "args", sig))
 
 
 def _ours(cache) -> bool:

@@ -9,20 +9,7 @@ from numba import njit
 from charts import RotorSystem
 from charts.solvers.chart_formulation import DEFAULT_TAU, chart_condition_bound, leave_chart, should_leave
 from charts.solvers.integrate import IntegrationResult, integrate
-from charts.solvers import rk
-from charts.solvers.rk import RHS_SIG, dense_eval
-
-
-def _uncached(f):
-    """The library's stepper ``f`` compiled here without numba's disk cache: called from
-    Python with this module's right-hand side, it is specialised to that function, a new
-    entry of the stepper's cache index in every process (see tests/test_switch_rule.py)."""
-    return njit(**{k: v for k, v in f.targetoptions.items()
-                   if k not in ("cache", "nopython")})(f.py_func)
-
-
-rk4_step, dop853_step, dop853_dense = map(_uncached, (rk.rk4_step, rk.dop853_step,
-                                                       rk.dop853_dense))
+from charts.solvers.rk import RHS_SIG, dense_eval, dop853_dense, dop853_step, rk4_step
 
 from scenarios import SINGULAR_N4, TOL, masses
 

@@ -75,3 +75,26 @@ def test_two_processes_adding_entries_to_one_index_keep_each_its_own_code(tmp_pa
     assert sorted(computed.splitlines()) == sorted(expected.splitlines())
     loaded = _output(_start(shared, EVALUATE, 3, 4))      # both from the shared cache
     assert loaded == expected
+
+
+STEP_WITH_OWN_RHS = """
+import numpy as np
+from numba import njit
+from charts.solvers.rk import RHS_SIG, rk4_step
+@njit(RHS_SIG)
+def decay(y, par, dy):
+    dy[0] = -y[0]
+    return 1.0
+y = np.ones(1)
+rk4_step(decay, y, 0.1, np.zeros(1), np.zeros((4, 1)), np.zeros(1), np.zeros(1))
+print(y[0].hex())
+"""
+
+
+def test_a_kernel_given_a_function_of_its_caller_leaves_no_cache_entry(tmp_path):
+    """``rk4_step(f, …)`` from Python with the caller's own compiled ``f``: numba keys such an
+    entry on that process's function, which no other process finds, so it is not saved (each
+    run added one to the step's index, and numba rebuilds them all to save the next)."""
+    out = {_output(_start(tmp_path, STEP_WITH_OWN_RHS)) for _ in range(2)}
+    assert len(out) == 1
+    assert not list(tmp_path.rglob("rk.rk4_step*.nbc"))

@@ -6,19 +6,12 @@ import math
 
 import numpy as np
 import pytest
-from numba import njit
 
 from charts import RotorSystem, integrate
 from charts.geometry.atlas import best_sine, eliminated_angle_sc
 from charts.solvers.chart_formulation import DEFAULT_TAU, ChartFlow, leave_chart, switch_rule
-from charts.solvers.rk import NO_REFCOUNT, rk4_step as _library_step
+from charts.solvers.rk import rk4_step
 from charts.solvers.status import CAP_FRACTION
-
-# the library's RK4 step compiled here without numba's disk cache: called from Python with a
-# compiled right-hand side, it is specialised to that function, and every such entry in the
-# step's cache index holds a dispatcher that numba must rebuild to save the next entry (with
-# many of them, one rebuilt dispatcher can vanish before the save: ReferenceError)
-rk4_step = njit(**NO_REFCOUNT)(_library_step.py_func)
 
 
 def _reference(s, k, tau):
