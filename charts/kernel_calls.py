@@ -44,7 +44,6 @@ class KernelAddress:
         self.numba_type = KernelAddressType(cres.signature)
         self.jit_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_func_name)
         self.c_addr = cres.library.get_pointer_to_function(cres.fndesc.llvm_cfunc_wrapper_name)
-        self.kernel = kernel
         self.cres = cres                    # (its code and environment live as long as this)
 
 
