@@ -14,7 +14,7 @@ mechanically coupled rotators".  The public surface, by concept:
   ``LinkageSystem``, ``linkage_run``, ``linkage_trajectory`` (docs/linkage.md);
 * declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``;
 * every result saves itself (``result.save(path)``, NetCDF) and ``load(path)`` reads it back
-  as its own type (``charts.archive``; the extra ``charts[io]``); results plot themselves
+  as its own type (``charts.io.archive``; the extra ``charts[io]``); results plot themselves
   (``result.plot()``, ``charts.plotting``).
 """
 import importlib
@@ -55,7 +55,7 @@ _HOMES = {
     "Waveform": ".analyses.spectra",
     "power_spectrum": ".analyses.spectra",
     "waveform": ".analyses.spectra",
-    "load": ".archive",
+    "load": ".io.archive",
     "LinkageSystem": ".geometry.linkage",
     "DegenerateMetricError": ".solvers.linkage",
     "LinkageResult": ".analyses.linkage",

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import charts
-from charts.archive import KINDS, load
+from charts.io.archive import KINDS, load
 from charts.runs.netcdf_results import SceneResult, SweepTable
 
 SYS4 = charts.RotorSystem(4)
@@ -593,8 +593,8 @@ def _as_written_before(ds):
     settings dict also as one JSON text, the copy that load read, beside its entries
     (booleans 1 or 0, None left out, no lists of names); other values that are not numbers
     or strings, and the members' shared booleans, None and lists of strings, as JSON."""
-    from charts.archive import attributes
-    from charts.file_settings import MARKS
+    from charts.io.archive import attributes
+    from charts.io.file_settings import MARKS
     old = ds.copy()
     marks = {m: str(ds.attrs.get(m, "")).split() for m in MARKS}
     old.attrs = {k: v for k, v in ds.attrs.items() if k not in MARKS}
@@ -615,7 +615,7 @@ def test_files_with_the_json_copy_of_the_settings_still_load(results, tmp_path):
     settings dict also as JSON text, booleans among its entries as 1 or 0) loads equal."""
     import xarray as xr
 
-    from charts.archive import save
+    from charts.io.archive import save
     for name, res in results.items():
         ds = xr.load_dataset(res.save(tmp_path / f"{name}.nc"), engine="h5netcdf")
         old = _as_written_before(ds)

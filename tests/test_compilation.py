@@ -1,4 +1,4 @@
-"""The kernels' one-time compilation is timed and announced (charts.compilation)."""
+"""The kernels' one-time compilation is timed and announced (charts.jit.compilation)."""
 
 
 def test_a_long_compilation_is_announced_once(monkeypatch, capsys):
@@ -6,7 +6,7 @@ def test_a_long_compilation_is_announced_once(monkeypatch, capsys):
     naming itself and N; nested entry points (and scenes, which time their own) stay quiet."""
     import numba
 
-    from charts import compilation
+    from charts.jit import compilation
 
     monkeypatch.setattr(compilation, "NOTE_SECONDS", 0.0)
 
@@ -49,7 +49,7 @@ _POOL = '''
 import sys
 sys.path.insert(0, sys.argv[1])
 import toy
-from charts import compilation
+from charts.jit import compilation
 from charts.analyses.ensemble import map_jobs
 compilation.NOTE_SECONDS = 0.0
 prime = (toy.job, 3) if sys.argv[2] == "prime" else None
@@ -94,7 +94,7 @@ def test_an_ensemble_on_an_empty_cache_announces_one_compilation(tmp_path):
     import subprocess
     import sys
 
-    code = ("import charts; from charts import compilation; compilation.NOTE_SECONDS = 0.0; "
+    code = ("import charts; from charts.jit import compilation; compilation.NOTE_SECONDS = 0.0; "
             "S = charts.RotorSystem(3); "
             "print(charts.lyapunov_ensemble(S, 4, 0.4, workers=2, t_transient=0.0, "
             "n_batches=2).exponents)")

@@ -1,10 +1,10 @@
 """Compile time is kept apart from integration time in a scene's result.json
-(charts.compilation.compile_timer, used by the runner: numba's compile events, outermost only)."""
+(charts.jit.compilation.compile_timer, used by the runner: numba's compile events, outermost only)."""
 import time
 
 from numba import njit
 
-from charts.compilation import compile_timer
+from charts.jit.compilation import compile_timer
 
 
 def test_compile_timer_measures_numba_compilation_only():

@@ -1,4 +1,4 @@
-"""A kernel called by address (`charts.kernel_calls.CallsKernel`): the same numbers as a direct
+"""A kernel called by address (`charts.jit.kernel_calls.CallsKernel`): the same numbers as a direct
 call, the kernel's code not compiled into the driver, its exceptions propagated, one
 compilation per argument types, and the analyses' drivers leaving the tangent kernel with the
 one signature `TangentFlow.advance` gives it."""
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from numba import njit
 
-from charts.kernel_calls import CallsKernel
+from charts.jit.kernel_calls import CallsKernel
 
 
 @njit(cache=True)

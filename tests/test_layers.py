@@ -4,7 +4,7 @@ Every module of ``charts/`` and ``generated/`` is parsed (``ast``, nothing is im
 each of its imports, at the top or inside a function (the lazy ones count), is checked
 against `LAYERS`.  Imports by name (``importlib.import_module``) are not seen: the loaders of
 generated code (``charts.geometry.kernels``, ``charts.geometry.linkage``) and of result
-types (``charts.archive.KINDS``) use them.  The generated modules import nothing written by
+types (``charts.io.archive.KINDS``) use them.  The generated modules import nothing written by
 hand (`GENERATED_MAY_IMPORT`), as the code generator's output for an unshipped N (the
 on-demand cache) does.
 """
@@ -23,9 +23,9 @@ ROOT = Path(__file__).resolve().parent.parent
 #: module may import from its own layer and from the layers below it.
 LAYERS = (
     ("generated",),                         # the generated kernels: see GENERATED_MAY_IMPORT
-    ("version", "atomic", "compilation", "kernel_calls", "packed", "numba_cache", "numba_inliner",
-     "numba_typing", "numba_init", "result_words", "file_settings"),  # no imports of other layers
-    ("archive",),                           # save/load of results (result types by name)
+    ("version",),                           # the package's version
+    ("jit",),                               # the compile machinery (numba: adaptations, calls)
+    ("io",),                                # results on disk (result types by name)
     ("codegen",),                           # the symbolic derivation and its emitter
     ("geometry",),                          # the manifold, the atlas, projections, kernels
     ("flows",),                             # the equations (8), (14), (16), (17), (19)
@@ -124,7 +124,7 @@ def test_the_emitter_writes_modules_that_import_math_only():
 def test_the_chart_right_hand_side_bound_by_hand_stays_cached_on_disk():
     """Binding a generated module's kernels in ``charts.flows.chart`` keeps numba's on-disk
     cache: a second process loads the compiled right-hand side without compiling it."""
-    code = ("from charts.compilation import compile_timer\n"
+    code = ("from charts.jit.compilation import compile_timer\n"
             "from charts.solvers.chart_formulation import chart_rhs\n"
             "spent = []\n"
             "with compile_timer(spent.append):\n"

@@ -1,5 +1,5 @@
 """A damaged numba cache entry of a charts kernel is removed and compiled again, once, with
-one notice (charts.numba_cache, installed through numba's entry point)."""
+one notice (charts.jit.cache_lock: the cache object of charts' own dispatchers)."""
 import os
 import subprocess
 import sys
@@ -47,19 +47,24 @@ def test_a_damaged_entry_is_rebuilt_once_with_a_notice(filled, tmp_path, suffix,
     assert out == expected and notes == []
 
 
-def test_the_guard_is_installed_by_numba_itself_and_leaves_other_packages_alone():
-    code = ("import numba\n@numba.njit\ndef f(x): return x\nf(1)\n"
-            "from numba.core.caching import Cache\n"
-            "print(getattr(Cache.load_overload, '_charts_heals', False))")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
-    assert r.stdout.strip() == "True", r.stderr
-    from charts.numba_cache import _ours
+def test_the_guard_is_charts_dispatchers_own_and_leaves_numbas_classes_alone():
+    """A charts kernel with cache=True has the locked cache; numba's Cache class keeps its
+    own methods, and a function of anyone else keeps numba's FunctionCache."""
+    import numba
+    from numba.core.caching import Cache, FunctionCache
 
-    class Fake:
-        def __init__(self, module):
-            self._py_func = type("F", (), {"__module__": module})()
-    assert _ours(Fake("charts.solvers.tangent")) and _ours(Fake("charts_ondemand_rotor_n7"))
-    assert not _ours(Fake("chartsy.other")) and not _ours(Fake("scipy.x"))
+    from charts.jit import cache_lock, njit
+    from charts.solvers.status import sum_squares
+
+    assert cache_lock.usable()
+    assert type(sum_squares._cache) is not FunctionCache
+    assert isinstance(sum_squares._cache, FunctionCache)
+    assert Cache.load_overload.__module__ == Cache.save_overload.__module__ == "numba.core.caching"
+
+    def users(x):
+        return x
+    assert type(numba.njit(cache=True)(users)._cache) is FunctionCache
+    assert type(njit(cache=True)(users)._cache) is not FunctionCache   # (charts' njit)
 
 
 def test_a_file_system_that_refuses_locks_caches_without_them_and_says_so_once(tmp_path):

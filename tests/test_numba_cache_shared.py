@@ -1,5 +1,5 @@
 """Processes that share numba's cache and add entries to one index at once keep each entry's
-key with its own code (charts.numba_cache's lock): two processes compile the chart
+key with its own code (charts.jit.cache_lock's lock): two processes compile the chart
 right-hand side of N = 3 and of N = 4 — two entries of one function's index — with numba's
 save slowed down so that without the lock both take the same object file and the index
 names one entry's key with the other's code; a third process then loads both from the shared cache and must

@@ -1,5 +1,6 @@
-"""numba's typing of calls remembered (``charts.numba_typing``): installed by numba's entry
-point, off when asked, and the compiled code the same with and without it."""
+"""numba's typing of calls remembered (``charts.jit.typing_memo``): in numba's class only while
+numba compiles a charts function, off under ``CHARTS_NUMBA_PLAIN=1``, and the compiled code
+the same with and without it."""
 import operator
 import os
 import subprocess
@@ -13,7 +14,7 @@ from numba import njit
 from numba.core import types
 from numba.extending import overload
 
-from charts import numba_typing
+from charts.jit import typing_memo
 
 #: Compiles a generated chart kernel afresh (no cache) in a new process and prints whether
 #: the memo is on and a digest of the optimised LLVM IR of what numba compiled.
@@ -21,44 +22,54 @@ _PROBE = """
 import hashlib, numpy as np
 from numba import njit
 from numba.core.types.functions import BaseFunction
+import charts.jit
+from charts.jit import typing_memo
 from charts.generated import rotor_n4 as g
 f = njit(error_model="numpy")(g.transport_rate_sc)
 d = g.DIM
 x = np.linspace(0.2, 0.9, d)
 f(x, x + 1.0, x, x, np.ones(d + 1), np.ones(d + 1), 0.0, np.empty(d))
 ir = "".join(f.inspect_llvm().values())
-print(getattr(BaseFunction.get_call_type, "_charts_memo", False), hashlib.sha1(ir.encode()).hexdigest())
+own = BaseFunction.get_call_type.__module__ == "numba.core.types.functions"
+print(len(typing_memo._HELD) > 0, own, hashlib.sha1(ir.encode()).hexdigest())
 """
 
 
 def _probe(memo: bool):
-    env = dict(os.environ, CHARTS_NUMBA_TYPING="1" if memo else "0")
+    env = dict(os.environ, CHARTS_NUMBA_PLAIN="0" if memo else "1")
     r = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, text=True,
                        timeout=300, env=env)
     assert r.returncode == 0, r.stderr
-    on, digest = r.stdout.split()
-    return on == "True", digest
+    used, own, digest = r.stdout.split()
+    assert own == "True"                # numba's own function once the compilation ended
+    return used == "True", digest
 
 
-def test_installed_by_numbas_entry_point_and_off_when_asked():
-    """A process that never imports charts before compiling gets the memo from numba's entry
-    point; ``CHARTS_NUMBA_TYPING=0`` leaves numba's own function.  Either way the generated
-    kernel compiles to the same LLVM IR, byte for byte."""
+def test_used_while_a_charts_function_compiles_and_off_when_plain():
+    """A process that imports charts' compile machinery types a charts kernel's calls with
+    the memo, and numba has its own function back afterwards; ``CHARTS_NUMBA_PLAIN=1``
+    leaves numba's own function throughout.  Either way the generated kernel compiles to
+    the same LLVM IR, byte for byte."""
     on, with_memo = _probe(True)
     off, without = _probe(False)
     assert on and not off
     assert with_memo == without
 
 
-def test_install_is_idempotent_and_keeps_numbas_function():
+def test_install_is_idempotent_and_restore_gives_numbas_function_back():
     from numba.core.types.functions import BaseFunction
 
-    numba_typing.install()
-    numba_typing.install()
-    assert numba_typing.ACTIVE
-    patched = BaseFunction.get_call_type
-    assert patched._charts_memo
-    assert not getattr(patched.__wrapped__, "_charts_memo", False)
+    own = BaseFunction.get_call_type
+    assert typing_memo.usable()
+    typing_memo.install()
+    typing_memo.install()
+    try:
+        patched = BaseFunction.get_call_type
+        assert patched._charts_memo
+        assert patched.__wrapped__ is own
+    finally:
+        typing_memo.restore()
+    assert BaseFunction.get_call_type is own
 
 
 @contextmanager
@@ -78,21 +89,28 @@ def test_a_hit_returns_the_signature_and_implementation_numba_found():
     """Typing a charts function, the memo answers the second question with the first answer:
     the same signature object, and the implementation key numba recorded for it; typing
     anyone else's function, it remembers nothing."""
+    typing_memo.install()                        # (as while a charts function compiles)
+    try:
+        _hit_and_miss(mul_args=(types.int16, types.float32))
+    finally:
+        typing_memo.restore()
+
+
+def _hit_and_miss(mul_args):
     from numba.core.registry import cpu_target
 
-    numba_typing.install()                       # (numba installs it at its first compile)
     ctx = cpu_target.typing_context
     ctx.refresh()                                # numba's registries, loaded lazily
     mul = ctx.resolve_value_type(operator.mul)
     assert isinstance(mul, types.Function)
-    args = (types.int16, types.float32)          # a pair nothing in charts multiplies
-    before = numba_typing.memo_size(mul)
+    args = mul_args                              # a pair nothing in charts multiplies
+    before = typing_memo.memo_size(mul)
     with _typing_in(ctx, "users_own.module"):
         mul.get_call_type(ctx, args, {})
-    assert numba_typing.memo_size(mul) == before
+    assert typing_memo.memo_size(mul) == before
     with _typing_in(ctx, "charts.probe"):
         first = mul.get_call_type(ctx, args, {})
-        assert numba_typing.memo_size(mul) == before + 1
+        assert typing_memo.memo_size(mul) == before + 1
         key = mul._impl_keys[first.args]
         mul._impl_keys[first.args] = None        # a later resolution wrote another key
         again = mul.get_call_type(ctx, args, {})
@@ -177,7 +195,7 @@ def second(x):
         assert second(0) == 2
         from numba.core.registry import cpu_target
         fnty = cpu_target.typing_context.resolve_value_type(_plus_offset)
-        assert numba_typing.memo_size(fnty) == 0
+        assert typing_memo.memo_size(fnty) == 0
     finally:
         _OFFSET = 1
 
@@ -185,6 +203,7 @@ def second(x):
 _POINTER_PROBE = """
 import ctypes, ctypes.util
 from numba import njit
+import charts.jit
 libm = ctypes.CDLL(ctypes.util.find_library("m"))
 cos = libm.cos
 cos.restype, cos.argtypes = ctypes.c_double, (ctypes.c_double,)
@@ -200,10 +219,11 @@ print(call(cos, 0.0))
 def test_a_cached_function_of_a_function_pointer_still_saves(tmp_path):
     """numba's disk cache pickles the argument types with their attributes; the memo is held
     beside the function types (a ctypes pointer's type is one), so they still pickle."""
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), CHARTS_NUMBA_TYPING="1")
-    script = tmp_path / "pointer_probe.py"            # numba caches only functions in files
-    script.write_text(_POINTER_PROBE)
-    r = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), CHARTS_NUMBA_PLAIN="0")
+    # numba caches only functions in files; a module named as charts' on-demand ones
+    (tmp_path / "charts_ondemand_pointer_probe.py").write_text(_POINTER_PROBE)
+    r = subprocess.run([sys.executable, "-c", "import charts_ondemand_pointer_probe"],
+                       capture_output=True, text=True,
                        timeout=300, env=env, cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "1.0"

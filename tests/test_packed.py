@@ -1,4 +1,4 @@
-"""Named fields of the packed parameter arrays (``charts.packed``): the layout arithmetic, and
+"""Named fields of the packed parameter arrays (``charts.jit.packed``): the layout arithmetic, and
 the formulations' layouts agreeing with what the chart equations read."""
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 from numba import njit
 
 from charts.flows.chart import HEAD, WORK, local_parameters
-from charts.packed import layout, pack, put, size, value, view
+from charts.jit.packed import layout, pack, put, size, value, view
 from charts.solvers.ambient_formulation import PAR as AMBIENT_PAR
 from charts.solvers.chart_formulation import PAR as CHART_PAR
 

@@ -295,7 +295,7 @@ def test_a_point_asks_dask_for_no_client_of_the_cluster(monkeypatch):
     ``get_client``, which on a worker connects a new client of the worker to the scheduler,
     and that client's finalizer reports ``Exception ignored in: <function Client.__del__>``
     when an interrupted sweep shuts the cluster down."""
-    from charts.archive import require_xarray
+    from charts.io.archive import require_xarray
     try:
         require_xarray()
     except ImportError:

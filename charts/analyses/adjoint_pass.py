@@ -8,10 +8,11 @@ from __future__ import annotations
 
 
 import numpy as np
-from numba import njit, types
+from numba import types
+from ..jit import njit
 
 from ..flows.ambient import adjoint_factors, adjoint_rate
-from ..kernel_calls import CallsKernel
+from ..jit.kernel_calls import CallsKernel
 from ..geometry.primitives import sincos
 from ..geometry.projection import project_tangent_euclidean_sc
 from ..solvers.status import RUNNING
@@ -134,7 +135,7 @@ def sample_sines_types(ck, W, rotors, stepping, ck_every, first_sample, sample_e
 
 
 #: `_backward_pass` compiled with the sines called by address (their code, with the singular
-#: values', not compiled into the backward pass a second time: ``charts.kernel_calls``)
+#: values', not compiled into the backward pass a second time: ``charts.jit.kernel_calls``)
 backward_kernel = CallsKernel(_backward_pass, (sample_sines, sample_sines_types))
 
 

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, load
+from ..io.archive import Archivable, attributes, dataset, load
 from ..geometry.checks import finite_array, integer
 from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
@@ -361,7 +361,7 @@ class AngleTally(Archivable):
                 f"min φ restricted {s['min']:.3g} rad"]
 
     def to_xarray(self):
-        """This tally as an ``xarray.Dataset`` (``charts.archive``)."""
+        """This tally as an ``xarray.Dataset`` (``charts.io.archive``)."""
         member = ("variant", "member")
         return dataset(self.KIND, {
             "n": (("member",), self.n, "1", "angles per member"),

@@ -39,7 +39,7 @@ GRID_RTOL = 1e-9
 
 def flag(name, x) -> bool:
     """A yes/no setting: True or False, or 1 or 0 as a saved file's plain attributes hold
-    them (``charts.file_settings``), so that a call repeated from a file runs; ValueError for
+    them (``charts.io.file_settings``), so that a call repeated from a file runs; ValueError for
     anything else."""
     if isinstance(x, (bool, np.bool_)):
         return bool(x)

@@ -27,7 +27,7 @@ from concurrent.futures import ThreadPoolExecutor
 from math import isfinite
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
                               load_member, member_stops, resolve_device, store_member)

@@ -39,15 +39,15 @@ from math import isfinite
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
-from ..archive import Archivable, attributes, dataset, index_coordinate
-from ..result_words import ANGULAR_VELOCITY, RATE, exponent_words, smallest_words
-from ..compilation import announces_compilation
+from ..io.archive import Archivable, attributes, dataset, index_coordinate
+from ..io.result_words import ANGULAR_VELOCITY, RATE, exponent_words, smallest_words
+from ..jit.compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
 from ..solvers.driver import Phases
-from ..kernel_calls import CallsKernel
+from ..jit.kernel_calls import CallsKernel
 from ..solvers.tangent import (Records, TangentFlow, check_memory, orthonormalize, tangent_kernel,
                                tangent_kernel_types)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
@@ -157,7 +157,7 @@ def _forward_pass(kernel, stack, rotors, stepping, project_every, reorth_every, 
 
 
 #: `_forward_pass` compiled with the tangent kernel called by address (its code not compiled
-#: into the forward pass a second time: ``charts.kernel_calls``)
+#: into the forward pass a second time: ``charts.jit.kernel_calls``)
 _forward_kernel = CallsKernel(_forward_pass, (tangent_kernel, tangent_kernel_types))
 
 
@@ -308,7 +308,7 @@ class CovariantResult(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``)."""
+        attributes (``charts.io.archive``)."""
         data = {
             "phi": (("t",), self.phi, "rad", "angle between E_u and E_cs"),
             "phi_vectors": (("t",), self.phi_vectors, "rad",

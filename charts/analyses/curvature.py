@@ -30,12 +30,13 @@ from dataclasses import dataclass
 from math import sqrt
 
 import numpy as np
-from numba import njit, types
+from numba import types
+from ..jit import njit
 
-from ..archive import Archivable, attributes, dataset, index_coordinate
-from ..result_words import ANGULAR_VELOCITY
-from ..compilation import announces_compilation
-from ..kernel_calls import CallsKernel
+from ..io.archive import Archivable, attributes, dataset, index_coordinate
+from ..io.result_words import ANGULAR_VELOCITY
+from ..jit.compilation import announces_compilation
+from ..jit.kernel_calls import CallsKernel
 from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
                              tangent_rate, transport_rate)
 from ..geometry.primitives import sincos
@@ -279,7 +280,7 @@ def _curvature_types(*_):
 
 
 #: `_sample_curvature` compiled with the tangent kernel, the frames and route (a) called by
-#: address (their code not compiled into the sampler a second time: ``charts.kernel_calls``)
+#: address (their code not compiled into the sampler a second time: ``charts.jit.kernel_calls``)
 sample_curvature = CallsKernel(_sample_curvature, (tangent_kernel, tangent_kernel_types),
                                (curvature_frame, _frame_types),
                                (numerical_curvature, _curvature_types))

@@ -9,11 +9,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import (ENSEMBLE_TITLES, Archivable, attributes, dataset, require_xarray,
+from ..io.archive import (ENSEMBLE_TITLES, Archivable, attributes, dataset, require_xarray,
                        same_value)
-from ..file_settings import MEMBER, member_attributes, member_settings
-from ..result_words import RATE, counted, exponent_words, smallest_words
-from ..compilation import announce, timed_call
+from ..io.file_settings import MEMBER, member_attributes, member_settings
+from ..io.result_words import RATE, counted, exponent_words, smallest_words
+from ..jit.compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
@@ -71,7 +71,7 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         """The members' datasets stacked along a ``member`` dimension (members of one
         analysis share their shapes); their settings as ``member.*`` attributes where they
         share them and ``member.*`` variables along ``member`` where they differ (the seed,
-        the speed: ``charts.file_settings.member_settings``)."""
+        the speed: ``charts.io.file_settings.member_settings``)."""
         xr = require_xarray()
         if not self.members:
             raise ValueError("an empty ensemble has nothing to save")
@@ -106,7 +106,7 @@ class EnsembleResult(SpectrumQuantities, Archivable):
     def from_xarray(cls, ds):
         import importlib
 
-        from ..archive import KINDS
+        from ..io.archive import KINDS
         a = attributes(ds)
         module, name = KINDS[a["member_kind"]].split(":")
         member_cls = getattr(importlib.import_module(module), name)
@@ -234,7 +234,7 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
     With workers, the kernels are compiled once: ``prime`` = (function, job), a short call
     that compiles them, runs here first, so that the workers load them from numba's disk
     cache instead of each compiling them at once; what it or a worker compiled for longer
-    than ``charts.compilation.NOTE_SECONDS`` is announced here, on this process's stderr
+    than ``charts.jit.compilation.NOTE_SECONDS`` is announced here, on this process's stderr
     (``name``, ``n``: the analysis and N the notice names).  Never more processes than jobs
     (``workers=10**6`` for two jobs starts two)."""
     workers = min(workers or os.cpu_count() or 1, max(1, len(jobs)))

@@ -7,7 +7,8 @@ from __future__ import annotations
 from functools import cache
 
 import numpy as np
-from numba import njit, types
+from numba import types
+from ..jit import njit
 from numba.core.dispatcher import Dispatcher
 
 from ..geometry.atlas import chart_coordinates, local_masses, local_weights

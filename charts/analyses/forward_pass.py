@@ -7,11 +7,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..solvers.driver import Phases
 from ..solvers.status import RUNNING
-from ..kernel_calls import CallsKernel
+from ..jit.kernel_calls import CallsKernel
 from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reorth_steps,
                                tangent_kernel, tangent_kernel_types)
 from .arguments import (Documented, positive_int, positive_time, project_steps, samples_of,
@@ -85,7 +85,7 @@ def _forward_kernel(kernel, stack, rotors, stepping, project, reorth, ce, rec_st
 
 
 #: `_forward_kernel` compiled with the tangent kernel called by address (its code not
-#: compiled into the forward pass a second time: ``charts.kernel_calls``)
+#: compiled into the forward pass a second time: ``charts.jit.kernel_calls``)
 forward_kernel = CallsKernel(_forward_kernel, (tangent_kernel, tangent_kernel_types))
 
 

@@ -43,9 +43,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, index_coordinate
-from ..result_words import RATE, smallest_words
-from ..compilation import announces_compilation
+from ..io.archive import Archivable, attributes, dataset, index_coordinate
+from ..io.result_words import RATE, smallest_words
+from ..jit.compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.device import resolve_device
 from ..solvers.status import RUNNING, status_error
@@ -111,7 +111,7 @@ class AngleResult(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``)."""
+        attributes (``charts.io.archive``)."""
         return dataset(self.KIND, {
             "phi_full": (("t",), self.phi_full, "rad", "angle, full 2N-dim tangent space"),
             "phi_restricted": (("t",), self.phi_restricted, "rad",

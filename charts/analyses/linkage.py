@@ -21,10 +21,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate
-from ..file_settings import MEMBER_DIMS
-from ..result_words import ANGULAR_VELOCITY, RATE, exponent_words
-from ..compilation import announces_compilation
+from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
+from ..io.file_settings import MEMBER_DIMS
+from ..io.result_words import ANGULAR_VELOCITY, RATE, exponent_words
+from ..jit.compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
@@ -122,7 +122,7 @@ class LinkageResult(SpectrumQuantities, Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``); the exponents counted from 1 (λ₁ the largest, as
+        attributes (``charts.io.archive``); the exponents counted from 1 (λ₁ the largest, as
         `LyapunovResult`'s); the state's 14 components are q (θ₀…θ₃ and the disk's three
         coordinates), then their velocities."""
         data = {"exponents": (("exponent",), self.exponents, RATE,
@@ -166,7 +166,7 @@ class LinkageResult(SpectrumQuantities, Archivable):
 def q_component_coordinates() -> dict:
     """The coordinates that name the 7 components of q (θ₀…θ₃, x, y, α: the first of
     `COMPONENTS`) and their units, along the dimension of the settings q0 and v0 (v0 holds
-    their rates) in an ensemble's file (``charts.file_settings.MEMBER_DIMS``), for `dataset`'s
+    their rates) in an ensemble's file (``charts.io.file_settings.MEMBER_DIMS``), for `dataset`'s
     ``coords``: a run's file has them too, naming the entries of ``params_q0``, ``params_v0``."""
     dim = MEMBER_DIMS["q0"]
     return {dim: ((dim,), np.array(COMPONENTS[:NQ]), "1",

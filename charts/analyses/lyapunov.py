@@ -22,9 +22,9 @@ from functools import partial
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate
-from ..result_words import RATE, exponent_words
-from ..compilation import announces_compilation
+from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
+from ..io.result_words import RATE, exponent_words
+from ..jit.compilation import announces_compilation
 from ..geometry.checks import option
 from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges
 from ..geometry.projection import project_tangent

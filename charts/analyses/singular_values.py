@@ -15,7 +15,7 @@ from __future__ import annotations
 from math import copysign, sqrt
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 __all__ = ["smallest_singular_values", "smallest_singular_values_into", "sin_to_angle"]
 

@@ -15,11 +15,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..compilation import announces_compilation
+from ..jit.compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.tangent import TangentFlow
-from ..archive import Archivable, attributes, dataset
-from ..result_words import ANGULAR_VELOCITY, counted
+from ..io.archive import Archivable, attributes, dataset
+from ..io.result_words import ANGULAR_VELOCITY, counted
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
                         start_state, steps_of, Documented)
 
@@ -45,7 +45,7 @@ class Waveform(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``)."""
+        attributes (``charts.io.archive``)."""
         return dataset(self.KIND, {"theta": (("t", "rotor"), self.theta, "rad"),
                                    "u": (("t", "rotor"), self.u, ANGULAR_VELOCITY)},
                        coords={"t": (("t",), self.t, "time"),
@@ -108,7 +108,7 @@ class PowerSpectrum(Archivable, tuple):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``)."""
+        attributes (``charts.io.archive``)."""
         return dataset(self.KIND, {"density": (("omega",), self.density, "signal² · time / rad",
                                                "one-sided power spectral density per unit ω")},
                        coords={"omega": (("omega",), self.omega, ANGULAR_VELOCITY,

@@ -36,7 +36,7 @@ import math
 from dataclasses import asdict, dataclass
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..geometry.checks import integer
 from ..geometry.projection import tangent_part

@@ -5,7 +5,7 @@ import shlex
 import sys
 from pathlib import Path
 
-from ..result_words import counted
+from ..io.result_words import counted
 from ..runs.cli_parser import positive_count
 from ..runs.sweep import (TABLE, SweepError, bundled_sweeps, load_sweep, resolve_sweep,
                           run_sweep)

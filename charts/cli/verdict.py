@@ -99,7 +99,7 @@ def cmd_verdict(args) -> int:
 
 def _statistics(args) -> int:
     """``charts verdict --statistics``: `statistics_verdict` of each system in turn."""
-    from ..archive import load
+    from ..io.archive import load
     from ..geometry.system import RotorSystem
     from ..runs.verdict import (family_systems, format_statistics, members_window,
                                 statistics_verdict, tally_report)

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import sympy
 
-from ..atomic import atomic_write
+from ..io.atomic import atomic_write
 from .emit import module_name, module_source
 
 __all__ = ["cache_dir", "load_or_generate"]

@@ -17,7 +17,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from ..atomic import atomic_write
+from ..io.atomic import atomic_write
 
 __all__ = ["write_all", "compare", "stale_files", "import_shipped", "DamagedModuleError",
            "REPAIR"]

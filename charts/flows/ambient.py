@@ -45,7 +45,7 @@ eqs (8) and (17) in 150 against 124 ns per lane-step of the whole lane kernel).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos  # noqa: F401 - re-exported
 

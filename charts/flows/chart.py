@@ -26,13 +26,13 @@ from functools import cache
 from types import FunctionType
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..geometry import structured
 from ..geometry.atlas import eliminated_angle_sc, local_masses, local_weights
 from ..geometry.kernels import chart_module, module_digest, source
 from ..geometry.primitives import SHIFT_MAX, shifted
-from ..packed import layout, value, view
+from ..jit.packed import layout, value, view
 
 __all__ = ["rates", "chart_rates", "structured_rates", "no_transport", "local_parameters", "point_sincos",
            "start_sincos", "work_area", "WORK", "HEAD", "HEAD_FIELDS"]
@@ -40,7 +40,7 @@ __all__ = ["rates", "chart_rates", "structured_rates", "no_transport", "local_pa
 #: Floats per local coordinate of the work area at the end of ``par``: the last point q
 #: evaluated and its σ, κ, then the step's start point q₀ and its σ₀, κ₀ (`point_sincos`).
 WORK = 6
-#: The head of ``par`` that `rates` reads (``charts.packed.layout``): N, the chart's local
+#: The head of ``par`` that `rates` reads (``charts.jit.packed.layout``): N, the chart's local
 #: masses and weights (the eliminated rotor's last), the level; every ``par`` of a chart
 #: begins with it (`local_parameters`, ``charts.solvers.chart_formulation.PAR``) and ends with
 #: the work area.

@@ -28,7 +28,7 @@ steppers' signature), with ``par = (ε, ρ, R, m_d, I_d)``; it returns the healt
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..geometry.linkage import (NC, NQ, gen_hessian_vector, gen_jacobian, gen_third_form,
                                 kkt_matrix, lu_factor, lu_solve)

@@ -11,7 +11,7 @@ the local masses and weights (m without mₖ, then mₖ; the same for a).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 __all__ = ["chart_coordinates", "local_masses", "local_weights", "ambient_index", "local_index",
            "eliminated_component", "eliminated_angle", "eliminated_component_sc",

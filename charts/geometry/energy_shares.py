@@ -12,7 +12,7 @@ costs O(N) per sample and changes no other number of the run.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from .primitives import LANE_WIDTH
 

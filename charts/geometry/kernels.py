@@ -26,6 +26,8 @@ import numba
 import numpy as np
 from numba.core.dispatcher import Dispatcher
 
+from ..jit import njit
+
 from ..codegen.names import GENERATED_FUNCTIONS, SHIPPED_N, module_name
 from ..codegen.shipped import import_shipped
 
@@ -115,7 +117,7 @@ def compiled(n: int, paper: bool = False) -> SimpleNamespace:
         # operations per call), and the long functions compile in two thirds of the time
         # (N = 6 Riemann: 13 s against 19 s; the same bits).  (numba's disk cache does not
         # key on the error model: a cache written before keeps raising at a zero divisor.)
-        out[name] = numba.njit(cache=True, error_model="numpy")(fn) if jit else fn
+        out[name] = njit(cache=True, error_model="numpy")(fn) if jit else fn
     return SimpleNamespace(**out)
 
 

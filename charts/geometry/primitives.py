@@ -6,7 +6,7 @@ from __future__ import annotations
 from math import cos, sin
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 __all__ = ["sincos", "shifted", "SHIFT_MAX", "LANE_WIDTH"]
 

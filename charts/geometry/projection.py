@@ -18,7 +18,7 @@ from __future__ import annotations
 from math import cos, sin, sqrt
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from .primitives import LANE_WIDTH, sincos
 

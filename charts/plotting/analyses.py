@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..result_words import ANGULAR_VELOCITY, RATE
+from ..io.result_words import ANGULAR_VELOCITY, RATE
 from .style import MAX_POINTS, TIME, figure_axes, line_colors, new_figure, time_window
 
 __all__ = ["plot_lyapunov", "plot_ensemble_exponents", "plot_curvature", "plot_angles",

@@ -4,7 +4,7 @@ of a sweep summary (one dict per ε: statistic → mean over seeds, ``<statistic
 standard error)."""
 from __future__ import annotations
 
-from ..result_words import RATE
+from ..io.result_words import RATE
 from .style import new_figure
 
 __all__ = ["plot_linkage_epsilon", "ERROR_BARS"]

@@ -1,15 +1,15 @@
 """The one figure style of the project: pyplot-free figures (no global state, no GUI
 backend is ever selected), PNG bytes or files written atomically, axes given or new, angle
 wrapping for plots.  No imports from the package's layers but the atomic write and the words
-for a system that the results' reprs use too (``charts.result_words.system_label``)."""
+for a system that the results' reprs use too (``charts.io.result_words.system_label``)."""
 from __future__ import annotations
 
 import io
 
 import numpy as np
 
-from ..result_words import system_label
-from ..atomic import atomic_write
+from ..io.result_words import system_label
+from ..io.atomic import atomic_write
 
 __all__ = ["new_figure", "png_bytes", "save_png", "DPI", "figure_axes", "wrap", "broken_at_wraps",
            "TIME", "time_window", "MAX_POINTS", "system_label"]

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..result_words import ANGULAR_VELOCITY, counted
+from ..io.result_words import ANGULAR_VELOCITY, counted
 from .style import (MAX_POINTS, TIME, broken_at_wraps, figure_axes, new_figure, system_label,
                     time_window, wrap)
 

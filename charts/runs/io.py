@@ -7,7 +7,7 @@ import platform
 
 import numpy as np
 
-from ..atomic import atomic_write
+from ..io.atomic import atomic_write
 
 __all__ = ["atomic_write", "atomic_text", "npz_bytes", "json_default", "versions"]
 

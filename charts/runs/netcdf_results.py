@@ -1,4 +1,4 @@
-"""Scene results and sweep tables as NetCDF (``charts.archive``): ``SceneResult`` (what a
+"""Scene results and sweep tables as NetCDF (``charts.io.archive``): ``SceneResult`` (what a
 scene run writes: ``results.nc`` beside ``result.json``) and ``SweepTable`` (``sweep.csv``
 as a dataset along a ``point`` dimension)."""
 from __future__ import annotations
@@ -10,8 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset, exponent_coordinate
-from ..result_words import ANGULAR_VELOCITY, RATE, counted
+from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
+from ..io.result_words import ANGULAR_VELOCITY, RATE, counted
 from .io import json_default
 
 __all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS", "column_units"]
@@ -63,7 +63,7 @@ class SceneResult(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``); the exponents counted from 1, as in a
+        attributes (``charts.io.archive``); the exponents counted from 1, as in a
         `LyapunovResult`'s file."""
         data, coords = {}, {}
         for name, arr in self.arrays.items():
@@ -143,7 +143,7 @@ class SweepTable(Archivable):
 
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
-        attributes (``charts.archive``)."""
+        attributes (``charts.io.archive``)."""
         data = {k: (("point",), v, column_units(k) or "1") for k, v in self.columns.items()}
         return dataset(self.KIND, data, attrs={"table": self.attrs,
                                                "column_order": list(self.columns)})

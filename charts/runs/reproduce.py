@@ -191,7 +191,7 @@ def _compile_first(pool, quiet):
     """The kernels of every task, each compiled once by one worker (`charts warmup`'s
     stages) before the tasks start, instead of by every worker at once on an empty cache;
     with the cache filled, the workers load them here (what the tasks would do anyway)."""
-    from ..compilation import announce
+    from ..jit.compilation import announce
     from .warmup import warmup
     spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "angles", "clv", "curvature"],
                                              pool=pool))

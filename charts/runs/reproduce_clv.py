@@ -8,7 +8,7 @@ import numpy as np
 from matplotlib.ticker import NullFormatter
 
 from ..analyses.hyperbolicity import angle_statistics
-from ..result_words import RATE
+from ..io.result_words import RATE
 from ..plotting.style import new_figure, save_png
 
 __all__ = ["task_clv", "summarise", "report_lines", "figure_clv", "figure_ftle",

@@ -64,7 +64,7 @@ class RunState:
         self.resumed_from = None
 
     def add_compile_time(self, seconds):
-        """Count ``seconds`` of compiling (``charts.compilation.compile_timer``)."""
+        """Count ``seconds`` of compiling (``charts.jit.compilation.compile_timer``)."""
         self.compile_s += seconds
 
     @property

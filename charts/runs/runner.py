@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..compilation import NOTE_SECONDS, compile_timer
+from ..jit.compilation import NOTE_SECONDS, compile_timer
 from ..analyses.lyapunov import end_transient
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..result_words import ANGULAR_VELOCITY
+from ..io.result_words import ANGULAR_VELOCITY
 from ..plotting import (CURVATURE_QUANTILES, plot_angles, plot_curvature, plot_drift,
                         plot_lyapunov, plot_spectrum, plot_velocities_time)
 from ..plotting.style import new_figure, png_bytes

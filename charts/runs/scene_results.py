@@ -16,7 +16,7 @@ from ..analyses.curvature import gaussian_curvature_eq22
 from ..analyses.angle_tally import SMALL_ANGLE
 from ..analyses.hyperbolicity import angle_statistics
 from ..analyses.spectra import power_spectrum
-from ..archive import require_xarray
+from ..io.archive import require_xarray
 from ..geometry.energy_shares import LOCALISED_SHARE, localised_fraction
 from . import scene_figures as figs
 from .netcdf_results import SCENE_NETCDF, SceneResult

@@ -14,7 +14,7 @@ import json
 import time
 from contextlib import ExitStack
 
-from ..compilation import compile_timer
+from ..jit.compilation import compile_timer
 from ..solvers.lanes import LaneFlows
 from ..solvers.status import RUNNING
 from .engines import KERNEL_ROUTE, count_kernel_steps, kernel_failure, record_interval, recording_stops

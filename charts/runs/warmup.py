@@ -24,7 +24,7 @@ from ..analyses.curvature import curvature_along_trajectory
 from ..analyses.hyperbolicity import hyperbolicity_angles
 from ..analyses.lyapunov import lyapunov_spectrum
 from ..analyses.lyapunov_members import MIN_LANES, lyapunov_ensemble
-from ..compilation import compile_timer
+from ..jit.compilation import compile_timer
 from ..geometry.system import RotorSystem
 from ..solvers.integrate import integrate
 

@@ -18,7 +18,7 @@ a singular point, the loop caps each step from its own start while the tangent k
 dt into sub-steps (``status.next_substep``; through Σ sin²θ ≈ 2e-6: 1.1e-7 against 1.4e-6
 from DOP853 at rtol 1e-13, docs/integrators.md).  DOP853 evaluates libm at every stage (:func:`_rhs`).
 
-Parameters: ``par``, the fields of `PAR` (``charts.packed``): N, 1/m, m, the speed,
+Parameters: ``par``, the fields of `PAR` (``charts.jit.packed``): N, 1/m, m, the speed,
 the project flag, the cap fraction, the point's work (a sin θ, a cos θ, a sin θ/m of the point
 being evaluated), the weights a, the level c, and the step's: the start's a sin θ, a cos θ
 (s₀, c₀: carried), its work and the state last projected, so that no hook allocates;
@@ -29,7 +29,7 @@ from __future__ import annotations
 from functools import cache
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..flows.ambient import multiplier, sincos, state_rate, transport_rate
 from ..geometry.projection import invariants_of, project_state, project_velocity
@@ -37,7 +37,7 @@ from .loop import (CAP_SIG, INV_SIG, OUT_SIG, POST_CHANGED, POST_OK, POST_SIG, S
                    Formulation)
 from .rk import NO_REFCOUNT, RHS_SIG
 from .status import SINGULAR_S, singular_floor, step_cap, sum_squares
-from ..packed import layout, pack, value, view
+from ..jit.packed import layout, pack, value, view
 from .tangent import stacked_rk4_step
 
 #: Landing steps within this relative distance of dt are the grid's step dt (the loop's time
@@ -46,7 +46,7 @@ LANDING_RTOL = 1e-9
 
 __all__ = ["AmbientFlow", "PAR"]
 
-#: The layout of ``par`` (``charts.packed.layout``: name, length a·N + b).
+#: The layout of ``par`` (``charts.jit.packed.layout``: name, length a·N + b).
 PAR = layout(("n", 0, 1), ("minv", 1, 0), ("masses", 1, 0), ("speed", 0, 1), ("project", 0, 1),
              ("cap", 0, 1), ("point_s", 1, 0), ("point_c", 1, 0), ("point_f", 1, 0),
              ("weights", 1, 0), ("level", 0, 1), ("s0", 1, 0), ("c0", 1, 0), ("th", 1, 0),

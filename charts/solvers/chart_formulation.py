@@ -38,10 +38,10 @@ import math
 from functools import cache
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from ..flows.chart import HEAD_FIELDS, WORK, chart_rates, point_sincos, start_sincos, structured_rates, work_area
-from ..packed import layout, pack, put, value, view
+from ..jit.packed import layout, pack, put, value, view
 from ..geometry.atlas import ambient_index, best_sine, eliminated_angle_sc, eliminated_component_sc
 from ..geometry.projection import invariant_terms, rescale_speed
 from .rk import NO_REFCOUNT, RHS_SIG
@@ -56,7 +56,7 @@ __all__ = ["ChartFlow", "leave_chart", "switch_rule", "should_leave", "DEFAULT_T
 #: equivalent within that sweep's scatter, and 0.9 leaves a 10 % hysteresis margin.
 DEFAULT_TAU = 0.9
 
-#: The layout of ``par`` (``charts.packed.layout``): the head that ``charts.flows.chart.rates``
+#: The layout of ``par`` (``charts.jit.packed.layout``): the head that ``charts.flows.chart.rates``
 #: reads (``HEAD_FIELDS``: N, the chart's local masses and weights, the level), the system's
 #: masses and weights
 #: in ambient order, the offset of θₖ, τ, the speed, the project flag, the cap fraction and

@@ -24,7 +24,7 @@ from __future__ import annotations
 import functools
 
 import numpy as np
-from numba import njit
+from ..jit import njit
 
 from .status import RUNNING, status_error
 from .driver import Phases

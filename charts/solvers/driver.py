@@ -27,45 +27,14 @@ from __future__ import annotations
 
 from collections import namedtuple
 
-from numba import njit, types
-from numba.core import cgutils
-from numba.extending import intrinsic
+from ..jit import njit
+from ..jit.borrowed import borrowed, keep_alive
 
 from .status import RUNNING
 
 __all__ = ["phased_loop", "Phases", "countdowns", "no_record", "borrowed", "keep_alive",
            "log_sums"]
 
-
-@intrinsic
-def borrowed(typingctx, a):
-    """A view of the array ``a`` that holds no reference to its memory (no meminfo): reading
-    it from a named state costs no reference count (an atomic increment and decrement per
-    read: where the code branches, Numba's pruning leaves them in the loop).  Valid while
-    ``a`` lives: Numba frees an array right after the last use of its variable, so the
-    function that builds a named state of borrowed views of arrays it allocated itself
-    passes them to `keep_alive` after the loop."""
-    def codegen(context, builder, sig, args):
-        src = context.make_array(a)(context, builder, value=args[0])
-        out = context.make_array(a)(context, builder)
-        out.meminfo = cgutils.get_null_value(out.meminfo.type)
-        out.parent = cgutils.get_null_value(out.parent.type)
-        out.nitems = src.nitems
-        out.itemsize = src.itemsize
-        out.data = src.data
-        out.shape = src.shape
-        out.strides = src.strides
-        return out._getvalue()
-    return a(a), codegen
-
-
-@intrinsic
-def keep_alive(typingctx, owners):
-    """A use of ``owners`` (an array or a tuple of them) that compiles to nothing: placed
-    after a loop over `borrowed` views, it keeps their memory allocated until then."""
-    def codegen(context, builder, sig, args):
-        return context.get_dummy_value()
-    return types.none(owners), codegen
 
 #: Steps between projections of the state (0: never) and between re-orthonormalisations;
 #: the first recorded global step and the steps between records (0: no records).

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from math import log, sqrt
 
-from numba import njit
+from ..jit import njit
 
 from ..geometry.primitives import LANE_WIDTH
 

@@ -20,7 +20,7 @@ and events (``charts.solvers.events``).
 """
 from __future__ import annotations
 
-from ..compilation import announces_compilation
+from ..jit.compilation import announces_compilation
 from ..geometry.system import RotorSystem
 from .chart_formulation import DEFAULT_TAU
 from .dense import DenseSolution

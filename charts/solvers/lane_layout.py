@@ -7,57 +7,19 @@ array starting on a cache line (`aligned`), allocated once with the work arrays 
 arrays of `LaneFlows`, `gather` / `scatter` copy one lane to / from the one-trajectory
 layout.
 
-Compilation (`LanesCompiler`): the kernel's array arguments are marked ``noalias`` (so its
-callers must pass distinct arrays) and only LLVM's SLP vectoriser packs its loops (the
-loop vectoriser off): the blocks of `LANE_WIDTH` lanes are loops of constant length,
-unrolled before vectorisation, whose packing into vector instructions is SLP's work.
-Neither changes an arithmetic operation (no fast-math, no FMA contraction), so each lane
-keeps the bits of the one-trajectory kernel.
+Compilation: ``charts.jit.vector_lowering`` (the kernel's arrays ``noalias``, LLVM's SLP
+vectoriser packing the blocks of `LANE_WIDTH` lanes; the same bits as the one-trajectory
+kernel).
 """
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
-from numba.core import config
-from numba.core.compiler import CompilerBase, DefaultPassBuilder
-from numba.core.compiler_machinery import register_pass
-from numba.core.typed_passes import NativeLowering
+
+from ..jit import njit
 
 from ..geometry.primitives import LANE_WIDTH
 
-__all__ = ["LanesCompiler", "aligned", "lane_arrays", "lanes_in", "lanes_out", "gather", "scatter"]
-
-
-@register_pass(mutates_CFG=False, analysis_only=False)
-class VectorLowering(NativeLowering):
-    """Numba's lowering with LLVM's SLP vectoriser on (``NUMBA_SLP_VECTORIZE``, off by
-    default), for this function's code only: it packs the unrolled blocks of `LANE_WIDTH`
-    lanes into vector instructions (the loop vectoriser does not: a block is unrolled
-    before it runs).  Same IEEE operations, so the same bits."""
-
-    _name = "charts_vector_lowering"
-
-    def run_pass(self, state):
-        codegen = state.targetctx.codegen()
-        saved = config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect
-        config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = 1, 0, False
-        try:
-            return super().run_pass(state)
-        finally:
-            config.SLP_VECTORIZE, config.LOOP_VECTORIZE, codegen._loopvect = saved
-
-
-class LanesCompiler(CompilerBase):
-    """Numba's nopython pipeline with the function's array arguments marked ``noalias``
-    (LLVM may then reorder their loads and stores without run-time overlap checks; only for
-    functions whose callers pass distinct arrays: ``charts.solvers.lanes._lanes_run``) and
-    `VectorLowering`."""
-
-    def define_pipelines(self):
-        self.state.flags.noalias = True
-        pm = DefaultPassBuilder.define_nopython_pipeline(self.state)
-        pm.passes = [(VectorLowering if p is NativeLowering else p, d) for p, d in pm.passes]
-        return [pm]
+__all__ = ["aligned", "lane_arrays", "lanes_in", "lanes_out", "gather", "scatter"]
 
 
 @njit(cache=True)

@@ -31,14 +31,14 @@ from collections import namedtuple
 from math import isfinite, log
 
 import numpy as np
-from numba import njit
+from ..jit import njit, vector_lowering
 
 from ..flows.ambient import (multiplier_lanes, stage_work, state_rate_lanes, tangent_factors_lanes,
                              tangent_rate_lanes)
 from ..geometry.energy_shares import energies_lanes, record_share_of
 from ..geometry.primitives import LANE_WIDTH, sincos
 from ..geometry.projection import project_state, project_tangent_lanes
-from .lane_layout import LanesCompiler, gather, lane_arrays, lanes_in, lanes_out, scatter
+from .lane_layout import gather, lane_arrays, lanes_in, lanes_out, scatter
 from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
 from .driver import Phases, borrowed, keep_alive, no_record, phased_loop
@@ -270,7 +270,7 @@ def _lanes_log_event(fl, ev):
                 event_logs[ev, l, r] = logsum[l, r]
 
 
-@njit(cache=True, pipeline_class=LanesCompiler)
+@njit(cache=True, **vector_lowering.options())
 def _lanes_run(Zf, s0, c0, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
                nsteps, reorth_every, w, restricted, project_every, logsum, events, event_logs,
                shares, work, n_tag, k_tag):

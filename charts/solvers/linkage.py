@@ -17,7 +17,8 @@ from collections import namedtuple
 from functools import cache
 
 import numpy as np
-from numba import njit, types
+from numba import types
+from ..jit import njit
 
 from ..flows.linkage import NY, linkage_rates
 from ..geometry.linkage import PROJ_OK, project_state_linkage, project_tangent_linkage

@@ -30,7 +30,7 @@ from __future__ import annotations
 import warnings
 from math import ceil, isfinite, sqrt
 
-from numba import njit
+from ..jit import njit
 
 __all__ = ["CAP_FRACTION", "DOMAIN_CAP_FRACTION", "CHART_MIN_RATIO", "SINGULAR_S", "step_cap", "sum_squares", "fixed_step_status", "substep_count", "substep_length", "next_substep", "singular_floor", "NECK_FACTOR", "RUNNING",
            "FINISHED", "OUT_FULL", "LOG_FULL", "SINGULAR", "DOMAIN", "UNDERFLOW", "NONFINITE",

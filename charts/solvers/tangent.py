@@ -25,7 +25,8 @@ from collections import namedtuple
 from math import cos, gcd, isfinite, sin
 
 import numpy as np
-from numba import njit, typeof, types
+from numba import typeof, types
+from ..jit import njit
 
 from ..flows.ambient import multiplier, stage_work, state_rate, tangent_factors, tangent_rate
 from ..geometry.energy_shares import record_share
@@ -418,7 +419,7 @@ def tangent_kernel_types(stack, rotors, stepping, *_):
     """The argument types with which the drivers call `tangent_kernel` (from the numba types of
     their first three arguments: `Stack`, `Rotors`, `Stepping`): the phases and the record
     rows as `TangentFlow.advance` passes them, int64 steps, no work arrays (the
-    ``kernel_types`` of ``charts.kernel_calls.CallsKernel``)."""
+    ``kernel_types`` of ``charts.jit.kernel_calls.CallsKernel``)."""
     return (stack, rotors, stepping, _PHASES_TYPE, _RECORDS_TYPE, types.int64, types.none)
 
 

@@ -1,5 +1,5 @@
 """``IntegrationResult``: the samples of a geodesic that ``integrate`` returns, in ambient
-coordinates for both formulations; saved and loaded as NetCDF (``charts.archive``), plotted
+coordinates for both formulations; saved and loaded as NetCDF (``charts.io.archive``), plotted
 by ``charts.plotting``."""
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..archive import Archivable, attributes, dataset
-from ..result_words import ANGULAR_VELOCITY, counted
+from ..io.archive import Archivable, attributes, dataset
+from ..io.result_words import ANGULAR_VELOCITY, counted
 from .dense import DenseSolution
 
 __all__ = ["IntegrationResult"]

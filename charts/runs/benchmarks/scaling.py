@@ -13,7 +13,7 @@ import argparse
 import time
 
 import numpy as np
-from numba import njit
+from ...jit import njit
 
 from ...geometry.kernels import source
 from ...geometry.system import RotorSystem

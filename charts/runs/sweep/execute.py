@@ -14,7 +14,7 @@ import time
 import uuid
 
 from ...analyses.arguments import positive_int
-from ...result_words import counted
+from ...io.result_words import counted
 from ..io import atomic_text
 from ..outdir import OutputLock, prepare_output
 from ..scene import scene_to_dict

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from ...analyses.angle_tally import SMALL_ANGLE
-from ...result_words import RATE
+from ...io.result_words import RATE
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ...plotting.style import new_figure, save_png

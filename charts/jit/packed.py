@@ -10,7 +10,7 @@ offsets, after constant folding, without a number in the formulation's code.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from . import njit
 
 __all__ = ["layout", "view", "value", "put", "pack", "size"]
 

@@ -1,7 +1,7 @@
 """Settings as NetCDF attributes: the settings of a result (name → value) as NetCDF holds them
 natively, so that a reader without this package (``ncdump -h``, plain xarray) reads every
 number as a number; the same attributes are what ``charts.load`` reads back
-(``charts.archive.attributes``), equal to the settings saved (an int stays an int, a list a
+(``charts.io.archive.attributes``), equal to the settings saved (an int stays an int, a list a
 list).  No imports from the package's layers but the units' spelling (`result_words`).
 
 `encode` writes them:
@@ -34,7 +34,7 @@ separated by spaces, present only when they name something.  A trajectory's file
 Files written before this encoding hold each settings dict also as one JSON text
 (``params = "json:{...}"``, its entries beside it with booleans as 1 or 0 and no lists of
 names): where that text is present, `decode_attributes` keeps it (and
-``charts.archive.attributes`` reads it).
+``charts.io.archive.attributes`` reads it).
 
 The members of an ensemble, in one file: `member_settings` (their settings, shared or along
 ``member``, `MEMBER`) and `member_attributes` (one member's, as its own file holds them).
@@ -233,7 +233,7 @@ MEMBER = "member."
 def member_settings(settings: list) -> tuple[dict, dict]:
     """(attributes, data variables) that hold the members' decoded settings (a list of dicts,
     one per member): the shared ones once, as settings for the ``attrs`` of
-    ``charts.archive.dataset`` (``member.params.n`` → 4), the differing ones as data
+    ``charts.io.archive.dataset`` (``member.params.n`` → 4), the differing ones as data
     variables along ``member`` (`MEMBER`)."""
     flats = [_flat(a) for a in settings]
     paths = list(dict.fromkeys(p for f in flats for p in f))
@@ -278,7 +278,7 @@ def _number_rows(values) -> bool:
 
 def member_attributes(ds, i) -> dict:
     """Member ``i``'s settings from a file written with `member_settings`, as a member's own
-    file holds them (`encode`; ``charts.archive.attributes`` decodes them)."""
+    file holds them (`encode`; ``charts.io.archive.attributes`` decodes them)."""
     flat = {tuple(k[len(MEMBER):].split(".")): v for k, v in _values(ds.attrs).items()
             if k.startswith(MEMBER)}
     for key in ds.data_vars:

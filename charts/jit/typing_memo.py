@@ -1,42 +1,34 @@
-"""numba's typing of a call, remembered: each function type answers once per argument types.
+"""numba's typing of a call remembered, while numba compiles charts' functions.
 
 numba types every call in a function it compiles — each ``*`` and ``+``, ``math.sin``, an
 ``@overload`` — by asking the callee's function type for a signature
 (``types.BaseFunction.get_call_type``), which orders the callee's templates and tries them
 one by one; type inference asks again each time it revisits the call, and numba keeps no
 memo.  The generated chart kernels are long straight-line code (thousands of arithmetic
-operations): `integrate` in a chart at N = 6, after N = 3, took 5.2 s CPU, 3.1 s with this
-memo (docs/performance.md, First use).
+operations), so typing is much of their first compilation (docs/performance.md, First use).
 
-`install` gives each function type a memo: (typing context, target, the calling function's
-compiler flags but those of its own wrapper, `OWN_FLAGS`, argument types, keyword types) →
-the signature found and the implementation key numba recorded with it.  The flags belong in
-the key because an ``@overload``'s implementation inherits the caller's (its error model,
-fastmath, NRT: numba builds one implementation per set, ``_OverloadFunctionTemplate._get_impl``).
-Only found signatures are kept (a failure is asked again, as numba does), and a hit records
-the implementation key again, as numba's own call does.  A call answered by an
-``@overload(inline=...)`` other than "never" is not kept: numba rebuilds the callee's IR for
-the inliner at each typing (``_inline_overloads``), which a hit would skip.  The memo is held
-beside the function type object (dropped with it; a function type augmented by a new
-``@overload`` is a new object), not in it: numba pickles types with their attributes.  It
-serves the typing of charts' own functions (``charts.numba_inliner.ours``: the package, its
-generated and on-demand modules), on the CPU; every other compilation in the process, and
-the GPU's (not measured there), is left to numba as it is.  numba calls `install` through
-its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before it
-compiles anything; ``CHARTS_NUMBA_TYPING=0`` leaves numba as it is (for a comparison, or
-should a numba version need it).
+This adaptation gives each function type a memo: (typing context, target, the calling
+function's compiler flags but those of its own wrapper, `OWN_FLAGS`, argument types, keyword
+types) → the signature found and the implementation key numba recorded with it.  The flags
+belong in the key because an ``@overload``'s implementation inherits the caller's (its error
+model, fastmath, NRT: numba builds one implementation per set).  Only found signatures are
+kept (a failure is asked again, as numba does), and a hit records the implementation key
+again, as numba's own call does.  A call answered by an ``@overload(inline=...)`` other than
+"never" is not kept: numba rebuilds the callee's IR for the inliner at each typing, which a
+hit would skip.  The memo is held beside the function type object (dropped with it), not in
+it: numba pickles types with their attributes.  It serves the typing of charts' own
+functions (`charts.jit.adaptations.ours`) on the CPU; every other typing goes to numba's
+own function.  It is in numba's class only while numba compiles a charts function
+(`charts.jit.adaptations.compile_scope`); where numba's internals differ from what it
+expects, it stays out with one notice (`usable`).
 """
 from __future__ import annotations
 
-import os
 import weakref
 
-from .numba_inliner import ours
+from . import adaptations
 
-__all__ = ["install", "ACTIVE", "memo_size"]
-
-#: Whether numba's function types remember their signatures in this process.
-ACTIVE = False
+__all__ = ["usable", "install", "restore", "memo_size", "OWN_FLAGS"]
 
 #: function type -> (its memo, its inlined @overload templates); held beside the type, not
 #: in it: numba pickles a type with its ``__dict__`` (its disk cache's index does, for a
@@ -79,7 +71,7 @@ def _remembering(original):
 
     def get_call_type(self, context, args, kws):
         frames = context.callstack             # [0]: the function being typed
-        if len(frames) == 0 or not ours(frames[0].func_id.modname):
+        if len(frames) == 0 or not adaptations.ours(frames[0].func_id.modname):
             return original(self, context, args, kws)     # not charts' own: numba's way
         held = _HELD.get(self)
         if held is None:
@@ -118,15 +110,59 @@ def memo_size(fnty) -> int:
     return 0 if held is None else len(held[0])
 
 
+#: numba's ``get_call_type``'s parameters, as this adaptation calls it.
+PARAMETERS = ["self", "context", "args", "kws"]
+
+_original = None        # numba's BaseFunction.get_call_type
+_wrapper = None         # the remembering one
+
+
+def _check():
+    """None, or what differs in numba's typing from what this adaptation expects; builds the
+    wrapper on success."""
+    global _original, _wrapper
+    import inspect
+
+    from numba.core.target_extension import CPU, get_local_target  # noqa: F401 - the memo's
+    from numba.core.typing import context as typing_context
+    from numba.core.targetconfig import ConfigStack
+    from numba.core.types.functions import BaseFunction
+    from numba.core.typing import templates
+
+    original = BaseFunction.__dict__.get("get_call_type")
+    if original is None:
+        return "BaseFunction.get_call_type is missing"
+    if list(inspect.signature(original).parameters) != PARAMETERS:
+        return f"get_call_type{inspect.signature(original)} has other parameters"
+    if "_impl_keys" not in inspect.getsource(BaseFunction):
+        return "function types keep no _impl_keys"
+    if "_inline_overloads" not in inspect.getsource(templates):
+        return "overload templates keep no _inline_overloads"
+    if not hasattr(ConfigStack, "top_or_none"):
+        return "ConfigStack.top_or_none is missing"
+    if not hasattr(getattr(typing_context, "CallStack", None), "__getitem__"):
+        return "the typing context's call stack is not indexable"
+    _original, _wrapper = original, _remembering(original)
+    return None
+
+
+def usable() -> bool:
+    """Whether the memo serves charts' compilations in this process."""
+    return adaptations.active("typing_memo", _check)
+
+
 def install() -> None:
-    """Give numba's function types the memo (idempotent)."""
-    global ACTIVE
-    if os.environ.get("CHARTS_NUMBA_TYPING", "1").strip() == "0":
-        return
+    """Put the remembering ``get_call_type`` in numba's class (while a charts function
+    compiles)."""
     from numba.core.types.functions import BaseFunction
 
-    if getattr(BaseFunction.get_call_type, "_charts_memo", False):
-        ACTIVE = True
-        return
-    BaseFunction.get_call_type = _remembering(BaseFunction.get_call_type)
-    ACTIVE = True
+    if usable():
+        BaseFunction.get_call_type = _wrapper
+
+
+def restore() -> None:
+    """numba's own ``get_call_type`` back in its class."""
+    from numba.core.types.functions import BaseFunction
+
+    if _original is not None:
+        BaseFunction.get_call_type = _original

@@ -5,23 +5,59 @@ callee's code into its own and having LLVM optimise and translate the whole agai
 analysis that drives the tangent kernel from its own kernel (the angle test's forward pass,
 the curvature's sampler, the CLVs' forward pass) compiled the tangent kernel's code a second
 time in its first call, 0.7–0.9 s each (docs/performance.md).  `CallsKernel` compiles such a
-driver with the kernel as an argument, a numba first-class function (`KernelAddressType`):
-the driver calls the kernel's one compiled code through its address, in numba's own calling
-convention (its exceptions propagate as from a direct call), and its own compilation holds
-only itself.  The same machine code runs either way, so the numbers are the same bit for
-bit; a call costs an indirect jump, once per chunk of steps.  Any layer may use it (no
-package imports).
+driver with the kernel as an argument, a numba first-class function (`KernelAddressType`,
+numba's ``FunctionType`` with its ``FunctionModel``): the driver calls the kernel's one
+compiled code through its address, in numba's own calling convention (its exceptions
+propagate as from a direct call), and its own compilation holds only itself.  The same
+machine code runs either way, so the numbers are the same bit for bit; a call costs an
+indirect jump, once per chunk of steps.
+
+This is the ``kernel_address`` adaptation (`charts.jit.adaptations`): it relies on numba's
+experimental first-class function model and on the dispatcher's hook for new argument types
+(``_compile_for_args``).  Where they differ from what it expects, or under
+``CHARTS_NUMBA_PLAIN=1``, a `CallsKernel` is numba's plain way: the driver compiled with the
+kernel dispatchers as arguments (linked in; not cached on disk, since numba keys such an
+entry on the process's own dispatcher objects).
 """
 from __future__ import annotations
 
 import threading
 
-from numba import njit, typeof, types
+from numba import typeof, types
 from numba.core import cgutils
-from numba.experimental.function_type import FunctionModel
 from numba.extending import NativeValue, register_model, typeof_impl, unbox
 
-__all__ = ["CallsKernel", "KernelAddress", "KernelAddressType"]
+from . import adaptations
+from .cache_lock import adopt
+
+__all__ = ["CallsKernel", "KernelAddress", "KernelAddressType", "usable"]
+
+
+def _check():
+    """None, or what differs in numba's first-class functions and dispatchers from what
+    `CallsKernel` expects."""
+    import inspect
+
+    from numba.core.dispatcher import Dispatcher
+    from numba.experimental import function_type
+
+    model = getattr(function_type, "FunctionModel", None)
+    if model is None:
+        return "numba.experimental.function_type.FunctionModel is missing"
+    source = inspect.getsource(model)
+    missing = [f for f in ("'c_addr'", "'py_addr'", "'jit_addr'") if f not in source]
+    if missing:
+        return f"FunctionModel has no field {', '.join(missing)}"
+    if not callable(getattr(Dispatcher, "_compile_for_args", None)):
+        return "Dispatcher._compile_for_args is missing"
+    if list(inspect.signature(Dispatcher._compile_for_args).parameters) != ["self", "args", "kws"]:
+        return "Dispatcher._compile_for_args has other parameters"
+    return None
+
+
+def usable() -> bool:
+    """Whether drivers call their kernels by address in this process."""
+    return adaptations.active("kernel_address", _check)
 
 
 class KernelAddressType(types.FunctionType):
@@ -31,7 +67,14 @@ class KernelAddressType(types.FunctionType):
     kernel's signature of named tuples)."""
 
 
-register_model(KernelAddressType)(FunctionModel)
+def _register_model():
+    from numba.experimental.function_type import FunctionModel
+
+    register_model(KernelAddressType)(FunctionModel)
+
+
+if usable():
+    _register_model()
 
 
 class KernelAddress:
@@ -63,6 +106,10 @@ def _unbox_kernel_address(typ, obj, c):
     return NativeValue(fn._getvalue())
 
 
+class _Plain(Exception):
+    """The kernel's address could not be read: the driver goes numba's plain way."""
+
+
 class CallsKernel:
     """``fn(*kernels, *args)`` as ``driver(*args)``, compiled (cached on disk) for the types of
     ``args`` with each kernel, a numba dispatcher, given by address (`KernelAddress`).  Each
@@ -77,23 +124,45 @@ class CallsKernel:
     numba does while it may compile.  Arguments that match no signature reach numba's hook
     for compiling (``_compile_for_args``), which is `_new_types` here: the kernels' addresses
     and the driver's signature for their types, compiled under a lock (numba compiles none
-    of its own: it would link the kernels in)."""
+    of its own: it would link the kernels in).
+
+    Without the ``kernel_address`` adaptation (`usable`), ``driver(*args)`` is numba's
+    ``fn(*kernels, *args)`` with the kernel dispatchers themselves (`plain`)."""
 
     def __init__(self, fn, *calls, **options):
+        from numba import njit
+
         self.py_func = fn
         self.calls = calls
-        self.dispatcher = njit(**dict({"cache": True}, **options))(fn)
-        self.dispatcher._compile_for_args = self._new_types
+        self.options = options
+        self.plain = None                   # numba's own driver, where not by address
+        if usable():
+            self.dispatcher = adopt(njit(**dict({"cache": True}, **options))(fn))
+            self.dispatcher._compile_for_args = self._new_types
+        else:
+            self._go_plain()
         self._kernels = None                # the kernel addresses of the last call
         self._addresses = {}                # (kernel, its argument types) -> its address
         self._lock = threading.Lock()       # (threads meeting new types compile in turn)
         self.__doc__ = fn.__doc__
         self.__name__ = fn.__name__
 
+    def _go_plain(self):
+        """Use numba's plain driver from now on."""
+        from numba import njit
+
+        self.dispatcher = njit(**dict(self.options, cache=False))(self.py_func)
+        self.plain = tuple(kernel for kernel, _ in self.calls)
+
     def __call__(self, *args):
+        if self.plain is not None:
+            return self.dispatcher(*self.plain, *args)
         kernels = self._kernels
         if kernels is None:
-            kernels, _ = self._prepare(args)
+            try:
+                kernels, _ = self._prepare(args)
+            except _Plain:
+                return self.dispatcher(*self.plain, *args)
         return self.dispatcher(*kernels, *args)
 
     def _new_types(self, *args, **kws):
@@ -102,7 +171,10 @@ class CallsKernel:
         compiled driver itself, with the kernels' addresses for these types, not the ones
         given (no second matching: numba may miss one while another thread compiles)."""
         args = args[len(self.calls):]
-        kernels, entry = self._prepare(args)
+        try:
+            kernels, entry = self._prepare(args)
+        except _Plain:
+            return lambda *_given: self.dispatcher(*self.plain, *args)
         return lambda *_given: entry(*kernels, *args)
 
     def _prepare(self, args):
@@ -122,7 +194,12 @@ class CallsKernel:
         for kernel, kernel_types in self.calls:
             key = (kernel, tuple(kernel_types(*argtypes)))
             if key not in self._addresses:
-                self._addresses[key] = KernelAddress(*key)
+                try:
+                    self._addresses[key] = KernelAddress(*key)
+                except AttributeError as exc:   # numba's compile result is not as expected
+                    adaptations.step_aside("kernel_address", f"{type(exc).__name__}: {exc}")
+                    self._go_plain()
+                    raise _Plain from exc
             kernels.append(self._addresses[key])
         kernels = tuple(kernels)
         return kernels, tuple(k.numba_type for k in kernels) + argtypes

@@ -13,12 +13,12 @@ The contract of a result type (a class with ``Archivable`` among its bases):
 :data:`KINDS` — one line — so that ``charts.load`` returns it.
 
 Attributes: the settings, as NetCDF holds them natively (a number as a number, a list as an
-array; ``ncdump -h`` and plain xarray read them), by the encoding of `charts.file_settings`
+array; ``ncdump -h`` and plain xarray read them), by the encoding of `charts.io.file_settings`
 (its docstring gives the rules and a trajectory's attributes); `attributes` reads them back,
 equal to the settings saved.  Every file also carries the CF global attributes
 (``Conventions``, ``title``, ``history``, ``source``, ``references``, and ``comment``: the
 units of the settings, `COMMENT`).  A result prints as one line, in the words of
-`charts.result_words`.
+`charts.io.result_words`.
 """
 from __future__ import annotations
 
@@ -113,7 +113,7 @@ def _global_attributes(kind: str, title: str | None = None) -> dict:
     import datetime
     import platform
 
-    from .version import __version__
+    from ..version import __version__
     versions = [f"charts {__version__}", f"python {platform.python_version()}",
                 f"numpy {np.__version__}"]
     try:
@@ -138,7 +138,7 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
     ``(dims, array, units, description)``; ``attrs``: settings (name → value, written by
     `encode`: the entries of the `FLATTENED` dicts as ``params_<key>``)."""
     xr = require_xarray()
-    from .version import __version__
+    from ..version import __version__
 
     def var(spec):
         dims, values, units = spec[:3]

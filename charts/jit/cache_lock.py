@@ -9,27 +9,26 @@ chart kernels of N = 4, 5 and 6, ``pytest -n 2``, a sweep's workers) can both ch
 number: the index then names one entry's key and the file holds the other's code, and every
 later process loads the wrong kernel — a chart right-hand side of another N — without an
 error.  And a process that reads the index between another's two writes can load an old
-file under a new key.  `install` therefore wraps numba's ``Cache.save_overload`` and
-``Cache.load_overload`` for this package's functions: a save holds an exclusive lock on a
-file beside the index (``<index>.lock``, ``fcntl.flock``) from reading the index to writing
-the object file, a load a shared one from reading the index to reading the object file.
-Where the platform has no ``fcntl`` (Windows), the lock file cannot be opened (a read-only
-cache) or the file system refuses locks (a notice, once), numba goes on without it.  An
-entry keyed on a compiled function passed as an argument, which no other process could
-find, is neither saved nor looked up (`_per_process`).
+file under a new key.  Each of charts' own dispatchers with ``cache=True`` (made by
+`charts.jit.njit`) therefore gets a `LockedCache`, numba's ``FunctionCache`` whose saving
+holds an exclusive lock on a file beside the index (``<index>.lock``, ``fcntl.flock``) from
+reading the index to writing the object file, and whose loading a shared one from reading
+the index to reading the object file.  numba's classes are not touched: other functions'
+caches are numba's own.  Where the platform has no ``fcntl`` (Windows), the lock file
+cannot be opened (a read-only cache) or the file system refuses locks (a notice, once), the
+cache works without it.  An entry keyed on a compiled function passed as an argument, which
+no other process could find, is neither saved nor looked up (`_per_process`).
 
-numba reads a cached kernel with ``pickle`` and rebuilds it; an index or object file that was
-truncated by a full disk, overwritten or left by another version of the source raises from
-deep inside numba (``UnpicklingError``, ``EOFError``, a ``KeyError`` while rebuilding) on
-every call.  The wrapped ``load_overload``, for a function of this package, removes that
-function's index and object files on such a failure, says so on stderr and lets numba
-compile and cache it anew.  Other packages' caches are left to numba.  numba calls `install`
-through its ``numba_extensions`` entry point (``charts.numba_init``, pyproject.toml) before
-it creates its first kernel, so it covers every process that uses charts.
+numba reads a cached kernel with ``pickle`` and rebuilds it; an index or object file that
+was truncated by a full disk, overwritten or left by another version of the source raises
+from deep inside numba (``UnpicklingError``, ``EOFError``, a ``KeyError`` while rebuilding)
+on every call.  `LockedCache.load_overload` removes that function's index and object files
+on such a failure, says so on stderr and lets numba compile and cache it anew.
 """
 from __future__ import annotations
 
 import glob
+import inspect
 import os
 import sys
 from contextlib import contextmanager
@@ -39,50 +38,79 @@ try:
 except ImportError:                         # Windows: no advisory locks here
     fcntl = None
 
-from .numba_inliner import ours
+from . import adaptations
 
-__all__ = ["install", "index_lock", "HEALED", "UNLOCKED"]
+__all__ = ["usable", "adopt", "index_lock", "HEALED", "UNLOCKED"]
 
 #: Functions healed in this process: qualified name -> the error that was read.
 HEALED: dict = {}
 
+#: The cache folders where locks were refused, and why (said on stderr for the first).
+UNLOCKED: dict = {}
 
-def install() -> None:
-    """Wrap numba's cache saving and loading once (idempotent)."""
-    from numba.core.caching import Cache
+_LockedCache = None     # the class, made once numba's FunctionCache passed the check
 
-    if getattr(Cache.load_overload, "_charts_heals", False):
-        return
-    original_load = Cache.load_overload
-    original_save = Cache.save_overload
 
-    def load_overload(self, sig, target_context):
-        if not _ours(self):
-            return original_load(self, sig, target_context)
-        if _per_process(sig):
-            return None                     # never saved (`_per_process`): a miss
-        with index_lock(self, fcntl and fcntl.LOCK_SH):
-            try:
-                return original_load(self, sig, target_context)
-            except Exception as exc:        # noqa: BLE001 - any failure to read the entry
-                failure = exc
-        with index_lock(self, fcntl and fcntl.LOCK_EX):
-            _heal(self, failure)
-        return None                         # a miss: numba compiles and saves it again
+def _check():
+    """None, or what differs in numba's cache from what `LockedCache` expects; makes the
+    class on success."""
+    global _LockedCache
+    from numba.core import caching
 
-    def save_overload(self, sig, data):
-        if not _ours(self):
-            return original_save(self, sig, data)
-        if _per_process(sig):
-            return None
-        with index_lock(self, fcntl and fcntl.LOCK_EX):
-            return original_save(self, sig, data)
+    base = getattr(caching, "FunctionCache", None)
+    if base is None:
+        return "numba.core.caching.FunctionCache is missing"
+    for name, params in (("load_overload", ["self", "sig", "target_context"]),
+                         ("save_overload", ["self", "sig", "data"])):
+        method = getattr(base, name, None)
+        if method is None or list(inspect.signature(method).parameters) != params:
+            return f"FunctionCache.{name} has another signature"
 
-    load_overload._charts_heals = True
-    load_overload.__wrapped__ = original_load
-    save_overload.__wrapped__ = original_save
-    Cache.load_overload = load_overload
-    Cache.save_overload = save_overload
+    class LockedCache(base):
+        """numba's ``FunctionCache`` read and written under the index's lock, healed."""
+
+        def load_overload(self, sig, target_context):
+            if _per_process(sig):
+                return None                     # never saved (`_per_process`): a miss
+            with index_lock(self, fcntl and fcntl.LOCK_SH):
+                try:
+                    return super().load_overload(sig, target_context)
+                except Exception as exc:        # noqa: BLE001 - any failure to read the entry
+                    failure = exc
+            with index_lock(self, fcntl and fcntl.LOCK_EX):
+                _heal(self, failure)
+            return None                         # a miss: numba compiles and saves it again
+
+        def save_overload(self, sig, data):
+            if _per_process(sig):
+                return None
+            with index_lock(self, fcntl and fcntl.LOCK_EX):
+                return super().save_overload(sig, data)
+
+    _LockedCache = LockedCache
+    return None
+
+
+def usable() -> bool:
+    """Whether charts' dispatchers get a `LockedCache` in this process."""
+    return adaptations.active("cache_lock", _check)
+
+
+def adopt(dispatcher):
+    """Give the numba dispatcher ``dispatcher`` (cache=True) a locked cache in place of
+    numba's own, where the adaptation is in use; returns the dispatcher."""
+    from numba.core.caching import FunctionCache
+
+    if usable() and type(getattr(dispatcher, "_cache", None)) is FunctionCache:
+        cache = _LockedCache(dispatcher.py_func)
+        index = getattr(getattr(cache, "_cache_file", None), "_index_path", None)
+        if not (isinstance(index, str) and index.endswith(".nbi")) or \
+                getattr(cache, "_py_func", None) is not dispatcher.py_func:
+            adaptations.step_aside("cache_lock", "a FunctionCache keeps no "
+                                   "_cache_file._index_path or _py_func")
+        else:
+            dispatcher._cache = cache
+    return dispatcher
 
 
 @contextmanager
@@ -92,8 +120,7 @@ def index_lock(cache, mode):
     opened for writing (another user's, in a shared cache: ``flock`` needs no write access);
     without a lock where there is no ``fcntl`` or the file cannot be opened at all (a
     read-only cache), silently, and where the lock is refused (NFS without its lock daemon,
-    some FUSE mounts; an exclusive lock on a file opened read-only, on NFS), with one notice
-    (`UNLOCKED`): there numba goes on as it would without charts."""
+    some FUSE mounts), with one notice (`UNLOCKED`)."""
     fd = _lock_file(cache) if fcntl is not None else None
     if fd is not None:
         try:
@@ -123,10 +150,6 @@ def _lock_file(cache):
         return None
 
 
-#: The cache folders where locks were refused, and why (said on stderr for the first).
-UNLOCKED: dict = {}
-
-
 def _unlocked(cache, exc) -> None:
     folder = os.path.dirname(cache._cache_file._index_path)
     if folder in UNLOCKED:
@@ -151,16 +174,11 @@ def _per_process(sig) -> bool:
     return any(isinstance(t, types.Dispatcher) for t in getattr(sig, "args", sig))
 
 
-def _ours(cache) -> bool:
-    return ours(getattr(getattr(cache, "_py_func", None), "__module__", ""))
-
-
 def _heal(cache, exc) -> None:
     """Remove the function's index and object files and say so."""
     func = cache._py_func
     name = f"{func.__module__}.{func.__qualname__}"
-    cache_file = cache._cache_file
-    index = cache_file._index_path
+    index = cache._cache_file._index_path
     base = index[: -len(".nbi")]
     for path in [index, *glob.glob(glob.escape(base) + ".*.nbc")]:
         try:
