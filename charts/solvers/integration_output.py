@@ -18,7 +18,7 @@ def collect_result(args: IntegrationArguments, run: LoopRun, status: str, s_end:
     """The result of ``run`` up to integration time ``s_end`` (the end, a failure or a
     terminal event of ``tracker``), with ``status`` (``IntegrationResult.status``)."""
     n = args.system.n
-    s, Y = run.samples.close(run.ist)
+    s, Y = run.samples.close(run.state)
     switches = [(args.user_time(w[0]),) + tuple(w[1:]) for w in run.switches if w[0] <= s_end]
     keep = slice(0, int(np.searchsorted(s, s_end, side="right")))  # s <= s_end (s increases)
     t = args.t_eval[:s.size][keep] if args.use_eval else args.user_time(s[keep])

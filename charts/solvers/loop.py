@@ -29,8 +29,8 @@ requested times, invariant monitoring, counters, status codes).  The contract:
     that ``y`` represents (eqs 9, 10 and the energy), from the sin/cos the formulation
     already holds for ``y`` where it has them.
 
-All loop state lives in two small arrays so that a chunk can stop and resume exactly:
-``st`` (floats, indices ``S_*``) and ``ist`` (ints, indices ``I_*``).
+All loop state lives in one record of named fields (`LOOP_STATE`), so that a chunk can stop
+and resume exactly.
 
 numba's disk cache of :func:`drive` is keyed by this file's time stamp only, while the
 steppers of ``charts.solvers.rk`` are compiled into it: a change there reaches a cached
@@ -41,7 +41,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import types
+from numba import from_dtype, types
 from ..jit import njit
 
 from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FULL, RUNNING,
@@ -49,7 +49,7 @@ from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FU
 from .rk import (INTERPOLATOR_POWER, NO_REFCOUNT, RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense,
                  dop853_step, hermite_dense, initial_step, rk4_step, step_factor)
 
-__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "STEP_SIG", "drive", "new_state", "monitor", "Formulation",
+__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "STEP_SIG", "drive", "new_state", "LOOP_STATE", "monitor", "Formulation",
            "segment_layout", "dense_sample",
            "POST_OK", "POST_CHANGED", "POST_LOG_FULL", "METHOD_RK4", "METHOD_DOP853"]
 
@@ -65,11 +65,18 @@ OUT_SIG = _f8(_v, _v, _iv, _v)
 INV_SIG = _f8(_v, _v, _iv, _v)
 STEP_SIG = _f8(RHS_TYPE, _v, _f8, _f8, _v, _m, _v, _v)
 
-# float state
-S_T, S_H, S_TFINAL, S_DT, S_RTOL, S_ATOL, S_E0, S_SSING, S_HEALTH = range(9)
-# int state
-(I_METHOD, I_NOUT, I_IEVAL, I_USE_EVAL, I_STATUS, I_NSTEPS, I_NREJ, I_NRHS, I_CHUNK,
- I_FRESH, I_DENSE, I_NSEG) = range(12)
+#: The loop's state between chunks, one record of named fields (`new_state`): time, step
+#: (DOP853's next trial; −1: choose one), the run's end, nominal step and tolerances, the
+#: energy at the start, the singular-point threshold, the health at the state; the method,
+#: samples written, the next sample time's index, whether there are sample times, the
+#: status, accepted steps, rejected attempts, right-hand-side evaluations, steps per chunk,
+#: whether the state's slope must be evaluated afresh, dense output, segments written.
+LOOP_STATE = np.dtype([(name, np.float64) for name in (
+    "t", "h", "t_final", "dt", "rtol", "atol", "e0", "s_sing", "health")] + [
+    (name, np.int64) for name in (
+    "method", "nout", "ieval", "use_eval", "status", "nsteps", "nrej", "nrhs", "chunk",
+    "fresh", "dense", "nseg")])
+_state = types.Array(from_dtype(LOOP_STATE), 1, "C")
 
 METHOD_RK4, METHOD_DOP853 = 0, 1
 
@@ -78,16 +85,15 @@ POST_OK, POST_CHANGED, POST_LOG_FULL = 0, 1, 3
 
 def new_state(method: int, t_final: float, dt: float, rtol: float, atol: float, e0: float,
               s_sing: float, use_eval: bool, chunk_steps: int, dense: bool = False):
-    """Fresh ``(st, ist)`` for :func:`drive` at t = 0.  ``dense``: record every step's
-    interpolant (see :func:`segment_layout`)."""
-    st = np.zeros(9)
-    st[S_TFINAL], st[S_DT], st[S_RTOL], st[S_ATOL] = t_final, dt, rtol, atol
-    st[S_E0], st[S_SSING], st[S_HEALTH] = e0, s_sing, 1.0
-    st[S_H] = -1.0  # DOP853: choose the initial step on first use
-    ist = np.zeros(12, dtype=np.int64)
-    ist[I_METHOD], ist[I_USE_EVAL], ist[I_CHUNK], ist[I_FRESH] = method, use_eval, chunk_steps, 1
-    ist[I_DENSE] = dense
-    return st, ist
+    """A fresh loop state (`LOOP_STATE`, an array of one record) for :func:`drive` at
+    t = 0.  ``dense``: record every step's interpolant (see :func:`segment_layout`)."""
+    state = np.zeros(1, dtype=LOOP_STATE)
+    for name, value in dict(t_final=t_final, dt=dt, rtol=rtol, atol=atol, e0=e0,
+                            s_sing=s_sing, health=1.0, h=-1.0,     # h: DOP853 chooses it
+                            method=method, use_eval=use_eval, chunk=chunk_steps, fresh=1,
+                            dense=dense).items():
+        state[name] = value
+    return state
 
 
 def segment_layout(ny: int, npar: int):
@@ -136,41 +142,42 @@ def _record_segment(row, irow, t, h, y, F, par, ipar):
         irow[i] = ipar[i]
 
 
-def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, t_eval, T_out,
+def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, loop_state, t_eval, T_out,
            Y_out, log, mon, K, F, ytmp, ynew, inv, Seg, ISeg):
-    """Advance ``y`` from ``st[S_T]`` towards ``st[S_TFINAL]`` for at most ``ist[I_CHUNK]``
-    accepted steps.  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
-    times ``t_eval`` (if ``ist[I_USE_EVAL]``; ``Y_out`` then has a row for every one of
+    """Advance ``y`` from ``state.t`` towards ``state.t_final`` for at most ``state.chunk``
+    accepted steps, ``state`` the one record of ``loop_state`` (`LOOP_STATE`).  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
+    times ``t_eval`` (if ``state.use_eval``; ``Y_out`` then has a row for every one of
     them) or after every step (until ``Y_out`` is full).  Returns the status code, also
-    stored in ``ist[I_STATUS]``.  With ``ist[I_DENSE]``, every accepted step also writes a row
+    stored in ``state.status``.  With ``state.dense``, every accepted step also writes a row
     of ``Seg``/``ISeg`` (:func:`segment_layout`): DOP853's own 7th-order interpolant, or for
     RK4 the cubic Hermite interpolant of the step's end values and slopes (one more
     right-hand-side evaluation a step); ``OUT_FULL`` when the buffer is full.
 
     Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); inv (3,);
     mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
+    state = loop_state[0]
     ny = y.size
-    method = ist[I_METHOD]
-    use_eval = ist[I_USE_EVAL] != 0
-    dense = ist[I_DENSE] != 0
+    method = state.method
+    use_eval = state.use_eval != 0
+    dense = state.dense != 0
     ne = t_eval.size
-    t = st[S_T]
-    t_final = st[S_TFINAL]
-    s_sing = st[S_SSING]
-    rtol = st[S_RTOL]
-    atol = st[S_ATOL]
+    t = state.t
+    t_final = state.t_final
+    s_sing = state.s_sing
+    rtol = state.rtol
+    atol = state.atol
     status = RUNNING
     steps = 0
     while True:
         if t >= t_final:
             status = FINISHED
             break
-        if steps >= ist[I_CHUNK]:
+        if steps >= state.chunk:
             break
-        if not use_eval and ist[I_NOUT] >= Y_out.shape[0]:
+        if not use_eval and state.nout >= Y_out.shape[0]:
             status = OUT_FULL
             break
-        if dense and ist[I_NSEG] >= Seg.shape[0]:
+        if dense and state.nseg >= Seg.shape[0]:
             status = OUT_FULL
             break
         hcap = cap(y, par, ipar)
@@ -180,10 +187,10 @@ def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, 
             status = DOMAIN
             break
         t_next = t_final
-        if use_eval and ist[I_IEVAL] < ne:
-            t_next = min(t_next, t_eval[ist[I_IEVAL]])
+        if use_eval and state.ieval < ne:
+            t_next = min(t_next, t_eval[state.ieval])
         if method == METHOD_RK4:
-            h = min(st[S_DT], hcap)
+            h = min(state.dt, hcap)
             if h * (1.0 + 1e-9) >= t_next - t:  # land exactly; no sliver step from t += h rounding
                 h = t_next - t
                 t_new = t_next
@@ -192,8 +199,8 @@ def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, 
             if step is None:  # (pruned at compile time: two specialisations, `drive`)
                 hs = rk4_step(rhs, y, h, par, K, ytmp, ynew)
             else:
-                hs = step(rhs, y, h, st[S_DT], par, K, ytmp, ynew)
-            ist[I_NRHS] += 4
+                hs = step(rhs, y, h, state.dt, par, K, ytmp, ynew)
+            state.nrhs += 4
             if hs < 0.0:
                 status = DOMAIN
                 break
@@ -202,21 +209,21 @@ def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, 
                 break
             if dense:  # cubic Hermite from f(y) = K[0] and f(ynew)
                 rhs(ynew, par, K[12])
-                ist[I_NRHS] += 1
+                state.nrhs += 1
                 hermite_dense(y, ynew, h, K[0], K[12], F)
         else:
-            if ist[I_FRESH] != 0:
-                st[S_HEALTH] = rhs(y, par, K[0])
-                ist[I_NRHS] += 1
-                ist[I_FRESH] = 0
-            if st[S_HEALTH] < s_sing:
-                status = SINGULAR if st[S_HEALTH] >= 0.0 else DOMAIN
+            if state.fresh != 0:
+                state.health = rhs(y, par, K[0])
+                state.nrhs += 1
+                state.fresh = 0
+            if state.health < s_sing:
+                status = SINGULAR if state.health >= 0.0 else DOMAIN
                 break
-            if st[S_H] <= 0.0:
-                st[S_H] = initial_step(rhs, y, K[0], par, t_final - t, hcap, rtol, atol,
+            if state.h <= 0.0:
+                state.h = initial_step(rhs, y, K[0], par, t_final - t, hcap, rtol, atol,
                                        ytmp, K[1])
-                ist[I_NRHS] += 1
-            h = min(st[S_H], hcap)
+                state.nrhs += 1
+            h = min(state.h, hcap)
             rejected = False
             status = RUNNING
             while True:
@@ -230,40 +237,40 @@ def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, 
                 else:
                     t_new = t + h
                 err, hs = dop853_step(rhs, y, h, par, K, ytmp, ynew, rtol, atol)
-                ist[I_NRHS] += 12
+                state.nrhs += 12
                 if hs < 0.0 or not math.isfinite(err):
                     h *= MIN_FACTOR  # a stage left the chart: shrink and retry
                     rejected = True
-                    ist[I_NREJ] += 1
+                    state.nrej += 1
                     continue
                 if hs < s_sing:
                     status = SINGULAR
                     break
                 fac = step_factor(err, rejected)
                 if err < 1.0:
-                    st[S_H] = h * fac
+                    state.h = h * fac
                     break
                 h *= fac
                 rejected = True
-                ist[I_NREJ] += 1
+                state.nrej += 1
             if status != RUNNING:
                 break
-            st[S_HEALTH] = hs
+            state.health = hs
             # samples strictly inside the step, from the 7th-order interpolant
-            if dense or (use_eval and ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new):
+            if dense or (use_eval and state.ieval < ne and t_eval[state.ieval] < t_new):
                 dop853_dense(rhs, y, ynew, h, par, K, ytmp, F)
-                ist[I_NRHS] += 3
-            if use_eval and ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
-                while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] < t_new:
-                    te = t_eval[ist[I_IEVAL]]
+                state.nrhs += 3
+            if use_eval and state.ieval < ne and t_eval[state.ieval] < t_new:
+                while state.ieval < ne and t_eval[state.ieval] < t_new:
+                    te = t_eval[state.ieval]
                     dense_eval(F, y, (te - t) / h, ytmp)
-                    to_ambient(ytmp, par, ipar, Y_out[ist[I_NOUT]])
-                    T_out[ist[I_NOUT]] = te
-                    ist[I_NOUT] += 1
-                    ist[I_IEVAL] += 1
+                    to_ambient(ytmp, par, ipar, Y_out[state.nout])
+                    T_out[state.nout] = te
+                    state.nout += 1
+                    state.ieval += 1
         if dense:  # the step's interpolant, in the formulation's coordinates of the step
-            _record_segment(Seg[ist[I_NSEG]], ISeg[ist[I_NSEG]], t, t_new - t, y, F, par, ipar)
-            ist[I_NSEG] += 1
+            _record_segment(Seg[state.nseg], ISeg[state.nseg], t, t_new - t, y, F, par, ipar)
+            state.nseg += 1
         # accept the step
         for i in range(ny):
             y[i] = ynew[i]
@@ -272,34 +279,34 @@ def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, st, ist, 
                 K[0, i] = K[12, i]  # first-same-as-last
         t = t_new
         steps += 1
-        ist[I_NSTEPS] += 1
+        state.nsteps += 1
         code = post(y, par, ipar, t, log)
         if code < 0:
             status = code
             break
         if code != POST_OK:
-            ist[I_FRESH] = 1
+            state.fresh = 1
         # samples at the end of the step (after projection / chart switch); the invariants
         # are monitored on the state of the step's end
         if use_eval:
-            while ist[I_IEVAL] < ne and t_eval[ist[I_IEVAL]] <= t:
-                to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
-                T_out[ist[I_NOUT]] = t_eval[ist[I_IEVAL]]
-                ist[I_NOUT] += 1
-                ist[I_IEVAL] += 1
+            while state.ieval < ne and t_eval[state.ieval] <= t:
+                to_ambient(y, par, ipar, Y_out[state.nout])
+                T_out[state.nout] = t_eval[state.ieval]
+                state.nout += 1
+                state.ieval += 1
         else:
-            to_ambient(y, par, ipar, Y_out[ist[I_NOUT]])
-            T_out[ist[I_NOUT]] = t
-            ist[I_NOUT] += 1
+            to_ambient(y, par, ipar, Y_out[state.nout])
+            T_out[state.nout] = t
+            state.nout += 1
         invariants(y, par, ipar, inv)
-        if not monitor(inv, st[S_E0], mon):
+        if not monitor(inv, state.e0, mon):
             status = NONFINITE
             break
         if code == POST_LOG_FULL:
             status = LOG_FULL
             break
-    st[S_T] = t
-    ist[I_STATUS] = status
+    state.t = t
+    state.status = status
     return status
 
 
@@ -309,7 +316,7 @@ _POST_TYPE = types.FunctionType(POST_SIG)
 _OUT_TYPE = types.FunctionType(OUT_SIG)
 _INV_TYPE = types.FunctionType(INV_SIG)
 _im = types.int64[:, ::1]
-_DRIVE_ARGS = (_CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _v, _iv, _v, _v,
+_DRIVE_ARGS = (_CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _state, _v, _v,
                _m, _m, _v, _m, _m, _v, _v, _v, _m, _im)
 DRIVE_SIG = _i8(RHS_TYPE, _STEP_TYPE, *_DRIVE_ARGS)
 #: `drive` for a formulation whose step is the generic one (step None)

@@ -3,8 +3,8 @@ and its output buffers, advanced a chunk at a time (the part of ``integrate`` th
 ``OdeSolver`` plays for ``solve_ivp``).
 
 :class:`LoopRun` owns what :func:`charts.solvers.loop.drive` reads and writes: the
-formulation's state and parameters, the loop state ``(st, ist)``, the stage and interpolant
-work arrays, the switch log, the invariant monitor and the segment buffers of dense output.
+formulation's state and parameters, the loop state (``charts.solvers.loop.LOOP_STATE``),
+the stage and interpolant work arrays, the switch log, the invariant monitor and the segment buffers of dense output.
 :class:`SampleBuffer` owns the sampled rows: at the ``t_eval`` times, or after every step in
 buffers that are kept when full and replaced, so that a long run never copies its samples.
 """
@@ -40,7 +40,7 @@ class SampleBuffer:
     the loop writes a row after every step, and a full buffer is kept and replaced by
     :meth:`drain`.  The t = 0 row is the input itself, exactly."""
 
-    def __init__(self, args: IntegrationArguments, ist, width: int):
+    def __init__(self, args: IntegrationArguments, state, width: int):
         self.use_eval = args.use_eval
         self.parts_t, self.parts_y = [], []
         row0 = np.concatenate([args.theta0, args.sign * args.u0, args.P.ravel()])
@@ -50,7 +50,7 @@ class SampleBuffer:
             if first:
                 self.parts_t.append(np.array([0.0]))
                 self.parts_y.append(row0[None, :])
-            ist[D.I_IEVAL] = first
+            state["ieval"] = first
             self.T = np.zeros(te.size - first)
             self.Y = np.zeros((te.size - first, width))
         else:
@@ -62,20 +62,20 @@ class SampleBuffer:
             self.Y = np.empty((rows, width))
             self.T[0] = 0.0
             self.Y[0] = row0
-            ist[D.I_NOUT] = 1
+            state["nout"] = 1
 
-    def drain(self, ist) -> None:
+    def drain(self, state) -> None:
         """Keep a full every-step buffer and give the loop a fresh one."""
-        if not self.use_eval and int(ist[D.I_NOUT]) == self.T.size:
+        if not self.use_eval and int(state["nout"][0]) == self.T.size:
             self.parts_t.append(self.T)
             self.parts_y.append(self.Y)
             self.T = np.empty_like(self.T)
             self.Y = np.empty_like(self.Y)
-            ist[D.I_NOUT] = 0
+            state["nout"] = 0
 
-    def close(self, ist):
+    def close(self, state):
         """(s, Y): every sample's integration time (increasing) and row."""
-        nout = int(ist[D.I_NOUT])
+        nout = int(state["nout"][0])
         self.parts_t.append(self.T[:nout])
         self.parts_y.append(self.Y[:nout])
         if len(self.parts_y) == 1 and 2 * nout >= self.Y.shape[0]:  # one buffer, mostly used: no copy
@@ -86,7 +86,7 @@ class SampleBuffer:
 class LoopRun:
     """The loop of :func:`charts.solvers.loop.drive` set up for one ``integrate`` call.
 
-    Attributes: ``form`` (the formulation), ``st``, ``ist`` (the loop state), ``samples``
+    Attributes: ``form`` (the formulation), ``state`` (the loop state), ``samples``
     (:class:`SampleBuffer`), ``sol`` (:class:`DenseSolution` or None; kept for events too),
     ``switches`` (chart switches as (s, from, to), in integration time), ``mon`` (running max
     of the invariants' drift)."""
@@ -99,10 +99,10 @@ class LoopRun:
         self.y, self.par, self.ipar = self.form.initial(args.theta0, args.sign * args.u0, args.P)
         # (rhs, step, cap, post, to_ambient, invariants)
         self.hooks = self.form.hooks(args.method, args.P.shape[0])
-        self.st, self.ist = D.new_state(_METHOD_CODES[args.method], args.t_final, args.dt,
-                                        args.rtol, args.atol, float(system.energy(args.u0)),
-                                        TOLERANCES["singular_S"], args.use_eval,
-                                        args.chunk_steps, args.record_segments)
+        self.state = D.new_state(_METHOD_CODES[args.method], args.t_final, args.dt,
+                                 args.rtol, args.atol, float(system.energy(args.u0)),
+                                 TOLERANCES["singular_S"], args.use_eval, args.chunk_steps,
+                                 args.record_segments)
         ny = self.y.size
         n = system.n
         na = (2 + args.P.shape[0]) * n
@@ -119,34 +119,34 @@ class LoopRun:
         self.s_eval = args.s_eval
         self.sol = (DenseSolution(self.hooks[4], ny, self.par.size, n, na, args.t0, args.sign)
                     if args.record_segments else None)
-        self.samples = SampleBuffer(args, self.ist, na)
+        self.samples = SampleBuffer(args, self.state, na)
         self.switches = list(self.form.initial_switches)
 
     @property
     def s(self) -> float:
         """The integration time reached."""
-        return float(self.st[D.S_T])
+        return float(self.state["t"][0])
 
     @property
     def n_steps(self) -> int:
-        return int(self.ist[D.I_NSTEPS])
+        return int(self.state["nsteps"][0])
 
     def advance(self) -> int:
         """Run the loop for one chunk, then collect what it wrote (samples, switches,
         interpolants); returns the loop's status code (``charts.solvers.status``)."""
         samples = self.samples
-        status = D.drive(*self.hooks, self.y, self.par, self.ipar, self.st, self.ist, self.s_eval,
+        status = D.drive(*self.hooks, self.y, self.par, self.ipar, self.state, self.s_eval,
                          samples.T, samples.Y, self.log, self.mon, self.K, self.F, self.ytmp,
                          self.ynew, self.inv, self.Seg, self.ISeg)
-        samples.drain(self.ist)
+        samples.drain(self.state)
         self.switches.extend(self.form.drain_log(self.log, self.ipar))
         if self.sol is not None:
-            self.sol.extend(self.Seg, self.ISeg, int(self.ist[D.I_NSEG]))
-            self.ist[D.I_NSEG] = 0
+            self.sol.extend(self.Seg, self.ISeg, int(self.state["nseg"][0]))
+            self.state["nseg"] = 0
         return status
 
     def counters(self) -> dict:
         """Accepted steps, rejected attempts and right-hand-side evaluations so far."""
-        ist = self.ist
-        return dict(n_steps=int(ist[D.I_NSTEPS]), n_rejected=int(ist[D.I_NREJ]),
-                    n_rhs=int(ist[D.I_NRHS]))
+        state = self.state
+        return dict(n_steps=int(state["nsteps"][0]), n_rejected=int(state["nrej"][0]),
+                    n_rhs=int(state["nrhs"][0]))
