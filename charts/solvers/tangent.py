@@ -42,7 +42,7 @@ from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
            "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
-           "tangent_vectors_rate", "reorth_steps", "substeps", "REORTH_TIME", "largest_divisor", "check_memory",
+           "tangent_vectors_rate", "reorth_steps", "substeps", "substep_loop", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes", "RotorStack", "stacked_step", "stacked_project",
            "stacked_reorth", "stacked_record", "Stack", "Rotors", "Stepping", "Records",
            "tangent_kernel_types"]
@@ -186,29 +186,53 @@ def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
     shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
 
 
+@njit(cache=True, inline="always")
+def substep_loop(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc, nsub,
+                 n, nu, Ru, du, Lu, vectors_rate):
+    """The step dt (< 0: backward) by `stacked_rk4_step` with the hook ``vectors_rate``, as
+    the policy of ``charts.solvers.status`` takes it: one step where ``nsub`` = 1 (the cap
+    ``hc`` at the step's start not below |dt|), else sub-steps (`next_substep`: equal ones as
+    planned from the cap, each within its own cap once the point comes closer), each from a
+    point that passes the singular-point test (`singular_floor`).  Returns RUNNING, or
+    SINGULAR inside a cut step (where its sub-steps reached the singular point).  The one
+    home of the sub-step policy: `stacked_step` (every stacked flow) and `substeps` (a lane
+    of the lane kernel) call it.  One inlined step in a loop: no second copy of it to
+    compile (a separately compiled sub-step function cost every first call 3.7 s of
+    compiling, the backward pass's another 3.8 s), and no slower (measured)."""
+    adt = abs(dt)
+    h = dt
+    planned = 0
+    hp = adt
+    left = adt
+    adaptive = np.bool_(False)      # not the literal: next_substep compiled once
+    if nsub > 1:
+        planned = substep_count(adt, hc)
+        h = dt / planned
+        hp = abs(h)
+    for sub in range(nsub):
+        if nsub > 1:
+            S = sum_squares(s0, 0, n)
+            if S < singular_floor(c0, wts, n, level):
+                return SINGULAR
+            hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
+            if adaptive:
+                h = hs if dt > 0.0 else -hs
+        stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru,
+                         du, Lu, vectors_rate)
+        left -= abs(h)
+        if nsub > 1 and (left <= 0.0 if adaptive else sub + 1 == planned):
+            break
+    return RUNNING
+
+
 @njit(cache=True)
 def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc, n, R, d, L):
     """The step dt (> 0, capped at hc < dt at its start) of one lane of the lane kernel
-    (``charts.solvers.lanes``, in the one-trajectory layout) in `_rk4_step` sub-steps as
-    `tangent_kernel` takes them (`next_substep`); False if a sub-step starts at a singular
-    point (`singular_floor`)."""
-    planned = substep_count(dt, hc)
-    hp = dt / planned
-    h = hp
-    left = dt
-    adaptive = np.bool_(False)      # not the literal: next_substep compiled once
-    for sub in range(MAX_SUBSTEPS):
-        S = sum_squares(s0, 0, n)
-        if S < singular_floor(c0, wts, n, level):
-            return False
-        hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
-        if adaptive:
-            h = hs
-        _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L)
-        left -= h
-        if left <= 0.0 if adaptive else sub + 1 == planned:
-            break
-    return True
+    (``charts.solvers.lanes``, in the one-trajectory layout) in the sub-steps that
+    `tangent_kernel` takes (`substep_loop`); False if a sub-step starts at a singular point
+    (`singular_floor`)."""
+    return substep_loop(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc,
+                        MAX_SUBSTEPS, n, n, R, d, L, tangent_vectors_rate) == RUNNING
 
 
 @njit(cache=True)
@@ -239,44 +263,18 @@ def stacked_step(fl, vectors_rate):
     own cap once the point comes closer), each from a point that passes the singular-point
     test (`singular_floor`).  Returns RUNNING, or SINGULAR / NONFINITE with the state at the
     start of the failing step (SINGULAR inside a cut step: where its sub-steps reached the
-    singular point).  One inlined step in a loop: no second copy of it to compile (a
-    separately compiled sub-step function cost every first call 3.7 s of compiling, the
-    backward pass's another 3.8 s), and no slower (measured; the largest weight computed
-    once before the loop instead made the whole kernel 2× slower, docs/performance.md)."""
+    singular point; `substep_loop`, the one home of the policy).  (The largest weight
+    computed once before the loop instead made the whole kernel 2× slower, measured.)"""
     n = fl.n
-    s0 = fl.s0
-    c0 = fl.c0
-    Zf = fl.Zf
     dt = fl.dt
     Zt, K, th, dl, s, c, f, g, p, q = fl.work
     adt = abs(dt)
-    code, hc = fixed_step_status(sum_squares(s0, 0, n), sum_squares(Zf, n, n), adt, _CAP)
+    code, hc = fixed_step_status(sum_squares(fl.s0, 0, n), sum_squares(fl.Zf, n, n), adt, _CAP)
     if code != RUNNING:
         return code
-    nsub = 1 if hc >= adt else MAX_SUBSTEPS
-    h = dt
-    planned = 0
-    hp = adt
-    left = adt
-    adaptive = np.bool_(False)      # not the literal: next_substep compiled once
-    if nsub > 1:
-        planned = substep_count(adt, hc)
-        h = dt / planned
-        hp = abs(h)
-    for sub in range(nsub):
-        if nsub > 1:
-            S = sum_squares(s0, 0, n)
-            if S < singular_floor(c0, fl.wts, n, fl.level):
-                return SINGULAR
-            hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
-            if adaptive:
-                h = hs if dt > 0.0 else -hs
-        stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, fl.minv, fl.wts, h, fl.nu,
-                         fl.Ru, fl.du, fl.Lu, vectors_rate)
-        left -= abs(h)
-        if nsub > 1 and (left <= 0.0 if adaptive else sub + 1 == planned):
-            break
-    return RUNNING
+    return substep_loop(fl.Zf, Zt, K, th, dl, s, c, f, g, p, q, fl.s0, fl.c0, fl.minv, fl.wts,
+                        fl.level, dt, hc, 1 if hc >= adt else MAX_SUBSTEPS, n, fl.nu, fl.Ru,
+                        fl.du, fl.Lu, vectors_rate)
 
 
 @njit(cache=True, inline="always")
