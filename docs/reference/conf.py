@@ -17,7 +17,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[1]))          # the checkout's charts, also uninstalled
 
 import charts  # noqa: E402
-from charts.archive import Archivable  # noqa: E402
+from charts.io.archive import Archivable  # noqa: E402
 
 project = "charts"
 author = "the charts developers"
@@ -57,7 +57,7 @@ def api_page() -> str:
     lines += ["Every result", "------------", "",
               "Each result class above is an ``Archivable``: ``save(path)`` writes it as NetCDF,",
               "``charts.load(path)`` reads it back, and ``==`` compares two results by value.", "",
-              ".. autoclass:: charts.archive.Archivable", "   :members: save",
+              ".. autoclass:: charts.io.archive.Archivable", "   :members: save",
               "   :special-members: __eq__", "",
               "``charts.runs.netcdf_results``", "-" * 34, "",
               ".. autoclass:: charts.runs.netcdf_results.SceneResult", "   :members:",
