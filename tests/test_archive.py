@@ -8,6 +8,7 @@ import pytest
 
 import charts
 from charts.io.archive import KINDS, load
+from charts.version import source_version
 from charts.runs.netcdf_results import SceneResult, SweepTable
 
 SYS4 = charts.RotorSystem(4)
@@ -155,7 +156,7 @@ def test_ensembles_plot_themselves(results):
 def test_datasets_have_named_dims_units_and_stamps(results):
     for name, res in results.items():
         ds = res.to_xarray()
-        assert ds.attrs["charts_kind"] in KINDS and ds.attrs["charts_version"] == charts.__version__
+        assert ds.attrs["charts_kind"] in KINDS and ds.attrs["charts_version"] == source_version()
         for v in list(ds.data_vars.values()) + list(ds.coords.values()):
             assert "units" in v.attrs, (name, v.name)
             assert not any(d.startswith("dim_") for d in v.dims), (name, v.dims)

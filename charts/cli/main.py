@@ -248,14 +248,23 @@ def _cmd_bench(args) -> int:
 
 
 # ------------------------------------------------------------------------------- parser
-def build_parser() -> argparse.ArgumentParser:
-    from ..version import __version__
+class _SourceVersion(argparse.Action):
+    """``--version``: the release and the code it runs (``charts.version.source_version``),
+    read only when asked."""
 
+    def __call__(self, parser, namespace, values, option_string=None):
+        from ..version import source_version
+
+        parser.exit(message=f"charts {source_version()}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
     ap = OneLineParser(
         prog="charts", description="Geodesic flows of coupled rotators (Kuznetsov): run scenes, "
         "reproduce the paper, regenerate code, benchmark.",
         epilog="`charts COMMAND --help` describes each command.")
-    ap.add_argument("--version", action="version", version=f"charts {__version__}")
+    ap.add_argument("--version", action=_SourceVersion, nargs=0,
+                    help="show the release and the commit (or source digest) it runs, and exit")
     ap.add_argument("--debug", action="store_true",
                     help="show the traceback of a failure (also CHARTS_DEBUG=1)")
     sub = ap.add_subparsers(dest="command", metavar="COMMAND")

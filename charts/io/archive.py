@@ -113,8 +113,8 @@ def _global_attributes(kind: str, title: str | None = None) -> dict:
     import datetime
     import platform
 
-    from ..version import __version__
-    versions = [f"charts {__version__}", f"python {platform.python_version()}",
+    from ..version import source_version
+    versions = [f"charts {source_version()}", f"python {platform.python_version()}",
                 f"numpy {np.__version__}"]
     try:
         import numba
@@ -123,13 +123,14 @@ def _global_attributes(kind: str, title: str | None = None) -> dict:
         pass
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     return {"Conventions": "CF-1.10", "title": f"charts: {title or TITLES.get(kind, kind)}",
-            "history": f"{now}: written by charts {__version__}",
+            "history": f"{now}: written by charts {source_version()}",
             "source": ", ".join(versions), "references": REFERENCE, "comment": COMMENT}
 
 
 def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict | None = None,
             title: str | None = None):
-    """An ``xarray.Dataset`` stamped with ``charts_kind`` and ``charts_version`` and the CF
+    """An ``xarray.Dataset`` stamped with ``charts_kind`` and ``charts_version`` (the release
+    and the commit or source digest that made it, ``charts.version.source_version``) and the CF
     global attributes (`GLOBALS`: conventions, title, history, source, references, and the
     ``comment`` `COMMENT` on the settings' units).  ``title``: the CF title where the kind's
     (`TITLES`) says too little (an ensemble's names its members, `ENSEMBLE_TITLES`).
@@ -138,7 +139,7 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
     ``(dims, array, units, description)``; ``attrs``: settings (name → value, written by
     `encode`: the entries of the `FLATTENED` dicts as ``params_<key>``)."""
     xr = require_xarray()
-    from ..version import __version__
+    from ..version import source_version
 
     def var(spec):
         dims, values, units = spec[:3]
@@ -156,7 +157,7 @@ def dataset(kind: str, data_vars: dict, coords: dict | None = None, attrs: dict 
     ds.attrs.update(_global_attributes(kind, title))
     ds.attrs.update(encode(attrs or {}))
     ds.attrs["charts_kind"] = kind
-    ds.attrs["charts_version"] = __version__
+    ds.attrs["charts_version"] = source_version()     # changes whenever the code does
     return ds
 
 

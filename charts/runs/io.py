@@ -40,6 +40,6 @@ def versions() -> dict:
     import numba
     import scipy
 
-    from ..version import __version__
-    return {"charts": __version__, "python": platform.python_version(), "numpy": np.__version__,
+    from ..version import source_version
+    return {"charts": source_version(), "python": platform.python_version(), "numpy": np.__version__,
             "scipy": scipy.__version__, "numba": numba.__version__}
