@@ -23,7 +23,9 @@ def test_the_command_runs_saves_and_reads_back(tmp_path, capsys, monkeypatch):
     assert main(args) == 0
     first = capsys.readouterr().out
     assert "N = 3" in first and "2 members x T = 20" in first
+    assert "verdict: open; evidence: statistics; why: " in first      # angles decide nothing
     reports = json.loads((tmp_path / "statistics.json").read_text())
+    assert (reports[0]["verdict"], reports[0]["evidence"]) == ("open", "statistics")
     assert reports[0]["statistics"]["restricted"]["n"] == 400
     assert (tmp_path / f"{reports[0]['slug']}.nc").exists()
 

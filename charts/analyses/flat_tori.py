@@ -12,12 +12,13 @@ vanishes: the pairs' terms of Λ cancel), so the straight lines of T are geodesi
 manifold.  Then along any geodesic γ of T and any unit w ⊥ γ' in T (parallel along γ, as T
 is flat and totally geodesic), J(t) = w and J(t) = t·w are Jacobi fields (the curvature of
 the plane (γ', w) is that of T, zero): solutions of the linearised flow, transverse to the
-flow, that stay bounded or grow linearly in both directions of time.  In an Anosov (uniformly
-hyperbolic) geodesic flow every nonzero perpendicular Jacobi field grows exponentially in one
-direction of time (Eberlein: no flat strips), so for p ≥ 2 — every N ≥ 4 of the paper, N = 4 and
-5 included — the geodesic flow is not Anosov; a closed geodesic of T (one pair turning, the
-others at π/2, away from every singular point) is a non-hyperbolic periodic orbit.  For
-N = 3, p = 1: T is a closed geodesic only, no contradiction with the Anosov property.
+flow, that stay bounded or grow linearly in both directions of time.  For p ≥ 2 — every N ≥ 4
+of the paper, N = 4 and 5 included — a closed geodesic of T (one pair turning, the others at
+±π/2, away from every singular point) carries such a periodic field J = w: a closed orbit that
+is not hyperbolic, which an Anosov flow cannot have, so the geodesic flow is not Anosov.
+(Eberlein's criterion is not used: it is for smooth closed manifolds, and at even N the
+manifold has cone points, some on T.)  For N = 3, p = 1: T is a closed geodesic only, no
+contradiction with the Anosov property.
 
 The proof is done by the library's own symbolic geometry (``charts.codegen.symbolic``) in a
 chart that holds T: the constraint, the tangency (eq 10) and the contraction Γᵃ_bc q̇ᵇ q̇ᶜ

@@ -26,8 +26,10 @@ def add_parser(sub) -> None:
         "at unit speed against Katok's and Osserman-Sarnak's bounds, and the sign of K proved "
         "by exact algebra and interval arithmetic. For N >= 4: the flat totally geodesic torus "
         "of antipodal pairs, proved symbolically, that rules out the Anosov property, and the "
-        "monodromy of its closed geodesic. Default: N = 3, 4, 5 of the paper. See "
-        "docs/hyperbolicity.md.")
+        "monodromy of its closed geodesic. Each case ends in one verdict line: 'hyperbolic "
+        "(Anosov)', 'not hyperbolic' or 'open', the class of its evidence ('theorem with "
+        "certificate', 'theorem', 'statistics', 'no proof') and why (in the JSON: verdict, "
+        "evidence, reason). Default: N = 3, 4, 5 of the paper. See docs/hyperbolicity.md.")
     p.add_argument("--n", type=int, nargs="+", default=[3, 4, 5], metavar="N",
                    help="rotor counts (default 3 4 5)")
     p.add_argument("--masses", type=float, nargs="+", metavar="M",
@@ -71,8 +73,9 @@ def add_parser(sub) -> None:
 
 
 def cmd_verdict(args) -> int:
-    """Print the verdicts; 0 when every check holds (`charts.runs.verdict.verdict_passed`),
-    1 otherwise, 2 for bad input."""
+    """Print the reports, each ending in its verdict line (`charts.runs.verdict.case_verdict`:
+    verdict, evidence, reason, also in the JSON); 0 when every check holds
+    (`charts.runs.verdict.verdict_passed`), 1 otherwise, 2 for bad input."""
     from ..geometry.system import RotorSystem
     from ..runs.verdict import format_verdict, surface_verdict, torus_verdict, verdict_passed
 
@@ -101,8 +104,8 @@ def _statistics(args) -> int:
     """``charts verdict --statistics``: `statistics_verdict` of each system in turn."""
     from ..io.archive import load
     from ..geometry.system import RotorSystem
-    from ..runs.verdict import (family_systems, format_statistics, members_window,
-                                statistics_verdict, tally_report)
+    from ..runs.verdict import (case_verdict, family_systems, format_statistics,
+                                members_window, statistics_verdict, tally_report)
     from ..solvers.device import resolve_device
 
     with warnings.catch_warnings():
@@ -136,7 +139,7 @@ def _statistics(args) -> int:
         slug = _slug(system)
         path = None if args.out is None else args.out / f"{slug}.nc"
         if slug in done and all(done[slug][k] == v for k, v in wanted.items()):
-            rep = done[slug]
+            rep = dict(done[slug], **case_verdict(done[slug]))   # an earlier report: its verdict
         elif path is not None and path.exists() and _same_run(saved := load(path), wanted):
             rep = dict(tally_report(saved, label), file=str(path))
         else:

@@ -3,7 +3,10 @@
 exponent against the bracket of Katok's and Osserman–Sarnak's inequalities and the certified
 sign of the curvature; for N ≥ 4 the flat totally geodesic torus that rules out the Anosov
 property, with the monodromy of its closed geodesic.  Where neither applies, the statistics
-of the angle test at scale (`statistics_verdict`, ``charts verdict --statistics``).
+of the angle test at scale (`statistics_verdict`, ``charts verdict --statistics``).  Each
+report carries its verdict (`case_verdict`: "hyperbolic (Anosov)", "not hyperbolic" or
+"open", the class of its evidence and one sentence why), derived from the certificates'
+outcomes, never from N alone.
 """
 from __future__ import annotations
 
@@ -20,7 +23,14 @@ from ..analyses.surface_integrals import surface_integrals
 
 __all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed",
            "statistics_verdict", "tally_report", "family_systems", "format_statistics",
-           "members_window"]
+           "members_window", "case_verdict", "verdict_line", "VERDICTS", "EVIDENCE"]
+
+#: The verdicts a case can get (`case_verdict`).
+VERDICTS = ("hyperbolic (Anosov)", "not hyperbolic", "open")
+#: The classes of evidence behind a verdict: a theorem whose hypotheses a certificate of the
+#: library proves; a theorem whose hypotheses are exact (topology, a symbolic proof); the angle
+#: statistics only; nothing that decides.
+EVIDENCE = ("theorem with certificate", "theorem", "statistics", "no proof")
 
 
 def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict:
@@ -45,10 +55,11 @@ def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict
         exponents.append(dict(seed=int(seed), t_final=float(t_final), lambda1=lam, stderr=se,
                               consistent=bool(consistent), resolved_inside=bool(resolved)))
     cert = certify_curvature_sign(system).to_dict()
-    return dict(system=system.describe(),
-                n_grid=int(n_grid), routes=routes, bracket=[lower, upper],
-                exponents=exponents, certificate=cert,
-                seconds=time.perf_counter() - t0)
+    rep = dict(system=system.describe(),
+               n_grid=int(n_grid), routes=routes, bracket=[lower, upper],
+               exponents=exponents, certificate=cert,
+               seconds=time.perf_counter() - t0)
+    return dict(rep, **case_verdict(rep))
 
 
 def torus_verdict(system) -> dict:
@@ -56,8 +67,121 @@ def torus_verdict(system) -> dict:
     JSON-ready dict."""
     t0 = time.perf_counter()
     cert = certify_flat_torus(system).to_dict()
-    return dict(system=system.describe(),
-                torus=cert, seconds=time.perf_counter() - t0)
+    rep = dict(system=system.describe(),
+               torus=cert, seconds=time.perf_counter() - t0)
+    return dict(rep, **case_verdict(rep))
+
+
+def _surface_case(rep: dict) -> tuple:
+    """(verdict, evidence, reason) of a `surface_verdict` report: from χ (the Morse count,
+    exact) and the curvature certificate's outcome only; Gauss–Bonnet and the exponents are
+    checks of consistency (`verdict_passed`), not hypotheses of a theorem."""
+    chi = rep["routes"]["chart"]["euler_characteristic"]
+    cert = rep["certificate"]
+    outcome = cert["verdict"]
+    if chi > 0:
+        return ("not hyperbolic", "theorem",
+                f"chi = {chi} (Morse count), so int K dA = 2 pi chi > 0 (Gauss-Bonnet), and a "
+                "closed surface without conjugate points has int K dA <= 0 (Hopf 1948): there "
+                "are conjugate points, which an Anosov geodesic flow never has (Klingenberg "
+                "1974)")
+    if outcome == "positive somewhere" and chi == 0:
+        return ("not hyperbolic", "theorem with certificate",
+                "chi = 0 (Morse count), so int K dA = 0 (Gauss-Bonnet), and K > 0 is certified "
+                "on a box, so K is not identically 0; a closed surface without conjugate points "
+                "has int K dA <= 0 on each component, with equality only where it is flat (Hopf "
+                "1948), so there are conjugate points, which an Anosov geodesic flow never has "
+                "(Klingenberg 1974)")
+    if outcome == "positive somewhere":
+        return ("open", "no proof",
+                f"K > 0 is certified on a box (chi = {chi}), so no curvature theorem applies, "
+                "and a surface with some positive curvature can still be Anosov: nothing run "
+                "here decides (the exponent inside the entropy bracket is consistency, not "
+                "proof)")
+    if outcome == "nonpositive" and chi < 0:
+        if cert["zeros"]:
+            return ("hyperbolic (Anosov)", "theorem with certificate",
+                    f"K <= 0 is certified on the whole closed surface, with K = 0 only at "
+                    f"{len(cert['zeros'])} isolated points, so no geodesic has K = 0 all along "
+                    "it, which on a closed surface with K <= 0 is Eberlein's condition for an "
+                    "Anosov geodesic flow (1973: no geodesic carries a parallel perpendicular "
+                    "Jacobi field)")
+        return ("hyperbolic (Anosov)", "theorem with certificate",
+                "K < 0 is certified on the whole closed surface, and the geodesic flow of a "
+                "closed manifold of negative curvature is Anosov (Anosov 1967)")
+    if outcome == "nonpositive":
+        return ("open", "no proof",
+                f"the certificate's K <= 0 contradicts chi = {chi} >= 0 with K not "
+                "identically 0 (Gauss-Bonnet): the evidence is inconsistent")
+    why = (f"{cert['open_boxes']} boxes left open" if cert.get("open_boxes") else
+           "its cover of the surface was not proved" if not cert.get("charts") else
+           f"its outcome is {outcome!r}")
+    return ("open", "no proof",
+            f"the curvature certificate is undecided ({why}), so the sign of K is not proved "
+            "and no theorem applies")
+
+
+def _torus_case(rep: dict) -> tuple:
+    """(verdict, evidence, reason) of a `torus_verdict` report: from the flat-torus
+    certificate's outcome (every symbolic step proved, a torus of dimension ≥ 2)."""
+    t = rep["torus"]
+    failed = [s["statement"] for s in t["proof"] if not s["holds"]]
+    if failed or t["verdict"] == "proof failed":
+        return ("open", "no proof",
+                "a step of the flat-torus proof failed (" + "; ".join(failed) + "), so "
+                "nothing is proved")
+    if t["verdict"] == "not hyperbolic" and t["dimension"] >= 2:
+        i, j = t["pairs"][0]
+        return ("not hyperbolic", "theorem",
+                f"a flat, totally geodesic {t['dimension']}-torus of antipodal pairs is proved "
+                f"symbolically, and its closed geodesic on which rotors {i} and {j} turn "
+                "(antipodal) and "
+                "the others stay at +-pi/2 (off every singular point) carries a parallel Jacobi "
+                "field inside the torus (multiplier 1, zero exponent): a closed orbit that is "
+                "not hyperbolic, which an Anosov flow cannot have")
+    if t["verdict"] == "no conclusion":
+        return ("open", "no proof",
+                "the antipodal torus is only a closed geodesic here (one pair of equal "
+                "rotors), which contradicts nothing, and no other proof is run; angle "
+                "statistics (--statistics) cannot decide")
+    return ("open", "no proof",
+            "there is no flat torus of antipodal pairs (it needs level 0 and rotors of equal "
+            "mass and weight), and no other proof is run; angle statistics (--statistics) "
+            "cannot decide")
+
+
+def _statistics_case(rep: dict) -> tuple:
+    """(verdict, evidence, reason) of a `tally_report`: the angles decide nothing."""
+    st = rep.get("statistics", {}).get("restricted") or {}
+    seen = ""
+    if st.get("min") is not None and st.get("n") is not None:
+        seen = f" (smallest restricted angle {st['min']:.3g} rad in {st['n']:.3g} samples)"
+    return ("open", "statistics",
+            f"angle statistics only{seen}: sampled angles can neither prove nor rule out "
+            "uniform hyperbolicity, and this mode runs no theorem (without --statistics the "
+            "command runs the curvature certificate for N = 3 and the flat torus for N >= 4)")
+
+
+def case_verdict(rep: dict) -> dict:
+    """The verdict of one report of ``charts verdict`` (`surface_verdict`, `torus_verdict`
+    or `tally_report`) as ``dict(verdict, evidence, reason)``: ``verdict`` one of `VERDICTS`,
+    ``evidence`` one of `EVIDENCE`, ``reason`` one sentence.  Derived from what the report
+    holds — the curvature certificate's outcome and χ (N = 3), the flat-torus proof (N ≥ 4);
+    a certificate that is undecided or fails gives "open", and angle statistics alone give
+    "open"."""
+    if "torus" in rep:
+        verdict, evidence, reason = _torus_case(rep)
+    elif "certificate" in rep:
+        verdict, evidence, reason = _surface_case(rep)
+    else:
+        verdict, evidence, reason = _statistics_case(rep)
+    return dict(verdict=verdict, evidence=evidence, reason=reason)
+
+
+def verdict_line(rep: dict) -> str:
+    """The one line of a report's verdict: ``verdict: …; evidence: …; why: …``."""
+    v = case_verdict(rep)
+    return f"verdict: {v['verdict']}; evidence: {v['evidence']}; why: {v['reason']}"
 
 
 def verdict_passed(rep: dict) -> bool:
@@ -95,6 +219,7 @@ def _format_torus(rep: dict) -> str:
             lines.append(f"  monodromy: the in-torus Jacobi field t*w (linear growth) to "
                          f"{m['jordan_residual']:.1e}; transverse exponents "
                          + ", ".join(f"{x:+.4f}" for x in m["transverse_exponents"]))
+    lines.append(verdict_line(rep))
     lines.append(f"({rep['seconds']:.1f} s)")
     return "\n".join(lines)
 
@@ -141,6 +266,7 @@ def format_verdict(rep: dict) -> str:
                      f"{b['chart']} ({b['note']})")
     if cert["open_boxes"] and cert["verdict"] == "undecided":
         lines.append(f"  {cert['open_boxes']} boxes left open")
+    lines.append(verdict_line(rep))
     lines.append(f"({rep['seconds']:.1f} s)")
     return "\n".join(lines)
 
@@ -178,10 +304,11 @@ def tally_report(tally, label="", seconds=None) -> dict:
     from ..analyses.angle_tally import VARIANTS
     p = tally.params
     system = {k: p[k] for k in ("n", "masses", "weights", "level") if k in p}
-    return dict(label=label, system=system, members=tally.n_members, t_final=p["t_final"],
-                t_transient=p["t_transient"], sample_every=p["sample_every"],
-                device=p["device"], seconds=seconds,
-                statistics={v: tally.statistics(v) for v in VARIANTS})
+    rep = dict(label=label, system=system, members=tally.n_members, t_final=p["t_final"],
+               t_transient=p["t_transient"], sample_every=p["sample_every"],
+               device=p["device"], seconds=seconds,
+               statistics={v: tally.statistics(v) for v in VARIANTS})
+    return dict(rep, **case_verdict(rep))
 
 
 def family_systems(name) -> list:
@@ -239,4 +366,5 @@ def format_statistics(rep: dict) -> str:
             f"{size:g}: {f(m, '.3g')} ± {f(se, '.1g')}" for size, m, se in st["block_minima"]))
         lines.append("    slopes d ln min / d ln size: " + ", ".join(
             f"{a:g}-{b:g}: {f(x, '.3f')} ± {f(se, '.3f')}" for a, b, x, se in st["slopes"]))
+    lines.append(verdict_line(rep))
     return "\n".join(lines)
