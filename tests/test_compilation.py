@@ -116,3 +116,54 @@ def test_every_public_entry_point_that_compiles_announces_it():
                  "linkage_run", "linkage_trajectory"):
         fn = getattr(charts, name)
         assert getattr(fn, "__wrapped__", None) is not None, name
+
+
+def test_the_notice_names_the_variant_that_compiled(monkeypatch, capsys):
+    """An entry point whose variants compile kernels of their own (``integrate``'s
+    formulation and method) names the variant, defaults included."""
+    import numba
+
+    from charts.jit import compilation
+
+    monkeypatch.setattr(compilation, "NOTE_SECONDS", 0.0)
+
+    @compilation.announces_compilation(variant=("formulation", "method"))
+    def run(system, t, *, formulation="chart", method="dop853"):
+        return numba.njit(lambda x: x + 3)(1)      # a fresh function: numba compiles it
+
+    class Sys:
+        n = 4
+
+    assert run(Sys(), 1.0, method="rk4") == 4
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(
+        "charts: run (chart, rk4) compiled its kernels for N = 4 in "), err
+
+
+def test_a_pool_that_compiles_says_so_while_it_does(capsys):
+    """`compiling_line`: one line once the block has run ``after`` seconds, none for a block
+    that ends before (the line is printed by a timer thread: the test waits for the block's
+    end, an event, not for a time)."""
+    import threading
+
+    from charts.jit import compilation
+
+    printed = threading.Event()
+    real_print = print
+
+    def spy(*args, **kwargs):
+        real_print(*args, **kwargs)
+        printed.set()
+
+    compilation.print = spy
+    try:
+        with compilation.compiling_line("toy", " in 2 workers", after=0.0):
+            assert printed.wait(timeout=120)
+        err = capsys.readouterr().err.strip().splitlines()
+        assert err == ["charts: toy is compiling its kernels in 2 workers (once: numba caches "
+                       "them on disk; kernels already there are only loaded) …"]
+        with compilation.compiling_line("toy", after=3600.0):
+            pass
+        assert capsys.readouterr().err == ""
+    finally:
+        del compilation.print

@@ -9,11 +9,13 @@ per call on stderr when it is long (`NOTE_SECONDS`); any layer may use it (no pa
 from __future__ import annotations
 
 import functools
+import inspect
 import sys
 import threading
 from contextlib import contextmanager
 
-__all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation", "announce", "timed_call"]
+__all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation", "announce", "timed_call",
+           "compiling_line"]
 
 #: compilations shorter than this pass without a word.
 NOTE_SECONDS = 1.0
@@ -37,13 +39,29 @@ def compile_timer(add):
 
 
 def announce(name, seconds, n=None, where="") -> None:
-    """The one-line notice on stderr, when ``seconds`` of compiling exceed `NOTE_SECONDS`."""
+    """The one-line notice on stderr, when ``seconds`` of compiling (wall time, numba's
+    compile events) exceed `NOTE_SECONDS`."""
     if seconds > NOTE_SECONDS:
         what = f" for N = {n}" if isinstance(n, int) else ""
         print(f"charts: {name} compiled its kernels{what}{where} in {seconds:.1f} s "
               "(once: they are cached on disk for the next calls and processes; "
               "`charts warmup` compiles them all after an install)",
               file=sys.stderr, flush=True)
+
+
+@contextmanager
+def compiling_line(name, where="", after=5.0):
+    """While the block runs (a pool's workers compiling, silent otherwise): one line on
+    stderr once it has taken ``after`` seconds, saying what it is doing."""
+    timer = threading.Timer(after, lambda: print(
+        f"charts: {name} is compiling its kernels{where} (once: numba caches them on disk; "
+        "kernels already there are only loaded) …", file=sys.stderr, flush=True))
+    timer.daemon = True
+    timer.start()
+    try:
+        yield
+    finally:
+        timer.cancel()
 
 
 def timed_call(fn, *args, **kwargs):
@@ -55,9 +73,24 @@ def timed_call(fn, *args, **kwargs):
     return out, spent[0]
 
 
-def announces_compilation(fn):
+def announces_compilation(fn=None, *, variant=()):
     """Wrap a public entry point: when its call spent more than `NOTE_SECONDS` compiling,
-    print one line on stderr saying so (nested entry points announce only the outermost)."""
+    print one line on stderr saying so (nested entry points announce only the outermost),
+    naming the values of its parameters ``variant`` (e.g. ``("formulation", "method")``:
+    each variant compiles kernels of its own)."""
+    if fn is None:
+        return functools.partial(announces_compilation, variant=tuple(variant))
+    signature = inspect.signature(fn) if variant else None
+
+    def label(args, kwargs):
+        if not variant:
+            return fn.__name__
+        try:
+            bound = signature.bind(*args, **kwargs)
+        except TypeError:                   # the call itself will say what is wrong
+            return fn.__name__
+        bound.apply_defaults()
+        return f"{fn.__name__} ({', '.join(str(bound.arguments[v]) for v in variant)})"
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
@@ -68,6 +101,8 @@ def announces_compilation(fn):
             with compile_timer(lambda s: spent.__setitem__(0, spent[0] + s)):
                 return fn(*args, **kwargs)
         finally:
-            announce(fn.__name__, spent[0], getattr(args[0], "n", None) if args else None)
+            if spent[0] > NOTE_SECONDS:
+                announce(label(args, kwargs), spent[0],
+                         getattr(args[0], "n", None) if args else None)
 
     return wrapper

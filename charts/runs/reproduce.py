@@ -191,12 +191,21 @@ def _compile_first(pool, quiet):
     """The kernels of every task, each compiled once by one worker (`charts warmup`'s
     stages) before the tasks start, instead of by every worker at once on an empty cache;
     with the cache filled, the workers load them here (what the tasks would do anyway)."""
-    from ..jit.compilation import announce
+    from contextlib import nullcontext
+
+    from ..jit.compilation import NOTE_SECONDS, compiling_line
     from .warmup import warmup
-    spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "angles", "clv", "curvature"],
-                                             pool=pool))
-    if not quiet:
-        announce("reproduce", spent, where=" (in its workers, before the tasks)")
+    workers = getattr(pool, "_max_workers", None)
+    where = f" in its {workers} worker processes" if workers else " in its worker processes"
+    start = time.perf_counter()
+    with nullcontext() if quiet else compiling_line("reproduce", where + ", before the tasks"):
+        spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "angles", "clv", "curvature"],
+                                                 pool=pool))
+    wall = time.perf_counter() - start
+    if not quiet and spent > NOTE_SECONDS:
+        print(f"charts: reproduce compiled its kernels{where} in {wall:.1f} s "
+              f"({spent:.1f} s of compiling summed over the workers; once: they are cached on "
+              "disk for the next runs)", file=sys.stderr, flush=True)
 
 
 PIECES = "pieces"

@@ -35,7 +35,7 @@ __all__ = ["integrate", "IntegrationResult", "IntegrationError", "SingularPointE
            "ChartDomainError", "TOLERANCES", "DenseSolution"]
 
 
-@announces_compilation
+@announces_compilation(variant=("formulation", "method"))
 def integrate(system: RotorSystem, theta0, u0, t_final=None, *, t_span=None, formulation="chart",
               method="dop853", dt=None, rtol=None, atol=None, t_eval=None, dense_output=False,
               events=None, project=False, transport=None, tau=DEFAULT_TAU, chart=None,
