@@ -10,18 +10,28 @@ spectrum rather than a measure of an attractor.
 """
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 
 from .statistics import standard_error
 
 __all__ = ["kolmogorov_sinai_entropy", "kaplan_yorke_dimension", "with_error",
-           "reconstructed_spectra", "SpectrumQuantities"]
+           "entropy_with_error", "leading_entropy_with_error", "reconstructed_spectra",
+           "SpectrumQuantities"]
 
 
-def kolmogorov_sinai_entropy(spectrum) -> float:
-    """Σ max(λᵢ, 0): the Kolmogorov–Sinai entropy by Pesin's formula (1/time)."""
+def kolmogorov_sinai_entropy(spectrum, positive=None) -> float:
+    """Σ max(λᵢ, 0): the Kolmogorov–Sinai entropy by Pesin's formula (1/time).
+
+    ``positive``: which exponents count (a boolean mask over ``spectrum``; default those
+    > 0 of ``spectrum`` itself).  An estimate of a spectrum (a batch of a run, a member of
+    an ensemble) is summed over the exponents positive in the mean (`entropy_with_error`),
+    each with its own sign: an exponent consistent with zero counts in every estimate or in
+    none, never only where it came out positive."""
     lam = np.asarray(spectrum, dtype=float)
-    return float(lam[lam > 0].sum())
+    mask = lam > 0 if positive is None else np.asarray(positive, dtype=bool)
+    return float(lam[mask].sum())
 
 
 def kaplan_yorke_dimension(spectrum) -> float:
@@ -55,6 +65,26 @@ def with_error(quantity, spectrum, rows):
     return float(quantity(spectrum)), float(standard_error(values))
 
 
+def entropy_with_error(spectrum, rows):
+    """(h_KS of ``spectrum``, its standard error from the independent estimates ``rows``):
+    `with_error` of `kolmogorov_sinai_entropy` with the exponents that count decided once,
+    by ``spectrum`` (the mean), for every row alike."""
+    positive = np.asarray(spectrum, dtype=float) > 0
+    return with_error(partial(kolmogorov_sinai_entropy, positive=positive), spectrum, rows)
+
+
+def leading_entropy_with_error(exponents, rows, n_positive):
+    """(h_KS, standard error) of a geodesic flow from its leading exponents: ``exponents``
+    (a run's, or the mean of an ensemble's members) and their independent estimates
+    ``rows`` (a run's batches, an ensemble's members), each with at least ``n_positive``
+    (N − 2) exponents.  Only the leading ``n_positive`` can count, the positive half of the
+    pairs ±λ: the two zeros of the flow direction and the energy shift, and the negative
+    partners, never count, even where they were computed; of the leading ones, those
+    positive in ``exponents`` count in every row (`entropy_with_error`)."""
+    lead = np.atleast_2d(np.asarray(exponents, dtype=float))[0, :n_positive]
+    return entropy_with_error(lead, np.atleast_2d(np.asarray(rows, dtype=float))[:, :n_positive])
+
+
 class SpectrumQuantities:
     """The entropy and the dimension as methods of a result: a result class supplies
     ``_spectra()`` -> (its spectrum, the independent estimates behind it as spectra)."""
@@ -64,8 +94,9 @@ class SpectrumQuantities:
 
     def kolmogorov_sinai_entropy(self):
         """(h_KS, standard error): Pesin's sum of the positive exponents (1/time), its error
-        from the independent estimates (a run's batches, an ensemble's members)."""
-        return with_error(kolmogorov_sinai_entropy, *self._spectra())
+        from the independent estimates (a run's batches, an ensemble's members), each summed
+        over the exponents positive in the spectrum (`entropy_with_error`)."""
+        return entropy_with_error(*self._spectra())
 
     def kaplan_yorke_dimension(self):
         """(D_KY, standard error) of the relevant spectrum (for a geodesic flow, whose

@@ -14,7 +14,8 @@ from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
 from ..io.result_words import ANGULAR_VELOCITY, RATE, counted
 from .io import json_default
 
-__all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS", "column_units"]
+__all__ = ["SceneResult", "SweepTable", "SCENE_NETCDF", "ARRAY_LAYOUT", "COLUMN_UNITS",
+           "COLUMN_DESCRIPTIONS", "column_units"]
 
 #: The file a scene run writes its arrays to, beside result.json.
 SCENE_NETCDF = "results.nc"
@@ -90,9 +91,21 @@ class SceneResult(Archivable):
 
 #: Units of the sweep table's known columns (``charts.runs.sweep``: the exponents and their
 #: errors, the times, the mean curvatures, the angles), by pattern; every other column "1".
-COLUMN_UNITS = ((r"lambda_\d+(_se)?", RATE), (r"t_final", "time"),
+COLUMN_UNITS = ((r"lambda_\d+(_se)?", RATE), (r"h_ks(_se)?", RATE), (r"t_final", "time"),
                 (r"Kmean_\w+", "1 / rad^2"),
                 (r"(clv_)?phi_[a-z]+_(min|p001|median)", "rad"), (r"cone_distance_min", "rad"))
+
+
+#: Descriptions (``long_name``) of the sweep table's columns that need saying how they were
+#: obtained.
+COLUMN_DESCRIPTIONS = {
+    "h_ks": "Kolmogorov–Sinai entropy by Pesin's formula: the sum of the leading N−2 "
+            "exponents that are positive in the point's estimate (the zeros of the flow "
+            "direction and the energy shift never count)",
+    "h_ks_se": "standard error of h_ks by batch means: the standard deviation over the "
+               "batches of the same exponents' sums, over √(number of batches); not the "
+               "exponents' errors added",
+}
 
 
 def column_units(name: str) -> str | None:
@@ -144,7 +157,9 @@ class SweepTable(Archivable):
     def to_xarray(self):
         """This result as an ``xarray.Dataset``: named dimensions, units, settings as
         attributes (``charts.io.archive``)."""
-        data = {k: (("point",), v, column_units(k) or "1") for k, v in self.columns.items()}
+        data = {k: (("point",), v, column_units(k) or "1")
+                + ((COLUMN_DESCRIPTIONS[k],) if k in COLUMN_DESCRIPTIONS else ())
+                for k, v in self.columns.items()}
         return dataset(self.KIND, data, attrs={"table": self.attrs,
                                                "column_order": list(self.columns)})
 

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analyses.lyapunov import exponents_from_marks
+from ..analyses.spectrum_quantities import leading_entropy_with_error
 
 from ..analyses.curvature import gaussian_curvature_eq22
 from ..analyses.angle_tally import SMALL_ANGLE
@@ -216,6 +217,14 @@ def lyapunov_result(st, out, *, t_done, **_):
     if len(marks) >= 2:
         res["stderr"] = stderr.tolist()
         res["batches"] = len(batches)
+    n = st.scene.system["n"]
+    if ly["n_exponents"] >= n - 2:      # every positive exponent of the pairs ±λ computed
+        # Pesin's h_KS: the leading N − 2 positive in the run's estimate, summed in each
+        # batch alike for the batch-means error (charts.analyses.spectrum_quantities)
+        h, h_se = leading_entropy_with_error(exps, batches, n - 2)
+        res["h_ks"] = h
+        if len(marks) >= 2:
+            res["h_ks_stderr"] = h_se
     paper = scene_kind(st.scene).paper_exponents(st, ly["n_exponents"])
     if paper is not None:
         res["paper"], res["paper_note"] = paper

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ...analyses.spectrum_quantities import kolmogorov_sinai_entropy
 from ..paper import PAPER_EXPONENTS
+from .statistics import KS_ENTROPY
 from ...plotting.style import save_png
 
 __all__ = ["LINKAGE_AXES", "LINKAGE_FIGURE", "linkage_axis", "paper_limit_row",
@@ -32,6 +34,9 @@ def paper_limit_row(summary: dict, stats: list) -> list:
     cells = ["→ 0: paper, Σ cos θᵢ = 0 (unit speed)" if p == x else "" for p in summary["params"]]
     cells.append("")
     for c in stats:
+        if c == KS_ENTROPY[0]:                  # Pesin's sum of the paper's exponents
+            cells.append(f"{kolmogorov_sinai_entropy(paper):.3f}")
+            continue
         i = int(c.split("_")[1]) if c.startswith("lambda_") else 0
         cells.append(f"{paper[i - 1]:.3f}" if 1 <= i <= len(paper) else "")
     return ["| " + " | ".join(cells) + " |"]

@@ -13,19 +13,21 @@ import numpy as np
 
 from ...analyses.angle_tally import SMALL_ANGLE
 from ...io.result_words import RATE
+from ...analyses.spectrum_quantities import leading_entropy_with_error
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
 from ...plotting.style import new_figure, save_png
 from .linkage import paper_limit_row, plot_linkage_sweep
 from .points import SweepPoint
+from .statistics import KS_ENTROPY
 from .table import HEAD, TAIL, WEIGHT_VECTOR, csv_text, format_cell
 
 __all__ = ["summarize", "write_summary", "summary_markdown", "plot_sweep", "PLOTTED", "SUMMARY"]
 
 SUMMARY = "summary.csv"
 #: Statistics that get a figure (the others are in the tables only).
-PLOTTED = ("lambda_", "Kpos_", "phi_full_min", "phi_restricted_min", "phi_full_frac",
-           "phi_restricted_frac")
+PLOTTED = ("lambda_", KS_ENTROPY[0], "Kpos_", "phi_full_min", "phi_restricted_min",
+           "phi_full_frac", "phi_restricted_frac")
 
 
 # --------------------------------------------------------------------------- summary
@@ -44,10 +46,14 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
     """Average over seeds: one entry per parameter combination.  Each statistic ``c`` gets
     ``c`` (mean over seeds; the minimum for ``*_min``) and ``c_se``: the larger of the
     standard error from the spread over seeds and the one propagated from the points' own
-    errors (``lambda_i_se``, batch means), as either alone can be too small."""
+    errors (``lambda_i_se``, batch means), as either alone can be too small.  ``h_ks``
+    (Pesin's sum of the positive exponents) is summed per seed over the exponents positive
+    in the mean over the seeds, then averaged (`_entropy_over_seeds`), with the same rule
+    for its ``h_ks_se``."""
     params = [c for c in header[len(HEAD):] if c in points[0].params and c != "seed"]
     stats = [c for c in header if c not in HEAD + TAIL + params + ["seed", WEIGHT_VECTOR]
              and not c.endswith("_se")]
+    by_id = {p.point_id: p for p in points}
     groups: dict = {}
     for r in rows:
         if r["status"] != "complete":
@@ -70,8 +76,35 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
                 ses.append(np.sqrt(np.sum(np.square(own))) / len(own))
             if ses:                                 # two seeds alone underestimate often
                 entry[c + "_se"] = float(max(ses))
+        if KS_ENTROPY[0] in stats:
+            _entropy_over_seeds(entry, rs, by_id[rs[0]["point_id"]].scene.system["n"])
         out.append(entry)
     return {"params": params, "stats": stats, "rows": out}
+
+
+def _entropy_over_seeds(entry: dict, rs: list, n: int) -> None:
+    """``h_ks`` and ``h_ks_se`` of one parameter combination from its seeds' rows ``rs``:
+    each seed's h_KS summed over the leading N − 2 exponents positive in the mean over the
+    seeds (``leading_entropy_with_error``: an exponent consistent with zero counts for every
+    seed or for none), their mean, and as the error the larger of the standard error of the
+    seeds' sums and the one propagated from their own (batch-means) ``h_ks_se``."""
+    h, se = KS_ENTROPY
+    k = n - 2
+    lam = [f"lambda_{i}" for i in range(1, k + 1)]
+    rs = [r for r in rs if r.get(h, "") != "" and all(r.get(c, "") != "" for c in lam)]
+    entry.pop(h, None)
+    entry.pop(se, None)
+    if not rs:
+        return
+    E = np.array([[float(r[c]) for c in lam] for r in rs])
+    value, spread = leading_entropy_with_error(E.mean(axis=0), E, k)
+    entry[h] = value
+    ses = [spread] if len(rs) >= 2 else []
+    own = [float(r[se]) for r in rs if r.get(se, "") != ""]
+    if own and len(own) == len(rs):
+        ses.append(np.sqrt(np.sum(np.square(own))) / len(own))
+    if ses:
+        entry[se] = float(max(ses))
 
 
 def write_summary(path: Path, summary: dict) -> None:
@@ -87,7 +120,7 @@ def write_summary(path: Path, summary: dict) -> None:
 def summary_markdown(summary: dict) -> str:
     """The headline statistics as a markdown table (exponents and fractions of positive
     curvature ± s.e., angle minima and 0.1 % quantiles); every column is in summary.csv."""
-    stats = [c for c in summary["stats"] if c.startswith("lambda_")
+    stats = [c for c in summary["stats"] if c.startswith("lambda_") or c == KS_ENTROPY[0]
              or (c.startswith("Kpos_exact") or (c.startswith("Kpos_numerical")
                                                 and not any(x.startswith("Kpos_exact")
                                                             for x in summary["stats"])))
@@ -101,7 +134,7 @@ def summary_markdown(summary: dict) -> str:
             v, se = e.get(c), e.get(c + "_se")
             if v is None:
                 cells.append("")
-            elif c.startswith("lambda_"):
+            elif c.startswith("lambda_") or c == KS_ENTROPY[0]:
                 cells.append(f"{v:.4f} ± {se:.4f}" if se is not None else f"{v:.4f}")
             elif c.startswith("phi_"):
                 cells.append(f"{v:.1e}")
@@ -119,6 +152,8 @@ def _label(stat: str) -> str:
     parts = stat.split("_")
     if parts[0] == "lambda":
         return f"λ{parts[1]}"
+    if stat == KS_ENTROPY[0]:
+        return "h_KS = Σ λᵢ > 0 (Pesin)"
     if parts[0] in ("Kpos", "Kmean"):
         d = "some K_ii" if parts[2] == "any" else f"K_{parts[2]}{parts[2]}"
         if parts[0] == "Kpos":
@@ -134,7 +169,7 @@ def _label(stat: str) -> str:
 
 def _axis_label(stat: str) -> str:
     """The value axis of ``stat``, with its unit."""
-    if stat.startswith("lambda_"):
+    if stat.startswith("lambda_") or stat == KS_ENTROPY[0]:
         return f"{_label(stat)} ({RATE})"
     if stat.startswith(("Kpos_", "phi_full_frac", "phi_restricted_frac")):
         return "fraction of samples"

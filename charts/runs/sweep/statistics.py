@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ..scene import Scene
 
-__all__ = ["stat_columns", "result_statistics"]
+__all__ = ["stat_columns", "result_statistics", "KS_ENTROPY"]
 
 #: The angle statistics, per variant (``phi_<variant>_<stat>``; CLV route:
 #: ``clv_phi_<variant>_<stat>``): minimum, 0.1 % quantile, median, fraction below 0.05 rad,
@@ -12,6 +12,12 @@ __all__ = ["stat_columns", "result_statistics"]
 #: β and A for β = 2, each with its batch-means standard error, and the count below).
 ANGLE_STATS = ("min", "p001", "median", "frac_small", "n", "law_count", "law_exponent",
                "law_exponent_se", "law_coef2", "law_coef2_se")
+#: The Kolmogorov–Sinai entropy by Pesin's formula, h_KS = Σ λᵢ over the positive exponents,
+#: and its batch-means standard error (the run's result ``h_ks``, ``h_ks_stderr``: the sum of
+#: the leading N − 2 exponents positive in the run's estimate, the same exponents summed in
+#: every batch; ``charts.analyses.spectrum_quantities.leading_entropy_with_error``); in
+#: sweeps that compute every positive exponent (``n_exponents`` ≥ N − 2).
+KS_ENTROPY = ("h_ks", "h_ks_se")
 #: The linkage's own columns (``charts.runs.scene_linkage.linkage_result``): the smallest
 #: Σ sin²θᵢ at the curvature samples (0 at a cone point of Σ cos θ = 0; with curvature
 #: only), the smallest KKT health, the distance of M from the four avoided cone points and
@@ -28,6 +34,8 @@ def stat_columns(scene: Scene) -> list[str]:
         k = eff["lyapunov"]["n_exponents"]
         cols += [f"lambda_{i}" for i in range(1, k + 1)]
         cols += [f"lambda_{i}_se" for i in range(1, k + 1)]
+        if k >= scene.system["n"] - 2:      # every positive exponent: Pesin's h_KS
+            cols += list(KS_ENTROPY)
     if "curvature" in eff:
         c = eff["curvature"]
         routes = ["numerical", "exact"] if c["route"] == "both" else [c["route"]]
@@ -57,6 +65,8 @@ def result_statistics(result: dict, arrays) -> dict:
     for i, (e, s) in enumerate(zip(ly.get("exponents", []),
                                    ly.get("stderr", [None] * len(ly.get("exponents", [])))), 1):
         out[f"lambda_{i}"], out[f"lambda_{i}_se"] = e, s
+    if "h_ks" in ly:
+        out[KS_ENTROPY[0]], out[KS_ENTROPY[1]] = ly["h_ks"], ly.get("h_ks_stderr")
     cv = res.get("curvature", {})
     for route in ("numerical", "exact"):
         if route in cv:
