@@ -39,6 +39,7 @@ steppers of ``charts.solvers.rk`` are compiled into it: a change there reaches a
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import from_dtype, types
@@ -49,7 +50,7 @@ from .status import (CAP_FRACTION, DOMAIN, FINISHED, LOG_FULL, NONFINITE, OUT_FU
 from .rk import (INTERPOLATOR_POWER, NO_REFCOUNT, RHS_TYPE, MIN_FACTOR, dense_eval, dop853_dense,
                  dop853_step, hermite_dense, initial_step, rk4_step, step_factor)
 
-__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "STEP_SIG", "drive", "new_state", "LOOP_STATE", "monitor", "Formulation",
+__all__ = ["CAP_SIG", "POST_SIG", "OUT_SIG", "INV_SIG", "STEP_SIG", "drive", "new_state", "LOOP_STATE", "Output", "Work", "monitor", "Formulation",
            "segment_layout", "dense_sample",
            "POST_OK", "POST_CHANGED", "POST_LOG_FULL", "METHOD_RK4", "METHOD_DOP853"]
 
@@ -142,8 +143,7 @@ def _record_segment(row, irow, t, h, y, F, par, ipar):
         irow[i] = ipar[i]
 
 
-def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, loop_state, t_eval, T_out,
-           Y_out, log, mon, K, F, ytmp, ynew, inv, Seg, ISeg):
+def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, loop_state, out, work):
     """Advance ``y`` from ``state.t`` towards ``state.t_final`` for at most ``state.chunk``
     accepted steps, ``state`` the one record of ``loop_state`` (`LOOP_STATE`).  Writes ambient samples (rows of ``Y_out``, times in ``T_out``) at the
     times ``t_eval`` (if ``state.use_eval``; ``Y_out`` then has a row for every one of
@@ -153,9 +153,11 @@ def _drive(rhs, step, cap, post, to_ambient, invariants, y, par, ipar, loop_stat
     RK4 the cubic Hermite interpolant of the step's end values and slopes (one more
     right-hand-side evaluation a step); ``OUT_FULL`` when the buffer is full.
 
-    Shapes: y (ny,); K (16, ny); F (7, ny); ytmp, ynew (ny,); Y_out (cap, na); inv (3,);
-    mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
+    ``out`` (`Output`) and ``work`` (`Work`): y (ny,); K (16, ny); F (7, ny); ytmp, ynew
+    (ny,); Y_out (cap, na); inv (3,); mon (3,) = running max of |Σcos θ|, |Σ u sin θ|, |ΔE|/E₀ over accepted steps."""
     state = loop_state[0]
+    t_eval, T_out, Y_out, log, mon, Seg, ISeg = out
+    K, F, ytmp, ynew, inv = work
     ny = y.size
     method = state.method
     use_eval = state.use_eval != 0
@@ -316,8 +318,16 @@ _POST_TYPE = types.FunctionType(POST_SIG)
 _OUT_TYPE = types.FunctionType(OUT_SIG)
 _INV_TYPE = types.FunctionType(INV_SIG)
 _im = types.int64[:, ::1]
-_DRIVE_ARGS = (_CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _state, _v, _v,
-               _m, _m, _v, _m, _m, _v, _v, _v, _m, _im)
+#: The loop's output (`drive`): the sample times asked for, the samples' times and rows, the
+#: formulation's log, the invariants' monitor, the dense output's segments (float and int).
+Output = namedtuple("Output", ["t_eval", "T", "Y", "log", "mon", "Seg", "ISeg"])
+#: The loop's work arrays: the stages K (16, ny), the interpolant F (7, ny), a stage point,
+#: the new state, the invariants (3,).
+Work = namedtuple("Work", ["K", "F", "ytmp", "ynew", "inv"])
+_OUTPUT_TYPE = types.NamedTuple((_v, _v, _m, _m, _v, _m, _im), Output)
+_WORK_TYPE = types.NamedTuple((_m, _m, _v, _v, _v), Work)
+_DRIVE_ARGS = (_CAP_TYPE, _POST_TYPE, _OUT_TYPE, _INV_TYPE, _v, _v, _iv, _state, _OUTPUT_TYPE,
+               _WORK_TYPE)
 DRIVE_SIG = _i8(RHS_TYPE, _STEP_TYPE, *_DRIVE_ARGS)
 #: `drive` for a formulation whose step is the generic one (step None)
 DRIVE_GENERIC_SIG = _i8(RHS_TYPE, types.none, *_DRIVE_ARGS)

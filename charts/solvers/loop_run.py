@@ -135,9 +135,10 @@ class LoopRun:
         """Run the loop for one chunk, then collect what it wrote (samples, switches,
         interpolants); returns the loop's status code (``charts.solvers.status``)."""
         samples = self.samples
-        status = D.drive(*self.hooks, self.y, self.par, self.ipar, self.state, self.s_eval,
-                         samples.T, samples.Y, self.log, self.mon, self.K, self.F, self.ytmp,
-                         self.ynew, self.inv, self.Seg, self.ISeg)
+        status = D.drive(*self.hooks, self.y, self.par, self.ipar, self.state,
+                         D.Output(self.s_eval, samples.T, samples.Y, self.log, self.mon,
+                                  self.Seg, self.ISeg),
+                         D.Work(self.K, self.F, self.ytmp, self.ynew, self.inv))
         samples.drain(self.state)
         self.switches.extend(self.form.drain_log(self.log, self.ipar))
         if self.sol is not None:
