@@ -56,7 +56,7 @@ def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv
     """One RK4 step of size h of eqs (8) + (17) for the L lanes of Zf (flat, length
     M = R·d·L, element i of lane l at i·L + l); s0, c0, shape (N·L,), the weighted sin/cos
     of the angles, updated; wl = the weights, element j·L + l = aⱼ.  The lane form of
-    `charts.solvers.tangent._rk4_step`: the same operations per lane, in the same order,
+    `charts.solvers.tangent.stacked_rk4_step` with eq (17)'s hook: the same operations per lane, in the same order,
     written out as there (the stage points as shared inline functions, called from the two
     branches of the stage loop, cost both kernels ~40 %, measured).  Sizes unsigned
     (``np.uint64``) as there; every loop in blocks of `LANE_WIDTH` (L a multiple)."""
@@ -198,7 +198,7 @@ def _lanes_policy_step(fl, rate):
     for t in range(nsub):
         l = sub[t]
         zz = subZ[t]
-        ok = substeps(zz, Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1, subS[t, 0], subS[t, 1],
+        ok = substeps(zz, (Zt1, K1, th1, dl1, s1, c1, f1, g1, p1, q1), subS[t, 0], subS[t, 1],
                       fl.minv, fl.wts, fl.level, dt, subcap[t], nu, Ru, du, np.uint64(D))
         scatter(zz, subS[t, 0], subS[t, 1], Zf, s0, c0, Lp, l)
         if not ok:

@@ -158,14 +158,6 @@ def tangent_vectors_rate(Zt, n, minv, s, c, lam, iB, f, g, p, q, K, o, R, d):
 
 
 @njit(cache=True, inline="always")
-def _rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L):
-    """One RK4 step of size h of eqs (8) + (17) for the stacked state Zf = [y; X]
-    (`stacked_rk4_step` with the tangent flow's hook)."""
-    stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, n, R, d, L,
-                     tangent_vectors_rate)
-
-
-@njit(cache=True, inline="always")
 def state_point_rate(Zt, n, minv, s, c, K, o):
     """Eq (8) at the stage point Zt (state first, sin/cos s, c) into K[o:o+2N]; returns
     (Λ, 1/B) for the vectors' rates at the same point (the stage of both RK4 steps, the
@@ -187,8 +179,8 @@ def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
 
 
 @njit(cache=True, inline="always")
-def substep_loop(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc, nsub,
-                 n, nu, Ru, du, Lu, vectors_rate):
+def substep_loop(Zf, work, s0, c0, minv, wts, level, dt, hc, nsub, n, nu, Ru, du, Lu,
+                 vectors_rate):
     """The step dt (< 0: backward) by `stacked_rk4_step` with the hook ``vectors_rate``, as
     the policy of ``charts.solvers.status`` takes it: one step where ``nsub`` = 1 (the cap
     ``hc`` at the step's start not below |dt|), else sub-steps (`next_substep`: equal ones as
@@ -198,7 +190,9 @@ def substep_loop(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, 
     home of the sub-step policy: `stacked_step` (every stacked flow) and `substeps` (a lane
     of the lane kernel) call it.  One inlined step in a loop: no second copy of it to
     compile (a separately compiled sub-step function cost every first call 3.7 s of
-    compiling, the backward pass's another 3.8 s), and no slower (measured)."""
+    compiling, the backward pass's another 3.8 s), and no slower (measured).  ``work``: the
+    step's work arrays (`stacked_work`)."""
+    Zt, K, th, dl, s, c, f, g, p, q = work
     adt = abs(dt)
     h = dt
     planned = 0
@@ -226,13 +220,13 @@ def substep_loop(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, 
 
 
 @njit(cache=True)
-def substeps(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc, n, R, d, L):
+def substeps(Zf, work, s0, c0, minv, wts, level, dt, hc, n, R, d, L):
     """The step dt (> 0, capped at hc < dt at its start) of one lane of the lane kernel
     (``charts.solvers.lanes``, in the one-trajectory layout) in the sub-steps that
     `tangent_kernel` takes (`substep_loop`); False if a sub-step starts at a singular point
     (`singular_floor`)."""
-    return substep_loop(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, level, dt, hc,
-                        MAX_SUBSTEPS, n, n, R, d, L, tangent_vectors_rate) == RUNNING
+    return substep_loop(Zf, work, s0, c0, minv, wts, level, dt, hc, MAX_SUBSTEPS, n, n, R, d,
+                        L, tangent_vectors_rate) == RUNNING
 
 
 @njit(cache=True)
@@ -267,14 +261,13 @@ def stacked_step(fl, vectors_rate):
     computed once before the loop instead made the whole kernel 2× slower, measured.)"""
     n = fl.n
     dt = fl.dt
-    Zt, K, th, dl, s, c, f, g, p, q = fl.work
     adt = abs(dt)
     code, hc = fixed_step_status(sum_squares(fl.s0, 0, n), sum_squares(fl.Zf, n, n), adt, _CAP)
     if code != RUNNING:
         return code
-    return substep_loop(fl.Zf, Zt, K, th, dl, s, c, f, g, p, q, fl.s0, fl.c0, fl.minv, fl.wts,
-                        fl.level, dt, hc, 1 if hc >= adt else MAX_SUBSTEPS, n, fl.nu, fl.Ru,
-                        fl.du, fl.Lu, vectors_rate)
+    return substep_loop(fl.Zf, fl.work, fl.s0, fl.c0, fl.minv, fl.wts, fl.level, dt, hc,
+                        1 if hc >= adt else MAX_SUBSTEPS, n, fl.nu, fl.Ru, fl.du, fl.Lu,
+                        vectors_rate)
 
 
 @njit(cache=True, inline="always")
