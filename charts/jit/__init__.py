@@ -21,7 +21,7 @@ import numba as _numba
 
 from . import adaptations as _adaptations
 
-__all__ = ["njit"]
+__all__ = ["njit", "report"]
 
 
 def njit(*args, **options):
@@ -46,6 +46,16 @@ def njit(*args, **options):
         return dispatcher
 
     return decorate if function is None else decorate(function)
+
+
+def report() -> dict:
+    """name -> state of every adaptation of numba (`charts.jit.adaptations.STATE`: "on",
+    "plain" or "off: <why>"), each one's check run where it has not yet been."""
+    from . import borrowed, cache_lock, inliner, kernel_calls, typing_memo, vector_lowering
+
+    for module in (cache_lock, inliner, typing_memo, kernel_calls, vector_lowering, borrowed):
+        module.usable()
+    return {name: _adaptations.STATE[name] for name in _adaptations.ADAPTATIONS}
 
 
 def _scope_adaptations() -> None:

@@ -17,7 +17,8 @@ charts' large generated kernels; each is
 * **switchable in one place**: ``CHARTS_NUMBA_PLAIN=1`` in the environment turns every
   adaptation off, and numba's functions stay exactly as numba defines them.
 
-`STATE` says, per adaptation, what this process does ("on", "plain", or "off: <why>").
+`STATE` says, per adaptation, what this process does ("on", "plain", or "off: <why>");
+``charts.jit.report()`` runs every check and returns it.
 This module imports nothing of numba at import time.
 """
 from __future__ import annotations
@@ -26,7 +27,7 @@ import os
 import sys
 import threading
 
-__all__ = ["PLAIN", "STATE", "active", "step_aside", "ours", "compile_scope", "report",
+__all__ = ["PLAIN", "STATE", "active", "step_aside", "ours", "compile_scope", "scoped",
            "ADAPTATIONS"]
 
 #: ``CHARTS_NUMBA_PLAIN=1``: stock numba for everything (read once, at import).
@@ -94,15 +95,6 @@ def _notice(name: str, reason: str) -> None:
     print(f"charts: numba {numba.__version__} is not what the '{name}' adaptation expects "
           f"({reason}); charts uses numba's own code there (the same numbers; first calls "
           "may compile more slowly)", file=sys.stderr, flush=True)
-
-
-def report() -> dict:
-    """name -> state of every adaptation, each one's check run where it has not yet been."""
-    from . import borrowed, cache_lock, inliner, kernel_calls, typing_memo, vector_lowering
-
-    for module in (cache_lock, inliner, typing_memo, kernel_calls, vector_lowering, borrowed):
-        module.usable()
-    return {name: STATE[name] for name in ADAPTATIONS}
 
 
 # --- the compile scope: the inliner and the typing memo in numba's classes only while numba
