@@ -1,0 +1,14 @@
+"""Mechanisms: one symbolic model for every holonomic system (docs/mechanisms.md).
+
+``Mechanism`` (coordinates, constraints F(q) = 0, a kinetic metric, parameters, as SymPy)
+derives the ambient constrained equations of motion, projections, an atlas by the implicit
+function theorem, the induced metric, Christoffel symbols, Riemann tensor and the
+Gauss-equation curvature; ``rotors`` and ``triple_linkage`` are instances; ``integrate_ambient``
+and ``integrate_chart`` integrate a mechanism's geodesic flow.
+"""
+from .model import Mechanism, MechanismError
+from .instances import rotors, triple_linkage
+from .integrate import integrate_ambient, integrate_chart
+
+__all__ = ["Mechanism", "MechanismError", "rotors", "triple_linkage", "integrate_ambient",
+           "integrate_chart"]
