@@ -1,0 +1,215 @@
+"""charts.mechanism: the symbolic Mechanism against the library's rotor geometry (eqs 8, 22,
+the exact Riemann tensor of RotorSystem) and the triple linkage (shared/mechanisms/
+triple_linkage.md): intrinsic against Gauss-equation curvature, chart against ambient
+trajectories, the r → 0 limit.
+
+Tolerances.  The two curvature routes and the library's closed forms are exact formulas
+evaluated in floating point (no finite differences): they agree to a few hundred ulps of the
+largest term, so 1e-11 absolute on curvatures of order 0.01–1.  The trajectories are RK4 in
+charts (dt = 0.005, local error ~ dt⁵) against DOP853 at rtol 1e-11: 1e-9 over t = 1.5.
+"""
+import numpy as np
+import pytest
+import sympy as sp
+
+from charts import RotorSystem
+from charts.analyses.curvature import gaussian_curvature_eq22
+from charts.flows.ambient import flow_rhs
+from charts.mechanism import (Mechanism, MechanismError, integrate_ambient, integrate_chart,
+                              rotors, triple_linkage)
+
+CURV_TOL = 1e-11
+
+
+@pytest.fixture(scope="module")
+def rot3():
+    return rotors(3)
+
+
+@pytest.fixture(scope="module")
+def rot4():
+    return rotors(4)
+
+
+@pytest.fixture(scope="module")
+def linkage():
+    return triple_linkage(0.2)
+
+
+def plane(mech, q, seed):
+    rng = np.random.default_rng(seed)
+    return (mech.project_velocity(q, rng.normal(size=mech.n)),
+            mech.project_velocity(q, rng.normal(size=mech.n)))
+
+
+# ------------------------------------------------------------------ rotors against the library
+def test_rotors3_curvature_both_routes_equal_eq22(rot3):
+    for seed in range(8):
+        q, _ = rot3.random_state(seed)
+        K22 = float(gaussian_curvature_eq22(q))
+        u, w = plane(rot3, q, seed)
+        assert abs(rot3.gaussian_curvature(q) - K22) < CURV_TOL
+        assert abs(rot3.gauss_equation_curvature(q, u, w) - K22) < CURV_TOL
+        for chart, _ in rot3.charts(q)[:2]:       # the best two charts give the same K
+            assert abs(rot3.gaussian_curvature(q, chart) - K22) < CURV_TOL
+
+
+def test_rotors4_riemann_and_sectional_against_rotorsystem(rot4):
+    rs = RotorSystem(4)
+    for seed in range(6):
+        q, _ = rot4.random_state(seed)
+        u, w = plane(rot4, q, seed)
+        K = rs.sectional_curvature(q, u, w)
+        assert abs(rot4.sectional_curvature(q, u, w) - K) < CURV_TOL
+        assert abs(rot4.gauss_equation_curvature(q, u, w) - K) < CURV_TOL
+        k = rs.best_chart(q)
+        chart = tuple(i for i in range(4) if i != k)
+        assert rot4.best_chart(q) == chart            # the same switching rule (max |sin θ_k|)
+        R = rs.riemann(q, chart=k)
+        assert np.max(np.abs(rot4.riemann(q, chart) - R)) < 1e-12 * max(1.0, np.max(np.abs(R)))
+        assert np.max(np.abs(rot4.metric(q, chart) - rs.metric(q, chart=k))) < 1e-13
+        assert np.max(np.abs(rot4.christoffel(q, chart) - rs.christoffel(q, chart=k))) < 1e-12
+
+
+def test_rotor_acceleration_is_eq8():
+    m, a, c = np.array([1.0, 2.0, 0.5, 1.5]), np.array([1.0, 1.3, 0.8, 1.1]), 0.3
+    mech = rotors(4, masses=m, weights=a, level=c)
+    for seed in range(5):
+        q, v = mech.random_state(seed, speed=1.7)
+        assert abs(a @ np.cos(q) - c) < 1e-12 and abs(a @ (np.sin(q) * v)) < 1e-12
+        dy = np.empty(8)
+        flow_rhs(np.concatenate([q, v]), 1.0 / m, a, dy)
+        np.testing.assert_allclose(mech.acceleration(q, v), dy[4:], rtol=0, atol=1e-13)
+
+
+def test_ambient_equations_symbolic(rot3):
+    v, acc, lam, eqs = rot3.ambient_equations()
+    sol = sp.solve(eqs, [*acc, *lam], dict=True)[0]
+    th = rot3.q
+    # eq (8) with unit masses and weights: q̈ = Jᵀλ = −λ sin θ, so λ = Λ = Σ u² cos θ / Σ sin² θ
+    expect = sum(vi ** 2 * sp.cos(t) for vi, t in zip(v, th)) / sum(sp.sin(t) ** 2 for t in th)
+    subs = dict(zip(rot3.params, rot3.param_values))
+    assert sp.simplify(sol[lam[0]].subs(subs) - expect) == 0
+
+
+# ------------------------------------------------------------------ the triple linkage
+def test_linkage_projection_and_tangency(linkage):
+    rng = np.random.default_rng(3)
+    for seed in range(5):
+        q, v = linkage.random_state(seed)
+        assert np.max(np.abs(linkage.constraint(q))) < 1e-12
+        assert np.max(np.abs(linkage.jacobian(q) @ v)) < 1e-12
+        p = linkage.project_point(q + 0.01 * rng.normal(size=5))
+        assert np.max(np.abs(linkage.constraint(p))) < 1e-12
+        # the rods have length l: |Q_j − Z| = 1
+        th, Z = p[:3], p[3:]
+        for j in range(3):
+            a = 2 * np.pi * j / 3
+            Q = np.array([np.cos(a), np.sin(a)]) + 0.2 * np.array([np.cos(a + th[j]), np.sin(a + th[j])])
+            assert abs(np.linalg.norm(Q - Z) - 1.0) < 1e-12
+
+
+@pytest.mark.parametrize("joint_mass", [0.0, 0.3])
+def test_linkage_intrinsic_equals_gauss(joint_mass):
+    L = triple_linkage(0.2, joint_mass=joint_mass) if joint_mass else triple_linkage(0.2)
+    for seed in range(6):
+        q, _ = L.random_state(seed)
+        u, w = plane(L, q, seed)
+        K = L.gaussian_curvature(q)
+        assert abs(L.gauss_equation_curvature(q, u, w) - K) < CURV_TOL
+        assert abs(L.sectional_curvature(q, u, w) - K) < CURV_TOL
+        second = L.charts(q)[1][0]
+        assert abs(L.gaussian_curvature(q, second) - K) < CURV_TOL   # chart-independent
+
+
+def test_linkage_chart_and_ambient_trajectories_agree(linkage):
+    q, v = linkage.random_state(1)
+    t, Qa, Va = integrate_ambient(linkage, q, v, 1.5, samples=15)
+    _, Qc, Vc, used = integrate_chart(linkage, q, v, 1.5, samples=15, dt=0.005)
+    assert len(set(used)) >= 2                       # the run switches charts
+    assert np.max(np.abs(Qa - Qc)) < 1e-9 and np.max(np.abs(Va - Vc)) < 1e-9
+    E = [linkage.energy(a, b) for a, b in zip(Qa, Va)]
+    assert np.ptp(E) < 1e-10
+
+
+def test_configuration_dependent_metric_rods():
+    L = triple_linkage(0.3, joint_mass=0.2, rod_mass=0.5)
+    assert not L.constant_metric
+    q, v = L.random_state(2)
+    t, Qa, Va = integrate_ambient(L, q, v, 1.0, samples=10)
+    _, Qc, Vc, _ = integrate_chart(L, q, v, 1.0, samples=10, dt=0.005)
+    assert np.max(np.abs(Qa - Qc)) < 1e-9
+    assert np.ptp([L.energy(a, b) for a, b in zip(Qa, Va)]) < 1e-10
+    with pytest.raises(NotImplementedError):
+        L.gauss_equation_curvature(q, *plane(L, q, 0))
+
+
+def test_linkage_small_r_limit_is_rotor_family():
+    """l = R + rδ: at the linkage point with the same chart angles as a point θ of
+    Σ cos θ = 3δ, K_linkage − K_rotor = O(r) (measured: order 1.1 at r = 0.02 → 0.01)."""
+    delta = 0.1
+    rs = RotorSystem(3, level=3 * delta)
+    P = np.array([[np.cos(2 * np.pi * j / 3), np.sin(2 * np.pi * j / 3)] for j in range(3)])
+    pts = [rs.random_state(s)[0] for s in range(4)]
+    errors = []
+    for r in (0.04, 0.02, 0.01):
+        L = triple_linkage(r, l=1.0 + r * delta)
+        e = 0.0
+        for th in pts:
+            u = rs.project_tangent(th, np.array([1.0, 0.3, -0.5]))
+            w = rs.project_tangent(th, np.array([-0.2, 1.0, 0.4]))
+            k = int(np.argmax(np.abs(np.sin(th))))
+            chart = tuple(i for i in range(3) if i != k)
+            q0 = np.concatenate([th, r * 2 / 3 * (np.cos(th) @ P)])   # Z = rζ + O(r²)
+            q = L.lift(th[list(chart)], chart, q0)
+            e = max(e, abs(L.gaussian_curvature(q) - rs.sectional_curvature(th, u, w)))
+        errors.append(e)
+    assert errors[0] > errors[1] > errors[2]
+    order = np.log2(errors[1] / errors[2])
+    assert 0.7 < order < 1.6, errors
+    assert errors[2] < 5e-3
+
+
+# ------------------------------------------------------------------ validation
+def test_invalid_inputs():
+    x, y = sp.symbols("x y")
+    with pytest.raises(MechanismError, match="neither a coordinate"):
+        Mechanism(["x", "y"], [x ** 2 + y ** 2 - sp.Symbol("a")], masses=[1, 1])
+    with pytest.raises(MechanismError, match="exactly one"):
+        Mechanism(["x", "y"], [x ** 2 + y ** 2 - 1])
+    with pytest.raises(MechanismError, match="distinct"):
+        Mechanism(["x", "x"], [x - 1], masses=[1, 1])
+    with pytest.raises(MechanismError, match="constraints"):
+        Mechanism(["x", "y"], [x, y], masses=[1, 1])
+    with pytest.raises(MechanismError, match="symmetric"):
+        Mechanism(["x", "y"], [x ** 2 + y ** 2 - 1], sp.Matrix([[1, x], [0, 1]]))
+    with pytest.raises(MechanismError, match="one entry per coordinate"):
+        Mechanism(["x", "y"], [x ** 2 + y ** 2 - 1], masses=[1])
+    with pytest.raises(MechanismError, match="real number"):
+        Mechanism(["x", "y"], [x ** 2 + y ** 2 - sp.Symbol("a")], masses=[1, 1],
+                  parameters={"a": "one"})
+    circle = Mechanism(["x", "y"], [x ** 2 + y ** 2 - 1], masses=[1, 1])
+    with pytest.raises(MechanismError, match="rank"):
+        circle.check_rank([0.0, 0.0])
+    with pytest.raises(MechanismError, match="off the constraint"):
+        circle.metric([0.5, 0.5])
+    with pytest.raises(MechanismError, match="gaussian_curvature is for 2-dimensional"):
+        circle.gaussian_curvature([1.0, 0.0])
+    with pytest.raises(MechanismError, match="not tangent"):
+        circle.sectional_curvature([1.0, 0.0], [1.0, 0.0], [0.0, 1.0])
+    with pytest.raises(MechanismError, match="a chart is"):
+        circle.metric([1.0, 0.0], chart=(0, 1))
+    cone = Mechanism(["x", "y", "z"], [x ** 2 + y ** 2 - sp.Symbol("z") ** 2], masses=[1, 1, 1])
+    with pytest.raises(MechanismError, match="singular point"):
+        cone.project_point([0.0, 0.0, 0.0])   # on F = 0, but the vertex
+
+
+def test_circle_is_flat_and_sphere_has_curvature_one_over_radius_squared():
+    x, y, z, a = sp.symbols("x y z a")
+    sphere = Mechanism(["x", "y", "z"], [x ** 2 + y ** 2 + z ** 2 - a ** 2], masses=[1, 1, 1],
+                       parameters={"a": 2.0})
+    for seed in range(3):
+        q, _ = sphere.random_state(seed)
+        assert abs(np.linalg.norm(q) - 2.0) < 1e-12
+        assert abs(sphere.gaussian_curvature(q) - 0.25) < 1e-12
+        assert abs(sphere.gauss_equation_curvature(q, *plane(sphere, q, seed)) - 0.25) < 1e-12
