@@ -84,8 +84,14 @@ def steps_of(name, t, dt, *, allow_zero=False, divides=0) -> int:
         raise ValueError(f"{name}={t:g} is shorter than one step dt={dt:g}; use a multiple of "
                          f"dt (e.g. {dt:g}) or a smaller dt")
     if abs(k * dt - t) > GRID_RTOL * t:
-        raise ValueError(f"{name}={t:g} is not a whole number of steps dt={dt:g}; use a multiple "
-                         f"of dt (e.g. {max(k, 1) * dt:g})")
+        example = max(k, 1) * dt
+        # six digits unless they hide the difference (t and the example, or dt, would read
+        # the same): then every digit
+        short = f"{example:g}" != f"{t:g}" and float(f"{dt:g}") == dt
+        t_, dt_, ex_ = (f"{t:g}", f"{dt:g}", f"{example:g}") if short else \
+            (repr(t), repr(dt), repr(example))
+        raise ValueError(f"{name}={t_} is not a whole number of steps dt={dt_}; use a multiple "
+                         f"of dt (e.g. {ex_})")
     return int(k)
 
 

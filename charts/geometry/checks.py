@@ -3,8 +3,10 @@
 
 Each check returns the value in its working type or raises ``ValueError`` whose message
 names the argument, shows the value and says what is allowed.  Numbers users commonly pass
-in another type keep working: NumPy scalars, and integral floats where a count is expected
-(``4.0`` rotors); ``True``, ``2.7`` and ``"2"`` are not counts.
+in another type keep working: NumPy scalars and 0-d arrays (``np.array(32)`` is 32), integral
+floats where a count is expected (``4.0`` rotors), and a float32 or float16 read as the decimal
+it prints (``np.float32(0.01)`` is 0.01, not 0.009999999776…, which no duration of whole
+steps would match); ``True``, ``2.7`` and ``"2"`` are not counts.
 """
 from __future__ import annotations
 
@@ -16,14 +18,26 @@ __all__ = ["number", "integer", "finite_array", "option", "shown"]
 
 
 def shown(x) -> str:
-    """``repr(x)`` for a message, at most 80 characters (a million masses are not echoed)."""
-    text = repr(x.tolist() if isinstance(x, np.ndarray) else x)
+    """``repr(x)`` for a message, at most 80 characters (a million masses are not echoed);
+    NumPy arrays and scalars as the Python values they hold (``2.5``, not ``np.float64(2.5)``)."""
+    text = repr(x.tolist() if isinstance(x, (np.ndarray, np.generic)) else x)
     return text if len(text) <= 80 else text[:77] + "..."
+
+
+def _scalar(x):
+    """A 0-d array as its NumPy scalar (``np.array(32)`` -> ``np.int64(32)``); anything else
+    as it is."""
+    return x[()] if isinstance(x, np.ndarray) and x.ndim == 0 else x
 
 
 def number(name, x) -> float:
     """``x`` as a finite float; ValueError naming ``name`` otherwise (bool, strings and
-    complex numbers are not numbers; an integer beyond a float's range is refused)."""
+    complex numbers are not numbers; an integer beyond a float's range is refused).  A
+    float32 or float16 is the decimal it prints: the value its writer meant, to its
+    precision."""
+    x = _scalar(x)
+    if isinstance(x, np.floating) and x.dtype.itemsize < 8 and np.isfinite(x):
+        x = float(str(x))
     if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
         raise ValueError(f"{name} must be a real number, got {shown(x)}")
     try:
@@ -50,7 +64,8 @@ def _entries_are_real_numbers(x) -> bool:
 
 def integer(name, x, minimum=None, maximum=None) -> int:
     """``x`` as an int in [minimum, maximum]; integral floats (``4.0``) and NumPy integers
-    are accepted, bool, fractions and strings are not."""
+    are accepted (0-d arrays of them too), bool, fractions and strings are not."""
+    x = _scalar(x)
     if isinstance(x, (float, np.floating)) and not isinstance(x, bool) and math.isfinite(x) \
             and float(x).is_integer():
         x = int(x)
