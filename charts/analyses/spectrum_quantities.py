@@ -28,16 +28,27 @@ def kolmogorov_sinai_entropy(spectrum, positive=None) -> float:
     > 0 of ``spectrum`` itself).  An estimate of a spectrum (a batch of a run, a member of
     an ensemble) is summed over the exponents positive in the mean (`entropy_with_error`),
     each with its own sign: an exponent consistent with zero counts in every estimate or in
-    none, never only where it came out positive."""
+    none, never only where it came out positive.  A NaN exponent (a failed estimate) makes
+    the entropy NaN, whether or not it would count: it is never dropped as "not positive"."""
     lam = np.asarray(spectrum, dtype=float)
-    mask = lam > 0 if positive is None else np.asarray(positive, dtype=bool)
+    if positive is not None:
+        positive = np.asarray(positive)
+        if positive.dtype != bool or positive.shape != lam.shape:
+            raise ValueError(f"positive must be a boolean mask of the spectrum's shape "
+                             f"{lam.shape}, got {positive.dtype} of shape {positive.shape}")
+    if np.isnan(lam).any():
+        return float("nan")
+    mask = lam > 0 if positive is None else positive
     return float(lam[mask].sum())
 
 
 def kaplan_yorke_dimension(spectrum) -> float:
     """j + (λ₁ + … + λⱼ)/|λⱼ₊₁| with j the largest index whose partial sum is ≥ 0 (exponents
-    sorted decreasing); 0 if λ₁ < 0, the number of exponents if every partial sum is ≥ 0."""
+    sorted decreasing); 0 if λ₁ < 0, the number of exponents if every partial sum is ≥ 0;
+    NaN if an exponent is NaN (never sorted to the end and dropped)."""
     lam = np.sort(np.asarray(spectrum, dtype=float))[::-1]
+    if np.isnan(lam).any():
+        return float("nan")
     if lam.size == 0 or lam[0] < 0:
         return 0.0
     partial = np.cumsum(lam)
@@ -68,7 +79,8 @@ def with_error(quantity, spectrum, rows):
 def entropy_with_error(spectrum, rows):
     """(h_KS of ``spectrum``, its standard error from the independent estimates ``rows``):
     `with_error` of `kolmogorov_sinai_entropy` with the exponents that count decided once,
-    by ``spectrum`` (the mean), for every row alike."""
+    by ``spectrum`` (the mean), for every row alike (a NaN in the mean or in a row gives a
+    NaN entropy or error, not a smaller sum)."""
     positive = np.asarray(spectrum, dtype=float) > 0
     return with_error(partial(kolmogorov_sinai_entropy, positive=positive), spectrum, rows)
 
