@@ -25,8 +25,9 @@ import numpy as np
 from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
 from ..io.result_words import RATE, exponent_words
 from ..jit.compilation import announces_compilation
-from ..geometry.checks import option
-from ..geometry.energy_shares import LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_edges
+from ..geometry.checks import option, shown
+from ..geometry.energy_shares import (LOCALISED_SHARE, SHARE_BINS, localised_fraction, share_bin,
+                                      share_edges)
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
@@ -208,7 +209,10 @@ class LyapunovResult(SpectrumQuantities, Archivable):
 
     def localised_fraction(self, share=LOCALISED_SHARE) -> float:
         """Fraction of the averaging time in which one rotor held at least ``share`` of the
-        kinetic energy (from ``energy_shares``; ``share`` a multiple of 0.01)."""
+        kinetic energy (from ``energy_shares``; ``share`` a real number in [0, 1], a multiple
+        of 0.01: ``charts.geometry.energy_shares.share_bin``)."""
+        share_bin(share, SHARE_BINS if self.energy_shares is None
+                  else np.shape(self.energy_shares)[-1])
         if self.energy_shares is None:
             raise ValueError("this result holds no energy shares (computed before they were "
                              "recorded)")
@@ -308,6 +312,11 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     """
     rule = transient_rule(t_transient)
     if rule == "auto":
+        # every other setting checked before the pilot runs (the transient is its outcome)
+        lyapunov_settings(system, t_final, dt=dt, n_exponents=n_exponents, inner=inner,
+                          space=space, t_transient=0.0, n_batches=n_batches,
+                          reorth_every=reorth_every, project_every=project_every,
+                          record_every=record_every, seed=seed)
         t_transient = auto_transient(system, theta0, u0, dt=dt, n_exponents=n_exponents,
                                      inner=inner, space=space, seed=seed)
     cfg = lyapunov_settings(system, t_final, dt=dt, n_exponents=n_exponents, inner=inner,
@@ -359,12 +368,17 @@ def auto_transient(system, theta0, u0, *, dt=0.01, n_exponents=None, inner="thet
     """The transient of ``t_transient="auto"`` for a run from (theta0, u0): `AUTO_EFOLDINGS`
     over the smallest positive exponent of a pilot run (`PILOT_TIMES`, the run's own
     settings), within `AUTO_TRANSIENT_RANGE` (as a `Documented` duration: the nearest whole
-    number of steps)."""
-    pilot = lyapunov_spectrum(system, theta0, u0, PILOT_TIMES[1], dt=dt, n_exponents=n_exponents,
-                              inner=inner, space=space, t_transient=PILOT_TIMES[0], n_batches=2,
-                              seed=seed)
+    number of steps).  The pilot's times are the rule's, not the caller's: at any ``dt``
+    they are the nearest whole numbers of steps (`Documented`), so that "auto" works for
+    every valid step (50 time units need not be a whole number of steps)."""
+    pilot = lyapunov_spectrum(system, theta0, u0, Documented(PILOT_TIMES[1]), dt=dt,
+                              n_exponents=n_exponents, inner=inner, space=space,
+                              t_transient=Documented(PILOT_TIMES[0]), n_batches=2, seed=seed)
     lam = pilot.exponents
     low, high = AUTO_TRANSIENT_RANGE
+    if np.isnan(lam).any():
+        raise ValueError(f"t_transient='auto': the pilot run gave a NaN exponent ({shown(lam)}); "
+                         "give t_transient as a duration")
     positive = lam[lam > 0]
     if positive.size == 0:
         return Documented(high)

@@ -14,10 +14,11 @@ from __future__ import annotations
 import numpy as np
 from ..jit import njit
 
+from .checks import finite_array, number
 from .primitives import LANE_WIDTH
 
 __all__ = ["SHARE_BINS", "record_share", "energies_lanes", "record_share_of", "largest_shares",
-           "localised_fraction", "share_edges", "LOCALISED_SHARE"]
+           "localised_fraction", "share_bin", "share_edges", "LOCALISED_SHARE"]
 
 #: Bins of the histogram of the largest share (width 0.01: thresholds at whole per cent are
 #: read exactly).
@@ -91,19 +92,34 @@ def share_edges(nbins=SHARE_BINS):
     return np.arange(nbins) / nbins
 
 
+def share_bin(share, nbins=SHARE_BINS) -> int:
+    """The first bin counted by ``share``: a real number in [0, 1] on a bin edge (a multiple
+    of 1/``nbins``); ValueError naming ``share`` otherwise (a bool or a string is not a
+    share, ``charts.geometry.checks.number``)."""
+    share = number("share", share)
+    x = share * nbins
+    b = int(round(x))
+    if not 0.0 <= share <= 1.0 or abs(x - b) >= 1e-9:
+        raise ValueError(f"share must be a multiple of 1/{nbins} in [0, 1] (the histogram's bin "
+                         f"edges), got {share!r}")
+    return b
+
+
 def localised_fraction(hist, share=LOCALISED_SHARE):
-    """Fraction of the samples of the histogram ``hist`` (counts, last axis the bins) in
-    which one rotor held at least ``share`` of the kinetic energy.  ``share`` must lie on a
-    bin edge (a multiple of 1/B: 0.01 for `SHARE_BINS`); ValueError otherwise."""
-    hist = np.asarray(hist)
+    """Fraction of the samples of the histogram ``hist`` (counts >= 0, last axis the bins) in
+    which one rotor held at least ``share`` of the kinetic energy.  ``share`` must be a real
+    number in [0, 1] on a bin edge (a multiple of 1/B: 0.01 for `SHARE_BINS`: `share_bin`);
+    ValueError otherwise (``hist``: an array of real numbers >= 0, at least 1-D)."""
+    hist = finite_array("hist", hist)
+    if hist.ndim == 0:
+        raise ValueError(f"hist must be an array of counts (last axis the bins), got "
+                         f"{hist.tolist()!r}")
     nbins = hist.shape[-1]
     if nbins == 0:
         raise ValueError("no energy shares were recorded")
-    x = float(share) * nbins
-    b = int(round(x))
-    if not (0 <= b <= nbins and abs(x - b) < 1e-9):
-        raise ValueError(f"share must be a multiple of 1/{nbins} in [0, 1] (the histogram's bin "
-                         f"edges), got {share!r}")
+    b = share_bin(share, nbins)
+    if np.any(hist < 0):
+        raise ValueError(f"hist must hold counts >= 0, got {hist.min():g}")
     total = hist.sum(axis=-1)
     if np.any(total == 0):
         raise ValueError("the histogram holds no samples")
