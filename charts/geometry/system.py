@@ -26,7 +26,7 @@ from .checks import finite_array, integer, number
 from .kernels import geometry
 from .projection import project_constraint, tangent_part
 from .structured import gauss_sectional
-from .topology import CRITICAL_RTOL, critical_points
+from .topology import CRITICAL_RTOL, check_weights, critical_points
 
 __all__ = ["RotorSystem", "TOL", "CriticalLevelWarning", "critical_levels"]
 
@@ -57,10 +57,7 @@ def critical_levels(weights) -> np.ndarray:
 def _check_family(n, weights, level):
     """Validated (weights, level); ValueError for bad or empty, warning for a critical level
     of any manifold but the paper's."""
-    a = np.ones(n) if weights is None else finite_array("weights", weights, shape=(n,))
-    if np.any(a <= 0):
-        raise ValueError(f"weights must be finite and positive (a negative weight is the rotor "
-                         f"turned by pi: theta -> theta + pi), got {a.tolist()}")
+    a = np.ones(n) if weights is None else check_weights(weights, n)
     level = number("level", level)
     total = float(a.sum())
     if abs(level) >= total * (1.0 - CRITICAL_RTOL):
