@@ -40,8 +40,10 @@ import sympy as sp
 from mpmath import iv
 
 from ..codegen.symbolic import ChartGeometry, weighted_sincos
+from ..geometry.checks import integer
 
-__all__ = ["CurvatureCertificate", "certify_curvature_sign", "sign_polynomials", "COVER_RATIOS"]
+__all__ = ["CurvatureCertificate", "certify_curvature_sign", "sign_polynomials", "COVER_RATIOS",
+           "MAX_BOXES"]
 
 #: The ratios r tried, in order, for the charts' parts |C| ≤ r aₖ, i.e. (aₖ sin θₖ)² ≥
 #: (1 − r²) aₖ²: the first whose cover is proved is used (√(2/3), D ≥ aₖ²/3, covers the
@@ -49,6 +51,10 @@ __all__ = ["CurvatureCertificate", "certify_curvature_sign", "sign_polynomials",
 COVER_RATIOS = (float(np.sqrt(2.0 / 3.0)), 0.9, 0.95, 0.99, 0.999)
 #: Smallest box side (in κ) before a box is left open: the certificate then says "undecided".
 MIN_WIDTH = 1e-9
+#: Most boxes per chart a certificate may examine (``max_boxes``): about 0.2 ms each
+#: (measured, mpmath intervals), so three charts of 10⁶ boxes are some ten minutes; the
+#: paper's surface needs 1525 per chart.
+MAX_BOXES = 10 ** 6
 
 
 def _interval(r):
@@ -220,8 +226,10 @@ def _chart_run(system, k, r, max_boxes):
 def certify_curvature_sign(system, *, max_boxes=200_000):
     """Prove the sign of the Gaussian curvature of the surface of ``system`` (N = 3: any
     masses, weights and smooth level) by the reduction, cover and branch and bound of the
-    module doc; returns a `CurvatureCertificate`."""
+    module doc; returns a `CurvatureCertificate`.  ``max_boxes``: the boxes examined per
+    chart before the rest is left open ("undecided"), an integer in 1..`MAX_BOXES`."""
     _system3(system)
+    max_boxes = integer("max_boxes", max_boxes, 1, MAX_BOXES)
     t0 = time.process_time()
     a = [_interval(w) for w in system.weights]
     c = _interval(system.level)

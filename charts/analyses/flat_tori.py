@@ -34,9 +34,21 @@ import numpy as np
 import sympy as sp
 
 from ..codegen.symbolic import ChartGeometry
+from ..geometry.checks import integer
 from ..solvers.tangent import TangentFlow
 
-__all__ = ["FlatTorusCertificate", "antipodal_torus", "certify_flat_torus"]
+__all__ = ["FlatTorusCertificate", "antipodal_torus", "certify_flat_torus", "torus_plan",
+           "MAX_TORUS_N", "MAX_TORUS_STEPS"]
+
+#: Most rotors whose torus is proved: the symbolic proof works in a chart of dimension N − 1
+#: (Christoffel symbols and Riemann tensor of (N − 1)³ and (N − 1)⁴ entries, simplified by
+#: SymPy); measured on one core: N = 4, 6, 8, 10, 12 took 2, 6, 15, 37, 81 s (odd N less:
+#: N = 9, 6.7 s), growing about 2.2 times per two rotors.
+MAX_TORUS_N = 12
+#: Most RK4 steps per period of the closed geodesic: 4096 (the default) already closes it to
+#: rounding; 2²⁰ steps of the 2N + 1 stacked vectors of N = 12 take about 2 s (80 ns a
+#: vector and step, measured).
+MAX_TORUS_STEPS = 1 << 20
 
 
 def antipodal_torus(system):
@@ -186,11 +198,35 @@ def _monodromy(system, pairs, lone, steps):
     return dict(theta0=theta.tolist(), u0=u.tolist(), period=period), out
 
 
+def torus_plan(system, steps=4096) -> int:
+    """``steps`` checked for `certify_flat_torus` of ``system`` before any work: a whole
+    number of RK4 steps per period in 1..`MAX_TORUS_STEPS`, and N at most `MAX_TORUS_N`
+    (the symbolic proof's cost); ValueError with the numbers otherwise."""
+    n = system.n
+    steps = integer("steps", steps, 1)
+    if steps > MAX_TORUS_STEPS:
+        work = steps * (2 * n + 1)
+        raise ValueError(f"steps={steps} RK4 steps per period, with the 2N + 1 = {2 * n + 1} "
+                         f"stacked vectors of N = {n}, is {work:.3g} vector steps (about "
+                         f"{work * 80e-9:.3g} s at 80 ns each), more than the {MAX_TORUS_STEPS} "
+                         "steps allowed; 4096 (the default) already closes the geodesic to "
+                         "rounding")
+    if n > MAX_TORUS_N:
+        raise ValueError(f"N = {n} rotors: the flat-torus proof works symbolically in a chart of "
+                         f"dimension {n - 1}, with {(n - 1) ** 3:.3g} Christoffel symbols and "
+                         f"{(n - 1) ** 4:.3g} curvature components to simplify; it took 81 s at "
+                         f"N = {MAX_TORUS_N} (about 2.2 times more per two rotors), so it is run "
+                         f"for N <= {MAX_TORUS_N} only")
+    return steps
+
+
 def certify_flat_torus(system, *, steps=4096) -> FlatTorusCertificate:
     """Prove (symbolically) the flat totally geodesic antipodal torus of ``system`` and
-    compute the monodromy of its closed geodesic (``steps`` RK4 steps per period); see the
-    module doc for what it implies."""
-    params = dict(**system.describe(), steps=int(steps))
+    compute the monodromy of its closed geodesic (``steps`` RK4 steps per period, a whole
+    number in 1..`MAX_TORUS_STEPS`; N at most `MAX_TORUS_N`: `torus_plan`, checked before
+    any work); see the module doc for what it implies."""
+    steps = torus_plan(system, steps)
+    params = dict(**system.describe(), steps=steps)
     found = antipodal_torus(system)
     if found is None:
         return FlatTorusCertificate("no antipodal torus", [], [], 0, [], None, None, params)
