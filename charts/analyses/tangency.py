@@ -36,7 +36,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..geometry.checks import finite_array, integer
 from ..geometry.projection import normals_of
+from ..geometry.system import plane_area2
+from ..geometry.topology import check_weights
 from ..solvers.tangent import TangentFlow
 from .arguments import positive_time, start_state
 from .covariant import covariant_lyapunov_vectors
@@ -55,29 +58,55 @@ def _oriented_basis(V):
 def oriented_volume(vectors, m, states, weights):
     """V(t) of the module docstring at each sample: ``vectors`` (S, D, 2N) the CLVs of the
     restricted variant (D = 2N − 2, unit, largest exponent first), ``m`` the dimension of
-    E_u, ``states`` (S, 2N), ``weights`` the constraint's weights.  Returns (S,)."""
-    vectors = np.asarray(vectors, dtype=float)
+    E_u, ``states`` (S, 2N), ``weights`` the constraint's weights.  Returns (S,), finite.
+
+    Degenerate input: CLVs that do not span their space (a zero vector, or E_u and E_cs
+    sharing a direction: a tangency) have V = 0, the volume of the parallelotope they span;
+    a state where the normals a, b of T_r are dependent (a singular point of the manifold,
+    every sin θᵢ = 0, where T_r is not defined) is refused with a ValueError naming the
+    sample, as is non-finite or mis-shaped input: V is never NaN."""
+    vectors = finite_array("vectors", vectors, ndim=3)
     S, D, d = vectors.shape
+    m = integer("m", m)
     if D != d - 2 or not 0 < m < D:
         raise ValueError(f"oriented_volume needs the {d - 2} CLVs of the restricted variant "
                          f"(T_r) and 0 < m < {d - 2}; got {D} vectors, m = {m}")
+    states = finite_array("states", states, shape=(S, d))
+    weights = check_weights(weights, d // 2)
     out = np.empty(S)
     for j in range(S):
         a, b = normals_of(np.ascontiguousarray(states[j]), weights)
+        try:
+            area2 = plane_area2(a @ a, b @ b, a @ b)
+        except ValueError:
+            raise ValueError(f"states[{j}] is a singular point of the manifold: the normals "
+                             "a = grad F, b = grad G of T_r there are zero or parallel, so T_r "
+                             "and the volume V are not defined") from None
         Qu = _oriented_basis(vectors[j, :m].T)
         Qc = _oriented_basis(vectors[j, m:].T)
-        G = np.array([[a @ a, a @ b], [a @ b, b @ b]])
-        out[j] = np.linalg.det(np.column_stack([Qu, Qc, a, b])) / np.sqrt(np.linalg.det(G))
+        out[j] = np.linalg.det(np.column_stack([Qu, Qc, a, b])) / np.sqrt(area2)
     return out
 
 
 def sign_changes(t, v):
     """Times where v changes sign between consecutive samples (linear interpolation), with
-    the smaller |v| of each bracketing pair: (times, margins)."""
-    t, v = np.asarray(t, float), np.asarray(v, float)
-    i = np.flatnonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)
+    the smaller |v| of each bracketing pair: (times, margins), in time order.  A sample where
+    v is exactly 0 is a crossing at its time with margin 0, whatever the signs around it (V =
+    0 is the tangency itself); consecutive zero samples are one crossing, at the middle of
+    their times.  ``t`` and ``v``: 1-D, finite, of one length (ValueError naming them)."""
+    v = finite_array("v", v, ndim=1)
+    t = finite_array("t", t, shape=(v.size,))
+    s = np.sign(v)
+    i = np.flatnonzero(s[:-1] * s[1:] < 0)
     times = t[i] + (t[i + 1] - t[i]) * v[i] / (v[i] - v[i + 1])
-    return times, np.minimum(np.abs(v[i]), np.abs(v[i + 1]))
+    margins = np.minimum(np.abs(v[i]), np.abs(v[i + 1]))
+    zero = np.concatenate([[False], s == 0, [False]])
+    starts = np.flatnonzero(zero[1:] & ~zero[:-1])        # runs of exact zeros
+    ends = np.flatnonzero(zero[:-1] & ~zero[1:]) - 1
+    times = np.concatenate([times, (t[starts] + t[ends]) / 2])
+    margins = np.concatenate([margins, np.zeros(starts.size)])
+    order = np.argsort(times, kind="stable")
+    return times[order], margins[order]
 
 
 @dataclass
