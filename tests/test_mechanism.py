@@ -82,6 +82,27 @@ def test_rotor_acceleration_is_eq8():
         np.testing.assert_allclose(mech.acceleration(q, v), dy[4:], rtol=0, atol=1e-13)
 
 
+def test_tangent_acceleration_is_eq17_and_matches_finite_differences():
+    from charts.flows.ambient import flow_tangent_rhs
+    m, a = np.array([1.0, 2.0, 0.5, 1.5]), np.array([1.0, 1.3, 0.8, 1.1])
+    mech = rotors(4, masses=m, weights=a, level=0.3)
+    rng = np.random.default_rng(0)
+    for seed in range(3):
+        q, v = mech.random_state(seed)
+        dq, dv = rng.normal(size=4), rng.normal(size=4)
+        dy, dX = np.empty(8), np.empty((1, 8))
+        flow_tangent_rhs(np.concatenate([q, v]), np.concatenate([dq, dv])[None], 1.0 / m, a, dy, dX)
+        np.testing.assert_allclose(mech.tangent_acceleration(q, v, dq, dv), dX[0, 4:], rtol=0,
+                                   atol=1e-13)
+    # a configuration-dependent metric (rods): central differences, h = 1e-6 (error ~ h²)
+    L = triple_linkage(0.3, joint_mass=0.2, rod_mass=0.5)
+    q, v = L.random_state(2)
+    dq, dv = rng.normal(size=5), rng.normal(size=5)
+    h = 1e-6
+    fd = (L.acceleration(q + h * dq, v + h * dv) - L.acceleration(q - h * dq, v - h * dv)) / (2 * h)
+    np.testing.assert_allclose(L.tangent_acceleration(q, v, dq, dv), fd, rtol=0, atol=1e-8)
+
+
 def test_ambient_equations_symbolic(rot3):
     v, acc, lam, eqs = rot3.ambient_equations()
     sol = sp.solve(eqs, [*acc, *lam], dict=True)[0]

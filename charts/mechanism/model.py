@@ -319,6 +319,30 @@ class Mechanism:
         sol = np.linalg.solve(K, rhs)
         return sol[:self.n], sol[self.n:]
 
+    def tangent_acceleration(self, q, v, dq, dv):
+        """The linearisation of ``acceleration`` (for tangent vectors, the analogue of eq (17)):
+        δq̈ at (q, v) along (δq, δv), shape (n,), from the differentiated KKT system
+        K δ(q̈, λ) = δb − δK (q̈, λ) (exact, with ∂²M and ∂³F; no finite differences)."""
+        q, v = self._point(q), self._point(v, "v")
+        dq, dv = self._point(dq, "dq"), self._point(dv, "dv")
+        K, M, J = self._kkt(q)
+        dM, d2M, F2 = self._eval("dM", q), self._eval("d2M", q), self._eval("F2", q)
+        C = np.einsum("ikj,j,k->i", dM, v, v) - 0.5 * np.einsum("jki,j,k->i", dM, v, v)
+        b = np.concatenate([-C, -np.einsum("cij,i,j->c", F2, v, v)])
+        x = np.linalg.solve(K, b)
+        dJ = np.einsum("cil,l->ci", F2, dq)
+        dK = np.zeros_like(K)
+        dK[:self.n, :self.n] = np.einsum("ijl,l->ij", dM, dq)
+        dK[:self.n, self.n:] = -dJ.T
+        dK[self.n:, :self.n] = dJ
+        W = dM - 0.5 * dM.transpose(2, 1, 0)            # W[i, k, j] = ∂_j M_ik − ½ ∂_i M_jk
+        dC = (np.einsum("ikjl,j,k,l->i", d2M, v, v, dq)
+              - 0.5 * np.einsum("jkil,j,k,l->i", d2M, v, v, dq)
+              + np.einsum("ikj,j,k->i", W, dv, v) + np.einsum("ikj,j,k->i", W, v, dv))
+        db = np.concatenate([-dC, -np.einsum("cijl,i,j,l->c", self._eval("F3", q), v, v, dq)
+                             - 2.0 * np.einsum("cij,i,j->c", F2, v, dv)])
+        return np.linalg.solve(K, db - dK @ x)[:self.n]
+
     def acceleration(self, q, v):
         """q̈ of the ambient constrained equations of motion at (q, v), shape (n,)."""
         return self.multiplier_and_acceleration(q, v)[0]
