@@ -387,6 +387,18 @@ class Mechanism:
         sol = np.linalg.solve(K, np.concatenate([M @ v, np.zeros(self.k)]))
         return sol[:self.n]
 
+    def project_phase_tangent(self, q, v, dq, dv):
+        """The projection of a phase-space tangent vector (δq, δv) at (q, v) onto the tangent
+        space of TC = {F = 0, J v = 0}: the linearised constraints J δq = 0 and
+        J δv + ∂²F(v, δq) = 0, each part M-orthogonally (KKT solves).  Returns (δq', δv')."""
+        q, v = self._point(q), self._point(v, "v")
+        dq = self.project_velocity(q, dq)
+        dv = self._point(dv, "dv")
+        K, M, J = self._kkt(q)
+        K[:self.n, self.n:] = J.T
+        rhs = np.concatenate([M @ dv, -np.einsum("cij,i,j->c", self._eval("F2", q), v, dq)])
+        return dq, np.linalg.solve(K, rhs)[:self.n]
+
     def tangent_basis(self, q):
         """An orthonormal (Euclidean) basis of ker J(q), shape (n, d)."""
         J = self.check_rank(q)
