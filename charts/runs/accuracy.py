@@ -1,6 +1,6 @@
 """What accuracy costs in time: work–precision study behind ``charts bench accuracy``.
 
-Three questions, each answered by error against wall time (log–log), one point per setting:
+Three questions, each answered by error against CPU time (log–log), one point per setting:
 
 (a) **trajectory** — the state (θ, u) at a fixed time T from one initial state, against a
     reference from ambient DOP853 at rtol = 1e-14 (its own error is estimated by the
@@ -15,16 +15,27 @@ Three questions, each answered by error against wall time (log–log), one point
     eq (22) at the same points (median relative error), against its cost; the exact route
     (generated Riemann tensor) as one point.
 
-Wall time is the best of ``repeat`` runs after a warm-up run (compilation excluded).  In
-(a) the runs to T last milliseconds, so the cost is timed on a run ``COST_FACTOR`` times
-longer from the same state and scaled back to T (the error is that of the run to T).
-Outputs in the output folder: ``accuracy.png`` (three panels), ``accuracy.md`` (the
-table), ``accuracy.json`` (every number).
+The cost is CPU time (``time.process_time``, as the project's other benchmarks: blind to
+the time-slicing of other jobs on a shared machine, where wall time zigzags), the best of
+``repeat`` runs after a warm-up run (compilation excluded).  In (a) the runs to T last
+milliseconds, so the cost is timed on a run ``COST_FACTOR`` times longer from the same state
+and scaled back to T (the error is that of the run to T).  Warnings raised during the study
+(numba's, numpy's, ``ErrorBarWarning``…) and the lines the library prints on stderr (its
+compilation notices) are collected while the progress bar runs and reported once after it
+closes, and in ``accuracy.md``.  Outputs in the output folder: ``accuracy.png`` (four
+panels: the trajectory study split by formulation, ambient | chart, each with SciPy's
+solve_ivp as the shared baseline and the reference floor; the Lyapunov and curvature
+studies), ``accuracy.md`` (the headline, the table, the warnings), ``accuracy.json`` (every
+number).
 """
 from __future__ import annotations
 
+import contextlib
+import io
 import json
+import sys
 import time
+import warnings
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -33,13 +44,18 @@ import numpy as np
 from ..geometry.system import RotorSystem
 from .cli_parser import OneLineParser
 
-__all__ = ["Point", "trajectory_study", "lyapunov_study", "curvature_study", "run_study", "main"]
+__all__ = ["Point", "trajectory_study", "lyapunov_study", "curvature_study", "run_study",
+           "headline", "table", "report", "draw_figure", "figure", "main"]
 
 #: Reference tolerance of the trajectory study (the smallest rtol the DOP853 estimate
 #: still tracks, one decade above rounding).
 REFERENCE_RTOL = 1e-14
 #: (a): the cost is timed over COST_FACTOR·T and divided by COST_FACTOR (less timer noise).
 COST_FACTOR = 10
+#: The clock of every cost: CPU time of this process (the words the outputs use).
+CLOCK = "CPU time (time.process_time), best of `repeat` runs after a warm-up"
+#: The headline compares DOP853 with RK4 at the paper's step.
+HEADLINE_DT = 0.01
 
 PRESETS = {
     "quick": dict(T=10.0, dts=(0.04, 0.02, 0.01, 0.005), rtols=(1e-5, 1e-7, 1e-9, 1e-11, 1e-13),
@@ -56,25 +72,30 @@ PRESETS = {
 
 @dataclass
 class Point:
-    """One setting of one method: its error, wall time (s) and work."""
+    """One setting of one method: its error, CPU time (s, ``time.process_time``) and work."""
     study: str
     method: str
     setting: str
     value: float
     error: float
-    wall: float
+    cpu: float
     rhs: int = 0
     note: str = ""
     stderr: float = float("nan")       # statistical error of ``error`` (Lyapunov study)
 
 
+#: The SciPy baseline's method name in the points.
+SCIPY = "scipy solve_ivp DOP853 (ambient)"
+
+
 def _timed(fn, repeat):
+    """(best CPU seconds of ``repeat`` calls of fn after a warm-up call, fn's last result)."""
     fn()                                   # warm-up: compilation, caches
     best, out = np.inf, None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
+    for _ in range(max(1, int(repeat))):
+        c0 = time.process_time()
         out = fn()
-        best = min(best, time.perf_counter() - t0)
+        best = min(best, time.process_time() - c0)
     return best, out
 
 
@@ -115,11 +136,11 @@ def trajectory_study(n=4, seed=0, T=20.0, dts=(0.02, 0.01), rtols=(1e-8, 1e-11),
     points = []
     for tag, setting, value, kw in jobs:
         res = integrate(system, theta0, u0, T, **kw)
-        wall, _ = _timed(lambda kw=kw: integrate(system, theta0, u0, COST_FACTOR * T, **kw),
-                         repeat)
-        wall /= COST_FACTOR
+        cpu, _ = _timed(lambda kw=kw: integrate(system, theta0, u0, COST_FACTOR * T, **kw),
+                        repeat)
+        cpu /= COST_FACTOR
         err = float(np.max(np.abs(state(res) - ref_amb)))
-        points.append(Point("trajectory", tag, setting, value, err, wall, res.n_rhs))
+        points.append(Point("trajectory", tag, setting, value, err, cpu, res.n_rhs))
         if progress:
             progress()
     minv = system.minv
@@ -133,12 +154,12 @@ def trajectory_study(n=4, seed=0, T=20.0, dts=(0.02, 0.01), rtols=(1e-8, 1e-11),
     y0 = np.concatenate([theta0, u0])
     for rtol in rtols:
         res = solve_ivp(f, (0.0, T), y0, method="DOP853", rtol=rtol, atol=rtol * 1e-2)
-        wall, _ = _timed(lambda r=rtol: solve_ivp(f, (0.0, COST_FACTOR * T), y0, method="DOP853",
-                                                  rtol=r, atol=r * 1e-2), repeat)
-        wall /= COST_FACTOR
+        cpu, _ = _timed(lambda r=rtol: solve_ivp(f, (0.0, COST_FACTOR * T), y0, method="DOP853",
+                                                 rtol=r, atol=r * 1e-2), repeat)
+        cpu /= COST_FACTOR
         err = float(np.max(np.abs(res.y[:, -1] - ref_amb)))
-        points.append(Point("trajectory", "scipy solve_ivp DOP853 (ambient)", f"rtol={rtol:g}",
-                            rtol, err, wall, int(res.nfev)))
+        points.append(Point("trajectory", SCIPY, f"rtol={rtol:g}", rtol, err, cpu,
+                            int(res.nfev)))
         if progress:
             progress()
     return points, {"n": n, "seed": seed, "T": T, "reference": f"ambient DOP853 rtol="
@@ -150,7 +171,7 @@ def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, 
                    members=4):
     """|λ̄₁(dt) − λ̄₁(ref_dt)| for N = 3: λ̄₁ is the mean over ``members`` trajectories
     (seeds seed, seed+1, …) each averaged over time T; its standard error is the spread of
-    the members / √members.  The cost is the wall time of all members (run one after the
+    the members / √members.  The cost is the CPU time of all members (run one after the
     other).  A single finite-T estimate differs from another by its statistical error
     whatever the step, so the step's bias only shows where it exceeds that error."""
     from ..analyses.lyapunov import lyapunov_spectrum
@@ -174,12 +195,12 @@ def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, 
         progress()
     points = []
     for dt in dts:
-        wall, lam = _timed(lambda dt=dt: ensemble(dt), repeat) if repeat > 1 else \
-            _untimed_warm(lambda dt=dt: ensemble(dt))
+        cpu, lam = _timed(lambda dt=dt: ensemble(dt), repeat) if repeat > 1 else \
+            _timed_once(lambda dt=dt: ensemble(dt))
         se = float(standard_error(lam))
         steps = members * int(round((T + 50.0) / dt))
         points.append(Point("lyapunov", "RK4 + QR (eq 17, 18)", f"dt={dt:g}", dt,
-                            abs(float(lam.mean()) - lam_ref), wall, 4 * steps,
+                            abs(float(lam.mean()) - lam_ref), cpu, 4 * steps,
                             note=f"lambda1={lam.mean():.5f}+-{se:.5f}",
                             stderr=float(np.hypot(se, se_ref))))
         if progress:
@@ -188,11 +209,11 @@ def lyapunov_study(seed=0, T=2000.0, dts=(0.04, 0.01), ref_dt=0.0025, repeat=1, 
                     "lambda1_reference": lam_ref, "stderr_at_T": se_ref, "paper": 0.500}
 
 
-def _untimed_warm(fn):
-    """One timed run (the kernels are compiled by the reference run already)."""
-    t0 = time.perf_counter()
+def _timed_once(fn):
+    """CPU seconds of one run (the kernels are compiled by the reference run already)."""
+    c0 = time.process_time()
     out = fn()
-    return time.perf_counter() - t0, out
+    return time.process_time() - c0, out
 
 
 # ------------------------------------------------------------------------------- (c)
@@ -208,7 +229,7 @@ def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
     last = None
     for dt in dts:
         every = max(1, int(round(0.1 / dt))) * dt
-        wall, res = _timed(lambda dt=dt, every=every: curvature_along_trajectory(
+        cpu, res = _timed(lambda dt=dt, every=every: curvature_along_trajectory(
             system, theta0, u0, T, dt=dt, sample_every=every, t_transient=10.0, exact=False,
             seed=seed), repeat)
         K = res.K_numeric[:, 0, 0]
@@ -216,7 +237,7 @@ def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
         err = float(np.median(np.abs(K - K22) / np.abs(K22)))
         steps = int(round((T + 10.0) / dt))
         points.append(Point("curvature", "numerical route (eqs 19-21)", f"dt={dt:g}", dt, err,
-                            wall, 4 * steps + 8 * K.size, note=f"{K.size} samples"))
+                            cpu, 4 * steps + 8 * K.size, note=f"{K.size} samples"))
         last = res
         if progress:
             progress()
@@ -226,43 +247,146 @@ def curvature_study(seed=0, T=20.0, dts=(0.02, 0.01), repeat=1, progress=None):
     def exact():
         return exact_curvatures(system, th, fr)[:, 0, 0]
 
-    wall, Ke = _timed(exact, repeat)
+    cpu, Ke = _timed(exact, repeat)
     err = float(np.median(np.abs(Ke - gaussian_curvature_eq22(th)) /
                           np.abs(gaussian_curvature_eq22(th))))
     points.append(Point("curvature", "exact route (Riemann tensor), added cost",
-                        f"{len(th)} points", float("nan"), err, wall, 0,
+                        f"{len(th)} points", float("nan"), err, cpu, 0,
                         note="evaluated at the points of the smallest dt"))
     return points, {"T": T, "seed": seed}
 
 
 # ------------------------------------------------------------------------------- driver
+def _warning_lines(caught) -> list:
+    """The recorded warnings, each distinct one once: {category, message, where, count}."""
+    seen = {}
+    for w in caught:
+        key = (w.category.__name__, str(w.message), f"{Path(w.filename).name}:{w.lineno}")
+        seen[key] = seen.get(key, 0) + 1
+    return [dict(category=c, message=m, where=where, count=k)
+            for (c, m, where), k in seen.items()]
+
+
+def _notice_lines(text) -> list:
+    """The distinct non-empty lines printed on stderr during the study, in order."""
+    out = []
+    for line in text.splitlines():
+        line = line.strip()
+        if line and line not in out:
+            out.append(line)
+    return out
+
+
 def run_study(preset="quick", n=4, seed=0, progress=True):
+    """Every point of the preset, the studies' information, the headline, and the warnings
+    and stderr notices raised meanwhile (collected, never printed into the progress bar: the
+    caller reports them once, :func:`report_warnings`)."""
     p = PRESETS[preset]
     total = (4 * (len(p["dts"]) + len(p["rtols"])) + len(p["rtols"]) + len(p["lyap_dts"]) + 1
              + len(p["curv_dts"]))
     from tqdm.auto import tqdm
-    bar = tqdm(total=total, desc=f"accuracy ({preset})", disable=not progress, leave=False)
+    w0, c0 = time.perf_counter(), time.process_time()
+    bar = tqdm(total=total, desc=f"accuracy ({preset})", disable=not progress, leave=False,
+               file=sys.stderr)          # the bar keeps the real stderr; notices go aside
     tick = bar.update
-    a, ia = trajectory_study(n, seed, p["T"], p["dts"], p["rtols"], p["repeat"], tick)
-    b, ib = lyapunov_study(seed, p["lyap_T"], p["lyap_dts"], p["lyap_ref"], 1, tick,
-                           p["lyap_members"])
-    c, ic = curvature_study(seed, p["curv_T"], p["curv_dts"], p["repeat"], tick)
+    notices = io.StringIO()
+    try:
+        with warnings.catch_warnings(record=True) as caught, \
+                contextlib.redirect_stderr(notices):
+            a, ia = trajectory_study(n, seed, p["T"], p["dts"], p["rtols"], p["repeat"], tick)
+            b, ib = lyapunov_study(seed, p["lyap_T"], p["lyap_dts"], p["lyap_ref"], 1, tick,
+                                   p["lyap_members"])
+            c, ic = curvature_study(seed, p["curv_T"], p["curv_dts"], p["repeat"], tick)
+    except BaseException:            # a failed or interrupted study: what it printed, as is
+        bar.close()
+        sys.stderr.write(notices.getvalue())
+        raise
     bar.close()
-    return {"preset": preset, "trajectory": ia, "lyapunov": ib, "curvature": ic,
-            "points": [asdict(x) for x in a + b + c]}
+    study = {"preset": preset, "clock": CLOCK, "repeat": p["repeat"],
+             "cost_factor": COST_FACTOR, "trajectory": ia, "lyapunov": ib, "curvature": ic,
+             "points": [asdict(x) for x in a + b + c],
+             "warnings": _warning_lines(caught), "notices": _notice_lines(notices.getvalue()),
+             "duration": {"wall_s": time.perf_counter() - w0,
+                          "cpu_s": time.process_time() - c0}}
+    study["headline"] = headline(study)
+    return study
+
+
+def _headline_pair(study):
+    """(RK4 point, DOP853 point): ambient RK4 at the dt nearest `HEADLINE_DT`, and the
+    loosest ambient DOP853 rtol whose error is no larger (the most accurate one if none is);
+    the errors are deterministic, so the pair is too — only its costs vary between runs."""
+    traj = [q for q in study["points"] if q["study"] == "trajectory"]
+    rk4 = [q for q in traj if q["method"] == "ambient RK4"]
+    dop = [q for q in traj if q["method"] == "ambient DOP853"]
+    if not rk4 or not dop:
+        return None
+    rk = min(rk4, key=lambda q: abs(np.log(q["value"] / HEADLINE_DT)))
+    good = [q for q in dop if q["error"] <= rk["error"]]
+    dp = max(good, key=lambda q: q["value"]) if good else min(dop, key=lambda q: q["error"])
+    return rk, dp
+
+
+def _ms(seconds) -> str:
+    """Milliseconds to two significant digits, trailing zeros kept (0.40, 1.0), whole
+    milliseconds from 10 on (12, 123)."""
+    ms = 1e3 * seconds
+    return f"{ms:.0f}" if ms >= 9.95 else f"{ms:#.2g}"
+
+
+def headline(study) -> str:
+    """The one sentence quoted in the README and docs/accuracy.md, from the study."""
+    pair = _headline_pair(study)
+    if pair is None:
+        return ""
+    rk, dp = pair
+    info = study["trajectory"]
+    return (f"N = {info['n']}, t = {info['T']:g}: ambient DOP853 at rtol = {dp['value']:g} "
+            f"reaches {dp['error']:.1e} in {_ms(dp['cpu'])} ms of CPU time, against "
+            f"{_ms(rk['cpu'])} ms for ambient RK4 at dt = {rk['value']:g} "
+            f"({rk['error']:.1e}): {rk['cpu'] / dp['cpu']:.1f}× cheaper")
 
 
 def table(study: dict) -> str:
     """The markdown table of every point."""
-    rows = ["| study | method | setting | error | wall time (ms) | rhs evaluations |",
+    rows = ["| study | method | setting | error | CPU time (ms) | rhs evaluations |",
             "|---|---|---|---|---|---|"]
     for q in study["points"]:
         err = f"{q['error']:.2e}"
         if q["stderr"] == q["stderr"]:          # not NaN: a statistical error is known
             err += f" ± {q['stderr']:.1e}"
         rows.append(f"| {q['study']} | {q['method']} | {q['setting']} | {err} | "
-                    f"{1e3 * q['wall']:.1f} | {q['rhs'] or '—'} |")
+                    f"{1e3 * q['cpu']:.2f} | {q['rhs'] or '—'} |")
     return "\n".join(rows)
+
+
+def warnings_text(study: dict) -> str:
+    """The warnings and stderr notices of the study, one line each ("none" if none)."""
+    lines = [f"- {w['category']}: {w['message']} ({w['where']}"
+             + (f", {w['count']} times)" if w["count"] > 1 else ")")
+             for w in study.get("warnings", [])]
+    lines += [f"- stderr: {x}" for x in study.get("notices", [])]
+    return "\n".join(lines) if lines else "none"
+
+
+def report(study: dict) -> str:
+    """``accuracy.md``: the headline, the clock, the table, the warnings."""
+    return "\n".join([
+        f"Headline: {study.get('headline', '')}", "",
+        f"Cost: {study.get('clock', CLOCK)} (repeat = {study.get('repeat', '?')}); trajectory "
+        f"runs timed over {study.get('cost_factor', COST_FACTOR)}·T and scaled back to T.", "",
+        table(study), "",
+        "## Warnings during the study", "",
+        warnings_text(study)])
+
+
+def report_warnings(study: dict, file=None) -> None:
+    """Print the study's warnings and notices once (after the progress bar has closed)."""
+    file = sys.stderr if file is None else file
+    k = len(study.get("warnings", [])) + len(study.get("notices", []))
+    if k:
+        print(f"charts bench accuracy: {k} warning(s) or notice(s) during the study "
+              f"(also in accuracy.md):\n{warnings_text(study)}", file=file, flush=True)
 
 
 def figure(study: dict, path: Path) -> None:
@@ -272,62 +396,96 @@ def figure(study: dict, path: Path) -> None:
     save_png(draw_figure(study), path)
 
 
+#: The trajectory panels' series of one formulation: (suffix, colour, line, marker).
+_SERIES = (("RK4", "C0", "-", "s"), ("RK4 + projection", "C0", "--", "s"),
+           ("DOP853", "C3", "-", "o"), ("DOP853 + projection", "C3", "--", "o"))
+#: Errors below this (exact zeros) are drawn at it on the log axes.
+_FLOOR = 1e-16
+
+
+def _right(ax):
+    """The legend right of the axes, off the data (the project's figures' place)."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+
+
+def _trajectory_panel(ax, study, form, letter, mark=None):
+    pts = [q for q in study["points"] if q["study"] == "trajectory"]
+    info = study["trajectory"]
+    for suffix, color, line, marker in _SERIES:
+        qs = [q for q in pts if q["method"] == f"{form} {suffix}"]
+        if qs:
+            ax.loglog([1e3 * q["cpu"] for q in qs], [max(q["error"], _FLOOR) for q in qs],
+                      line, color=color, marker=marker, ms=4,
+                      mfc="none" if "projection" in suffix else color, label=suffix)
+    qs = [q for q in pts if q["method"] == SCIPY]
+    if qs:
+        ax.loglog([1e3 * q["cpu"] for q in qs], [max(q["error"], _FLOOR) for q in qs], ":",
+                  color="0.45", marker="x", ms=5, label="SciPy solve_ivp DOP853\n(baseline)")
+    if mark:
+        for q, dy in zip(mark, (6, -14)):    # RK4's label above, DOP853's below its ring
+            ax.loglog([1e3 * q["cpu"]], [max(q["error"], _FLOOR)], "o", ms=11, mfc="none",
+                      mec="k", mew=1.0)
+            ax.annotate(q["setting"].replace("=", " = "), (1e3 * q["cpu"], q["error"]),
+                        xytext=(8, dy), textcoords="offset points", fontsize=7)
+        ax.plot([], [], "o", ms=9, mfc="none", mec="k", label="headline pair")
+    ax.axhline(max(info["reference_error"], _FLOOR), color="k", lw=0.7, ls="-.",
+               label="reference floor")
+    ax.set_xlabel(f"CPU time of one run to t = {info['T']:g} (ms)")
+    ax.set_ylabel(f"max error of (θ, u) at t = {info['T']:g} (rad, rad / time unit)")
+    ax.set_title(f"({letter}) trajectory, {form} formulation, N = {info['n']}")
+    _right(ax)
+
+
 def draw_figure(study: dict):
-    """The three work–precision panels of the study, a matplotlib Figure."""
-    from matplotlib.ticker import FormatStrFormatter, LogLocator, MaxNLocator, NullFormatter
+    """The four work–precision panels of the study (a matplotlib Figure): the trajectory
+    study split by formulation (ambient | chart, the same axes, SciPy's solve_ivp and the
+    reference floor in both), the Lyapunov and the curvature studies."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, MaxNLocator, NullFormatter
 
     from ..plotting.style import new_figure
 
     pts = study["points"]
-    fig, axes = new_figure(1, 3, figsize=(15, 6.2))
-    below = dict(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2)   # off the data
-    floor = 1e-16
-    ax = axes[0]
-    methods = sorted({q["method"] for q in pts if q["study"] == "trajectory"})
-    for m in methods:
-        qs = [q for q in pts if q["method"] == m and q["study"] == "trajectory"]
-        style = "--" if "projection" in m else "-"
-        marker = "s" if "RK4" in m else ("x" if "scipy" in m else "o")
-        ax.loglog([q["wall"] for q in qs], [max(q["error"], floor) for q in qs], style,
-                  marker=marker, ms=4, label=m)
-    ref = study["trajectory"]["reference_error"]
-    ax.axhline(max(ref, floor), color="k", lw=0.6, ls=":", label="reference uncertainty")
-    ax.set_xlabel("wall time (s)")
-    ax.set_ylabel(f"max |state − reference| at t = {study['trajectory']['T']:g}")
-    ax.set_title(f"(a) trajectory, N = {study['trajectory']['n']}")
-    ax.legend(fontsize=6.5, **below)
-    ax = axes[1]
+    fig, grid = new_figure(2, 2, figsize=(13, 9.5))
+    axes = list(grid.ravel())
+    pair = _headline_pair(study)
+    _trajectory_panel(axes[0], study, "ambient", "a", mark=pair)
+    _trajectory_panel(axes[1], study, "chart", "b")
+    axes[1].sharex(axes[0])
+    axes[1].sharey(axes[0])
+    ax = axes[2]
     qs = [q for q in pts if q["study"] == "lyapunov"]
     L = study["lyapunov"]
     lam = [float(q["note"].split("=")[1].split("+-")[0]) for q in qs]
-    ax.errorbar([q["wall"] for q in qs], [x - L["lambda1_reference"] for x in lam],
+    ax.errorbar([1e3 * q["cpu"] for q in qs], [x - L["lambda1_reference"] for x in lam],
                 yerr=[q["stderr"] for q in qs], fmt="-o", ms=4, capsize=3,
-                label="λ̄₁(dt) − λ̄₁(dt_ref), ± standard error")
-    for q, x in zip(qs, lam):
-        ax.annotate(q["setting"], (q["wall"], x - L["lambda1_reference"]), fontsize=7,
-                    xytext=(3, 3), textcoords="offset points")
+                label="λ̄₁(dt) − λ̄₁(dt_ref)\n± standard error")
+    for i, (q, x) in enumerate(zip(qs, lam)):    # labels above and below in turn: apart
+        ax.annotate(q["setting"], (1e3 * q["cpu"], x - L["lambda1_reference"]), fontsize=7,
+                    xytext=(4, 4 if i % 2 == 0 else -11), textcoords="offset points")
     ax.axhline(0.0, color="k", lw=0.6)
     ax.axhline(L["paper"] - L["lambda1_reference"], color="g", ls=":", lw=0.8,
-               label="paper (0.500)")
+               label=f"paper ({L['paper']:.3f})")
     ax.set_xscale("log")
-    ax.set_xlabel(f"wall time (s), {L['members']} trajectories × T = {L['T']:g}")
-    ax.set_ylabel(f"λ̄₁ − λ̄₁(dt = {L['reference_dt']:g}) = {L['lambda1_reference']:.4f}")
-    ax.set_title("(b) leading Lyapunov exponent, N = 3")
-    ax.legend(fontsize=7, **below)
-    ax = axes[2]
+    ax.set_xlabel(f"CPU time of {L['members']} trajectories × T = {L['T']:g} (ms)")
+    ax.set_ylabel(f"λ̄₁ − λ̄₁(dt = {L['reference_dt']:g}) (1 / time unit)")
+    ax.set_title(f"(c) leading Lyapunov exponent, N = 3 "
+                 f"(λ̄₁(dt_ref) = {L['lambda1_reference']:.4f})")
+    _right(ax)
+    ax = axes[3]
     qs = [q for q in pts if q["study"] == "curvature" and "numerical" in q["method"]]
-    ax.loglog([q["wall"] for q in qs], [q["error"] for q in qs], "-o", ms=4,
-              label="numerical route (19)–(21)")
+    ax.loglog([1e3 * q["cpu"] for q in qs], [q["error"] for q in qs], "-o", ms=4,
+              label="numerical route\n(eqs 19–21)")
     for q in qs:
-        ax.annotate(q["setting"], (q["wall"], q["error"]), fontsize=7)
+        ax.annotate(q["setting"], (1e3 * q["cpu"], q["error"]), fontsize=7, xytext=(3, 3),
+                    textcoords="offset points")
     ex = [q for q in pts if q["study"] == "curvature" and "exact" in q["method"]]
     if ex:
-        ax.loglog([ex[0]["wall"]], [max(ex[0]["error"], floor)], "k*", ms=9,
-                  label="exact route (added cost)")
-    ax.set_xlabel("wall time (s)")
-    ax.set_ylabel("median |K − K_eq22| / |K_eq22|")
-    ax.set_title("(c) N = 3 curvature vs eq (22)")
-    ax.legend(fontsize=7, **below)
+        ax.loglog([1e3 * ex[0]["cpu"]], [max(ex[0]["error"], _FLOOR)], "k*", ms=9,
+                  label="exact route\n(added cost)")
+    ax.set_xlabel("CPU time (ms)")
+    ax.set_ylabel("median |K − K_eq22| / |K_eq22| (relative)")
+    ax.set_title("(d) N = 3 curvature against eq (22)")
+    _right(ax)
     for ax in axes:   # x labels readable at any span: two or more powers of 10 inside the
         lo, hi = ax.get_xlim()      # axis: those only; else 1-2-5 labels; narrower than 4x: plain
         decades = np.floor(np.log10(hi)) - np.ceil(np.log10(lo)) + 1
@@ -336,7 +494,8 @@ def draw_figure(study: dict):
         elif decades < 2:
             ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
         if decades < 2:
-            ax.xaxis.set_major_formatter(FormatStrFormatter("%.2g"))
+            ax.xaxis.set_major_formatter(FuncFormatter(lambda x, _: f"{x:.2g}".replace(
+                "e+0", "e").replace("e-0", "e-") if not 1e-3 <= x < 1e4 else f"{x:g}"))
         ax.xaxis.set_minor_formatter(NullFormatter())
     return fig
 
@@ -344,16 +503,18 @@ def draw_figure(study: dict):
 def main(argv=None, quiet=False) -> int:
     ap = OneLineParser(
         prog="charts bench accuracy",
-        description="Work–precision diagrams: error against wall time for the trajectory "
+        description="Work–precision diagrams: error against CPU time for the trajectory "
         "(every formulation and method, with and without projection), the leading Lyapunov "
         "exponent and the N = 3 curvature. Writes accuracy.png, accuracy.md, accuracy.json.")
     ap.add_argument("--quick", action="store_true",
-                    help="fewer settings, shorter times, one timing repeat (about a minute)")
+                    help="fewer settings, shorter times, two timing repeats "
+                    "(about 10 s once compiled)")
     ap.add_argument("-o", "--output", type=Path, default=Path("bench-accuracy"), metavar="DIR",
                     help="output folder (default: ./bench-accuracy)")
     ap.add_argument("--n", type=int, default=4, help="N of the trajectory study (default 4)")
     ap.add_argument("--seed", type=int, default=0, help="seed of the initial states")
-    ap.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    ap.add_argument("--quiet", "-q", action="store_true",
+                    help="no progress bar and no table (warnings are still reported)")
     args = ap.parse_args(argv)
     if not 3 <= args.n <= 6:
         ap.error(f"--n {args.n}: expected 3..6")
@@ -362,14 +523,19 @@ def main(argv=None, quiet=False) -> int:
     study = run_study("quick" if args.quick else "full", args.n, args.seed, progress=not quiet)
     out = args.output
     out.mkdir(parents=True, exist_ok=True)
-    figure(study, out / "accuracy.png")      # written atomically by plotting.save_png
-    md = table(study)
-    atomic_write(out / "accuracy.md", (md + "\n").encode())
+    with warnings.catch_warnings(record=True) as caught:      # the figure's, reported too
+        figure(study, out / "accuracy.png")      # written atomically by plotting.save_png
+    study["warnings"] += _warning_lines(caught)
+    atomic_write(out / "accuracy.md", (report(study) + "\n").encode())
     atomic_write(out / "accuracy.json", json.dumps(study, indent=1).encode())
     if not quiet:
-        print(md)
+        print(table(study))
         print(f"\nreference uncertainty (a): {study['trajectory']['reference_error']:.1e}; "
               f"λ₁ reference {study['lyapunov']['lambda1_reference']:.5f} ± "
               f"{study['lyapunov']['stderr_at_T']:.5f} (paper 0.500)")
+        print(f"headline: {study['headline']}")
+        print(f"study: {study['duration']['wall_s']:.0f} s wall, "
+              f"{study['duration']['cpu_s']:.0f} s CPU")
         print(f"wrote {out}/accuracy.png, accuracy.md, accuracy.json")
+    report_warnings(study)
     return 0
