@@ -303,3 +303,95 @@ def test_auto_works_where_50_is_no_whole_number_of_steps():
     tr = r.params["t_transient"]
     assert 50.0 - 0.03 <= tr <= 5000.0 and abs(tr / 0.03 - round(tr / 0.03)) < 1e-6
     assert r.params["transient_rule"].startswith("auto")
+
+
+# 6. charts verdict: every N, setting and output path before any work
+
+@pytest.fixture
+def no_work(monkeypatch):
+    """The reports of ``charts verdict`` made to fail the test if one starts."""
+    import charts.runs.verdict as verdict
+
+    def started(*args, **kwargs):
+        raise AssertionError("a report started before every argument was checked")
+    for name in ("surface_verdict", "torus_verdict", "statistics_verdict"):
+        monkeypatch.setattr(verdict, name, started)
+
+
+def _refused(capsys, argv, *words):
+    from charts.cli.main import main
+    t0 = time.perf_counter()
+    assert main(["verdict", *argv]) == 2
+    assert time.perf_counter() - t0 < 5.0
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("charts: error: ") and "\n" not in err, err
+    for w in words:
+        assert w in err, (w, err)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--n", "100000"], ["N = 100000 rotors", "N <= 12"]),
+    (["--n", "4", "300"], ["N = 300 rotors", "dimension 299"]),
+    (["--n", "4", "3", "--grid", "5"], ["--grid must be an integer in 8..16384, got 5"]),
+    (["--n", "4", "3", "--t-final", "nan"], ["--t-final must be finite, got nan"]),
+    (["--n", "4", "3", "--t-final", "-1"], ["--t-final must be positive, got -1.0"]),
+    (["--n", "4", "3", "--t-final", "0.015"], ["t_final=0.015 is not a whole number of steps"]),
+    (["--n", "4", "3", "--seeds", "1", "-1"], ["--seeds must be an integer >= 0, got -1"]),
+    (["--n", "4", "2"], ["n must be >= 3", "n=2"]),
+    (["--n", "3", "--level", "1"], ["level=1.0 is a critical value"]),
+    (["--n", "4", "13"], ["N = 13 rotors", "1,728 Christoffel symbols"])])
+def test_verdict_checks_every_n_and_setting_before_the_first_report(capsys, no_work, argv,
+                                                                     words):
+    _refused(capsys, argv, *words)
+
+
+def test_verdict_statistics_plans_every_system_first(capsys, no_work, tmp_path):
+    base = ["--statistics", "--device", "cpu", "--samples", "400", "--members", "2"]
+    _refused(capsys, base + ["--n", "3", "100000"], "N = 100000: on the CPU each member keeps",
+             "MB for T = 20")
+    _refused(capsys, base + ["--n", "3", "--t-transient", "nan"], "--t-transient must be finite")
+    _refused(capsys, base + ["--n", "3", "--t-transient", "0.015"],
+             "N = 3: t_transient=0.015 is not a whole number of steps")
+    (tmp_path / "f").write_text("")
+    _refused(capsys, base + ["--n", "3", "--out", str(tmp_path / "f")],
+             "--out", "is a file, not a folder")
+    _refused(capsys, base + ["--n", "3", "--out", str(tmp_path / "f" / "sub")],
+             "is a file, so no folder can be created")
+
+
+def test_verdict_json_is_checked_writable_before_any_work(capsys, no_work, tmp_path):
+    (tmp_path / "f").write_text("")
+    before = sorted(p.name for p in tmp_path.iterdir())
+    _refused(capsys, ["--n", "4", "--json", str(tmp_path)], "--json", "is a folder, not a file")
+    _refused(capsys, ["--n", "4", "--json", str(tmp_path / "no" / "v.json")],
+             "the folder", "does not exist")
+    _refused(capsys, ["--n", "4", "--json", str(tmp_path / "f" / "v.json")],
+             "is a file, not a folder")
+    _refused(capsys, ["--n", "4", "--json", str(tmp_path / ("x" * 300))], "bytes, more than")
+    assert sorted(p.name for p in tmp_path.iterdir()) == before      # nothing left behind
+
+
+def test_verdict_json_in_a_read_only_folder_is_refused(capsys, no_work, tmp_path, monkeypatch):
+    import os
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o555)
+    try:
+        if os.access(ro, os.W_OK):                   # root writes anywhere: say it cannot
+            import charts.runs.outdir as outdir
+            monkeypatch.setattr(outdir.os, "access", lambda path, mode: False)
+        _refused(capsys, ["--n", "4", "--json", str(ro / "v.json")],
+                 "cannot write in the folder", str(ro))
+        _refused(capsys, ["--statistics", "--n", "3", "--device", "cpu", "--out",
+                          str(ro / "out")], "--out", "cannot write in the folder")
+    finally:
+        ro.chmod(0o755)
+    assert list(ro.iterdir()) == []
+
+
+def test_verdict_writes_its_json_where_it_may(tmp_path, capsys):
+    import json
+    from charts.cli.main import main
+    out = tmp_path / "v.json"
+    assert main(["verdict", "--n", "5", "--json", str(out)]) == 0
+    assert json.loads(out.read_text())[0]["torus"]["verdict"] == "not hyperbolic"

@@ -212,9 +212,11 @@ def torus_plan(system, steps=4096) -> int:
                          "steps allowed; 4096 (the default) already closes the geodesic to "
                          "rounding")
     if n > MAX_TORUS_N:
+        def count(x):
+            return f"{x:,}" if x < 10 ** 9 else f"{x:.3g}"
         raise ValueError(f"N = {n} rotors: the flat-torus proof works symbolically in a chart of "
-                         f"dimension {n - 1}, with {(n - 1) ** 3:.3g} Christoffel symbols and "
-                         f"{(n - 1) ** 4:.3g} curvature components to simplify; it took 81 s at "
+                         f"dimension {n - 1}, with {count((n - 1) ** 3)} Christoffel symbols and "
+                         f"{count((n - 1) ** 4)} curvature components to simplify; it took 81 s at "
                          f"N = {MAX_TORUS_N} (about 2.2 times more per two rotors), so it is run "
                          f"for N <= {MAX_TORUS_N} only")
     return steps

@@ -73,6 +73,17 @@ def stored_bytes(cfg: AngleSettings) -> int:
     return cfg.samples * cfg.m * 2 * cfg.n * 8
 
 
+def check_cpu_store(cfg: AngleSettings, t_final) -> None:
+    """ValueError, before any work, when a member on the CPU would keep more than `MAX_STORE`
+    bytes of forward vectors over its window (`hyperbolicity_tally`; ``charts verdict
+    --statistics`` plans every system with it first)."""
+    if stored_bytes(cfg) > MAX_STORE:
+        raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
+                         f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "
+                         f"{MAX_STORE / 2**20:.0f} MB; run more members with a shorter window "
+                         "each, or on a GPU (device='cuda')")
+
+
 #: forward segments per compiled call (the progress is reported between calls).
 _SEGMENTS = 1000
 
@@ -375,11 +386,7 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
                   rep, kwargs) -> AngleTally:
     """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks in
     one pool, each chunk's tally saved to ``checkpoint`` (``members_done``), resumed from it."""
-    if stored_bytes(cfg) > MAX_STORE:
-        raise ValueError(f"on the CPU each member keeps its window's forward vectors: "
-                         f"{stored_bytes(cfg) / 2**20:.0f} MB for T = {t_final:g}, more than "
-                         f"{MAX_STORE / 2**20:.0f} MB; run more members with a shorter window "
-                         "each, or on a GPU (device='cuda')")
+    check_cpu_store(cfg, t_final)
     if chunk is not None:
         chunk = positive_int("chunk", chunk)
     tally, done = AngleTally.empty(L, params), 0

@@ -38,15 +38,15 @@ from dataclasses import asdict, dataclass
 import numpy as np
 from ..jit import njit
 
-from ..geometry.checks import integer
+from ..geometry.checks import integer, option
 from ..geometry.projection import tangent_part
 from ..solvers.gram_schmidt import orthonormal_rows
 from ..solvers.tangent import check_memory, memory_budget
 from ..geometry.topology import euler_characteristic
 from .exact_curvature import exact_curvatures
 
-__all__ = ["SurfaceIntegrals", "surface_integrals", "surface_nodes", "tangent_frames",
-           "POU_POWER"]
+__all__ = ["SurfaceIntegrals", "surface_integrals", "surface_plan", "surface_nodes",
+           "tangent_frames", "POU_POWER"]
 
 #: Power p of the partition of unity |aₖ sin θₖ|ᵖ / Σ |aₗ sin θₗ|ᵖ between the charts.
 POU_POWER = 8
@@ -159,16 +159,26 @@ class SurfaceIntegrals:
         return out
 
 
-def surface_integrals(system, n_grid=256, route="chart") -> SurfaceIntegrals:
-    """Area, total curvature, χ and the entropy bracket of the surface of ``system`` (N = 3,
-    any masses, weights and smooth level), by the quadrature of `surface_nodes` with the
-    curvature from ``route`` (``"chart"``: the generated Riemann tensor; ``"gauss"``: the
-    Gauss equation, ``charts.analyses.exact_curvature``)."""
+def surface_plan(system, n_grid=256, route="chart"):
+    """(n_grid, route) of `surface_integrals` checked before any work: N = 3, ``n_grid`` an
+    integer in 8..16384 whose n_grid² cells fit the memory budget (`BYTES_PER_CELL` each),
+    ``route`` "chart" or "gauss"; ValueError naming the argument otherwise."""
     _surface_system(system)
     n_grid = integer("n_grid", n_grid, 8, 1 << 14)
     check_memory(BYTES_PER_CELL * n_grid ** 2, f"the quadrature on {n_grid}² cells would",
                  f"use n_grid <= {math.isqrt(memory_budget() // BYTES_PER_CELL)} (n_grid = 512 "
                  "already gives ∫K dA to 1e-9, docs/hyperbolicity.md)")
+    route = option("route", route, ("chart", "gauss"))
+    return n_grid, route
+
+
+def surface_integrals(system, n_grid=256, route="chart") -> SurfaceIntegrals:
+    """Area, total curvature, χ and the entropy bracket of the surface of ``system`` (N = 3,
+    any masses, weights and smooth level), by the quadrature of `surface_nodes` with the
+    curvature from ``route`` (``"chart"``: the generated Riemann tensor; ``"gauss"``: the
+    Gauss equation, ``charts.analyses.exact_curvature``).  Every argument is checked before
+    any work (`surface_plan`)."""
+    n_grid, route = surface_plan(system, n_grid, route)
     chi = euler_characteristic(system.weights, system.level)
     theta, dA, _ = surface_nodes(system, n_grid)
     K = exact_curvatures(system, theta, tangent_frames(system, theta), route)[:, 0, 0]

@@ -81,13 +81,16 @@ def cmd_verdict(args) -> int:
 
     if len(args.n) > 1 and (args.masses or args.weights or args.level != 0.0):
         raise ValueError("--masses, --weights and --level describe one system: give one --n")
+    _check_outputs(args)
     if args.statistics:
         return _statistics(args)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")               # a critical level is refused below
+        systems = [RotorSystem(n, masses=args.masses, weights=args.weights, level=args.level)
+                   for n in args.n]
+    _plan_certificates(args, systems)
     reports = []
-    for n in args.n:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")           # a critical level is refused below
-            system = RotorSystem(n, masses=args.masses, weights=args.weights, level=args.level)
+    for n, system in zip(args.n, systems):
         if n == 3:
             rep = surface_verdict(system, n_grid=args.grid, t_final=args.t_final,
                                   seeds=args.seeds)
@@ -98,6 +101,59 @@ def cmd_verdict(args) -> int:
     if args.json is not None:
         atomic_text(args.json, json.dumps(reports, indent=1))
     return 0 if all(verdict_passed(r) for r in reports) else 1
+
+
+def _check_outputs(args) -> None:
+    """``--json`` (a file) and ``--statistics``' ``--out`` (a folder) checked writable before
+    any work, creating nothing (``charts.runs.outdir.check_writable``): a finished report is
+    never lost to a path that cannot take it."""
+    from ..runs.outdir import check_writable
+    if args.json is not None:
+        check_writable(args.json, "--json")
+    if args.statistics and args.out is not None:
+        check_writable(args.out, "--out", folder=True)
+
+
+def _plan_certificates(args, systems) -> None:
+    """Every N and setting of the certificates checked before the first report starts
+    (ValueError naming the flag or the N): N = 3's grid (`surface_plan`: its memory), its
+    level (a critical one has no Euler characteristic), ``--t-final`` and ``--seeds`` (the
+    exponents' runs), N >= 4's flat-torus proof (`torus_plan`: at most N = 12)."""
+    from ..analyses.arguments import positive_time
+    from ..analyses.flat_tori import torus_plan
+    from ..analyses.lyapunov import lyapunov_settings
+    from ..analyses.surface_integrals import surface_plan
+    from ..geometry.checks import integer
+    from ..geometry.topology import euler_characteristic
+    for system in systems:
+        if system.n == 3:
+            surface_plan(system, integer("--grid", args.grid, 8, 1 << 14))
+            euler_characteristic(system.weights, system.level)
+            positive_time("--t-final", args.t_final)
+            for seed in args.seeds:
+                lyapunov_settings(system, args.t_final, seed=integer("--seeds", seed, 0))
+        else:
+            torus_plan(system)
+
+
+def _plan_statistics(args, systems, t_final) -> None:
+    """Every system and setting of ``--statistics`` checked before the first system runs:
+    ``--t-transient``, the members' settings (``angle_settings``) and, on the CPU, the
+    forward vectors each member keeps (``check_cpu_store``); ValueError naming the system."""
+    from ..analyses.arguments import nonnegative_time
+    from ..analyses.forward_pass import angle_settings
+    from ..analyses.hyperbolicity import check_cpu_store
+    from ..solvers.device import resolve_device
+    nonnegative_time("--t-transient", args.t_transient)
+    cpu = getattr(args, "scheduler", None) or resolve_device(args.device) == "cpu"
+    for label, system in systems:
+        try:
+            cfg = angle_settings(system, t_final, t_transient=args.t_transient,
+                                 sample_every=0.1)
+            if cpu:
+                check_cpu_store(cfg, t_final)
+        except ValueError as exc:
+            raise ValueError(f"{label}: {exc}") from None
 
 
 def _statistics(args) -> int:
@@ -120,6 +176,7 @@ def _statistics(args) -> int:
     if not (args.samples > 0 and np.isfinite(args.samples)):
         raise ValueError(f"--samples must be a number > 0, got {args.samples}")
     t_final = members_window(args.samples, args.members)
+    _plan_statistics(args, systems, t_final)
     if resolve_device(args.device) == "cpu":
         integrated = args.members * (2 * t_final + 3 * args.t_transient)
         print(f"charts: the angle test at scale runs on the CPU here: {args.members} members x "

@@ -25,7 +25,8 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["OutputError", "prepare_output", "check_output", "OutputLock", "LOCK"]
+__all__ = ["OutputError", "prepare_output", "check_output", "check_writable", "OutputLock",
+           "LOCK"]
 
 LOCK = ".charts.lock"
 #: A lock file still empty after this many seconds is the trace of a writer killed between
@@ -77,6 +78,54 @@ def check_output(path, what: str = "-o") -> Path:
     """Refuse (:class:`OutputError`) an output folder that is a file, lies under a file, or
     whose name or path is too long; creates nothing."""
     path = Path(path)
+    _folder_anchor(path, what)
+    return path
+
+
+def _folder_anchor(path: Path, what: str) -> Path:
+    """The nearest existing folder of the output folder ``path`` (itself if it exists), after
+    `check_output`'s refusals."""
+    _check_lengths(path, what)
+    if path.exists() and not path.is_dir():
+        raise OutputError(f"{what} {path}: exists and is a file, not a folder; choose a folder")
+    anchor = path.absolute()
+    while not anchor.exists():
+        anchor = anchor.parent
+    if not anchor.is_dir():
+        raise OutputError(f"{what} {path}: {anchor} is a file, so no folder can be created "
+                          "under it; choose another place")
+    return anchor
+
+
+def check_writable(path, what: str, *, folder: bool = False) -> Path:
+    """Refuse (:class:`OutputError`), before any work and creating nothing, an output that
+    could not be written at the end: for a folder (``folder=True``) what `check_output`
+    refuses and a nearest existing folder this process may not write in (``os.access``); for
+    a file (written through a temporary file beside it, ``charts.io.atomic``) a path that is
+    an existing folder, whose folder does not exist, is a file, or may not be written in,
+    or whose name or path is too long."""
+    path = Path(path)
+    if folder:
+        anchor = _folder_anchor(path, what)
+    else:
+        _check_lengths(path, what)
+        if path.is_dir():
+            raise OutputError(f"{what} {path}: is a folder, not a file; give a file name")
+        anchor = path.absolute().parent
+        if not anchor.exists():
+            raise OutputError(f"{what} {path}: the folder {anchor} does not exist; create it or "
+                              "choose another place")
+        if not anchor.is_dir():
+            raise OutputError(f"{what} {path}: {anchor} is a file, not a folder; choose "
+                              "another place")
+    if not os.access(anchor, os.W_OK | os.X_OK):
+        raise OutputError(f"{what} {path}: cannot write in the folder {anchor} (permission "
+                          "denied or a read-only file system); choose a writable place")
+    return path
+
+
+def _check_lengths(path: Path, what: str) -> None:
+    """Refuse a path with a name or a whole length beyond what the file system allows."""
     limit = _name_max(Path(path.anchor or "."))
     for name in path.parts:
         if len(name.encode()) > limit:
@@ -87,15 +136,6 @@ def check_output(path, what: str = "-o") -> Path:
     if full >= _path_max():
         raise OutputError(f"{what} {_short(path)}: the path has {full} bytes, more than this "
                           f"system allows ({_path_max()}); choose a shorter path")
-    if path.exists() and not path.is_dir():
-        raise OutputError(f"{what} {path}: exists and is a file, not a folder; choose a folder")
-    anchor = path.absolute()
-    while not anchor.exists():
-        anchor = anchor.parent
-    if not anchor.is_dir():
-        raise OutputError(f"{what} {path}: {anchor} is a file, so no folder can be created "
-                          "under it; choose another place")
-    return path
 
 
 def _start_time(pid: int) -> str | None:
