@@ -149,6 +149,7 @@ def test_linkage_projection_and_tangency(linkage):
         q, v = linkage.random_state(seed)
         assert np.max(np.abs(linkage.constraint(q))) < 1e-12
         assert np.max(np.abs(linkage.jacobian(q) @ v)) < 1e-12
+        assert abs(linkage.inner(q, v, v) - 1.0) < 1e-12             # speed 1: vᵀMv = 1
         p = linkage.project_point(q + 0.01 * rng.normal(size=5))
         assert np.max(np.abs(linkage.constraint(p))) < 1e-12
         # the rods have length l: |Q_j − Z| = 1
@@ -170,6 +171,11 @@ def test_linkage_intrinsic_equals_gauss(joint_mass):
         assert abs(L.sectional_curvature(q, u, w) - K) < CURV_TOL
         second = L.charts(q)[1][0]
         assert abs(L.gaussian_curvature(q, second) - K) < CURV_TOL   # chart-independent
+        # the same point given by its chart coordinates (the branch picked by a nearby point)
+        s2 = q[list(second)]
+        near = q + 1e-3
+        assert abs(L.gaussian_curvature(s2, second, near=near) - K) < CURV_TOL
+        np.testing.assert_allclose(L.metric(s2, second, near=near), L.metric(q, second), atol=1e-13)
 
 
 def test_linkage_chart_and_ambient_trajectories_agree(linkage):
@@ -247,6 +253,9 @@ def test_invalid_inputs():
         circle.gaussian_curvature([1.0, 0.0])
     with pytest.raises(MechanismError, match="not tangent"):
         circle.sectional_curvature([1.0, 0.0], [1.0, 0.0], [0.0, 1.0])
+    sphere = Mechanism(["x", "y", "z"], [x ** 2 + y ** 2 + sp.Symbol("z") ** 2 - 1], masses=[1, 1, 1])
+    with pytest.raises(MechanismError, match="chart coordinates need"):
+        sphere.metric([0.1, 0.2])
     with pytest.raises(MechanismError, match="a chart is"):
         circle.metric([1.0, 0.0], chart=(0, 1))
     cone = Mechanism(["x", "y", "z"], [x ** 2 + y ** 2 - sp.Symbol("z") ** 2], masses=[1, 1, 1])

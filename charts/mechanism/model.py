@@ -515,14 +515,29 @@ class Mechanism:
         d2g = B + B.transpose(1, 0, 2, 3) + np.einsum("ia,ijce,jb->abce", Phi, d2Ms, Phi)
         return g, dg, d2g
 
+    def _resolve(self, q, chart, near):
+        """(point, chart): q is a point of the manifold in ambient coordinates (n,), or, with
+        ``chart`` and ``near`` given, the chart coordinates (d,) lifted from ``near``."""
+        q = np.asarray(q, dtype=float)
+        if q.shape == (self.dim,) and self.dim != self.n:
+            if chart is None or near is None:
+                raise MechanismError(f"q has {self.dim} entries: chart coordinates need chart= and "
+                                     f"near= (an ambient point for the branch); or give all {self.n}")
+            q = self.lift(q, chart, near)
+        elif near is not None:
+            raise MechanismError("near= is for chart coordinates q (d entries) only")
+        q = self.check_point(q)
+        return q, self._chart_of(q, chart)
+
     def _chart_of(self, q, chart):
         return self.best_chart(q) if chart is None else self._chart_index(chart)
 
-    def metric(self, q, chart=None):
+    def metric(self, q, chart=None, near=None):
         """The induced metric g_ab in ``chart`` (default: best conditioned) at the point q of the
-        manifold (ambient coordinates, shape (n,)), shape (d, d)."""
-        q = self.check_point(q)
-        Phi = self.embedding_jets(q, self._chart_of(q, chart))[0]
+        manifold (ambient coordinates, shape (n,); or its chart coordinates, shape (d,), with
+        ``chart`` and ``near``, an ambient point that picks the branch), shape (d, d)."""
+        q, chart = self._resolve(q, chart, near)
+        Phi = self.embedding_jets(q, chart)[0]
         return Phi.T @ self.mass_matrix(q) @ Phi
 
     def _christoffel(self, g, dg):
@@ -539,16 +554,16 @@ class Mechanism:
         dg = A + A.transpose(1, 0, 2) + np.einsum("ia,ijl,lc,jb->abc", Phi, dM, Phi, Phi)
         return self._christoffel(Phi.T @ M @ Phi, dg)[1]
 
-    def christoffel(self, q, chart=None):
+    def christoffel(self, q, chart=None, near=None):
         """Γ^a_bc of the induced metric in ``chart`` at q, shape (d, d, d)."""
-        q = self.check_point(q)
-        g, dg, _ = self._metric_jets(q, self._chart_of(q, chart))
+        q, chart = self._resolve(q, chart, near)
+        g, dg, _ = self._metric_jets(q, chart)
         return self._christoffel(g, dg)[1]
 
-    def riemann(self, q, chart=None):
+    def riemann(self, q, chart=None, near=None):
         """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩ of the induced metric in ``chart`` at q, shape (d,)*4."""
-        q = self.check_point(q)
-        g, dg, d2g = self._metric_jets(q, self._chart_of(q, chart))
+        q, chart = self._resolve(q, chart, near)
+        g, dg, d2g = self._metric_jets(q, chart)
         gi, G = self._christoffel(g, dg)
         # ∂_e Γ^a_bc = ∂_e g^{ad} [bc,d] + g^{ad} ∂_e [bc,d]
         dfirst = 0.5 * (np.einsum("dcbe->bcde", d2g) + np.einsum("dbce->bcde", d2g)
@@ -561,13 +576,12 @@ class Mechanism:
                + np.einsum("ace,edb->abcd", G, G) - np.einsum("ade,ecb->abcd", G, G))
         return np.einsum("af,fbcd->abcd", g, Rup)
 
-    def gaussian_curvature(self, q, chart=None):
+    def gaussian_curvature(self, q, chart=None, near=None):
         """K = R_0101 / det g (a 2-dimensional configuration space), by the intrinsic route."""
         if self.dim != 2:
             raise MechanismError(f"gaussian_curvature is for 2-dimensional configuration spaces "
                                  f"(this one has dimension {self.dim}); use sectional_curvature")
-        q = self.check_point(q)
-        chart = self._chart_of(q, chart)
+        q, chart = self._resolve(q, chart, near)
         return float(self.riemann(q, chart)[0, 1, 0, 1] / np.linalg.det(self.metric(q, chart)))
 
     def check_tangent(self, q, u, name="u", tol=1e-8):
