@@ -226,6 +226,27 @@ def test_linkage_small_r_limit_is_rotor_family():
     assert errors[2] < 5e-3
 
 
+def test_linkage_small_positive_curvature_at_finite_r():
+    """shared/mechanisms/triple_linkage.md, section 3: at finite r strict K < 0 fails slightly,
+    max K ≈ +2e-4 at r = 0.05 and +5e-3 at r = 0.2 (l = R = 1, I = 1), near the 8 former zero
+    points θᵢ ∈ {±π/2}.  Measured here: K > 0 at all 8 projected points; the local maximum
+    near (π/2, π/2, −π/2) is 2.163e-4 (r = 0.05) and 4.889e-3 (r = 0.2), by both routes."""
+    from scipy.optimize import minimize
+    for r, lo, hi in ((0.05, 1.5e-4, 3e-4), (0.2, 4e-3, 6e-3)):
+        L = triple_linkage(r)
+        for signs in ((1, 1, 1), (1, 1, -1), (1, -1, -1), (-1, -1, -1)):
+            q0 = L.project_point(np.array([*(np.pi / 2 * np.array(signs)), 0.0, 0.0]))
+            assert L.gaussian_curvature(q0) > 0
+        chart = L.best_chart(q0)
+        q0 = L.project_point(np.array([np.pi / 2, np.pi / 2, -np.pi / 2, 0.0, 0.0]))
+        res = minimize(lambda s: -L.gaussian_curvature(s, chart, near=q0), q0[list(chart)],
+                       method="Nelder-Mead", options=dict(xatol=1e-6, fatol=1e-12))
+        q = L.lift(res.x, chart, q0)
+        u, w = L.tangent_basis(q).T
+        assert lo < -res.fun < hi
+        assert abs(L.gauss_equation_curvature(q, u, w) + res.fun) < CURV_TOL
+
+
 # ------------------------------------------------------------------ validation
 def test_invalid_inputs():
     x, y = sp.symbols("x y")
