@@ -44,14 +44,22 @@ def _table_rows(text):
 
 
 # ------------------------------------------------------------------------ charts reproduce
+@pytest.fixture(scope="module")
+def quick_run(tmp_path_factory):
+    """The output folder of one ``charts reproduce --quick`` run, shared by this module's
+    tests of it."""
+    out = tmp_path_factory.mktemp("reproduce") / "quick"
+    assert main(["reproduce", "--quick", "-o", str(out), "--quiet", "--workers", "2"]) == 0
+    return out
+
+
 @pytest.mark.slow
-def test_reproduce_quick_end_to_end(tmp_path):
+def test_reproduce_quick_end_to_end(quick_run):
     """The quick preset (4 × t = 5·10³ per N for the exponents): every file is written, and
     the table's exponents agree with the project's full-preset reference within N_SIGMA
     combined two-sided standard errors, and with the paper within its ±0.004 band widened by
     N_SIGMA of the quick preset's standard error."""
-    out = tmp_path / "quick"
-    assert main(["reproduce", "--quick", "-o", str(out), "--quiet", "--workers", "2"]) == 0
+    out = quick_run
     for name in ("report.md", "table.md", "results.json") + FIGURES:
         assert (out / name).stat().st_size > 0, name
     for name in FIGURES:
@@ -160,3 +168,52 @@ def test_clv_figures_write_drawn_pngs(tmp_path):
     for fn, data, name in ((rc.figure_clv, pairs, "clv.png"), (rc.figure_ftle, ftle, "ftle.png")):
         assert str(fn(data, tmp_path / name)) == str(tmp_path / name)
         _assert_drawn(tmp_path / name)
+
+
+@pytest.mark.slow
+def test_quick_report_stands_alone(quick_run):
+    """report.md of the quick run: the rule stated once; for each claim of
+    ``charts.runs.reproduce_claims.claims`` (derived from results.json) a row with the paper's
+    number, ours with its error, n and the verdict; the run lengths and seeds; what the
+    preset cannot show, from its numbers; where the two curvature routes differ most."""
+    from charts.runs.claim_rule import VERDICTS
+    from charts.runs.reproduce_claims import claims
+
+    results = json.loads((quick_run / "results.json").read_text())
+    report = (quick_run / "report.md").read_text()
+    assert report.count("**The rule**") == 1
+    rows = claims(results)
+    assert len(rows) == 22                 # 6 + 3 exponents, 1 + 1 + 5 curvature, 6 angles
+    lines = report.splitlines()
+    for c in rows:
+        (line,) = [x for x in lines if x.startswith("| " + c["claim"].replace("|", "\\|") + " |")]
+        cells = [x.strip() for x in line.replace("\\|", "¦").split("|")[1:-1]]
+        assert len(cells) == 7, line
+        claim, where, paper, ours, n, word, why = cells
+        assert word == f"**{c['verdict']}**" and c["verdict"] in VERDICTS
+        assert "±" in ours or " of " in ours or "no s.e." in ours, line     # the interval
+        assert "samples" in n or "batch means" in n, line                   # the sample size
+        assert where.startswith(("§", "abstract")) and paper and why
+    # the run lengths and seeds, read from the preset
+    cfg = results["config"]
+    run = report.split("## Run lengths")[1].split("\n## ")[0]
+    for part in (f"{cfg['lyap_members']} × {cfg['lyap_t']:g}",
+                 f"{cfg['angle_members']} × {cfg['angle_t']:g}", f"{cfg['curv_t']:g}",
+                 f"{cfg['angle_transient']:g} forward", "100, 101, 102, 103", "| 0.01 |"):
+        assert part in run, part
+    # what the quick preset cannot show: the exponents' last decimal, and N = 4's
+    # tangencies in the restricted variant unless their fraction and law have error bars
+    cannot = report.split("## What this preset cannot show")[1].split("\n## ")[0]
+    assert "The third decimal of the exponents" in cannot
+    a4 = results["angles"]["4"]["restricted"]
+    if a4["law_coef2_se"] is None or a4["law_exponent_se"] is None:
+        assert "N = 4's tangencies in the restricted variant" in cannot
+        assert f"{a4['law_count']} of {a4['n']} samples" in cannot
+    else:
+        assert "N = 4 restricted (" in cannot
+    # the two curvature routes: the row of N = 4 and its reason
+    gap = results["curvature"]["4"]["route_gap"]
+    assert gap["max_abs"] == pytest.approx(results["curvature"]["4"]["max_ab"], rel=1e-12) \
+        or gap["max_abs"] < results["curvature"]["4"]["max_ab"]
+    assert f"| 4 | {gap['max_abs']:.2g} | K_{gap['direction']}{gap['direction']} |" in report
+    assert f"- N = 4: {gap['max_abs']:.2g} (relative" in report

@@ -5,9 +5,11 @@
 
 Writes into DIR (default ``reproduce-out``): ``table.md`` (Lyapunov exponents with
 error bars beside the paper's), ``fig2.png`` … ``fig5.png`` (the paper's panel layouts),
-``results.json`` (all numbers), ``report.md`` tying each result to the paper's claim, and
-the hyperbolicity test by a second route (covariant Lyapunov vectors on the trajectories of
-the angle test, ``charts.runs.reproduce_clv``: ``clv.png``, ``ftle.png``).
+``results.json`` (all numbers), ``report.md`` (each claim of the paper with our number, its
+error and a verdict, the run lengths, what the preset cannot show:
+``charts.runs.reproduce_report``), and the hyperbolicity test by a second route (covariant
+Lyapunov vectors on the trajectories of the angle test, ``charts.runs.reproduce_clv``:
+``clv.png``, ``ftle.png``).
 Independent trajectories run in parallel processes (all cores by default).  Each finished
 trajectory is kept in ``DIR/pieces/`` as it finishes (``.npz`` with JSON metadata, never
 pickle: ``charts.runs.pieces``): a reproduction interrupted (Ctrl-C, exit 130) and run again
@@ -29,7 +31,6 @@ from __future__ import annotations
 
 import json
 import os
-import platform
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -40,7 +41,7 @@ from ..analyses.statistics import standard_error
 from .io import atomic_text
 from .outdir import OutputLock, prepare_output
 from .pieces import kept_pieces, load_piece, save_piece
-from . import reproduce_clv
+from . import reproduce_clv, reproduce_report
 from .paper import PAPER_EXPONENTS
 from .cli_parser import OneLineParser, positive_count
 
@@ -242,48 +243,6 @@ def _fmt_table(rows):
     return "\n".join(lines)
 
 
-def _report(out, preset, rows, curv, ang, elapsed, workers, clv_lines):
-    from ..analyses.angle_tally import SMALL_ANGLE
-    L = [f"# Reproduction of Kuznetsov, rotators with Σcos θ = 0 — preset `{preset}`", "",
-         f"Command: `charts reproduce --{preset} -o {out}`; wall time {elapsed:.0f} s on "
-         f"{workers} worker processes ({platform.processor() or platform.machine()}, "
-         f"{os.cpu_count()} cores).  Unit speed, equal masses, RK4 dt = 0.01.", "",
-         "## Lyapunov exponents (section 2)", "",
-         "Leading N−2 exponents, θ-only inner product (the paper's), tangent vectors kept in "
-         "the constraint-preserving subspace.  Standard error: the larger of pooled batch "
-         "means and the spread of the independent trajectories (two-sided).  The full "
-         "spectrum is (λ…, 0, 0, −λ…).", "", _fmt_table(rows), "",
-         "Paper's claim: one, two, three positive exponents for N = 3, 4, 5.", "",
-         "## Curvature (section 3, figure 4)", "",
-         "| N | K_ii | fraction > 0 | route (a) vs (b): median rel. diff | max abs diff |",
-         "|---|------|--------------|-------------------------------------|--------------|"]
-    for n in NS:
-        c = curv[n]
-        for i in range(n - 2):
-            L.append(f"| {n} | K_{i + 1}{i + 1} | {(c['Kb'][:, i] > 0).mean():.4f} | "
-                     f"{c['median_rel_ab']:.1e} | {c['max_ab']:.1e} |")
-    c3 = curv[3]
-    L += ["", f"N = 3: route (a) vs eq (22): median relative difference {c3['eq22_median_rel']:.1e}, "
-          f"max absolute {c3['eq22_max_abs']:.1e} (paper: agreement to the 5th significant "
-          "digit at dt = 0.01).  Eq (21) needs a minus sign (Jacobi equation c̈ + Kc = 0); "
-          "with it, N = 3 curvature is negative everywhere, as eq (22) says.  Paper's "
-          "claim: N = 4, 5 have positive sectional curvatures with notable frequency.", "",
-          "## Hyperbolicity angles (section 4, figure 5)", "",
-          f"| N | variant | min φ (rad) | fraction φ < {SMALL_ANGLE} | 1st percentile | samples |",
-          "|---|---------|-------------|------------------|----------------|---------|"]
-    for n in NS:
-        for var in ("full", "restricted"):
-            s = ang[n][var]
-            L.append(f"| {n} | {var} | {s['min']:.2e} | {s['frac_small']:.4f} | {s['p01']:.3f} | {s['n']} |")
-    L += ["", "*full*: the paper's variant, E_cs in all of R^{2N}, containing the two "
-          "non-physical directions that break the constraint; *restricted*: everything in the "
-          "invariant constraint-preserving subspace T_r (the physical phase space's tangent "
-          "space).  Only the restricted angles are intrinsic: the full variant depends on how "
-          "eq (8) is continued off the constraint manifold.  Paper's claim: N = 3 stays away "
-          "from φ = 0 (hyperbolic), N = 4, 5 reach φ ≈ 0.", ""] + clv_lines
-    atomic_text(out / "report.md", "\n".join(L) + "\n")
-
-
 def main(argv=None):
     p = OneLineParser(prog="charts reproduce", description=__doc__.splitlines()[0])
     g = p.add_mutually_exclusive_group()
@@ -352,9 +311,9 @@ def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
                               | dict(fraction_positive=(c["Kb"] > 0).mean(0).tolist(),
                                      samples=int(c["Kb"].shape[0])) for n, c in curv.items()},
                    angles=ang, clv=clv)
+    reproduce_report.add_measurements(summary, cfg, curv, _tasks(cfg))
     atomic_text(out / "results.json", json.dumps(summary, indent=1, default=float))
-    _report(out, preset, rows, curv, ang, elapsed, workers,
-            reproduce_clv.report_lines(clv, NS, cfg["angle_transient"]))
+    reproduce_report.write_report(out, reproduce_clv.report_lines(clv, NS, cfg["angle_transient"]))
     if not quiet:
         print(_fmt_table(rows))
         print(f"wrote {out}/report.md, table.md, results.json, fig2-5.png, clv.png, ftle.png "
