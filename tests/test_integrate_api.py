@@ -23,7 +23,7 @@ TH3, U3 = SYS3.random_state(7)
     (dict(method="euler"), "unknown method"),
     (dict(method="rk4", dt=0.0), "dt must be positive"),
     (dict(method="rk4", dt=-0.01), "dt must be positive"),
-    (dict(method="rk4", dt=float("nan")), "dt must be positive"),
+    (dict(method="rk4", dt=float("nan")), "dt must be finite"),
     (dict(method="rk4", rtol=1e-8), "rtol/atol apply to method='dop853'"),
     (dict(method="dop853", dt=0.01), "dt applies to method='rk4'"),
     (dict(rtol=0.0), "rtol must be positive"),
@@ -258,3 +258,21 @@ def test_dop853_step_and_error_norm_equal_scipys(rtol, h):
     rounding = 16 * np.finfo(float).eps * np.abs(K[:13]).max() * h / scale.min()
     assert abs(err - err_ref) <= TOL["dop853_vs_scipy_error"] * err_ref + rounding, \
         (err, err_ref, rounding)
+
+
+def test_a_float32_step_is_the_decimal_it_prints():
+    """``dt=np.float32(0.01)`` is 0.01 (the typed layer's reading), so t = 1 is 100 whole
+    steps: 101 samples, as with the float 0.01; a string or a bool is refused naming dt."""
+    import numpy as np
+    import pytest
+
+    import charts
+
+    s = charts.RotorSystem(3)
+    th, u = s.random_state(seed=1)
+    a = charts.integrate(s, th, u, 1.0, method="rk4", dt=np.float32(0.01))
+    b = charts.integrate(s, th, u, 1.0, method="rk4", dt=0.01)
+    assert len(a.t) == len(b.t) == 101 and np.array_equal(a.theta, b.theta)
+    for bad in ("0.01", True):
+        with pytest.raises(ValueError, match="dt must be a real number"):
+            charts.integrate(s, th, u, 1.0, method="rk4", dt=bad)

@@ -14,7 +14,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..geometry.checks import finite_array, option
+from ..geometry.checks import finite_array, number, option
 from ..geometry.system import RotorSystem
 from .events import check_events
 from .progress import progress_reporter
@@ -148,11 +148,12 @@ def check_arguments(system, theta0, u0, t_final, *, t_span, formulation, method,
 
 
 def _positive(name, x):
-    if isinstance(x, bool) or not isinstance(x, (int, float, np.integer, np.floating)):
-        raise ValueError(f"{name} must be a positive number, got {x!r}")
-    if not (math.isfinite(x) and x > 0):
+    """``x`` as a positive finite float (the typed layer's `number`: a float32 is the decimal
+    it prints, a 0-d array the number it holds)."""
+    x = number(name, x)
+    if not x > 0:
         raise ValueError(f"{name} must be positive and finite, got {x!r}")
-    return float(x)
+    return x
 
 
 def _span(t_final, t_span):
