@@ -330,6 +330,19 @@ def test_invalid_inputs():
         cone.project_point([0.0, 0.0, 0.0])   # on F = 0, but the vertex
 
 
+def test_with_parameters_shares_the_derivation():
+    a, b = triple_linkage(0.1), triple_linkage(0.3, l=1.2, joint_mass=0.5)
+    assert a._num is b._num and a.J is b.J                  # derived once
+    assert a.parameter_values["r"] == 0.1 and b.parameter_values == {
+        "r": 0.3, "l": 1.2, "R": 1.0, "I": 1.0, "m": 0.5, "mu": 0.0}
+    q, _ = b.random_state(0)
+    assert np.max(np.abs(b.constraint(q))) < 1e-12 and np.max(np.abs(a.constraint(q))) > 1e-3
+    with pytest.raises(MechanismError, match="not a parameter"):
+        a.with_parameters(rr=1.0)
+    with pytest.raises(MechanismError, match="positive"):
+        triple_linkage(-0.1)
+
+
 def test_circle_is_flat_and_sphere_has_curvature_one_over_radius_squared():
     x, y, z, a = sp.symbols("x y z a")
     sphere = Mechanism(["x", "y", "z"], [x ** 2 + y ** 2 + z ** 2 - a ** 2], masses=[1, 1, 1],

@@ -10,6 +10,10 @@ from .model import Mechanism, MechanismError
 
 __all__ = ["rotors", "triple_linkage"]
 
+#: The symbolic models, derived once per process and shared by instances with other
+#: parameter values (``Mechanism.with_parameters``): rotors by n, the linkage by "with rods".
+_MODELS = {}
+
 
 def _number(name, x, positive=False, nonnegative=False):
     try:
@@ -34,13 +38,18 @@ def rotors(n, masses=None, weights=None, level=0.0):
         if a.shape != (n,) or not np.all(np.isfinite(a)) or not np.all(a > 0):
             raise MechanismError(f"{name} must be {n} positive numbers, got {a.tolist()}")
     level = _number("level", level)
-    th = sp.symbols(f"theta1:{n + 1}", real=True)
-    m = sp.symbols(f"m1:{n + 1}", positive=True)
-    w = sp.symbols(f"w1:{n + 1}", positive=True)
-    c = sp.Symbol("c", real=True)
-    params = {**dict(zip(m, masses)), **dict(zip(w, weights)), c: level}
-    return Mechanism(th, [sum(wi * sp.cos(t) for wi, t in zip(w, th)) - c], masses=m,
-                     parameters=params, periodic=th, name=f"rotors(n={n})")
+    key = ("rotors", n)
+    if key not in _MODELS:
+        th = sp.symbols(f"theta1:{n + 1}", real=True)
+        m = sp.symbols(f"m1:{n + 1}", positive=True)
+        w = sp.symbols(f"w1:{n + 1}", positive=True)
+        c = sp.Symbol("c", real=True)
+        params = {**{s: 1.0 for s in m}, **{s: 1.0 for s in w}, c: 0.0}
+        _MODELS[key] = Mechanism(th, [sum(wi * sp.cos(t) for wi, t in zip(w, th)) - c],
+                                 masses=m, parameters=params, periodic=th)
+    values = {**{f"m{i + 1}": x for i, x in enumerate(masses)},
+              **{f"w{i + 1}": x for i, x in enumerate(weights)}, "c": level}
+    return _MODELS[key].with_parameters(name=f"rotors(n={n})", **values)
 
 
 def triple_linkage(r, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0, rod_mass=0.0):
@@ -56,6 +65,19 @@ def triple_linkage(r, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0, rod_mass=0.0):
     inertia = _number("inertia", inertia, positive=True)
     joint_mass = _number("joint_mass", joint_mass, nonnegative=True)
     rod_mass = _number("rod_mass", rod_mass, nonnegative=True)
+    span = 3 * r + abs(l - R)
+    return _linkage_model(bool(rod_mass)).with_parameters(
+        r=r, l=l, R=R, I=inertia, m=joint_mass, mu=rod_mass,
+        bounds={"x": (-span, span), "y": (-span, span)},
+        name=f"triple_linkage(r={r:g}, l={l:g}, R={R:g})")
+
+
+def _linkage_model(rods):
+    """The triple linkage's symbolic Mechanism (parameters r, l, R, I, m, mu), with the rods'
+    kinetic energy (a configuration-dependent metric) or without (M constant)."""
+    key = ("triple_linkage", rods)
+    if key in _MODELS:
+        return _MODELS[key]
     th = sp.symbols("theta1:4", real=True)
     x, y = sp.symbols("x y", real=True)
     rs, ls, Rs, I, m, mu = sp.symbols("r l R I m mu", real=True)
@@ -66,9 +88,8 @@ def triple_linkage(r, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0, rod_mass=0.0):
         P = Rs * sp.Matrix([sp.cos(a), sp.sin(a)])
         Q.append(P + rs * sp.Matrix([sp.cos(a + th[j]), sp.sin(a + th[j])]))
     constraints = [((Qj - Z).T * (Qj - Z))[0] - ls ** 2 for Qj in Q]
-    q = (*th, x, y)
     M = sp.diag(I, I, I, m, m)
-    if rod_mass:
+    if rods:
         qd = sp.symbols("qd1:6", real=True)
         Zd = sp.Matrix(qd[3:])
         T = 0
@@ -77,8 +98,7 @@ def triple_linkage(r, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0, rod_mass=0.0):
             T += mu / 6 * ((Qd.T * Qd)[0] + (Qd.T * Zd)[0] + (Zd.T * Zd)[0])
         T = sp.expand(T)
         M = M + sp.Matrix(5, 5, lambda i, k: sp.simplify(sp.diff(T, qd[i], qd[k])))
-    span = 3 * r + abs(l - R)
-    return Mechanism(q, constraints, M,
-                     parameters={rs: r, ls: l, Rs: R, I: inertia, m: joint_mass, mu: rod_mass},
-                     periodic=th, bounds={"x": (-span, span), "y": (-span, span)},
-                     name=f"triple_linkage(r={r:g}, l={l:g}, R={R:g})")
+    _MODELS[key] = Mechanism((*th, x, y), constraints, M,
+                             parameters={rs: 0.1, ls: 1.0, Rs: 1.0, I: 1.0, m: 0.0, mu: 1.0 if rods else 0.0},
+                             periodic=th, name="triple_linkage")
+    return _MODELS[key]

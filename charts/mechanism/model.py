@@ -168,6 +168,43 @@ class Mechanism:
             self.bounds[c] = (lo, hi)
         self.dim = self.n - self.k
 
+    def with_parameters(self, *, name=None, bounds=None, **values):
+        """A copy with other parameter values (by name) that shares this one's symbolic
+        derivations and lambdified functions (the parameters are their arguments): no
+        re-derivation.  ``bounds`` updates ``random_state``'s boxes."""
+        import copy
+        self.derive()                               # derive once, share with every copy
+        out = copy.copy(self)
+        out.param_values = self.param_values.copy()
+        index = {p.name: i for i, p in enumerate(self.params)}
+        for k, v in values.items():
+            if k not in index:
+                raise MechanismError(f"{k!r} is not a parameter of {self.name} "
+                                     f"({sorted(index)})")
+            try:
+                v = float(v)
+            except (TypeError, ValueError):
+                raise MechanismError(f"parameter {k} must be a real number, got {v!r}") from None
+            if not np.isfinite(v):
+                raise MechanismError(f"parameter {k} must be finite, got {v}")
+            out.param_values[index[k]] = v
+        out.bounds = dict(self.bounds)
+        for c, b in (bounds or {}).items():
+            if c not in out.bounds:
+                raise MechanismError(f"bounds for {c!r}: not a coordinate")
+            lo, hi = map(float, b)
+            if not lo < hi:
+                raise MechanismError(f"bounds for {c!r} must be (lo, hi) with lo < hi, got {b}")
+            out.bounds[c] = (lo, hi)
+        if name is not None:
+            out.name = str(name)
+        return out
+
+    @property
+    def parameter_values(self) -> dict:
+        """{name: value} of the parameters."""
+        return {p.name: float(v) for p, v in zip(self.params, self.param_values)}
+
     def _expr(self, e, what):
         try:
             e = sp.sympify(e)
