@@ -136,7 +136,7 @@ def test_ambient_equations_symbolic(rot3):
     v, acc, lam, eqs = rot3.ambient_equations()
     sol = sp.solve(eqs, [*acc, *lam], dict=True)[0]
     th = rot3.q
-    # eq (8) with unit masses and weights: q̈ = Jᵀλ = −λ sin θ, so λ = Λ = Σ u² cos θ / Σ sin² θ
+    # eqs (4)-(6), unit masses and weights: q̈ = Jᵀλ = −λ sin θ (eq 4), so λ = Λ of eq (6)
     expect = sum(vi ** 2 * sp.cos(t) for vi, t in zip(v, th)) / sum(sp.sin(t) ** 2 for t in th)
     subs = dict(zip(rot3.params, rot3.param_values))
     assert sp.simplify(sol[lam[0]].subs(subs) - expect) == 0

@@ -3,7 +3,8 @@ codimension k, a kinetic metric M(q) and parameters, all given as SymPy expressi
 
 What is symbolic and what is numerical.  SymPy differentiates, once and cached: the
 constraint Jacobian J = ∂F/∂q, the constraint derivatives ∂²F, ∂³F, the metric M and its
-derivatives ∂M, ∂²M, and the ambient equations of motion (eq (8) of the paper generalised):
+derivatives ∂M, ∂²M, and the ambient equations of motion (the paper's eqs (4)-(8)
+generalised: λ is its Λ, from the constraint differentiated twice as in its eq (5)):
 
     M q̈ − Jᵀλ = −C(q, v),   C_i = Σ_jk (∂_j M_ik − ½ ∂_i M_jk) v^j v^k,
     J q̈        = −Σ_jk ∂²F/∂q_j∂q_k v^j v^k                 (F differentiated twice in time)
