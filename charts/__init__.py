@@ -10,6 +10,9 @@ mechanically coupled rotators".  The public surface, by concept:
   (eqs 19-21 and the exact Riemann tensor), ``hyperbolicity_angles`` (section 4) and
   ``covariant_lyapunov_vectors`` (the same test by a second route, finite-time exponents),
   ``waveform`` and ``power_spectrum`` (figures 2-3);
+* a mechanism's configuration manifold from its symbolic model: ``Mechanism`` (its
+  constrained equations, atlas, metric, curvature by two routes) and the triple linkage of
+  Fig. 1a, ``triple_linkage`` (docs/mechanisms.md);
 * the flat linkage of the Appendix (its exact constraint, eq (1) as its ε → 0 limit):
   ``LinkageSystem``, ``linkage_run``, ``linkage_trajectory`` (docs/linkage.md);
 * declarative runs and sweeps: ``load_scene``/``run_scene``, ``load_sweep``/``run_sweep``;
@@ -56,6 +59,9 @@ _HOMES = {
     "power_spectrum": ".analyses.spectra",
     "waveform": ".analyses.spectra",
     "load": ".io.archive",
+    "Mechanism": ".mechanism.model",
+    "MechanismError": ".mechanism.model",
+    "triple_linkage": ".mechanism.instances",
     "LinkageSystem": ".geometry.linkage",
     "DegenerateMetricError": ".solvers.linkage",
     "LinkageResult": ".analyses.linkage",
