@@ -3,16 +3,16 @@ its point finishes, a progress bar, and at the end the table in point order, the
 and the figures."""
 from __future__ import annotations
 
-import contextlib
 import json
 import logging
 import os
 import shutil
-import signal
-import threading
 import time
 import uuid
 
+from ...analyses.cluster import SCHEDULER_TIMEOUT_S
+from ...analyses.cluster import check_scheduler_address as cluster_address
+from ...analyses.cluster import dask_client as cluster_client
 from ...analyses.arguments import positive_int
 from ...io.result_words import counted
 from ..io import atomic_text
@@ -34,25 +34,13 @@ META = "sweep.json"
 #: Folder of the points in progress (one per point computed alone: its run's checkpoints),
 #: each removed once its row is written, the folder once the table is complete.
 POINTS = "points"
-#: How long a client waits for an existing scheduler before the sweep fails.
-SCHEDULER_TIMEOUT_S = 10
 
 
 def check_scheduler_address(scheduler) -> str:
     """``scheduler`` if it is a well-formed Dask address (``tcp://host:port``, ``host:port``);
-    :class:`SweepError` naming it otherwise.  Called before any work."""
-    from distributed.comm import parse_address, parse_host_port
-
-    try:
-        if not isinstance(scheduler, str) or not scheduler.strip():
-            raise ValueError("empty")
-        proto, loc = parse_address(scheduler)
-        if proto in ("tcp", "tls", "ws", "wss"):
-            parse_host_port(loc)
-    except (ValueError, TypeError) as exc:
-        raise SweepError(f"--scheduler {scheduler!r} is not a Dask scheduler address ({exc}); "
-                         "expected e.g. tcp://host:8786") from None
-    return scheduler
+    :class:`SweepError` naming it otherwise.  Called before any work
+    (``charts.analyses.cluster.check_scheduler_address``)."""
+    return cluster_address(scheduler, SweepError)
 
 
 def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=False,
@@ -151,89 +139,10 @@ def same_scene_groups(points) -> list[list]:
 
 def dask_client(scheduler, workers):
     """``(client, cluster)``: a client of the cluster at ``scheduler`` (cluster None), or of
-    a new LocalCluster of ``workers`` single-threaded processes (default: every core)."""
-
-    from dask.distributed import Client, LocalCluster
-
-    if scheduler:
-        if workers:
-            raise SweepError("--workers applies to the local cluster only; an existing cluster "
-                             "(--scheduler) has its own workers")
-        check_scheduler_address(scheduler)
-        try:
-            return Client(scheduler, timeout=f"{SCHEDULER_TIMEOUT_S}s"), None
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise SweepError(f"cannot reach the Dask scheduler at {scheduler!r} within "
-                             f"{SCHEDULER_TIMEOUT_S} s: {exc} (start "
-                             "one with `dask scheduler`, workers with `dask worker ADDRESS`)") \
-                from None
-    n = (os.cpu_count() or 1) if workers is None else positive_int("workers", workers)
-    client = cluster = None
-    try:
-        with _sigint_held():
-            # the workers' own logs only when critical: an interrupted sweep's teardown made
-            # them print a semaphore release's traceback ("Is the connection unstable?") at
-            # ERROR; a point that fails reaches the table through its future, with the
-            # error's text.  No dashboard; the scheduler's HTTP server (health, metrics) on
-            # a free port of this host: without an address it tries 8787 and warns "Port
-            # 8787 is already in use" whenever another Dask cluster runs here
-            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                   dashboard_address="127.0.0.1:0",
-                                   scheduler_kwargs={"dashboard": False},
-                                   silence_logs=logging.CRITICAL)
-            client = Client(cluster)
-    except BaseException:           # a Ctrl-C while the cluster started: nothing left open
-        if client is not None:
-            client.close()
-        if cluster is not None:
-            cluster.close()
-        raise
-    return client, cluster
-
-
-@contextlib.contextmanager
-def _sigint_held():
-    """Ctrl-C held back while the local cluster starts, and delivered when it has.
-
-    The worker processes must not take Ctrl-C (every one would print a KeyboardInterrupt
-    traceback): the main process reports the interrupt and closes the cluster.  So SIGINT
-    is blocked in this thread while the cluster starts, and with it in the threads started
-    meanwhile and in the processes those spawn (a signal mask survives both), the workers
-    among them.  A Ctrl-C pressed meanwhile reaches the process anyway, as pending or by a
-    thread that was already running (e.g. the one NumPy's OpenBLAS starts at import): the
-    handler installed here notes it, and once the previous handler is back the signal is
-    raised again, so a Ctrl-C during the start interrupts the sweep instead of being lost.
-    Without ``pthread_sigmask`` (Windows) SIGINT is ignored meanwhile instead, a disposition
-    the workers inherit.  Outside the main thread nothing changes (no handler can be set)."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    if not hasattr(signal, "pthread_sigmask"):
-        old = signal.signal(signal.SIGINT, signal.SIG_IGN)
-        try:
-            yield
-        finally:
-            signal.signal(signal.SIGINT, old)
-        return
-    # multiprocessing's resource tracker, started by the first semaphore of a worker's
-    # queue, unblocks SIGINT in the thread that starts it (the cluster's event loop, whose
-    # threads spawn the workers): started here, before, it leaves the mask alone
-    from multiprocessing import resource_tracker
-
-    resource_tracker.ensure_running()
-    caught = []
-    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-    old = signal.signal(signal.SIGINT, lambda signum, frame: caught.append(signum))
-    try:
-        yield
-    finally:
-        try:
-            signal.signal(signal.SIGINT, old)
-        finally:
-            # a Ctrl-C pending for this thread is delivered (to ``old``) by this call
-            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
-        if caught:
-            signal.raise_signal(signal.SIGINT)
+    a new LocalCluster of ``workers`` single-threaded processes (default: every core); what
+    goes wrong is a :class:`SweepError` (``charts.analyses.cluster.dask_client``, shared
+    with the ensembles' and the angle tally's ``client=``)."""
+    return cluster_client(scheduler, workers, SweepError)
 
 
 def _silence_dask_logs():
