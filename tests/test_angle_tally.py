@@ -231,32 +231,33 @@ def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
 
 @pytest.mark.parametrize("workers", [1, 2])
 def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypatch, workers):
-    """On the CPU the tally of the members done is saved after each chunk; a run interrupted
-    in its second chunk and called again goes on from there, to the tally of a run never
-    interrupted, and removes it; a checkpoint of another run is refused.  In this process
-    and in a pool of two."""
+    """On the CPU the tally of the members done is saved after each chunk merged; a run
+    interrupted while merging its second chunk and called again goes on from there, to the
+    tally of a run never interrupted, and removes it; a checkpoint of another run is
+    refused.  In this process and in a pool of two; resumed with another chunk size too."""
     pytest.importorskip("xarray")
     import charts.analyses.hyperbolicity as hyp
     S = RotorSystem(3)
-    kw = dict(t_transient=1.0, workers=workers, chunk=2)
-    whole = hyperbolicity_tally(S, 5, 3.0, **kw)
-    real, calls = hyp._ensemble_on_cpu, []
+    kw = dict(t_transient=1.0, workers=workers)
+    whole = hyperbolicity_tally(S, 5, 3.0, chunk=2, **kw)
+    real, calls = hyp._merge_chunk, []
 
     def cut(*a, **k):
         calls.append(1)
         if len(calls) == 2:
             raise KeyboardInterrupt
         return real(*a, **k)
-    monkeypatch.setattr(hyp, "_ensemble_on_cpu", cut)
+    monkeypatch.setattr(hyp, "_merge_chunk", cut)
     path = tmp_path / "partial.nc"
     with pytest.raises(KeyboardInterrupt):
-        hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
-    monkeypatch.setattr(hyp, "_ensemble_on_cpu", real)
+        hyperbolicity_tally(S, 5, 3.0, checkpoint=path, chunk=2, **kw)
+    monkeypatch.setattr(hyp, "_merge_chunk", real)
     from charts import load
     assert load(path).params["members_done"] == 2 and load(path).n[:2].tolist() == [30, 30]
     with pytest.raises(ValueError, match="another run"):
-        hyperbolicity_tally(S, 5, 4.0, checkpoint=path, **kw)
-    resumed = hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
+        hyperbolicity_tally(S, 5, 4.0, checkpoint=path, chunk=2, **kw)
+    resumed = hyperbolicity_tally(S, 5, 3.0, checkpoint=path, chunk=3 if workers == 1 else 2,
+                                  **kw)
     _same(resumed, whole)
     assert resumed.params == whole.params and not path.exists()
 

@@ -30,7 +30,7 @@ import numpy as np
 from ..jit import njit
 
 from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
-                              load_member, member_stops, resolve_device, store_member)
+                              load_member, member_stops, store_member)
 from ..solvers.driver import Phases
 from ..solvers.status import NONFINITE, RUNNING
 from ..solvers.tangent import (Records, Rotors, Stack, Stepping, check_memory,
@@ -39,6 +39,7 @@ from .arguments import progress_reporter
 from .covariant import (CLVSettings, backward_coefficients, clv_flow, clv_samples, clv_settings,
                         covariant_lyapunov_vectors, covariant_result, factor_sample,
                         ginelli_start)
+from .cluster import cluster_device
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, member_states_of,
                        run_ensemble)
 
@@ -47,7 +48,7 @@ __all__ = ["covariant_ensemble", "clv_ensemble_settings", "clv_forward_member", 
 
 
 def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted", speed=1.0,
-                       seed=0, workers=None, progress=False, device="cpu",
+                       seed=0, workers=None, progress=False, device="cpu", client=None,
                        **kwargs) -> EnsembleResult:
     """`covariant_lyapunov_vectors` on independent random states (seeds seed, seed+1, …;
     ``kwargs``: its settings): an `EnsembleResult` of `CovariantResult` members.  On the CPU
@@ -55,8 +56,10 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
     the window in blocks sized to the GPU's memory (module docstring: with one block each
     member equals `covariant_lyapunov_vectors`, with several the CLVs after the first block
     differ by the backward iteration's convergence error); ``keep_vectors`` is not offered
-    there.  ``"auto"``: the GPU when there is one."""
-    device = resolve_device(device)
+    there.  ``"auto"``: the GPU when there is one.  ``client``: the members run as tasks of a
+    Dask cluster instead (a ``Client``, a scheduler's address, or "local": a LocalCluster of
+    ``workers`` processes; ``charts.analyses.cluster``, docs/cluster.md)."""
+    device = cluster_device(device, client)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     if device == "cuda":
@@ -80,7 +83,7 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
     return run_ensemble(covariant_lyapunov_vectors, system, n_trajectories, t_final,
                         speed=speed, seed=seed, workers=workers, progress=progress,
                         desc=f"CLV N={system.n} ensemble", prime=short, variant=variant,
-                        **kwargs)
+                        client=client, **kwargs)
 
 
 def clv_ensemble_settings(system, t_final, variant, seed, kwargs) -> CLVSettings:

@@ -17,10 +17,12 @@ from ..jit.compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
 from .arguments import positive_int, positive_time, progress_reporter
+from .cluster import cluster_pool
 from .spectrum_quantities import SpectrumQuantities
 from .statistics import standard_error
 
-__all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "ensemble_result",
+__all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "stream_jobs",
+           "ensemble_result",
            "error_ratio_of", "warn_understated", "member_states_of", "resolved_settings",
            "OWN_SETTINGS", "ErrorBarWarning", "UNDERSTATED_RATIO",
            "MIN_MEMBERS_TO_JUDGE"]
@@ -192,23 +194,29 @@ def _member(job):
 
 
 def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                 progress=False, desc="ensemble", prime=None, pool=None,
+                 progress=False, desc="ensemble", prime=None, pool=None, client=None,
                  **kwargs) -> EnsembleResult:
     """``fn(system, theta0, u0, t_final, seed=s, **kwargs)`` on ``n_trajectories`` random
     states of speed ``speed`` (seeds seed, seed+1, …), in ``workers`` processes (default:
-    all cores; 1: in this process) or in the process pool ``pool`` (a caller's, kept across
-    its ensembles).  Members whose results have ``exponents`` give the ensemble's mean and
-    standard error.  ``prime``: (t_final, settings overriding kwargs) of a short call that
-    compiles the kernels in this process before the workers start (`map_jobs`)."""
+    all cores; 1: in this process), in the process pool ``pool`` (a caller's, kept across
+    its ensembles) or on the Dask cluster ``client`` (``charts.analyses.cluster``: a Client,
+    a scheduler's address or "local", a LocalCluster of ``workers`` processes).  Members
+    whose results have ``exponents`` give the ensemble's mean and standard error.
+    ``prime``: (t_final, settings overriding kwargs) of a short call that compiles the
+    kernels in this process before the workers start (`map_jobs`)."""
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
+    if pool is not None and client is not None:
+        raise ValueError("give pool= or client=, not both")
     jobs = [(fn, system, seed + i, speed, t_final, kwargs)
             for i in range(n_trajectories)]
     first = None
     if prime is not None:
         first = (_member, (fn, system, seed, speed, prime[0], {**kwargs, **prime[1]}))
-    members = map_jobs(_member, jobs, [1] * len(jobs), workers, t_final, progress, desc,
-                       prime=first, name=fn.__name__, n=system.n, pool=pool)
+    with cluster_pool(client, workers) as (cluster, slots):
+        members = map_jobs(_member, jobs, [1] * len(jobs), slots, t_final, progress, desc,
+                           prime=first, name=fn.__name__, n=system.n,
+                           pool=pool if pool is not None else cluster)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
 
@@ -228,8 +236,9 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
              pool=None):
     """The members of ``fn(job)`` for the jobs, in order (each returns a list of ``sizes[i]``
     members), in ``workers`` processes (default all cores; 1: in this process) or in the
-    executor ``pool`` (a caller's, not shut down here); progress in simulated time (members
-    done × t_final).
+    executor ``pool`` (a caller's, not shut down here: a process pool, or a Dask cluster's,
+    ``charts.analyses.cluster.cluster_pool``); progress in simulated time (members done ×
+    t_final).  `stream_jobs` runs them.
 
     With workers, the kernels are compiled once: ``prime`` = (function, job), a short call
     that compiles them, runs here first, so that the workers load them from numba's disk
@@ -237,15 +246,30 @@ def map_jobs(fn, jobs, sizes, workers, t_final, progress, desc, prime=None, name
     than ``charts.jit.compilation.NOTE_SECONDS`` is announced here, on this process's stderr
     (``name``, ``n``: the analysis and N the notice names).  Never more processes than jobs
     (``workers=10**6`` for two jobs starts two)."""
+    return _collect(stream_jobs(fn, jobs, workers, prime, name, n, pool), sizes, t_final,
+                    progress, desc)
+
+
+def stream_jobs(fn, jobs, workers, prime=None, name=None, n=None, pool=None):
+    """``fn(job)`` of each job, yielded in the jobs' order as they come in: as `map_jobs`
+    (``workers``, ``pool``, ``prime`` and the compile notices there), for a caller that
+    consumes each result as it arrives (``charts.analyses.hyperbolicity.hyperbolicity_tally``
+    merges each chunk's tally and saves its checkpoint)."""
     workers = min(workers or os.cpu_count() or 1, max(1, len(jobs)))
     if workers == 1 and pool is None:
-        return _collect(map(fn, jobs), sizes, t_final, progress, desc)
+        yield from map(fn, jobs)
+        return
     name = name or getattr(fn, "__name__", "ensemble")
     if prime is not None:
         announce(name, timed_call(*prime)[1], n)
     with nullcontext(pool) if pool is not None else ProcessPoolExecutor(workers) as executor:
         timed = executor.map(_timed_job, [(fn, job) for job in jobs])
-        return _collect(_announced(timed, name, n), sizes, t_final, progress, desc)
+        try:
+            yield from _announced(timed, name, n)
+        finally:                # left early (an error, a Ctrl-C): the jobs not started
+            close = getattr(timed, "close", None)   # are cancelled by the executor's own
+            if close is not None:                   # iterator
+                close()
 
 
 def member_states_of(states_of, system, cfg, seeds, speed, workers):

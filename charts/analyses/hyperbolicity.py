@@ -47,14 +47,15 @@ from ..io.archive import Archivable, attributes, dataset, index_coordinate
 from ..io.result_words import RATE, smallest_words
 from ..jit.compilation import announces_compilation
 from ..geometry.checks import finite_array
-from ..solvers.device import resolve_device
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
-from .angle_tally import SMALL_ANGLE, AngleTally
+from .angle_tally import SMALL_ANGLE, SUMS, AngleTally
 from .arguments import positive_int, positive_time, progress_reporter, start_state, Documented
-from .ensemble import EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble
+from .cluster import cluster_device, cluster_pool
+from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble,
+                       stream_jobs)
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settings, forward_kernel
 from .singular_values import sin_to_angle, smallest_singular_values
 from .statistics import small_value_law
@@ -295,7 +296,8 @@ def angle_params(system, cfg: AngleSettings, speed) -> dict:
 
 
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                           progress=False, device="cpu", **kwargs) -> EnsembleResult:
+                           progress=False, device="cpu", client=None,
+                           **kwargs) -> EnsembleResult:
     """`hyperbolicity_angles` on independent random states (seeds seed, seed+1, …) in
     parallel processes; returns an `EnsembleResult` (``concatenate("phi_restricted")`` joins
     the angles of all members for statistics).
@@ -304,8 +306,12 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
     memory (``charts.analyses.angle_blocks``: the same passes; with one block each member
     equals `hyperbolicity_angles`, with several the angles after the first block differ by
     the adjoint vectors' convergence error, e^(−λ_m·t_transient)); t_transient must then be a
-    multiple of checkpoint_every.  ``"auto"``: the GPU when there is one."""
-    device = resolve_device(device)
+    multiple of checkpoint_every.  ``"auto"``: the GPU when there is one.
+
+    ``client``: the members run as tasks of a Dask cluster instead (a ``Client``, a
+    scheduler's address, or "local": a LocalCluster of ``workers`` processes;
+    ``charts.analyses.cluster``, docs/cluster.md), the same members bit for bit."""
+    device = cluster_device(device, client)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
@@ -319,20 +325,17 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
                                 workers=workers or os.cpu_count() or 1, update=rep.update)
         rep.close()
         return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
-    return _ensemble_on_cpu(system, cfg, n_trajectories, t_final, speed, seed, workers,
-                            progress, None, kwargs)
-
-
-def _ensemble_on_cpu(system, cfg, n_trajectories, t_final, speed, seed, workers, progress,
-                     pool, kwargs) -> EnsembleResult:
-    """`hyperbolicity_ensemble` on the CPU: its members in ``workers`` processes or in ``pool``,
-    after a priming call here (two samples on the members' grid) that compiles their kernels."""
-    every = cfg.sample * cfg.dt
-    short = (2 * every, {"t_transient": 0.0, "sample_every": every})
     return run_ensemble(hyperbolicity_angles, system, n_trajectories, t_final, speed=speed,
                         seed=seed, workers=workers, progress=progress,
-                        desc=f"angles N={system.n} ensemble", prime=short, pool=pool,
-                        **kwargs)
+                        desc=f"angles N={system.n} ensemble", prime=_short(cfg),
+                        client=client, **kwargs)
+
+
+def _short(cfg):
+    """(t_final, settings) of the priming call that compiles the members' kernels here: two
+    samples on the members' grid, no transient."""
+    every = cfg.sample * cfg.dt
+    return 2 * every, {"t_transient": 0.0, "sample_every": every}
 
 
 def angle_members(system, cfg: AngleSettings, seeds, speed, **kw):
@@ -348,22 +351,28 @@ def angle_members(system, cfg: AngleSettings, seeds, speed, **kw):
 
 def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
                         progress=False, device="cpu", budget=None, chunk=None, checkpoint=None,
-                        **kwargs) -> AngleTally:
+                        client=None, **kwargs) -> AngleTally:
     """The angle test of `hyperbolicity_ensemble` (seeds seed, seed + 1, …; ``kwargs``: its
     settings), tallied as it runs into an `AngleTally` instead of kept.  ``device="cuda"``:
     memory per member independent of ``t_final``, every member a GPU thread, the window in
     the blocks of ``charts.analyses.angle_blocks`` (``budget``: bytes of GPU memory for one
     block's stores, default half the free memory; the sines tallied on ``workers`` threads);
-    ``"cpu"``: the members in chunks of about ``chunk`` (default 4 per process, at least 2)
-    by `hyperbolicity_ensemble`, each member's window held while it runs (at most
-    `MAX_STORE` bytes of forward vectors: refused beyond, with the remedy); with
-    ``checkpoint`` (a path) the tally of the members done is saved there after each chunk,
-    and a run that finds it there (the same call) goes on from it instead of starting
-    again; removed when the run is whole."""
-    device = resolve_device(device)
+    ``"cpu"``: the members in chunks of ``chunk`` consecutive seeds (default: about four
+    chunks per process, at most `TALLY_CHUNK` members), each chunk a job in ``workers``
+    processes or a task of the Dask cluster ``client`` (a ``Client``, a scheduler's address,
+    or "local": a LocalCluster of ``workers`` processes; ``charts.analyses.cluster``,
+    docs/cluster.md): there its members run one after the other by `hyperbolicity_angles`,
+    each member's window held while it runs (at most `MAX_STORE` bytes of forward vectors:
+    refused beyond, with the remedy), its angles tallied there and dropped; only the
+    chunk's tally comes back, its members' rows put into this tally in seed order, so this
+    process holds the tally alone, whatever ``t_final``.  The same tally, bit for bit, on
+    every route and chunk size.  With ``checkpoint`` (a path) the tally of the members done
+    is saved there after each chunk merged, and a run that finds it there (the same call,
+    any ``chunk``, ``workers`` or ``client``) goes on from it instead of starting again; a
+    lost worker or a Ctrl-C costs the chunks in flight; removed when the run is whole."""
+    device = cluster_device(device, client)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
-    workers = workers or os.cpu_count() or 1
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
     params = dict(angle_params(system, cfg, float(speed)), device=device)
     rep = progress_reporter(progress, n_trajectories * t_final,
@@ -371,21 +380,27 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
     try:
         if device == "cuda":
             tally = AngleTally.empty(n_trajectories, params)
-            tally_on_device(system, cfg, tally, speed, workers=workers, budget=budget,
-                            update=rep.update)
+            tally_on_device(system, cfg, tally, speed, workers=workers or os.cpu_count() or 1,
+                            budget=budget, update=rep.update)
         else:
             tally = _tally_on_cpu(system, cfg, n_trajectories, t_final, params, speed, seed,
-                                  workers, chunk, checkpoint, rep, kwargs)
+                                  workers, chunk, checkpoint, rep, kwargs, client)
     finally:
         rep.close()
     tally._open.clear()                     # the run is whole: nothing left to carry
     return tally
 
 
+#: The most members of one chunk of `hyperbolicity_tally` on the CPU by default (a chunk's
+#: members run one after the other on one worker; a checkpoint after each chunk).
+TALLY_CHUNK = 64
+
+
 def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, checkpoint,
-                  rep, kwargs) -> AngleTally:
-    """`hyperbolicity_tally` on the CPU: the members of `hyperbolicity_ensemble` in chunks in
-    one pool, each chunk's tally saved to ``checkpoint`` (``members_done``), resumed from it."""
+                  rep, kwargs, client) -> AngleTally:
+    """`hyperbolicity_tally` on the CPU: chunks of members as jobs (`_tally_chunk`) in one
+    process pool or on ``client``'s cluster, each chunk's tally merged here in seed order
+    (`_merge_chunk`) and saved to ``checkpoint`` (``members_done``), resumed from it."""
     check_cpu_store(cfg, t_final)
     if chunk is not None:
         chunk = positive_int("chunk", chunk)
@@ -393,43 +408,63 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
     if checkpoint is not None and os.path.exists(checkpoint):
         tally, done = AngleTally.resumed(checkpoint, L, tally.params)
         rep.update(done * t_final)
-    size = max(2, int(chunk or 4 * workers))                # an ensemble has 2 members or more
-    cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
-    widest = int(np.diff(cuts).max())
-    check_memory(widest * 8 * (3 * cfg.samples + 2 * cfg.m),
-                 f"the angles of a chunk of {widest} members ({cfg.samples} samples each)",
-                 "run smaller chunks (chunk) or sample less often (sample_every)")
     with ExitStack() as stack:
-        pool = None
-        if workers > 1 and L - done > 0:        # one pool; an interrupt cancels what is queued
-            pool = ProcessPoolExecutor(max_workers=min(workers, widest))
+        pool, slots = stack.enter_context(cluster_pool(client, workers))
+        slots = slots or os.cpu_count() or 1
+        size = chunk or max(1, min(TALLY_CHUNK, -(-L // (4 * slots))))
+        cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
+        # a checkpoint of another chunk size goes on from its members done
+        spans = [(max(int(a), done), int(b)) for a, b in zip(cuts[:-1], cuts[1:]) if b > done]
+        jobs = [(system, seed + a, b - a, speed, t_final, params, kwargs) for a, b in spans]
+        if pool is None and slots > 1 and len(jobs) > 1:   # one pool; an interrupt cancels
+            pool = ProcessPoolExecutor(max_workers=min(slots, len(jobs)))   # what is queued
             stack.callback(pool.shutdown, cancel_futures=True)
-        _chunks(system, cfg, tally, cuts, done, t_final, speed, seed, workers, pool, checkpoint,
-                L, rep, kwargs)
+        t_short, short = _short(cfg)            # compiles the kernels here first
+        prime = (_tally_chunk, (system, seed, 1, speed, t_short, params, {**kwargs, **short}))
+        parts = stream_jobs(_tally_chunk, jobs, 1 if pool is None else slots, prime=prime,
+                            name="hyperbolicity_tally", n=system.n, pool=pool)
+        stack.callback(parts.close)             # an error or a Ctrl-C: nothing more started
+        for (a, b), (part,) in zip(spans, parts):
+            _merge_chunk(tally, part, a)
+            if checkpoint is not None and b < L:
+                tally.params["members_done"] = b
+                tally.save(checkpoint)
+                tally.params.pop("members_done")
+            rep.update((b - a) * t_final)
     if checkpoint is not None and os.path.exists(checkpoint):
         os.remove(checkpoint)                    # the run is whole: its result is returned
     return tally
 
 
-def _chunks(system, cfg, tally, cuts, done, t_final, speed, seed, workers, pool, checkpoint, L,
-            rep, kwargs):
-    """The chunks [a, b) of `_tally_on_cpu` not yet ``done``, each added to ``tally`` and
-    saved to ``checkpoint``."""
-    for a, b in zip(cuts[:-1], cuts[1:]):
-        if b <= done:
-            continue
-        if a < done:                                  # a checkpoint of another chunk size
-            raise ValueError(f"{checkpoint} was written with another chunk size")
-        ens = _ensemble_on_cpu(system, cfg, int(b - a), t_final, speed, seed + int(a), workers,
-                               False, pool, kwargs)
-        for i, m in enumerate(ens.members):
-            tally.add(m.phi_full[None, :], a + i, variant="full")
-            tally.add(m.phi_restricted[None, :], a + i, variant="restricted")
-        rep.update(len(ens.members) * t_final)
-        if checkpoint is not None and b < L:
-            tally.params["members_done"] = int(b)
-            tally.save(checkpoint)
-            tally.params.pop("members_done")
+def _tally_chunk(job):
+    """In a worker: [the `AngleTally` of the members of ``job`` = (system, first seed,
+    members, speed, t_final, the tally's params, settings)], each member's angles by
+    `hyperbolicity_angles` from ``system.random_state(seed=s, speed=speed)`` (as
+    `hyperbolicity_ensemble`'s members), tallied and dropped."""
+    system, first, count, speed, t_final, params, kwargs = job
+    part = AngleTally.empty(count, dict(params, seed=first))
+    for i in range(count):
+        s = first + i
+        theta0, u0 = system.random_state(seed=s, speed=speed)
+        m = hyperbolicity_angles(system, theta0, u0, t_final, seed=s, **kwargs)
+        part.add(m.phi_full[None, :], i, variant="full")
+        part.add(m.phi_restricted[None, :], i, variant="restricted")
+    part._open.clear()                      # whole members: nothing carried, nothing sent
+    return [part]
+
+
+def _merge_chunk(tally, part, first):
+    """The members of ``part`` (a chunk's tally from `_tally_chunk`, members first, first +
+    1, …) into ``tally``'s rows, its sums as the chunk's worker made them."""
+    rows = slice(first, first + part.n_members)
+    if not np.array_equal(tally.seeds[rows], part.seeds):
+        raise ValueError(f"a chunk of seeds {part.seeds.tolist()} does not fit rows "
+                         f"{first} … of a tally of seeds {tally.seeds[0]} …")
+    for k in SUMS:
+        if k == "n":
+            tally.n[rows] = part.n
+        else:
+            getattr(tally, k)[:, rows] = getattr(part, k)
 
 
 def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **kw):

@@ -285,7 +285,7 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
 
 
 def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                     progress=False, **kwargs) -> EnsembleResult:
+                     progress=False, client=None, **kwargs) -> EnsembleResult:
     """`linkage_run` from ``n_trajectories`` random states of kinetic speed ``speed``
     (``system.random_state(seed=s, speed=speed)``, seeds seed, seed+1, …; also the seeds of
     the tangent vectors), in ``workers`` processes (default: all cores); ``kwargs``: the
@@ -295,9 +295,12 @@ def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     With several workers the kernels are compiled once, here, before the workers start (and
     announced here): a `linkage_run` of the first seed over two re-orthonormalisations, no
     transient, with the members' dt, exponents, projection and curvature setting, so the
-    workers load what it compiled from numba's disk cache (`run_ensemble`'s ``prime``)."""
+    workers load what it compiled from numba's disk cache (`run_ensemble`'s ``prime``).
+    ``client``: the members run as tasks of a Dask cluster instead (a ``Client``, a
+    scheduler's address, or "local": a LocalCluster of ``workers`` processes;
+    ``charts.analyses.cluster``, docs/cluster.md)."""
     return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
-                        workers=workers, progress=progress,
+                        workers=workers, progress=progress, client=client,
                         desc=f"linkage eps={system.eps:g} ensemble", prime=_prime(kwargs),
                         **kwargs)
 

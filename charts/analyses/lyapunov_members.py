@@ -12,10 +12,11 @@ from functools import partial
 import numpy as np
 
 from ..geometry.energy_shares import SHARE_BINS
-from ..solvers.device import DeviceFlows, cuda_module, device_bytes, flow_states, resolve_device
+from ..solvers.device import DeviceFlows, cuda_module, device_bytes, flow_states
 from ..solvers.lanes import MIN_LANES, LaneFlows, lanes_pay
 from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
+from .cluster import cluster_device, cluster_pool
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
                        member_states_of)
 from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, end_transient, lyapunov_flow,
@@ -26,7 +27,8 @@ __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_sta
 
 
 def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
-                      progress=False, device="cpu", lanes=None, **kwargs) -> EnsembleResult:
+                      progress=False, device="cpu", lanes=None, client=None,
+                      **kwargs) -> EnsembleResult:
     """`lyapunov_spectrum` from ``n_trajectories`` independent random initial states of speed
     ``speed`` (seeds seed, seed+1, …; also the seeds of their tangent vectors; ``kwargs``:
     the settings of `lyapunov_spectrum`).
@@ -48,14 +50,19 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     (``charts.solvers.device``: the same loop and equations compiled for the GPU; the
     members' bits differ from the CPU's by the GPU's fused multiply-adds and libm, see
     there); ``"auto"``: the GPU when there is one.  ``workers`` then only builds the
-    members' initial states."""
+    members' initial states.
+
+    ``client``: the blocks run as tasks of a Dask cluster instead (a ``Client``, a
+    scheduler's address, or "local": a LocalCluster of ``workers`` processes;
+    ``charts.analyses.cluster``, docs/cluster.md), as many blocks as the cluster has
+    threads at least; the same members, bit for bit, as in local processes."""
     unknown = sorted(set(kwargs) - SETTINGS)
     if unknown:
         raise TypeError(f"lyapunov_ensemble() got an unexpected keyword argument {unknown[0]!r} "
                         f"(its settings are lyapunov_spectrum's: {', '.join(sorted(SETTINGS))})")
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
-    device = resolve_device(device)
+    device = cluster_device(device, client)
     if lanes is not None and not isinstance(lanes, bool):
         raise ValueError(f"lanes must be None (where they pay), True or False, got {lanes!r}")
     if transient_rule(kwargs.get("t_transient")) == "auto":   # one transient for all members:
@@ -77,24 +84,27 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
                                   rep.update, "cuda", workers or os.cpu_count() or 1)
         rep.close()
         return ensemble_result(members, system, seed, speed, t_final, {**kwargs, "device": "cuda"})
-    cores = workers or os.cpu_count() or 1
-    n_blocks = min(n_trajectories, max(cores, -(-n_trajectories // LANE_BLOCK)))
-    cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
-    jobs = [(system, cfg, list(range(seed + a, seed + b)), speed) for a, b in zip(cut, cut[1:])]
-    desc = f"Lyapunov N={system.n} ensemble"
-    if lanes is None:                   # decided once: the parent compiles for every block
-        lanes = members_pay(system, cfg, max(np.diff(cut)), n_trajectories)
-    run = partial(lyapunov_lanes, lanes=lanes)
-    if n_blocks == 1 or workers == 1:        # in this process: progress chunk by chunk
-        rep = progress_reporter(progress, n_trajectories * t_final, desc)
-        members = [m for job in jobs for m in run(job, rep.update)]
-        rep.close()
-    else:
-        # the blocks' route (lanes or one by one) over two re-orthonormalisations
-        short = replace(cfg, transient=0, total=2 * cfg.reorth, n_batches=2, record=cfg.reorth)
-        members = map_jobs(run, jobs, np.diff(cut), workers, t_final, progress, desc,
-                           prime=(run, (system, short, jobs[0][2], speed)),
-                           name="lyapunov_ensemble", n=system.n)
+    with cluster_pool(client, workers) as (pool, slots):
+        cores = slots or os.cpu_count() or 1
+        n_blocks = min(n_trajectories, max(cores, -(-n_trajectories // LANE_BLOCK)))
+        cut = [n_trajectories * b // n_blocks for b in range(n_blocks + 1)]
+        jobs = [(system, cfg, list(range(seed + a, seed + b)), speed)
+                for a, b in zip(cut, cut[1:])]
+        desc = f"Lyapunov N={system.n} ensemble"
+        if lanes is None:                   # decided once: the parent compiles for every block
+            lanes = members_pay(system, cfg, max(np.diff(cut)), n_trajectories)
+        run = partial(lyapunov_lanes, lanes=lanes)
+        if pool is None and (n_blocks == 1 or workers == 1):   # here: progress chunk by chunk
+            rep = progress_reporter(progress, n_trajectories * t_final, desc)
+            members = [m for job in jobs for m in run(job, rep.update)]
+            rep.close()
+        else:
+            # the blocks' route (lanes or one by one) over two re-orthonormalisations
+            short = replace(cfg, transient=0, total=2 * cfg.reorth, n_batches=2,
+                            record=cfg.reorth)
+            members = map_jobs(run, jobs, np.diff(cut), slots, t_final, progress, desc,
+                               prime=(run, (system, short, jobs[0][2], speed)),
+                               name="lyapunov_ensemble", n=system.n, pool=pool)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
 
