@@ -59,6 +59,10 @@ def add_parser(sub) -> None:
                    help="independent trajectories, seeds 0 … M-1 (default 16384)")
     g.add_argument("--device", choices=("cpu", "cuda", "auto"), default="auto",
                    help="where the members run (default auto: the GPU when there is one)")
+    g.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run the members on the Dask cluster of this scheduler (e.g. "
+                   "tcp://host:8786; its workers must import charts), in chunks tallied on the "
+                   "workers; the same numbers as a local run (docs/cluster.md)")
     g.add_argument("--family", metavar="SWEEP",
                    help="the distinct systems of a bundled sweep (e.g. families-n4) instead "
                    "of --n")
@@ -177,7 +181,21 @@ def _statistics(args) -> int:
         raise ValueError(f"--samples must be a number > 0, got {args.samples}")
     t_final = members_window(args.samples, args.members)
     _plan_statistics(args, systems, t_final)
-    if resolve_device(args.device) == "cpu":
+    scheduler = getattr(args, "scheduler", None)
+    if scheduler:
+        from ..analyses.cluster import check_scheduler_address
+        check_scheduler_address(scheduler)
+        if args.device == "cuda":
+            raise ValueError("--scheduler runs the members on the cluster's CPU workers; "
+                             "leave out --device cuda (or --scheduler)")
+        if getattr(args, "workers", None):
+            raise ValueError("--workers sets the local processes; the cluster at --scheduler "
+                             "has its own workers")
+        print(f"charts: the angle test at scale runs on the Dask cluster at {scheduler}: "
+              f"{args.members} members x T = {t_final:g} per system, in chunks tallied on its "
+              "workers. With --out DIR the members done are kept: Ctrl-C, then the same "
+              "command, goes on from them", file=sys.stderr, flush=True)
+    elif resolve_device(args.device) == "cpu":
         integrated = args.members * (2 * t_final + 3 * args.t_transient)
         print(f"charts: the angle test at scale runs on the CPU here: {args.members} members x "
               f"T = {t_final:g} per system, {integrated:.3g} time units to integrate (both "
@@ -204,7 +222,8 @@ def _statistics(args) -> int:
                                      device=args.device, t_transient=args.t_transient,
                                      out=path, label=label, progress=sys.stderr.isatty(),
                                      checkpoint=None if args.out is None
-                                     else args.out / f"{slug}.partial.nc")
+                                     else args.out / f"{slug}.partial.nc",
+                                     client=scheduler or None)
         rep["slug"] = slug
         print(format_statistics(rep) + "\n", flush=True)
         reports.append(rep)

@@ -279,18 +279,19 @@ def members_window(samples, members, sample_every=0.1, unit=1.0) -> float:
 
 def statistics_verdict(system, samples, *, members, device="auto", t_transient=100.0,
                        sample_every=0.1, workers=None, out=None, label="",
-                       progress=False, checkpoint=None) -> dict:
+                       progress=False, checkpoint=None, client=None) -> dict:
     """The angle test at scale: ``members`` trajectories (seeds 0, 1, …) with at least
     ``samples`` angles together, tallied (``charts.analyses.angle_tally``), as one JSON-ready
     dict: the run (members, window, device, seconds) and `AngleTally.statistics` of both
     variants; the tally saved as ``out`` (a path) when given; ``checkpoint``: the path of
-    the partial tally of a run on the CPU (`hyperbolicity_tally`)."""
+    the partial tally of a run on the CPU (`hyperbolicity_tally`); ``client``: its chunks on
+    a Dask cluster (`hyperbolicity_tally`'s; the device is then the workers' CPUs)."""
     from ..analyses.hyperbolicity import hyperbolicity_tally
     t_final = members_window(samples, members, sample_every)
     t0 = time.perf_counter()
     tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,
                                 t_transient=t_transient, sample_every=sample_every,
-                                progress=progress, checkpoint=checkpoint)
+                                progress=progress, checkpoint=checkpoint, client=client)
     rep = tally_report(tally, label, time.perf_counter() - t0)
     if out is not None:
         rep["file"] = str(tally.save(out))
