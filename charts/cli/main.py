@@ -13,7 +13,8 @@ do: errors in the input (arguments, scene or sweep files, output folders, a fold
 process is writing) are reported in one line on stderr, ``charts: error: …``, with exit
 status 2; a run that started and failed (e.g. a trajectory through a singular point, or
 an unexpected error) exits with 1 and keeps its finished part; an interrupted run exits
-with 130 and says what was kept and how to resume it.  ``charts --debug …`` or
+with 130 (Ctrl-C) or 143 (SIGTERM, taken as Ctrl-C) and says what was kept and how to
+resume it.  ``charts --debug …`` or
 ``CHARTS_DEBUG=1`` shows the traceback of a failure (for developers).
 """
 from __future__ import annotations
@@ -26,6 +27,7 @@ import sys
 import traceback
 from pathlib import Path
 
+from ..runs import interrupts
 from ..runs.bundled import bundled_files
 from ..runs.cli_parser import OneLineParser
 
@@ -358,11 +360,18 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    """Run ``charts ARGV``; return the exit status (0, 1 failed, 2 usage, 130 interrupted)."""
+    """Run ``charts ARGV``; return the exit status (0, 1 failed, 2 usage, 130 interrupted,
+    143 stopped by SIGTERM)."""
     argv = list(sys.argv[1:] if argv is None else argv)
     debug = os.environ.get("CHARTS_DEBUG", "") not in ("", "0")
     if argv[:1] == ["--debug"]:
         debug, argv = True, argv[1:]
+    # SIGTERM as Ctrl-C (exit 143), pool workers quiet and stopped (charts.runs.interrupts)
+    with interrupts.handled():
+        return interrupts.exit_status(_main(argv, debug))
+
+
+def _main(argv, debug) -> int:
     try:
         return _dispatch(argv)
     except KeyboardInterrupt:            # outside the run and sweep handlers (which resume)
@@ -371,6 +380,9 @@ def main(argv=None) -> int:
     except BrokenPipeError:              # `charts scenes | head`
         return 0
     except Exception as exc:             # noqa: BLE001 - the one place that reports them all
+        if interrupts.interrupt_for(exc) is not None:   # a pool broken by the interrupt
+            print("\ncharts: interrupted", file=sys.stderr)
+            return EXIT_INTERRUPTED
         return _report_exception(exc, debug)
 
 

@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from ..runs.cli_parser import positive_count
+from ..runs.interrupts import EXIT_INTERRUPTED, interrupt_for
 from ..runs.io import atomic_text
 
 __all__ = ["add_parser", "cmd_verdict"]
@@ -68,6 +69,8 @@ def add_parser(sub) -> None:
                    "of --n")
     g.add_argument("--t-transient", type=float, default=100.0, metavar="T",
                    help="transient of both passes (default 100)")
+    g.add_argument("--workers", type=positive_count, default=None, metavar="W",
+                   help="processes on the CPU (default: one per core)")
     g.add_argument("--out", type=Path, metavar="DIR",
                    help="save each system's tally there (NetCDF) and statistics.json after "
                    "each system; a system whose tally or report is there already is read, not "
@@ -87,7 +90,7 @@ def cmd_verdict(args) -> int:
         raise ValueError("--masses, --weights and --level describe one system: give one --n")
     _check_outputs(args)
     if args.statistics:
-        return _statistics(args)
+        return _statistics_interruptible(args)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")               # a critical level is refused below
         systems = [RotorSystem(n, masses=args.masses, weights=args.weights, level=args.level)
@@ -220,7 +223,8 @@ def _statistics(args) -> int:
         else:
             rep = statistics_verdict(system, args.samples, members=args.members,
                                      device=args.device, t_transient=args.t_transient,
-                                     out=path, label=label, progress=sys.stderr.isatty(),
+                                     out=path, label=label, progress=_progress(label),
+                                     workers=args.workers,
                                      checkpoint=None if args.out is None
                                      else args.out / f"{slug}.partial.nc",
                                      client=scheduler or None)
@@ -233,6 +237,46 @@ def _statistics(args) -> int:
     if args.json is not None:
         atomic_text(args.json, json.dumps(reports, indent=1))
     return 0
+
+
+def _statistics_interruptible(args) -> int:
+    """`_statistics`; interrupted (Ctrl-C, SIGTERM: a ``BrokenProcessPool`` after one is
+    that interrupt, ``charts.runs.interrupts``): what is kept and how to go on, exit 130
+    (143 for SIGTERM, by ``charts.cli.main``)."""
+    from concurrent.futures.process import BrokenProcessPool
+    try:
+        return _statistics(args)
+    except (KeyboardInterrupt, BrokenProcessPool) as exc:
+        if not isinstance(exc, KeyboardInterrupt) and interrupt_for(exc) is None:
+            raise                           # a worker lost, not an interrupt
+    if args.out is None:
+        kept = ("the systems finished are reported above; without --out DIR the members "
+                "done of the one in progress are not kept: run the same command again to "
+                "start it over")
+    else:
+        kept = (f"the systems finished are reported above and in "
+                f"{args.out / 'statistics.json'}, the members done of the one in progress in "
+                f"{args.out} (on the CPU: *.partial.nc); run the same command again to "
+                "continue")
+    print(f"\ninterrupted: {kept}", file=sys.stderr, flush=True)
+    return EXIT_INTERRUPTED
+
+
+def _progress(label):
+    """The progress of a system's run: a bar on a terminal; elsewhere (a log, a pipe, a
+    batch job) a line the first time members are done and then at each further tenth of
+    the members' time, so that a log shows the run going."""
+    if sys.stderr.isatty():
+        return True
+    shown = [-1]
+
+    def line(t_done, t_total):
+        tenth = int(10 * t_done / t_total) if t_total > 0 else 10
+        if tenth > shown[0]:
+            shown[0] = tenth
+            print(f"charts: {label}: {100 * t_done / t_total:.0f} % of the members' time done",
+                  file=sys.stderr, flush=True)
+    return line
 
 
 def _same_run(tally, wanted) -> bool:

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .atomic import atomic_write
+from .atomic import atomic_write, signals_deferred
 from .file_settings import FLATTENED, MEMBER, decode_attributes, encode
 from .result_words import one_line, result_fields
 
@@ -190,16 +190,18 @@ def attributes(ds) -> dict:
 
 
 def save(ds, path) -> Path:
-    """Write the dataset to ``path`` (NetCDF-4), atomically."""
+    """Write the dataset to ``path`` (NetCDF-4), atomically; a Ctrl-C or SIGTERM meanwhile
+    is taken once the file is written (`signals_deferred`)."""
     require_xarray()
     path = Path(path)
     tmp = path.with_name(f".{path.name}.nc-tmp{os.getpid()}")
-    try:
-        ds.to_netcdf(tmp, engine=ENGINE)
-        atomic_write(path, tmp.read_bytes())
-    finally:
-        if tmp.exists():
-            tmp.unlink()
+    with signals_deferred():            # a Ctrl-C meanwhile: taken once the file is written
+        try:
+            ds.to_netcdf(tmp, engine=ENGINE)
+            atomic_write(path, tmp.read_bytes())
+        finally:
+            if tmp.exists():
+                tmp.unlink()
     return path
 
 

@@ -12,8 +12,8 @@ Lyapunov vectors on the trajectories of the angle test, ``charts.runs.reproduce_
 ``clv.png``, ``ftle.png``).
 Independent trajectories run in parallel processes (all cores by default).  Each finished
 trajectory is kept in ``DIR/pieces/`` as it finishes (``.npz`` with JSON metadata, never
-pickle: ``charts.runs.pieces``): a reproduction interrupted (Ctrl-C, exit 130) and run again
-with the same command computes only the missing pieces.
+pickle: ``charts.runs.pieces``): a reproduction interrupted (Ctrl-C, exit 130; SIGTERM, exit
+143) and run again with the same command computes only the missing pieces.
 
 Presets (unit speed, equal masses, RK4 dt = 0.01 everywhere):
 
@@ -44,6 +44,7 @@ from .pieces import kept_pieces, load_piece, save_piece
 from . import reproduce_clv, reproduce_report
 from .paper import PAPER_EXPONENTS
 from .cli_parser import OneLineParser, positive_count
+from .interrupts import handled, exit_status, interrupt_for, quiet_worker
 
 __all__ = ["main", "PRESETS", "PAPER_EXPONENTS"]
 
@@ -167,7 +168,7 @@ def _run_all(cfg, workers, quiet, pieces=None):
             print(f"reusing {len(results)} of {len(tasks)} finished pieces from {pieces}",
                   file=sys.stderr)
     from tqdm.auto import tqdm
-    pool = ProcessPoolExecutor(max_workers=workers, initializer=_quiet_interrupt)
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=quiet_worker)
     try:
         if len(results) < len(tasks):
             _compile_first(pool, quiet)
@@ -179,13 +180,25 @@ def _run_all(cfg, workers, quiet, pieces=None):
                 if pieces is not None:
                     save_piece(pieces, key, tasks[key][1], results[key])
                 bar.update(1)
-    except BaseException:
-        pool.shutdown(wait=False, cancel_futures=True)
-        for proc in list((getattr(pool, "_processes", None) or {}).values()):
-            proc.terminate()            # the pieces in flight are lost, the finished ones kept
+    except BaseException as exc:
+        _stop(pool)                     # the pieces in flight are lost, the finished ones kept
+        interrupt = interrupt_for(exc)
+        if interrupt is not None:       # the pool broke under a Ctrl-C or SIGTERM: that
+            raise interrupt from None   # interrupt, not a failure
         raise
     pool.shutdown()
     return results
+
+
+def _stop(pool):
+    """Stop ``pool`` now: what is queued cancelled, its workers killed and reaped (a worker
+    in the middle of a piece would otherwise run it to its end, and the command with it)."""
+    workers = list((getattr(pool, "_processes", None) or {}).values())   # gone after shutdown
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in workers:
+        proc.kill()
+    for proc in workers:
+        proc.join()
 
 
 def _compile_first(pool, quiet):
@@ -210,13 +223,6 @@ def _compile_first(pool, quiet):
 
 
 PIECES = "pieces"
-
-
-def _quiet_interrupt():
-    """In a worker process: Ctrl-C ends it silently (the main process reports what was
-    kept), instead of each worker printing a KeyboardInterrupt traceback."""
-    import signal
-    signal.signal(signal.SIGINT, lambda *_: os._exit(EXIT_INTERRUPTED))
 
 
 def _lyapunov_table(results, cfg):
@@ -322,4 +328,5 @@ def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    with handled():                     # SIGTERM as Ctrl-C (exit 143): charts.runs.interrupts
+        sys.exit(exit_status(main()))
