@@ -3,7 +3,6 @@ writes, a process that is gone.  Each wait polls for its event and gives up only
 `GUARD_S`, a guard against a hang (the test then fails), never a delay the test relies on."""
 from __future__ import annotations
 
-import os
 import re
 import time
 from pathlib import Path

@@ -1,5 +1,5 @@
 """The ``charts`` command line: help everywhere, one-line errors (never a traceback), bundled
-scenes, and a real Ctrl-C (SIGINT) followed by ``--resume``."""
+scenes, and a real Ctrl-C (SIGINT) or SIGTERM followed by ``--resume``."""
 from __future__ import annotations
 
 import json
@@ -8,7 +8,6 @@ import signal
 import subprocess
 import sys
 import textwrap
-import time
 
 import numpy as np
 import pytest
@@ -17,6 +16,7 @@ from charts.cli.main import bundled_scenes, main
 from charts.runs.runner import run_scene
 from charts.runs.scene import load_scene
 
+from process_events import HOOKED_RUN, read_until
 from scenarios import THROUGH_SINGULAR_N4
 
 CHARTS = [sys.executable, "-m", "charts.cli.main"]
@@ -132,19 +132,22 @@ sample_every = 100.0
 """
 
 
-def test_ctrl_c_keeps_a_valid_result_and_resume_finishes_it(tmp_path):
+@pytest.mark.parametrize("signum, status", [(signal.SIGINT, 130), (signal.SIGTERM, 143)],
+                         ids=["ctrl-c", "sigterm"])
+def test_ctrl_c_keeps_a_valid_result_and_resume_finishes_it(tmp_path, signum, status):
+    """Ctrl-C, or SIGTERM (what ``kill`` and job schedulers send, taken as Ctrl-C, exit 143),
+    once the first checkpoint is written: the child says so and waits for the signal
+    (`HOOKED_RUN`), so the signal never finds a run that already ended."""
     scene_file = tmp_path / "long.toml"
     scene_file.write_text(LONG)
     out = tmp_path / "out dir"                 # a space: the printed command must quote it
-    proc = subprocess.Popen(CHARTS + ["run", str(scene_file), "-o", str(out), "--quiet"],
+    proc = subprocess.Popen([sys.executable, "-c", HOOKED_RUN, "run", str(scene_file), "-o",
+                             str(out), "--quiet"], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
-    deadline = time.monotonic() + 300          # only guards against a hang
-    while not (out / "checkpoint.npz").exists() and proc.poll() is None:
-        assert time.monotonic() < deadline
-        time.sleep(0.005)
-    proc.send_signal(signal.SIGINT)
+    read_until(proc.stdout, r"checkpoint 1 of \d+ written", proc)
+    proc.send_signal(signum)
     _, err = proc.communicate()
-    assert proc.returncode == 130, err
+    assert proc.returncode == status, err
     assert "--resume" in err and "Traceback" not in err
     command = next(line for line in err.splitlines() if line.strip().startswith("charts run"))
     assert shlex.split(command)[4] == str(out)  # charts run SCENE -o DIR --resume

@@ -125,10 +125,10 @@ def test_a_folder_held_by_a_live_process_is_refused_a_killed_ones_lock_is_taken_
         files, capsys):
     out = prepare_output(files / "o")
     holder = subprocess.Popen([sys.executable, "-c",
-                               "import sys, time; sys.path[:0] = [sys.argv[1]]; "
+                               "import signal, sys; sys.path[:0] = [sys.argv[1]]; "
                                "from charts.runs.outdir import OutputLock; "
                                "l = OutputLock(sys.argv[2], 'holder').acquire(); "
-                               "print('held', flush=True); time.sleep(60)",
+                               "print('held', flush=True); signal.pause()",
                                os.path.dirname(os.path.dirname(__import__("charts").__file__)),
                                str(out)], stdout=subprocess.PIPE, text=True)
     try:

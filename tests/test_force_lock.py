@@ -50,10 +50,10 @@ def test_a_refused_force_deletes_nothing(scenes, capsys):
     assert {"result.json", "checkpoint.npz", "drift.png", "arrays.npz"} <= set(before)
     holder = subprocess.Popen(
         [sys.executable, "-c",
-         "import sys, time; sys.path[:0] = [sys.argv[1]]; "
+         "import signal, sys; sys.path[:0] = [sys.argv[1]]; "
          "from charts.runs.outdir import OutputLock; "
          "l = OutputLock(sys.argv[2], 'holder').acquire(); print('held', flush=True); "
-         "time.sleep(120)",
+         "signal.pause()",
          os.path.dirname(os.path.dirname(__import__("charts").__file__)), str(out)],
         stdout=subprocess.PIPE, text=True)
     try:

@@ -191,3 +191,16 @@ def test_verdict_statistics_ctrl_c_prints_no_worker_traceback(tmp_path):
     assert wait_gone(below) == []
     (partial,) = out.glob("*.partial.nc")
     assert isinstance(load(partial), AngleTally)
+
+
+def test_verdict_statistics_killed_leaves_no_worker(tmp_path):
+    """SIGKILL, which no handler sees, after the first progress line: on Linux the kernel
+    ends the workers with the command (``PR_SET_PDEATHSIG``); before, they ran on."""
+    out = tmp_path / "stats"
+    proc = _statistics(out)
+    read_until(proc.stderr, r"N = 3: \d+ % of the members' time done", proc)
+    workers = pool_workers(proc.pid)
+    assert workers
+    proc.send_signal(signal.SIGKILL)
+    proc.communicate()
+    assert wait_gone(workers) == []

@@ -1,7 +1,8 @@
 """Interrupted work resumes identically, and a real Dask cluster that loses a worker gives
 the local table.
 
-* ``charts run`` killed with SIGKILL at random moments (seeded), then ``--resume``: every
+* ``charts run`` killed with SIGKILL twice, each time after a seeded random number of its
+  checkpoints (at whatever point of the next chunk the kill lands), then ``--resume``: every
   number of result.json equals the uninterrupted run's (the killed run's lock is stale and
   taken over);
 * a resume into a folder written by another sweep refuses;
@@ -20,12 +21,12 @@ import signal
 import socket
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from process_events import wait_for
 from charts.runs.runner import run_scene
 from charts.runs.scene import load_scene
 from charts.runs.sweep import (SweepError, TABLE, csv_line, load_sweep, point_columns,
@@ -53,13 +54,23 @@ sample_every = 50.0
 
 
 def _wait_for(predicate, proc):
-    t0 = time.monotonic()
-    while not predicate() and proc.poll() is None:
-        assert time.monotonic() - t0 < WAIT_S
-        time.sleep(0.005)
+    """Poll for an event of the child ``proc`` (a file it writes); fails if it ends first."""
+    wait_for(predicate, proc)
+
+
+def _checkpoints(ck):
+    """Which checkpoint ``ck`` is: its mtime and inode (a new one replaces it: another
+    inode), or None (not written yet)."""
+    try:
+        st = ck.stat()
+    except FileNotFoundError:
+        return None
+    return st.st_mtime_ns, st.st_ino
 
 
 def test_run_killed_at_random_moments_resumes_identically(tmp_path):
+    """Each kill follows a seeded random number (1 to 3) of new checkpoints, events of the
+    run, with 10 or more of its 16 chunks still to run: the kill never finds it finished."""
     scene_file = tmp_path / "killed.toml"
     scene_file.write_text(SCENE)
     whole = run_scene(load_scene(scene_file), tmp_path / "whole", quiet=True)
@@ -70,9 +81,10 @@ def test_run_killed_at_random_moments_resumes_identically(tmp_path):
                                                                        else [])
         proc = subprocess.Popen(CHARTS + args, stderr=subprocess.PIPE, text=True)
         ck = out / "checkpoint.npz"
-        mtime = ck.stat().st_mtime_ns if ck.exists() else 0
-        _wait_for(lambda: ck.exists() and ck.stat().st_mtime_ns != mtime, proc)
-        time.sleep(rng.uniform(0.0, 0.3))       # a random moment after a checkpoint
+        for _ in range(rng.randint(1, 3)):      # the next checkpoints, one after the other
+            seen = _checkpoints(ck)
+            _wait_for(lambda: _checkpoints(ck) not in (None, seen), proc)
+        assert proc.poll() is None, "the run ended before the kill"
         proc.send_signal(signal.SIGKILL)
         proc.communicate()
         assert (out / ".charts.lock").exists()   # the killed run's lock is left behind
@@ -157,6 +169,14 @@ def _start(cmd, log):
     return subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
 
 
+def _address(sched_file):
+    """The scheduler's address from its file, once the file is there and whole; else None."""
+    try:
+        return json.loads(sched_file.read_text())["address"]
+    except (OSError, ValueError, KeyError):
+        return None
+
+
 def test_a_real_cluster_that_loses_a_worker_gives_the_local_table(tmp_path):
     spec = tmp_path / "s.toml"
     spec.write_text(SWEEP.format(name="cluster", masses="0.5, 1.0, 2.0, 4.0"))
@@ -171,14 +191,12 @@ def test_a_real_cluster_that_loses_a_worker_gives_the_local_table(tmp_path):
                             "--dashboard-address", ":0", "--scheduler-file", str(sched_file)],
                     log)]
     try:
-        t0 = time.monotonic()
-        while not sched_file.exists():
-            if procs[0].poll() is not None or time.monotonic() - t0 > 60:
-                pytest.skip("dask scheduler did not start: " +
-                            Path(tmp_path / "cluster.log").read_text()[-300:])
-            time.sleep(0.1)
-        time.sleep(0.2)
-        address = json.loads(sched_file.read_text())["address"]
+        try:                                    # the scheduler's file, whole (its address)
+            wait_for(lambda: _address(sched_file) is not None, procs[0], "the scheduler file")
+        except AssertionError:
+            pytest.skip("dask scheduler did not start: " +
+                        Path(tmp_path / "cluster.log").read_text()[-300:])
+        address = _address(sched_file)
         for _ in range(2):
             procs.append(_start(dask + ["worker", address, "--nworkers", "1", "--nthreads", "1",
                                         "--no-dashboard", "--death-timeout", "60"], log))

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 
+from process_events import read_until
 from charts.runs.sweep.execute import POINTS
 from charts.runs.sweep import (LOG, SUMMARY, TABLE, SweepError, load_sweep, parse_sweep,
                           point_columns, read_table, run_sweep, sweep_points)
@@ -122,6 +123,25 @@ def _rows(path):
     return read_table(path)[1] if path.exists() else []
 
 
+#: ``python -c HOOKED_SWEEP ARGS``: ``charts ARGS`` whose ``charts sweep`` prints a line when
+#: its second row is written and then writes no more (its workers go on), until it is killed.
+HOOKED_SWEEP = """
+import sys, time
+import charts.cli.sweep as command
+run_sweep = command.run_sweep
+def hooked(*args, **kwargs):
+    def on_point(done, total):
+        if done == 2:
+            print("2 rows written", flush=True)
+            while True:
+                time.sleep(0.01)
+    return run_sweep(*args, on_point=on_point, **kwargs)
+command.run_sweep = hooked
+from charts.cli.main import main
+sys.exit(main(sys.argv[1:]))
+"""
+
+
 def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
     from dask.distributed import LocalCluster
 
@@ -146,19 +166,19 @@ def test_dask_sweep_killed_and_resumed_equals_uninterrupted(tmp_path):
     assert (tmp_path / "ref" / "figures" / "overview.png").exists()
     assert "| masses | n | m | seeds | lambda_1 |" in (tmp_path / "ref" / "summary.md").read_text()
 
-    # 2. the command line on a local cluster of 2 workers, killed after two points
+    # 2. the command line on a local cluster of 2 workers, killed after two points: the
+    # sweep says when its second row is written and writes no more (HOOKED_SWEEP), so the
+    # kill never finds it finished, however busy the machine
     out = tmp_path / "cut"
-    proc = subprocess.Popen([sys.executable, "-m", "charts.cli.main", "sweep", str(spec), "-o",
+    proc = subprocess.Popen([sys.executable, "-c", HOOKED_SWEEP, "sweep", str(spec), "-o",
                              str(out), "--workers", "2", "--quiet", "--no-plots"],
-                            start_new_session=True, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE)
-    t0 = time.monotonic()
-    while len(_rows(out / TABLE)) < 2 and proc.poll() is None and time.monotonic() - t0 < WAIT_S:
-        time.sleep(0.05)
+                            start_new_session=True, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    read_until(proc.stdout, "2 rows written", proc)
     os.killpg(proc.pid, signal.SIGKILL)                      # the sweep and its workers
     proc.wait()
     before = {r["point_id"] for r in _rows(out / TABLE)}
-    assert 2 <= len(before) < len(ids), "the sweep was not killed midway"
+    assert len(before) == 2, "the sweep was not killed midway"
 
     # 3. resume: only the missing points are computed; the table equals the uninterrupted one
     with pytest.raises(SweepError, match="--resume"):
