@@ -15,7 +15,8 @@ from .plan import Plan
 from .scene import Scene, scene_to_dict
 from .scene_kind import scene_kind
 
-__all__ = ["RunState", "RunError", "CHECKPOINT", "scene_hash", "units_done"]
+__all__ = ["RunState", "RunError", "CheckpointError", "CHECKPOINT", "scene_hash", "units_done",
+           "read_checkpoint"]
 
 #: File name of the checkpoint in the output folder.
 CHECKPOINT = "checkpoint.npz"
@@ -23,6 +24,28 @@ CHECKPOINT = "checkpoint.npz"
 
 class RunError(RuntimeError):
     """A scene that validated but cannot run in this installation or output folder."""
+
+
+class CheckpointError(RunError):
+    """A checkpoint that a resume cannot trust: it cannot be read (empty, torn, not a
+    checkpoint), or what it holds disagrees with itself or with the run's settings.  The
+    message names the file and what is wrong.  ``charts run --resume`` refuses it; a
+    sweep's point takes it as torn and computes the point again, with a notice."""
+
+
+def read_checkpoint(path) -> dict:
+    """Every array of the checkpoint at ``path``, read whole (``allow_pickle=False``);
+    `CheckpointError` naming the file where it cannot be read: empty or torn (an
+    ``EOFError``, a ``BadZipFile``, a member cut short), not a checkpoint at all."""
+    try:
+        with np.load(path, allow_pickle=False) as a:
+            if not hasattr(a, "files"):                     # a bare .npy array
+                raise ValueError("an array, not a folder of named arrays")
+            return {k: a[k] for k in a.files}
+    except Exception as exc:        # noqa: BLE001 - whatever a damaged file makes NumPy raise
+        text = " ".join(str(exc).split()) or "no detail"
+        raise CheckpointError(f"{path} is not a usable checkpoint ({type(exc).__name__}: "
+                              f"{text[:200]})") from None
 
 
 def scene_hash(scene: Scene) -> str:

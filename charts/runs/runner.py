@@ -45,13 +45,15 @@ from .outdir import OutputLock, prepare_output
 from .paper import PAPER_EXPONENTS
 from .plan import Plan, plan_scene, ticks
 from .recorders import make_recorders
-from .run_state import CHECKPOINT, RunError, RunState, scene_hash, units_done
+from .run_state import (CHECKPOINT, CheckpointError, RunError, RunState, read_checkpoint,
+                        scene_hash, units_done)
 from .scene_kind import scene_kind
 from .scene import Scene
 from .scene_results import (FTLE_STATS, finalize, progress_of, result_header, resume_command,
                             write_result)
 
-__all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "PAPER_EXPONENTS",
+__all__ = ["Plan", "plan_scene", "run_scene", "SceneRun", "RunError", "CheckpointError",
+           "PAPER_EXPONENTS",
            "clear_run_outputs", "RUN_FILES", "SCENE_FIGURES"]
 
 #: The files of a scene run besides its figures (``charts.runs.scene_results``).
@@ -153,12 +155,12 @@ class SceneRun:
             if not self.ck.exists():
                 raise RunError(f"--resume: no checkpoint in {outdir} (nothing to resume; "
                                "run without --resume)")
-            with np.load(self.ck) as a:
-                if str(a["scene_hash"]) != self.digest:
-                    raise RunError(f"--resume: the checkpoint in {outdir} belongs to a "
-                                   "different scene (the scene file changed); run without "
-                                   "--resume")
-                st.load_arrays(a)
+            a = _checkpoint_of(self.ck)
+            if "scene_hash" in a and str(a["scene_hash"]) != self.digest:
+                raise RunError(f"--resume: the checkpoint in {outdir} belongs to a "
+                               "different scene (the scene file changed); run without "
+                               "--resume")
+            st.load_arrays(a)
         elif not force and (self.ck.exists() or (outdir / "result.json").exists()):
             if _read_status(outdir) == "interrupted":
                 raise RunError(f"{outdir} holds an interrupted run: continue it with --resume, "
@@ -342,6 +344,21 @@ def _clv_pass(st: RunState):
     st.rec["clv_ftle"] = ftle
     st.rhs += st.plan.clv["rhs_evaluations"]
     st.steps += st.plan.clv["steps"]
+
+
+def _checkpoint_of(path) -> dict:
+    """The arrays of the checkpoint ``path`` for a resume; `CheckpointError` naming it, with
+    the remedy, where it cannot be read."""
+    try:
+        return read_checkpoint(path)
+    except CheckpointError as exc:
+        raise _resume_error(exc) from None
+
+
+def _resume_error(exc) -> CheckpointError:
+    """The `CheckpointError` of ``charts run --resume``: ``exc``'s words and the remedy."""
+    return CheckpointError(f"--resume: {exc}; its run cannot be continued: start it over "
+                           "with --force (or choose another output folder)")
 
 
 def _read_status(outdir):

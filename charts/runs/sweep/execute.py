@@ -7,6 +7,7 @@ import json
 import logging
 import os
 import shutil
+import sys
 import time
 import uuid
 
@@ -218,13 +219,18 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
 def _add_rows(group, out, columns, app, info, bar, on_point, n_done, total):
     """The rows of ``group`` (points of one scene) from its outcome ``out``; the log's
     record of a point that continued the checkpoint of an interrupted sweep says from where
-    (``resumed_from``: simulated time and chunks done then)."""
+    (``resumed_from``: simulated time and chunks done then); a point whose checkpoint could
+    not be trusted and was computed again says so on stderr, quiet or not, and in the log
+    (``notice``)."""
+    if out.get("notice"):
+        bar.write(out["notice"], file=sys.stderr)
     for p in group:
         app.add(point_row(p, out, columns),
                 {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
                  "status": out["status"], "wall_s": out["wall_s"],
                  "worker": out["worker"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
                  **({"resumed_from": out["resumed_from"]} if out.get("resumed_from") else {}),
+                 **({"notice": out["notice"]} if out.get("notice") else {}),
                  **({"same_scene_as": group[0].index} if p is not group[0] else {})})
         info["computed"].append(p.point_id)
         if out["status"] != "complete":

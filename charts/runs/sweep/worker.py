@@ -31,7 +31,10 @@ def evaluate_point(raw: dict, keep=None) -> dict:
     temporary folder.  Returns {'status', 'error', 'stats', 'wall_s', 'worker', 't_final',
     'resumed_from'} ('resumed_from': the simulated time and chunks of the checkpoint the
     point continued, None if it ran from the start); never raises for a point that fails to
-    integrate (status 'failed' with the message)."""
+    integrate (status 'failed' with the message).  A checkpoint there that cannot be
+    trusted (empty, torn, inconsistent: `runner.CheckpointError`) is taken as torn: the
+    point is computed again from the start, and 'notice' says so in one line (the sweep
+    prints it and logs it)."""
     scene = parse_scene(raw, source=raw.get("name", "<point>"))
     t0 = time.perf_counter()
     folder = _kept_folder(keep)
@@ -39,14 +42,18 @@ def evaluate_point(raw: dict, keep=None) -> dict:
         with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
             return _point_outcome(_run(scene, td, False), Path(td), time.perf_counter() - t0)
     resume = (folder / runner.CHECKPOINT).exists()
+    notices = []
     try:
-        outcome = _run(scene, folder, resume)
+        outcome = _run(scene, folder, resume, notices)
     except OutputError:
         # the folder is held by another live run of this point (Dask may run a task twice,
         # e.g. on a worker it took for lost): compute it here from the start instead
         with tempfile.TemporaryDirectory(prefix="charts-sweep-") as td:
             return _point_outcome(_run(scene, td, False), Path(td), time.perf_counter() - t0)
-    return _point_outcome(outcome, folder, time.perf_counter() - t0)
+    out = _point_outcome(outcome, folder, time.perf_counter() - t0)
+    if notices:
+        out["notice"] = notices[0]
+    return out
 
 
 def _kept_folder(keep):
@@ -61,21 +68,23 @@ def _kept_folder(keep):
         return None
 
 
-def _run(scene, folder, resume):
+def _run(scene, folder, resume, notices=None):
     """`runner.run_scene` into ``folder``: resumed from its checkpoint if ``resume`` (started
-    over when that checkpoint belongs to another scene or cannot be read); the result dict,
-    or the `RunError` of a run that failed."""
+    over when that checkpoint belongs to another scene, or cannot be trusted: then with a
+    line in ``notices``); the result dict, or the `RunError` of a run that failed."""
     try:
         if resume:
             try:
                 return runner.run_scene(scene, folder, quiet=True, resume=True)
+            except OutputError:                             # held by a live run: the caller's
+                raise
+            except (runner.CheckpointError, OSError, ValueError, KeyError) as exc:   # torn
+                text = str(exc).removeprefix("--resume: ").split("; its run cannot")[0]
+                if notices is not None:
+                    notices.append(f"charts: {text}; computing the point again")
             except runner.RunError as exc:
                 if "--resume" not in str(exc):
                     raise
-            except OutputError:                             # held by a live run: the caller's
-                raise
-            except (OSError, ValueError, KeyError):          # a torn checkpoint
-                pass
             return runner.run_scene(scene, folder, quiet=True, force=True)
         return runner.run_scene(scene, folder, quiet=True)
     except runner.RunError as exc:
