@@ -1,12 +1,15 @@
 """Checkpoints a resume cannot trust (docs/reliability.md, "Interrupted work resumes
-identically"): a sweep's point whose checkpoint is empty or torn is computed again, with a
-one-line notice, to the uninterrupted row."""
+identically"): a sweep's point whose checkpoint is empty, torn or foreign is computed again,
+with a one-line notice, to the uninterrupted row; ``charts run --resume`` refuses a
+checkpoint that cannot be read, or whose counters or state disagree with what it holds or
+with the run, naming the file and the field; so does the angle tally's checkpoint."""
 from __future__ import annotations
 
 import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from charts.runs import runner
@@ -114,3 +117,252 @@ def test_charts_run_resume_refuses_a_torn_checkpoint_naming_it(tmp_path, damage,
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and f"{out / runner.CHECKPOINT} is not a usable checkpoint" in err[0]
     assert "start it over with --force" in err[0]
+
+
+# ------------------------------------------------------------------ a run's checkpoint
+#: N = 3, 4 chunks, the Lyapunov effect (the kernel engine: a tangent flow), drift records
+KERNEL = ('[system]\nn = 3\n[run]\nt_final = 4.0\nt_transient = 0.0\ncheckpoint_every = 1.0\n'
+          'sample_dt = 0.5\n[effects.lyapunov]\nn_batches = 2\n[effects.drift]\n'
+          'sample_every = 0.5\n')
+#: the same through ``integrate`` (chart formulation): a state y, no tangent flow
+CHART = ('[system]\nn = 3\n[integrator]\nformulation = "chart"\n[run]\nt_final = 4.0\n'
+         't_transient = 0.0\ncheckpoint_every = 1.0\nsample_dt = 0.5\n[effects.drift]\n'
+         'sample_every = 0.5\n')
+
+
+def _interrupted_run(tmp_path, text):
+    """A scene run stopped after 2 of its 4 chunks: (scene file, folder, its arrays)."""
+    from charts.runs.scene import load_scene
+    scene = tmp_path / "s.toml"
+    scene.write_text(text)
+    out = tmp_path / "out"
+
+    def halfway(index, n_chunks):
+        if index == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        runner.run_scene(load_scene(scene), out, quiet=True, on_chunk=halfway)
+    with np.load(out / runner.CHECKPOINT) as a:
+        return scene, out, {k: a[k] for k in a.files}
+
+
+def _with(a, **changes):
+    """The arrays ``a`` with ``changes`` (None: the field left out)."""
+    out = {k: v.copy() for k, v in a.items()}
+    for k, v in changes.items():
+        if v is None:
+            out.pop(k)
+        else:
+            out[k] = v
+    return out
+
+
+def _scalars(a, **counters):
+    from charts.runs.checkpoint_checks import SCALARS
+    s = a["scalars"].copy()
+    for name, v in counters.items():
+        s[SCALARS.index(name)] = v
+    return s
+
+
+def _nan_at_start(x):
+    x = x.astype(float)
+    x.flat[0] = np.nan
+    return x
+
+
+#: (scene, how the checkpoint is changed, what the one line must say)
+FOREIGN = {
+    "chunk counter past the end": (KERNEL, lambda a: _with(a, scalars=_scalars(
+        a, chunk_index=9)), "its chunk counter is 9, past the end of this run's 4 chunks"),
+    "complete with a quarter of the window": (KERNEL, lambda a: _with(a, scalars=_scalars(
+        a, chunk_index=4, done=1)), "its step counter (flow_counter) is 200 where 4 of the "
+        "run's 4 chunks end at step 400"),
+    "done before the end": (KERNEL, lambda a: _with(a, scalars=_scalars(a, done=1)),
+                            "it says the run is done after 2 of 4 chunks"),
+    "NaN state": (KERNEL, lambda a: _with(a, flow_Z=_nan_at_start(a["flow_Z"])),
+                  "the field 'flow_Z' holds 1 non-finite value(s)"),
+    "scalar state": (KERNEL, lambda a: _with(a, flow_Z=np.array(0.5)),
+                     "the field 'flow_Z' is a scalar, this run's has shape (2, 6)"),
+    "missing field": (KERNEL, lambda a: _with(a, flow_logsum=None),
+                      "the field 'flow_logsum' is missing"),
+    "another N's state": (KERNEL, lambda a: _with(a, flow_Z=np.zeros((2, 8)),
+                                                  flow_sc=np.zeros((2, 4))),
+                          "the field 'flow_Z' has shape (2, 8), this run's has shape (2, 6)"),
+    "Lyapunov marks": (KERNEL, lambda a: _with(a, lyap_ticks=a["lyap_ticks"][:0],
+                                               lyap_logsums=a["lyap_logsums"][:0]),
+                       "it holds 0 Lyapunov batch marks (lyap_ticks) where 2 chunks end 1"),
+    "records": (KERNEL, lambda a: _with(a, rec_drift=a["rec_drift"][:-1],
+                                        rect_drift=a["rect_drift"][:-1]),
+                "it holds 3 rows of rec_drift where 2 chunks record 4"),
+    "NaN state, chart formulation": (CHART, lambda a: _with(a, y=_nan_at_start(a["y"])),
+                                     "the field 'y' holds 1 non-finite value(s)"),
+    "another N's state, chart formulation": (CHART, lambda a: _with(a, y=np.zeros(8)),
+                                             "the field 'y' has shape (8,), this run's has "
+                                             "shape (6,)"),
+    "state of text": (CHART, lambda a: _with(a, y=np.array(["a"] * 6)),
+                      "the field 'y' holds <U1 values, not numbers"),
+}
+
+
+@pytest.mark.parametrize("case", list(FOREIGN))
+def test_a_run_checkpoint_from_outside_is_refused_naming_the_file_and_field(tmp_path, case,
+                                                                            capsys):
+    """A checkpoint whose counters disagree with what it holds or with the run's settings,
+    or whose state is NaN, a scalar, missing or another N's: ``charts run --resume`` refuses
+    it in one line naming the file and the field (exit 2).  Before: a chunk counter at the
+    end resumed to "complete" with a quarter of the averaging window, a counter past it
+    too; a NaN state failed later as if the step were too large; a scalar was broadcast
+    into every component."""
+    from charts.cli.main import main
+    from charts.runs.io import npz_bytes
+    text, change, said = FOREIGN[case]
+    scene, out, arrays = _interrupted_run(tmp_path, text)
+    ck = out / runner.CHECKPOINT
+    ck.write_bytes(npz_bytes(change(arrays)))
+    capsys.readouterr()
+    assert main(["run", str(scene), "-o", str(out), "--resume", "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1, err
+    assert err[0].startswith(f"charts: error: --resume: {ck} is not a usable checkpoint: "), err
+    assert said in err[0], err
+
+
+@pytest.mark.parametrize("text", [KERNEL, CHART], ids=["kernel", "chart"])
+def test_a_checkpoint_of_the_run_itself_resumes_to_the_whole_run(tmp_path, text):
+    """The checks pass the run's own checkpoint: the resume gives the uninterrupted result."""
+    from charts.runs.scene import load_scene
+    scene, out, _ = _interrupted_run(tmp_path, text)
+    resumed = runner.run_scene(load_scene(scene), out, quiet=True, resume=True)
+    whole = runner.run_scene(load_scene(scene), tmp_path / "whole", quiet=True)
+    assert resumed["results"] == whole["results"] and resumed["drift"] == whole["drift"]
+
+
+def test_a_sweep_point_takes_a_foreign_checkpoint_as_torn(tmp_path):
+    """In a sweep's points/<id> the same checkpoint (a NaN state) is taken as torn, as the
+    sweep takes every damaged checkpoint: the point is computed again, with the notice
+    naming the file and the field, to the uninterrupted row."""
+    from charts.runs.io import npz_bytes
+    from charts.runs.sweep.worker import evaluate_point
+    (point,) = [p for p in sweep_points(load_sweep(_two_file(tmp_path)))][:1]
+    keep = tmp_path / POINTS / point.point_id
+
+    def halfway(index, n_chunks):
+        if index == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        runner.run_scene(point.scene, keep, quiet=True, on_chunk=halfway)
+    ck = keep / runner.CHECKPOINT
+    with np.load(ck) as a:
+        arrays = {k: a[k] for k in a.files}
+    ck.write_bytes(npz_bytes(_with(arrays, flow_Z=_nan_at_start(arrays["flow_Z"]))))
+    redone = evaluate_point(point.raw, str(keep))
+    assert redone["notice"].startswith(f"charts: {ck} is not a usable checkpoint: the field "
+                                       "'flow_Z' holds 1 non-finite value(s)")
+    assert redone["notice"].endswith("; computing the point again")
+    fresh = evaluate_point(point.raw)
+    assert redone["status"] == "complete" and redone["stats"] == fresh["stats"]
+    assert redone["resumed_from"] is None
+
+
+def _two_file(tmp_path):
+    spec = tmp_path / "two.toml"
+    spec.write_text(TWO)
+    return spec
+
+
+# ------------------------------------------------------------------ the tally's checkpoint
+@pytest.fixture(scope="module")
+def partial_tally(tmp_path_factory):
+    """The checkpoint of a CPU angle tally of 5 members (chunks of 2) interrupted while it
+    merged its second chunk: 2 members done; and the uninterrupted tally."""
+    pytest.importorskip("xarray")
+    import charts.analyses.hyperbolicity as hyp
+    from charts import RotorSystem
+    S = RotorSystem(3)
+    kw = dict(t_transient=1.0, workers=1, chunk=2)
+    whole = hyp.hyperbolicity_tally(S, 5, 3.0, **kw)
+    real, calls = hyp._merge_chunk, []
+
+    def cut(*a, **k):
+        calls.append(1)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(*a, **k)
+    path = tmp_path_factory.mktemp("tally") / "partial.nc"
+    hyp._merge_chunk = cut
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            hyp.hyperbolicity_tally(S, 5, 3.0, checkpoint=path, **kw)
+    finally:
+        hyp._merge_chunk = real
+    return S, kw, path, whole
+
+
+def _tally_changed(path, to, change):
+    """The checkpoint at ``path`` with ``change(tally)`` applied, saved at ``to``."""
+    from charts import load
+    t = load(path)
+    change(t)
+    t.save(to)
+    return to
+
+
+TALLIES = {
+    "members_done too small: members counted twice": (
+        lambda t: t.params.update(members_done=1),
+        "members_done = 1, but 2 of its members have angles (n > 0), the last member 1"),
+    "members_done too large: members left out": (
+        lambda t: t.params.update(members_done=4),
+        "members_done = 4, but 2 of its members have angles (n > 0), the last member 1"),
+    "members_done not a count": (lambda t: t.params.update(members_done=-3),
+                                 "members_done = -3 is not a count of its 5 members"),
+    "sums past members_done": (lambda t: t.episodes.__setitem__((0, 3), 7),
+                               "episodes holds sums of members past members_done = 2"),
+    "unequal counts": (lambda t: t.n.__setitem__(1, 29),
+                       "the members done have unequal counts n (29 to 30)"),
+    "NaN sum": (lambda t: t.law_logsum.__setitem__((1, 0, 0), np.nan),
+                "law_logsum holds non-finite values"),
+}
+
+
+@pytest.mark.parametrize("case", list(TALLIES))
+def test_a_tally_checkpoint_from_outside_is_refused_naming_the_file(tmp_path, partial_tally,
+                                                                    case):
+    """A tally checkpoint whose members_done disagrees with the sums it holds, or whose
+    sums are not a tally's: ValueError naming the file and the field, before any member
+    runs.  Before, a members_done below the members summed counted them twice (the route
+    that added each chunk's angles) and one above left members out without a word."""
+    from charts.analyses.hyperbolicity import hyperbolicity_tally
+    S, kw, path, _ = partial_tally
+    change, said = TALLIES[case]
+    bad = _tally_changed(path, tmp_path / "partial.nc", change)
+    with pytest.raises(ValueError) as caught:
+        hyperbolicity_tally(S, 5, 3.0, checkpoint=bad, **kw)
+    assert str(caught.value).startswith(f"{bad} is not a usable checkpoint: "), caught.value
+    assert said in str(caught.value)
+
+
+def test_a_tally_checkpoint_missing_a_field_is_refused_naming_it(tmp_path, partial_tally):
+    import xarray as xr
+    from charts.analyses.hyperbolicity import hyperbolicity_tally
+    S, kw, path, _ = partial_tally
+    bad = tmp_path / "partial.nc"
+    with xr.load_dataset(path) as ds:
+        ds.drop_vars("ladder_sum").to_netcdf(bad, engine="h5netcdf")
+    with pytest.raises(ValueError, match=r"is not a usable checkpoint: the field 'ladder_sum' "
+                                         "is missing"):
+        hyperbolicity_tally(S, 5, 3.0, checkpoint=bad, **kw)
+
+
+def test_the_tallys_own_checkpoint_resumes_to_the_whole_tally(tmp_path, partial_tally):
+    import shutil
+    from charts.analyses.angle_tally import SUMS
+    from charts.analyses.hyperbolicity import hyperbolicity_tally
+    S, kw, path, whole = partial_tally
+    mine = shutil.copy(path, tmp_path / "partial.nc")
+    resumed = hyperbolicity_tally(S, 5, 3.0, checkpoint=mine, **kw)
+    for k in SUMS:
+        assert np.array_equal(getattr(resumed, k), getattr(whole, k)), k

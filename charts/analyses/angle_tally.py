@@ -21,6 +21,7 @@ verdict's numbers with intervals.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -145,15 +146,23 @@ class AngleTally(Archivable):
     def resumed(cls, path, members, params) -> tuple:
         """(the tally saved at ``path`` by an interrupted run of ``members`` members with
         ``params``, members done): its whole members, ``params["members_done"]`` of them;
-        ValueError where the file holds another run's tally."""
-        saved = load(path)
+        ValueError naming the file where it holds another run's tally, or one whose sums
+        disagree with themselves or with its ``members_done`` (`_check_resumed`): such a
+        file would count members twice, or leave some out."""
+        try:
+            saved = load(path)
+        except KeyError as exc:                     # a field the tally needs is not there
+            name = re.search(r"'([^']+)'", str(exc))
+            raise ValueError(f"{path} is not a usable checkpoint: the field "
+                             f"{name.group(0) if name else exc} is missing; remove it to "
+                             "start over") from None
         kept = getattr(saved, "params", {})
         if not isinstance(saved, AngleTally) or "members_done" not in kept \
                 or {k: v for k, v in kept.items() if k != "members_done"} != params \
-                or saved.n_members != members:
+                or np.shape(saved.n) != (members,):
             raise ValueError(f"{path} holds the tally of another run; remove it or name "
                              "another checkpoint")
-        done = int(saved.params.pop("members_done"))
+        done = _check_resumed(path, saved, saved.params.pop("members_done"))
         saved._open.update(carries(len(VARIANTS), members))     # whole members: no carry
         return saved, done
 
@@ -391,6 +400,49 @@ class AngleTally(Archivable):
     def from_xarray(cls, ds):
         return cls(**{k: ds[k].values for k in SUMS}, params=attributes(ds)["params"],
                    seeds=ds["seed"].values)
+
+
+def _check_resumed(path, tally, done) -> int:
+    """``done``, the members_done of the checkpoint ``tally`` read from ``path``, as an
+    integer once the file is found consistent: each sum of the shape of its members, finite
+    where a sum must be, and the members done exactly those with angles (all of one count),
+    those after them empty; ValueError naming the file and the field otherwise."""
+    def bad(what):
+        raise ValueError(f"{path} is not a usable checkpoint: {what}; remove it to start over")
+    L, V = tally.n_members, len(VARIANTS)
+    if isinstance(done, bool) or not isinstance(done, (int, np.integer)) or not 0 <= done <= L:
+        bad(f"members_done = {done!r} is not a count of its {L} members")
+    done = int(done)
+    shapes = dict(n=(L,), min=(V, L), argmin=(V, L), zeros=(V, L), below=(V, L, EDGES.size),
+                  law_count=(V, L, len(LAW_X0)), law_logsum=(V, L, len(LAW_X0)),
+                  ladder_count=(V, L, LADDER), ladder_sum=(V, L, LADDER),
+                  ladder_sumsq=(V, L, LADDER), episodes=(V, L))
+    for name, shape in shapes.items():
+        x = np.asarray(getattr(tally, name))
+        if x.shape != shape:
+            bad(f"{name} has shape {x.shape}, a tally of {L} members has {shape}")
+        if x.dtype.kind not in "iuf":
+            bad(f"{name} holds {x.dtype} values, not numbers")
+        if name != "min" and not np.all(np.isfinite(x)):
+            bad(f"{name} holds non-finite values")
+        if np.any(x < (-1 if name == "argmin" else 0)):
+            bad(f"{name} holds negative values")
+    if np.any(np.isnan(tally.min)):
+        bad("min holds NaN")
+    with_angles = np.flatnonzero(tally.n > 0)
+    if with_angles.size != done or (done and with_angles[-1] != done - 1):
+        bad(f"members_done = {done}, but {with_angles.size} of its members have angles (n > 0)"
+            + (f", the last member {int(with_angles[-1])}" if with_angles.size else ""))
+    if done and np.any(tally.n[:done] != tally.n[0]):
+        bad(f"the members done have unequal counts n ({int(tally.n[:done].min())} to "
+            f"{int(tally.n[:done].max())}) where each ran the whole window")
+    for name in shapes:
+        x = np.asarray(getattr(tally, name))
+        rest = x[done:] if name == "n" else x[:, done:]
+        empty = np.inf if name == "min" else -1 if name == "argmin" else 0
+        if np.any(rest != empty):
+            bad(f"{name} holds sums of members past members_done = {done}")
+    return done
 
 
 def _finite_or_none(x):

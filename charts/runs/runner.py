@@ -47,6 +47,7 @@ from .plan import Plan, plan_scene, ticks
 from .recorders import make_recorders
 from .run_state import (CHECKPOINT, CheckpointError, RunError, RunState, read_checkpoint,
                         scene_hash, units_done)
+from .checkpoint_checks import check_checkpoint
 from .scene_kind import scene_kind
 from .scene import Scene
 from .scene_results import (FTLE_STATS, finalize, progress_of, result_header, resume_command,
@@ -160,7 +161,6 @@ class SceneRun:
                 raise RunError(f"--resume: the checkpoint in {outdir} belongs to a "
                                "different scene (the scene file changed); run without "
                                "--resume")
-            st.load_arrays(a)
         elif not force and (self.ck.exists() or (outdir / "result.json").exists()):
             if _read_status(outdir) == "interrupted":
                 raise RunError(f"{outdir} holds an interrupted run: continue it with --resume, "
@@ -179,6 +179,11 @@ class SceneRun:
         self.n_units = self.n_main + len(self.passes)
         st.n_main = self.n_main
         if resume:
+            try:                        # checked against itself and this run, then trusted
+                check_checkpoint(self.ck, a, self)
+            except CheckpointError as exc:
+                raise _resume_error(exc) from None
+            st.load_arrays(a)
             progress = progress_of(st, self.ends, transient, self.unit)
             st.resumed_from = {key: progress[key] for key in ("t_done", "chunks_done")}
 
