@@ -42,6 +42,7 @@ The members of an ensemble, in one file: `member_settings` (their settings, shar
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -49,7 +50,8 @@ import numpy as np
 from .result_words import ANGULAR_VELOCITY
 
 __all__ = ["FLATTENED", "MARKS", "LISTS", "BOOLEANS", "NONE", "encode", "decode_attributes",
-           "MEMBER", "member_settings", "member_attributes", "MEMBER_DIMS", "MEMBER_UNITS"]
+           "MEMBER", "member_settings", "member_attributes", "MEMBER_DIMS", "MEMBER_UNITS",
+           "MAX_JSON_DEPTH", "json_depth", "parse_json"]
 
 _JSON = "json:"
 
@@ -69,11 +71,44 @@ def _json(v) -> str:
     return _JSON + json.dumps(v, default=_json_default)
 
 
+#: The deepest nesting of lists and dicts a ``json:`` value may hold (`parse_json`): the
+#: settings nest a few levels; a file from elsewhere with 100,000 levels would exhaust the
+#: recursion of ``json.loads``.
+MAX_JSON_DEPTH = 64
+_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
+
+
+def json_depth(text: str) -> int:
+    """The deepest nesting of brackets (``[``, ``{``) in the JSON ``text``, brackets inside
+    strings not counted; found by a scan, without parsing (no recursion)."""
+    depth = deepest = 0
+    for m in _JSON_TOKENS.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif c in "]}":
+            depth -= 1
+    return deepest
+
+
+def parse_json(text: str):
+    """The value of the JSON ``text`` (after ``json:``); ValueError, one line, where it nests
+    deeper than `MAX_JSON_DEPTH` (checked before parsing) or is not JSON."""
+    depth = json_depth(text)
+    if depth > MAX_JSON_DEPTH:
+        raise ValueError(f"JSON nested {depth} levels deep (at most {MAX_JSON_DEPTH})")
+    try:
+        return json.loads(text)
+    except (ValueError, RecursionError) as err:
+        raise ValueError(f"broken JSON ({err})") from None
+
+
 def _decode(v):
-    """An attribute's value as Python: JSON text decoded, numpy numbers and arrays as Python
-    numbers and lists."""
+    """An attribute's value as Python: JSON text decoded (`parse_json`), numpy numbers and
+    arrays as Python numbers and lists."""
     if isinstance(v, str) and v.startswith(_JSON):
-        return json.loads(v[len(_JSON):])
+        return parse_json(v[len(_JSON):])
     if isinstance(v, np.generic):
         return v.item()
     if isinstance(v, np.ndarray):
