@@ -379,9 +379,24 @@ def _layout(path):
         return variables, dict(f.attrs)
 
 
-def _unreadable(path, err) -> ValueError:
-    return ValueError(f"{path} could not be read as NetCDF-4 (is it truncated or damaged?): "
-                      f"{type(err).__name__}: {_one_line(err)}")
+def _read(path, read):
+    """``read(path)``; a ValueError of one line naming ``path`` where HDF5 fails on its bytes
+    (errors of any type: OSError, RuntimeError, KeyError...).  The file objects that h5netcdf
+    leaves half-opened then are collected quietly (their ``close`` would print a traceback)."""
+    import gc
+    import sys
+    failure, hook = None, sys.unraisablehook
+    sys.unraisablehook = lambda unraisable: None
+    try:
+        try:
+            return read(path)
+        except Exception as err:             # noqa: BLE001 - HDF5's errors are of any type
+            failure = f"{type(err).__name__}: {_one_line(err)}"
+        gc.collect()
+    finally:
+        sys.unraisablehook = hook
+    raise ValueError(f"{path} could not be read as NetCDF-4 (is it truncated or damaged?): "
+                     f"{failure}")
 
 
 def load(path):
@@ -396,15 +411,9 @@ def load(path):
     if not path.exists():
         raise FileNotFoundError(f"no such file: {path}")
     _check_netcdf4(path)
-    try:
-        variables, attrs = _layout(path)
-    except Exception as err:                 # noqa: BLE001 - HDF5's errors are of any type
-        raise _unreadable(path, err) from None
+    variables, attrs = _read(path, _layout)
     kind = check_layout(path, variables, attrs)
-    try:
-        ds = xr.load_dataset(path, engine=ENGINE)
-    except Exception as err:                 # noqa: BLE001 - a damaged file behind a valid header
-        raise _unreadable(path, err) from None
+    ds = _read(path, lambda p: xr.load_dataset(p, engine=ENGINE))
     from .file_settings import parse_json
     for name in ds.data_vars:                # the members' settings held as JSON text
         v = ds[name]
