@@ -395,3 +395,22 @@ def test_verdict_writes_its_json_where_it_may(tmp_path, capsys):
     out = tmp_path / "v.json"
     assert main(["verdict", "--n", "5", "--json", str(out)]) == 0
     assert json.loads(out.read_text())[0]["torus"]["verdict"] == "not hyperbolic"
+
+
+def test_an_ensembles_auto_transient_checks_every_setting_before_its_pilot(monkeypatch):
+    """``lyapunov_ensemble(t_transient="auto")`` refuses a bad setting before its pilot runs
+    (the pilot is made to fail loudly if it is reached)."""
+    import pytest
+
+    import charts
+    from charts.analyses import lyapunov_members
+
+    def no_pilot(*args, **kwargs):
+        raise AssertionError("the pilot ran before the settings were checked")
+
+    monkeypatch.setattr(lyapunov_members, "auto_transient", no_pilot)
+    S = charts.RotorSystem(3)
+    for bad, match in ((dict(dt=-0.01), "dt"), (dict(n_batches=0), "n_batches"),
+                       (dict(n_exponents=7), "n_exponents")):
+        with pytest.raises(ValueError, match=match):
+            charts.lyapunov_ensemble(S, 2, 10.0, workers=1, t_transient="auto", **bad)

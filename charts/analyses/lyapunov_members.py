@@ -66,6 +66,10 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     if lanes is not None and not isinstance(lanes, bool):
         raise ValueError(f"lanes must be None (where they pay), True or False, got {lanes!r}")
     if transient_rule(kwargs.get("t_transient")) == "auto":   # one transient for all members:
+        # every other setting and the memory checked before the pilot runs
+        plan_memory(system, lyapunov_settings(system, t_final, seed=seed,
+                                              **{**kwargs, "t_transient": 0.0}),
+                    n_trajectories, device)
         pilot = {k: kwargs[k] for k in ("dt", "n_exponents", "inner", "space") if k in kwargs}
         tr = auto_transient(system, *system.random_state(seed=seed, speed=speed), seed=seed,
                             **pilot)                          # the first member's pilot
