@@ -101,8 +101,14 @@ def prepare_table(outdir: Path, columns, points, resume: bool, source: str) -> d
         raise SweepError(f"{table} already holds a sweep ({len(rows)} points): continue it with "
                          "--resume, or choose another output folder")
     if header != columns:
-        raise SweepError(f"{table} has different columns than {source} would write (the sweep "
-                         "file changed its effects or parameters); use another output folder")
+        missing = [c for c in columns if c not in header]
+        extra = [c for c in header if c not in columns]
+        diff = "; ".join(part for part in (
+            f"missing {', '.join(missing)}" if missing else "",
+            f"not written now {', '.join(extra)}" if extra else "") if part) or "their order"
+        raise SweepError(f"{table} has different columns than {source} would write ({diff}: "
+                         "the sweep file changed its effects or parameters, or an earlier "
+                         "version of charts wrote the table); use another output folder")
     ids = {p.point_id for p in points}
     foreign = [r["point_id"] for r in rows if r["point_id"] not in ids]
     if foreign:
