@@ -411,8 +411,8 @@ def test_a_half_written_last_row_is_dropped_on_resume(tmp_path):
     assert (tmp_path / TABLE).read_text() == text
     with pytest.raises(SweepError, match=f"different columns .*not written now {cols[-1]}"):
         prepare_table(tmp_path, cols[:-1], pts, True, "t.toml")
-    with pytest.raises(SweepError, match="missing h_ks, h_ks_se: .*earlier version of charts"):
-        prepare_table(tmp_path, cols + ["h_ks", "h_ks_se"], pts, True, "t.toml")
+    with pytest.raises(SweepError, match="missing a_new_column: .*earlier version of charts"):
+        prepare_table(tmp_path, cols + ["a_new_column"], pts, True, "t.toml")
 
 
 def test_clv_columns_are_read_from_the_scene_result(tmp_path):
