@@ -24,26 +24,22 @@ from __future__ import annotations
 import functools
 import os
 from concurrent.futures import ThreadPoolExecutor
-from math import isfinite
 
 import numpy as np
-from ..jit import njit
 
-from ..solvers.device import (THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states,
-                              load_member, member_stops, store_member)
-from ..solvers.driver import Phases
-from ..solvers.status import NONFINITE, RUNNING
-from ..solvers.tangent import (Records, Rotors, Stack, Stepping, check_memory,
-                               stacked_work, tangent_loop)
+from ..solvers.device import THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states, member_stops
+from ..solvers.status import RUNNING
+from ..solvers.tangent import check_memory
 from .arguments import progress_reporter
-from .covariant import (CLVSettings, backward_coefficients, clv_flow, clv_samples, clv_settings,
-                        covariant_lyapunov_vectors, covariant_result, factor_sample,
+from .covariant import (CLVSettings, backward_coefficients, clv_flow, clv_forward_member,
+                        clv_samples, clv_settings, covariant_lyapunov_vectors, covariant_result,
                         ginelli_start)
+from .covariant import forward_members as _forward_cpu  # (the CPU twin of the CUDA kernel)
 from .cluster import cluster_device
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, member_states_of,
                        run_ensemble)
 
-__all__ = ["covariant_ensemble", "clv_ensemble_settings", "clv_forward_member", "clvs_on_device",
+__all__ = ["covariant_ensemble", "clv_ensemble_settings", "clvs_on_device",
            "clv_block_plan", "clv_block_bytes", "clv_states", "kernel_function"]
 
 
@@ -99,75 +95,6 @@ def clv_ensemble_settings(system, t_final, variant, seed, kwargs) -> CLVSettings
     a = {k: kwargs.get(k, params[k].default) for k in own}
     return clv_settings(system, t_final, variant, a["dt"], a["n_unstable"], a["t_transient"],
                         a["sample_every"], a["project_every"], seed, a["max_memory"])
-
-
-@njit(cache=True, inline="always")
-def clv_forward_member(l, Zs, scs, counters, logsums, status, stopped, Qs, Rs, Ys, GS, arrays,
-                       level, speeds, dt, steps, tau, no_events, none, Z, sc, counter, logsum,
-                       work, Xraw, logs):
-    """What one thread does in a forward launch: member l's flow (Zs (L, 1 + D, 2N), scs,
-    counters, logsums) into the local Z, sc, counter, logsum; the forward pass of
-    `covariant_lyapunov_vectors` (its `_forward_kernel`) for samples ja … jb − 1 (``steps`` =
-    (n_tr, sample, project, reorth, first, ja, jb): the transient of n_tr steps first when
-    ja = 0), sample j's Q, R, state and Gram–Schmidt rates into row j − first of Qs[l], Rs[l],
-    Ys[l], GS[l]; back into the member arrays; a stop is flagged (status, global step)."""
-    if status[l] != RUNNING:
-        return
-    minv, m, wts, w, restricted = arrays
-    n_tr, sample, project, reorth, first, ja, jb = steps
-    D = Z.shape[0] - 1
-    d = Z.shape[1]
-    load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum)
-    stack = Stack(Z, sc, counter, logsum, no_events)
-    rotors = Rotors(minv, m, wts, level)
-    stepping = Stepping(speeds[l], dt, w, restricted)
-    phases = Phases(project, reorth, 0, 0)
-    records = Records(none, no_events, none)
-    code = RUNNING
-    done = 0
-    j = ja
-    while j < jb:
-        transient = ja == 0 and done < n_tr
-        left = n_tr - done                  # (no min(): the GPU target cannot type it)
-        k = (sample if sample < left else left) if transient else (sample if j > 0 else 0)
-        if k > 0:
-            code, _ = tangent_loop(stack, rotors, stepping, phases, records, k, work)
-            if code != RUNNING:
-                break
-        if transient:
-            factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, Rs[l, 0])
-            done += k
-            continue
-        for r in range(D):
-            logs[r] = 0.0
-        row = j - first
-        factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, Rs[l, row])
-        for r in range(D):
-            if not isfinite(logs[r]):
-                code = NONFINITE
-            GS[l, row, r] = logs[r] / tau
-            for i in range(d):
-                Qs[l, row, r, i] = Z[1 + r, i]
-        if code != RUNNING:
-            break
-        for i in range(d):
-            Ys[l, row, i] = Z[0, i]
-        j += 1
-    store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
-
-
-@njit(cache=True)
-def _forward_cpu(Zs, scs, counters, logsums, status, stopped, Qs, Rs, Ys, GS, arrays, level,
-                 speeds, dt, steps, tau, no_events, none):
-    """`clv_forward_member` for every member in turn (the CPU twin of the forward kernel)."""
-    L, R, d = Zs.shape
-    n = d // 2
-    D = R - 1
-    for l in range(L):
-        clv_forward_member(l, Zs, scs, counters, logsums, status, stopped, Qs, Rs, Ys, GS,
-                           arrays, level, speeds, dt, steps, tau, no_events, none,
-                           np.empty((R, d)), np.empty((2, n)), np.empty(1, dtype=np.int64),
-                           np.empty(D), stacked_work(R, d), np.empty((D, d)), np.empty(D))
 
 
 #: Numba's CUDA module once `_cuda_kernel` found it usable (a global that the kernel reads,

@@ -47,9 +47,9 @@ from ..jit.compilation import announces_compilation
 from ..geometry.projection import project_tangent_sc
 from ..solvers.status import NONFINITE, RUNNING, status_error
 from ..solvers.driver import Phases
-from ..jit.kernel_calls import CallsKernel
-from ..solvers.tangent import (Records, TangentFlow, check_memory, orthonormalize, tangent_kernel,
-                               tangent_kernel_types)
+from ..solvers.device import load_member, store_member
+from ..solvers.tangent import (Records, Rotors, Stack, Stepping, TangentFlow, check_memory,
+                               orthonormalize, stacked_work, tangent_loop)
 from .arguments import (positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, unstable_dimension, Documented)
 from .finite_time import domination, finite_time_statistics
@@ -58,7 +58,8 @@ from .singular_values import smallest_singular_values
 
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
            "MAX_MEMORY", "CLVSettings", "clv_settings", "clv_flow", "ginelli_start",
-           "clv_samples", "covariant_result", "factor_sample", "backward_coefficients"]
+           "clv_samples", "covariant_result", "factor_sample", "backward_coefficients",
+           "clv_forward_member", "forward_members"]
 
 #: default limit (bytes) of the stored factors kept in memory; beyond it they go to disk.
 MAX_MEMORY = 256 << 20
@@ -104,61 +105,95 @@ def factor_sample(y, X, minv, s, c, w, restricted, logs, Xraw, Rout):
 
 
 def _forward_samples(flow, system, n_tr, sample, a, b, tau, Xraw, bq, br, by, gs, logs):
-    """The forward pass (`_forward_kernel` with the flow's settings): the transient of n_tr
-    steps if a = 0, then samples a … b−1.  Returns the kernel's status."""
-    return _forward_kernel(flow.stack(), flow.rotors(), flow.stepping(), flow.project_every,
-                           flow.reorth_every, sample, n_tr, a, b, tau, Xraw, bq, br, by, gs, logs)
+    """The forward pass of ``flow`` for samples a … b − 1 (the transient of n_tr steps first
+    if a = 0): Q, R, y of sample j into row j − a of bq, br, by, its Gram–Schmidt rates into
+    gs[j], by `forward_members` with the flow as its one member (its arrays, not copies).
+    Returns the loop's status (NONFINITE for a norm that is not finite)."""
+    stack, rotors, stepping = flow.stack(), flow.rotors(), flow.stepping()
+    status = np.full(1, RUNNING, dtype=np.int64)
+    forward_members(stack.Z[None], stack.sc[None], stack.counter, stack.logsum[None], status,
+                    np.zeros(1, dtype=np.int64), bq[None], br[None], by[None], gs[a:][None],
+                    (rotors.minv, rotors.m, rotors.wts, stepping.w, stepping.restricted),
+                    float(rotors.level), np.array([stepping.speed]), stepping.dt,
+                    (n_tr, sample, flow.project_every, flow.reorth_every, a, a, b), tau,
+                    _NO_EVENTS, _NONE)
+    return int(status[0])
 
 
-def _forward_pass(kernel, stack, rotors, stepping, project_every, reorth_every, sample, n_tr, a,
-                  b, tau, Xraw, bq, br, by, gs, logs):
-    """If a = 0, the transient first: n_tr steps of ``kernel`` (`tangent_kernel`, called by
-    address: `_forward_kernel`), `factor_sample`-ed every
-    ``sample`` steps.  Then samples j = a … b−1: advance ``sample`` steps (not before j = 0),
-    `factor_sample` the vectors and store Q, R, y in row j − a of bq, br, by and the Gram–Schmidt
-    rates in gs[j].  Returns the kernel's status (NONFINITE for a norm that is not finite)."""
-    none = np.empty((0, 0))
-    no_events = np.empty(0, dtype=np.int64)
-    zero = np.int64(0)  # not the literal 0, which would compile tangent_kernel once more
-    phases = Phases(project_every, reorth_every, zero, zero)
-    records = Records(none, no_events, none)
-    Z, sc = stack.Z, stack.sc
-    minv = rotors.minv
-    w, restricted = stepping.w, stepping.restricted
+_NO_EVENTS = np.empty(0, dtype=np.int64)
+_NONE = np.empty((0, 0))
+
+
+@njit(cache=True, inline="always")
+def clv_forward_member(l, Zs, scs, counters, logsums, status, stopped, Qs, Rs, Ys, GS, arrays,
+                       level, speeds, dt, steps, tau, no_events, none, Z, sc, counter, logsum,
+                       work, Xraw, logs):
+    """What one thread does in a forward launch: member l's flow (Zs (L, 1 + D, 2N), scs,
+    counters, logsums) into the local Z, sc, counter, logsum; the forward pass of
+    `covariant_lyapunov_vectors` (`_forward_samples`) for samples ja … jb − 1 (``steps`` =
+    (n_tr, sample, project, reorth, first, ja, jb): the transient of n_tr steps first when
+    ja = 0), sample j's Q, R, state and Gram–Schmidt rates into row j − first of Qs[l], Rs[l],
+    Ys[l], GS[l]; back into the member arrays; a stop is flagged (status, global step)."""
+    if status[l] != RUNNING:
+        return
+    minv, m, wts, w, restricted = arrays
+    n_tr, sample, project, reorth, first, ja, jb = steps
     D = Z.shape[0] - 1
+    d = Z.shape[1]
+    load_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum)
+    stack = Stack(Z, sc, counter, logsum, no_events)
+    rotors = Rotors(minv, m, wts, level)
+    stepping = Stepping(speeds[l], dt, w, restricted)
+    phases = Phases(project, reorth, 0, 0)
+    records = Records(none, no_events, none)
+    code = RUNNING
     done = 0
-    j = a
-    while j < b:
-        transient = a == 0 and done < n_tr
-        k = min(sample, n_tr - done) if transient else (sample if j > 0 else 0)
+    j = ja
+    while j < jb:
+        transient = ja == 0 and done < n_tr
+        left = n_tr - done                  # (no min(): the GPU target cannot type it)
+        k = (sample if sample < left else left) if transient else (sample if j > 0 else 0)
         if k > 0:
-            status, _ = kernel(stack, rotors, stepping, phases, records, k, None)
-            if status != RUNNING:
-                return status
+            code, _ = tangent_loop(stack, rotors, stepping, phases, records, k, work)
+            if code != RUNNING:
+                break
         if transient:
-            factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[0])
+            factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, Rs[l, 0])
             done += k
             continue
-        logs[:] = 0.0
-        factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, br[j - a])
+        for r in range(D):
+            logs[r] = 0.0
+        row = j - first
+        factor_sample(Z[0], Z[1:], minv, sc[0], sc[1], w, restricted, logs, Xraw, Rs[l, row])
         for r in range(D):
             if not isfinite(logs[r]):
-                return NONFINITE
-            gs[j, r] = logs[r] / tau
-        # loops, not bq[j - a] = Z[1:]: an array assignment compiles numba's shape-mismatch
-        # message (3 s); the shapes are the caller's (`covariant_lyapunov_vectors` allocates
-        # bq, by for this flow), so the check it made cannot fail
-        for i in range(Z.shape[1]):
-            by[j - a, i] = Z[0, i]
-            for r in range(D):
-                bq[j - a, r, i] = Z[1 + r, i]
+                code = NONFINITE
+            GS[l, row, r] = logs[r] / tau
+            for i in range(d):
+                Qs[l, row, r, i] = Z[1 + r, i]
+        if code != RUNNING:
+            break
+        for i in range(d):
+            Ys[l, row, i] = Z[0, i]
         j += 1
-    return RUNNING
+    store_member(l, Zs, scs, counters, logsums, Z, sc, counter, logsum, code, status, stopped)
 
 
-#: `_forward_pass` compiled with the tangent kernel called by address (its code not compiled
-#: into the forward pass a second time: ``charts.jit.kernel_calls``)
-_forward_kernel = CallsKernel(_forward_pass, (tangent_kernel, tangent_kernel_types))
+@njit(cache=True)
+def forward_members(Zs, scs, counters, logsums, status, stopped, Qs, Rs, Ys, GS, arrays, level,
+                 speeds, dt, steps, tau, no_events, none):
+    """`clv_forward_member` for every member in turn: the forward pass of
+    `covariant_lyapunov_vectors` (one member) and the CPU twin of the ensembles' CUDA
+    forward kernel (``charts.analyses.clv_ensemble``)."""
+    L, R, d = Zs.shape
+    n = d // 2
+    D = R - 1
+    for l in range(L):
+        clv_forward_member(l, Zs, scs, counters, logsums, status, stopped, Qs, Rs, Ys, GS,
+                           arrays, level, speeds, dt, steps, tau, no_events, none,
+                           np.empty((R, d)), np.empty((2, n)), np.empty(1, dtype=np.int64),
+                           np.empty(D), stacked_work(R, d), np.empty((D, d)), np.empty(D))
+
 
 
 @njit(cache=True, nogil=True)
@@ -169,7 +204,8 @@ def backward_coefficients(R, C, Cs, lost):
     B, D, _ = R.shape
     x = np.empty(D)
     for b in range(B - 1, -1, -1):
-        for r in range(D):              # (a loop: see `_forward_kernel`)
+        for r in range(D):              # (a loop, not an array assignment: numba compiles
+            # the shape-mismatch message of one, 3 s of a first call)
             for i in range(D):
                 Cs[b, r, i] = C[r, i]
         for i in range(D):
