@@ -1,7 +1,7 @@
 """``python -m charts …``: the same as the ``charts`` command."""
 import sys
 
-from charts.cli import main
+from charts.cli import console
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(console())

@@ -371,6 +371,19 @@ def main(argv=None) -> int:
         return interrupts.exit_status(_main(argv, debug))
 
 
+def console(argv=None) -> int:
+    """The ``charts`` command (and ``python -m charts``): `main`, then, where an interrupt
+    killed process-pool workers, the process ends at once with its status, its output
+    flushed (``charts.runs.interrupts.workers_stopped``: Python's exit could otherwise wait
+    forever on the pool's manager thread)."""
+    status = main(argv)
+    if interrupts.workers_stopped():
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(status)
+    return status
+
+
 def _main(argv, debug) -> int:
     try:
         return _dispatch(argv)

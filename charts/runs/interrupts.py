@@ -28,7 +28,8 @@ import sys
 import threading
 
 __all__ = ["handled", "received", "exit_status", "interrupt_for", "stop_pool_workers",
-           "quiet_worker", "Terminated", "EXIT_INTERRUPTED", "EXIT_TERMINATED"]
+           "workers_stopped", "quiet_worker", "Terminated", "EXIT_INTERRUPTED",
+           "EXIT_TERMINATED"]
 
 #: Exit status of a command stopped by Ctrl-C (128 + SIGINT).
 EXIT_INTERRUPTED = 130
@@ -41,7 +42,7 @@ _PR_SET_PDEATHSIG = 1
 
 #: owner: the pid whose handlers raise (None: not installed); first: the first signal
 #: received; forker: (pid, whether the main thread forks), set just before a fork
-_state = {"owner": None, "first": None, "forker": None}
+_state = {"owner": None, "first": None, "forker": None, "stopped": False}
 
 
 class Terminated(KeyboardInterrupt):
@@ -81,7 +82,17 @@ def stop_pool_workers() -> list:
     for p in workers:
         with contextlib.suppress(OSError, ValueError, AttributeError):
             p.kill()
+    if workers:
+        _state["stopped"] = True
     return workers
+
+
+def workers_stopped() -> bool:
+    """Whether an interrupt killed process-pool workers in this process.  A worker killed
+    while it sent a result leaves ``concurrent.futures``' manager thread waiting for the
+    rest of the message, which Python's exit then joins forever: the ``charts`` command
+    ends such a process at once (``charts.cli.console``)."""
+    return _state["stopped"]
 
 
 def quiet_worker():
