@@ -143,3 +143,11 @@ def test_damaged_bytes_give_one_line_naming_the_file(valid, tmp_path, capfd, sig
     _refused(path, r"could not be read as NetCDF-4 \(is it truncated or damaged\?\): \w+")
     out, err = capfd.readouterr()
     assert out == "" and err == "", (out, err)
+
+
+def test_every_kind_load_knows_has_its_schema():
+    """`charts.load` builds the kinds of `KINDS`; the layout check knows a kind by its schema:
+    the two tables name the same kinds."""
+    from charts.io.archive import KINDS
+    from charts.io.file_checks import SCHEMAS
+    assert set(SCHEMAS) == set(KINDS)

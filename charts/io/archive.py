@@ -30,6 +30,9 @@ import numpy as np
 
 from .atomic import atomic_write, signals_deferred
 from .file_settings import FLATTENED, MEMBER, decode_attributes, encode
+from .file_checks import (COMPRESSION_BOUND, SCHEMAS, check_layout, check_netcdf4, layout,
+                          read, refused)
+from .file_checks import one_line as short
 from .result_words import one_line, result_fields
 
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "index_coordinate",
@@ -206,199 +209,6 @@ def save(ds, path) -> Path:
     return path
 
 
-#: What the file of each kind holds, from what its ``to_xarray`` gives `dataset`: variables
-#: (data and coordinates) as name → their dimensions, numbers all (a name starting ``?`` is
-#: optional, checked where present); attributes as name → "integer", "number" or "text".  An
-#: ensemble's file holds its members' variables (`SCHEMAS` of ``member_kind``), each with or
-#: without a leading ``member`` dimension.  `check_layout` refuses a file that differs.
-SCHEMAS = {
-    "trajectory": ({"t": "t", "theta": "t rotor", "u": "t rotor", "switch_t": "switch",
-                    "switch_from": "switch", "switch_to": "switch", "?transported": "t vector rotor",
-                    "?event_t": "event", "?event_index": "event", "?event_y": "event state"},
-                   {"n_steps": "integer", "n_rejected": "integer", "n_rhs": "integer",
-                    "?n_events": "integer", "status": "text", "formulation": "text",
-                    "method": "text"}),
-    "lyapunov": ({"exponents": "exponent", "stderr": "exponent", "history": "record exponent",
-                  "history_t": "record", "batches": "batch exponent",
-                  "?full_spectrum": "spectrum_index", "?energy_share_counts": "share_bin"}, {}),
-    "curvature": ({"t": "t", "theta": "t rotor", "u": "t rotor", "frames": "t frame rotor",
-                   "K_numeric": "t direction direction2", "?K_exact": "t direction direction2"},
-                  {}),
-    "angles": ({"t": "t", "phi_full": "t", "phi_restricted": "t", "forward_exponents": "vector",
-                "adjoint_exponents": "vector"}, {}),
-    "angle_tally": ({"n": "member", "min": "variant member", "argmin": "variant member",
-                     "zeros": "variant member", "below": "variant member edge",
-                     "law_count": "variant member x0", "law_logsum": "variant member x0",
-                     "ladder_count": "variant member size", "ladder_sum": "variant member size",
-                     "ladder_sumsq": "variant member size", "episodes": "variant member",
-                     "seed": "member"}, {}),
-    "covariant": ({"t": "t", "phi": "t", "phi_vectors": "t", "growth": "t clv",
-                   "gs_rates": "t clv", "states": "t component", "?vectors": "t clv component"},
-                  {"variant": "text"}),
-    "waveform": ({"t": "t", "theta": "t rotor", "u": "t rotor"}, {"dt_sample": "number"}),
-    "spectrum": ({"omega": "omega", "density": "omega"}, {}),
-    "ensemble": ({"?ensemble_exponents": "exponent", "?ensemble_stderr": "exponent",
-                  "?batch_error_ratio": "exponent"}, {"member_kind": "text"}),
-    "linkage": ({"exponents": "exponent", "stderr": "exponent", "batches": "batch exponent",
-                 "K": "sample exponent", "states": "sample component", "t": "sample"},
-                {"min_sin2": "number", "min_health": "number"}),
-    "scene": ({}, {"result": "json", "scene_text": "text"}),
-    "sweep": ({}, {"column_order": "any"}),
-}
-#: A variable may declare at most this many times the file's size in bytes (the most that
-#: deflate, HDF5's compression, packs into a byte is about 1032); more is a damaged or
-#: hostile header, which would otherwise be allocated on loading.
-COMPRESSION_BOUND = 1024
-
-
-def _one_line(err) -> str:
-    """An exception's text on one line, at most 200 characters."""
-    text = " ".join(str(err).split()) or type(err).__name__
-    return text if len(text) <= 200 else text[:197] + "..."
-
-
-def _refused(path, what) -> ValueError:
-    return ValueError(f"{path} is not a usable charts result: {what}")
-
-
-def _kind_of(dtype) -> str:
-    """'number', 'text' or the dtype's name (anything else: booleans, compounds)."""
-    try:
-        dt = np.dtype(dtype)
-    except TypeError:
-        return str(dtype)
-    if dt.kind in "iuf":
-        return "number"
-    return "text" if dt.kind in "USO" else str(dt)
-
-
-def _attribute_ok(value, kind) -> bool:
-    if isinstance(value, np.ndarray) and value.size == 1 and kind != "any":
-        value = value.reshape(()).item()
-    if isinstance(value, (bool, np.bool_)):
-        return kind in ("any", "json")
-    if kind == "integer":
-        return isinstance(value, (int, np.integer))
-    if kind == "number":
-        return isinstance(value, (int, float, np.integer, np.floating))
-    if kind == "text":
-        return isinstance(value, str)
-    if kind == "json":
-        return isinstance(value, str) and value.startswith("json:")
-    return True
-
-
-def _size_words(n: float) -> str:
-    for unit in ("B", "KiB", "MiB", "GiB", "TiB", "PiB"):
-        if n < 1024 or unit == "PiB":
-            return f"{n:.3g} {unit}"
-        n /= 1024
-
-
-def check_layout(path, variables: dict, attrs: dict) -> str:
-    """The kind of the file ``path`` once its layout is found to be a charts result's, before
-    any data is read: ``variables`` name → (dimensions, shape, dtype) and ``attrs`` as the file
-    declares them.  Checked: ``charts_kind`` known; each variable's shape consistent with its
-    dimensions and the other variables', and its declared bytes within `COMPRESSION_BOUND`
-    times the file's size; the kind's variables (`SCHEMAS`) present, with their dimensions,
-    numbers; its attributes present and of their type; every ``json:`` attribute JSON of
-    bounded nesting (`parse_json`).  A ValueError of one line naming the file and the variable
-    or attribute otherwise."""
-    from .file_settings import parse_json
-    kind = attrs.get("charts_kind")
-    if not isinstance(kind, str) or kind not in KINDS:
-        raise ValueError(f"{path} is not a charts result (charts_kind = "
-                         f"{_one_line(repr(kind))}; known: {', '.join(KINDS)})")
-    for name, value in attrs.items():
-        if isinstance(value, str) and value.startswith("json:"):
-            try:
-                parse_json(value[5:])
-            except ValueError as err:
-                raise _refused(path, f"attribute {name!r}: {err}") from None
-    limit = COMPRESSION_BOUND * Path(path).stat().st_size
-    sizes = {}
-    for name, (dims, shape, dtype) in variables.items():
-        if len(dims) != len(shape):
-            raise _refused(path, f"variable {name!r} has {len(shape)} axes but names "
-                                 f"{len(dims)} dimensions {dims}")
-        for dim, n in zip(dims, shape):
-            if sizes.setdefault(dim, (n, name))[0] != n:
-                raise _refused(path, f"variable {name!r} has {n} along {dim!r}, variable "
-                                     f"{sizes[dim][1]!r} {sizes[dim][0]}")
-        count = int(np.prod(shape, dtype=object))
-        try:
-            item = max(np.dtype(dtype).itemsize, 8 if np.dtype(dtype).kind in "OUS" else 1)
-        except TypeError:
-            item = 8
-        if count * item > limit:
-            raise _refused(path, f"variable {name!r} declares shape {tuple(shape)} "
-                                 f"({_size_words(count * item)}), more than a file of "
-                                 f"{_size_words(limit / COMPRESSION_BOUND)} can hold "
-                                 f"({COMPRESSION_BOUND}× its size)")
-    wanted, wanted_attrs = SCHEMAS.get(kind, ({}, {}))
-    lead = ()
-    if kind == "ensemble":
-        member_kind = attrs.get("member_kind")
-        if member_kind not in SCHEMAS or member_kind in ("ensemble", "scene", "sweep"):
-            raise _refused(path, f"attribute 'member_kind' = {_one_line(repr(member_kind))} is "
-                                 "not a kind of result an ensemble holds")
-        wanted = {**SCHEMAS[member_kind][0], **wanted}
-        lead = ("member",)
-    for key, spec in wanted.items():
-        name = key.lstrip("?")
-        if name not in variables:
-            if key.startswith("?"):
-                continue
-            raise _refused(path, f"the {kind} variable {name!r} is missing")
-        dims, shape, dtype = variables[name]
-        expected = tuple(spec.split())
-        if dims != expected and not (lead and name not in SCHEMAS["ensemble"][0]
-                                     and dims == lead + expected):
-            raise _refused(path, f"variable {name!r} has dimensions {dims}, not {expected}")
-        if _kind_of(dtype) != "number":
-            raise _refused(path, f"variable {name!r} holds {_kind_of(dtype)}, not numbers")
-    for key, spec in wanted_attrs.items():
-        name = key.lstrip("?")
-        if name not in attrs:
-            if key.startswith("?"):
-                continue
-            raise _refused(path, f"the {kind} attribute {name!r} is missing")
-        if not _attribute_ok(attrs[name], spec):
-            raise _refused(path, f"attribute {name!r} = {_one_line(repr(attrs[name]))} is not "
-                                 f"{'JSON text' if spec == 'json' else spec}")
-    return kind
-
-
-def _layout(path):
-    """(variables: name → (dimensions, shape, dtype), attributes) of the NetCDF-4 file
-    ``path``, read from its header without its data (h5netcdf)."""
-    import h5netcdf
-    with h5netcdf.File(path, "r") as f:
-        variables = {name: (tuple(v.dimensions), tuple(int(n) for n in v.shape), v.dtype)
-                     for name, v in f.variables.items()}
-        return variables, dict(f.attrs)
-
-
-def _read(path, read):
-    """``read(path)``; a ValueError of one line naming ``path`` where HDF5 fails on its bytes
-    (errors of any type: OSError, RuntimeError, KeyError...).  The file objects that h5netcdf
-    leaves half-opened then are collected quietly (their ``close`` would print a traceback)."""
-    import gc
-    import sys
-    failure, hook = None, sys.unraisablehook
-    sys.unraisablehook = lambda unraisable: None
-    try:
-        try:
-            return read(path)
-        except Exception as err:             # noqa: BLE001 - HDF5's errors are of any type
-            failure = f"{type(err).__name__}: {_one_line(err)}"
-        gc.collect()
-    finally:
-        sys.unraisablehook = hook
-    raise ValueError(f"{path} could not be read as NetCDF-4 (is it truncated or damaged?): "
-                     f"{failure}")
-
-
 def load(path):
     """The result saved in ``path`` (by any ``save``), as an object of its own type.
 
@@ -410,10 +220,10 @@ def load(path):
     path = Path(path)
     if not path.exists():
         raise FileNotFoundError(f"no such file: {path}")
-    _check_netcdf4(path)
-    variables, attrs = _read(path, _layout)
+    check_netcdf4(path)
+    variables, attrs = read(path, layout)
     kind = check_layout(path, variables, attrs)
-    ds = _read(path, lambda p: xr.load_dataset(p, engine=ENGINE))
+    ds = read(path, lambda p: xr.load_dataset(p, engine=ENGINE))
     from .file_settings import parse_json
     for name in ds.data_vars:                # the members' settings held as JSON text
         v = ds[name]
@@ -423,37 +233,14 @@ def load(path):
                     try:
                         parse_json(text[5:])
                     except ValueError as err:
-                        raise _refused(path, f"variable {name!r}: {err}") from None
+                        raise refused(path, f"variable {name!r}: {err}") from None
     module, name = KINDS[kind].split(":")
     cls = getattr(importlib.import_module(module), name)
     try:
         return cls.from_xarray(ds)
     except (KeyError, IndexError, TypeError, ValueError, AttributeError) as err:
-        raise _refused(path, f"its {kind} could not be rebuilt ({type(err).__name__}: "
-                             f"{_one_line(err)})") from None
-
-
-#: The first bytes of an HDF5 file (NetCDF-4, what ``save`` writes), and of NetCDF-3.
-_HDF5 = b"\x89HDF\r\n\x1a\n"
-_NETCDF3 = (b"CDF\x01", b"CDF\x02", b"CDF\x05")
-
-
-def _check_netcdf4(path: Path) -> None:
-    """ValueError naming ``path`` and what it is, unless it is a regular file that starts as
-    NetCDF-4 (HDF5) does: a folder, a device or FIFO, an empty file, NetCDF-3, text."""
-    if not path.is_file():
-        raise ValueError(f"{path} is not a regular file (a folder, a device or a pipe): charts.load "
-                         "reads the NetCDF-4 files that results save")
-    with open(path, "rb") as f:
-        head = f.read(8)
-    if not head:
-        raise ValueError(f"{path} is empty: not a charts result")
-    if head[:4] in _NETCDF3:
-        raise ValueError(f"{path} is NetCDF-3 (classic): charts results are NetCDF-4; convert it "
-                         "with `nccopy -k nc4` or save the result again")
-    if head != _HDF5:
-        raise ValueError(f"{path} is not a NetCDF-4 file (its first bytes are {head!r}): not a "
-                         "charts result")
+        raise refused(path, f"its {kind} could not be rebuilt ({type(err).__name__}: "
+                             f"{short(err)})") from None
 
 
 def same_value(a, b) -> bool:

@@ -16,11 +16,11 @@ itself (counted as numba counts it; the same numbers).
 """
 from __future__ import annotations
 
-from numba import types
+from numba import njit, types
 from numba.core import cgutils
 from numba.extending import intrinsic
 
-from . import adaptations, njit
+from . import adaptations
 
 __all__ = ["borrowed", "keep_alive", "usable"]
 
