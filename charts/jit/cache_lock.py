@@ -101,15 +101,15 @@ def adopt(dispatcher):
     numba's own, where the adaptation is in use; returns the dispatcher."""
     from numba.core.caching import FunctionCache
 
-    if usable() and type(getattr(dispatcher, "_cache", None)) is FunctionCache:
-        cache = _LockedCache(dispatcher.py_func)
+    cache = getattr(dispatcher, "_cache", None)
+    if usable() and type(cache) is FunctionCache:
         index = getattr(getattr(cache, "_cache_file", None), "_index_path", None)
         if not (isinstance(index, str) and index.endswith(".nbi")) or \
                 getattr(cache, "_py_func", None) is not dispatcher.py_func:
             adaptations.step_aside("cache_lock", "a FunctionCache keeps no "
                                    "_cache_file._index_path or _py_func")
         else:
-            dispatcher._cache = cache
+            cache.__class__ = _LockedCache  # numba's cache made already; only its methods differ
     return dispatcher
 
 

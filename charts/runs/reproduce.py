@@ -171,7 +171,7 @@ def _run_all(cfg, workers, quiet, pieces=None):
     pool = ProcessPoolExecutor(max_workers=workers, initializer=quiet_worker)
     try:
         if len(results) < len(tasks):
-            _compile_first(pool, quiet)
+            _compile_first(pool, workers, quiet)
         futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items() if key not in results}
         with tqdm(total=len(tasks), initial=len(results), desc="reproduce", disable=quiet) as bar:
             for fut in as_completed(futs):
@@ -201,7 +201,7 @@ def _stop(pool):
         proc.join()
 
 
-def _compile_first(pool, quiet):
+def _compile_first(pool, workers, quiet):
     """The kernels of every task, each compiled once by one worker (`charts warmup`'s
     stages) before the tasks start, instead of by every worker at once on an empty cache;
     with the cache filled, the workers load them here (what the tasks would do anyway)."""
@@ -209,8 +209,7 @@ def _compile_first(pool, quiet):
 
     from ..jit.compilation import NOTE_SECONDS, compiling_line
     from .warmup import warmup
-    workers = getattr(pool, "_max_workers", None)
-    where = f" in its {workers} worker processes" if workers else " in its worker processes"
+    where = f" in its {workers} worker processes"
     start = time.perf_counter()
     with nullcontext() if quiet else compiling_line("reproduce", where + ", before the tasks"):
         spent = sum(r["compile"] for r in warmup(NS, ["lyapunov", "angles", "clv", "curvature"],
