@@ -372,12 +372,15 @@ def main(argv=None) -> int:
 
 
 def console(argv=None) -> int:
-    """The ``charts`` command (and ``python -m charts``): `main`, then, where an interrupt
-    killed process-pool workers, the process ends at once with its status, its output
-    flushed (``charts.runs.interrupts.workers_stopped``: Python's exit could otherwise wait
-    forever on the pool's manager thread)."""
+    """The ``charts`` command (and ``python -m charts``): `main`, then, for a command that an
+    interrupt stopped (130, 143) or whose pool workers an interrupt killed, the process ends
+    at once with its status, its output flushed, everything it keeps written already:
+    Python's exit would join the pools' manager threads, which a killed worker can leave
+    waiting forever for the rest of a result, or writing to a pipe already closed (a
+    traceback after the interrupted message)."""
     status = main(argv)
-    if interrupts.workers_stopped():
+    if status in (interrupts.EXIT_INTERRUPTED, interrupts.EXIT_TERMINATED) or \
+            interrupts.workers_stopped():
         sys.stdout.flush()
         sys.stderr.flush()
         os._exit(status)
