@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import os
 import warnings
-from concurrent.futures import ProcessPoolExecutor
 from contextlib import nullcontext
 from dataclasses import dataclass, field
 
@@ -16,6 +15,7 @@ from ..io.result_words import RATE, counted, exponent_words, smallest_words
 from ..jit.compilation import announce, timed_call
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
+from .worker_pool import worker_pool
 from .arguments import positive_int, positive_time, progress_reporter
 from .cluster import cluster_pool
 from .spectrum_quantities import SpectrumQuantities
@@ -262,7 +262,7 @@ def stream_jobs(fn, jobs, workers, prime=None, name=None, n=None, pool=None):
     name = name or getattr(fn, "__name__", "ensemble")
     if prime is not None:
         announce(name, timed_call(*prime)[1], n)
-    with nullcontext(pool) if pool is not None else ProcessPoolExecutor(workers) as executor:
+    with nullcontext(pool) if pool is not None else worker_pool(workers) as executor:
         timed = executor.map(_timed_job, [(fn, job) for job in jobs])
         try:
             yield from _announced(timed, name, n)

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import os
 import warnings
-from concurrent.futures import ProcessPoolExecutor
 from contextlib import ExitStack
 from dataclasses import dataclass, replace
 
@@ -49,6 +48,7 @@ from ..jit.compilation import announces_compilation
 from ..geometry.checks import finite_array
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory
+from .worker_pool import worker_pool
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
 from .angle_tally import SMALL_ANGLE, SUMS, AngleTally
@@ -417,7 +417,7 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
         spans = [(max(int(a), done), int(b)) for a, b in zip(cuts[:-1], cuts[1:]) if b > done]
         jobs = [(system, seed + a, b - a, speed, t_final, params, kwargs) for a, b in spans]
         if pool is None and slots > 1 and len(jobs) > 1:   # one pool; an interrupt cancels
-            pool = ProcessPoolExecutor(max_workers=min(slots, len(jobs)))   # what is queued
+            pool = worker_pool(min(slots, len(jobs)))   # what is queued
             stack.callback(pool.shutdown, cancel_futures=True)
         t_short, short = _short(cfg)            # compiles the kernels here first
         prime = (_tally_chunk, (system, seed, 1, speed, t_short, params, {**kwargs, **short}))

@@ -72,13 +72,12 @@ def interrupt_for(exc):
 
 
 def stop_pool_workers() -> list:
-    """Kill (SIGKILL) this process's ``concurrent.futures`` process-pool workers, none of
-    anything else it started (a Dask cluster's processes are closed by their owner); their
+    """Kill (SIGKILL) this process's process-pool workers (the pools of
+    ``charts.analyses.worker_pool``, every pool of the package), none of anything else it
+    started (a Dask cluster's processes are closed by their owner); their
     pools find them gone.  Returns the processes."""
-    import multiprocessing
-    from concurrent.futures.process import _process_worker
-    workers = [p for p in multiprocessing.active_children()
-               if getattr(p, "_target", None) is _process_worker]
+    from ..analyses.worker_pool import pool_workers
+    workers = pool_workers()
     for p in workers:
         with contextlib.suppress(OSError, ValueError, AttributeError):
             p.kill()

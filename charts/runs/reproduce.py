@@ -33,11 +33,12 @@ import json
 import os
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import as_completed
 
 import numpy as np
 
 from ..analyses.statistics import standard_error
+from ..analyses.worker_pool import worker_pool, workers_of
 from .io import atomic_text
 from .outdir import OutputLock, prepare_output
 from .pieces import kept_pieces, load_piece, save_piece
@@ -168,7 +169,7 @@ def _run_all(cfg, workers, quiet, pieces=None):
             print(f"reusing {len(results)} of {len(tasks)} finished pieces from {pieces}",
                   file=sys.stderr)
     from tqdm.auto import tqdm
-    pool = ProcessPoolExecutor(max_workers=workers, initializer=quiet_worker)
+    pool = worker_pool(workers, initializer=quiet_worker)
     try:
         if len(results) < len(tasks):
             _compile_first(pool, workers, quiet)
@@ -193,7 +194,7 @@ def _run_all(cfg, workers, quiet, pieces=None):
 def _stop(pool):
     """Stop ``pool`` now: what is queued cancelled, its workers killed and reaped (a worker
     in the middle of a piece would otherwise run it to its end, and the command with it)."""
-    workers = list((getattr(pool, "_processes", None) or {}).values())   # gone after shutdown
+    workers = workers_of(pool)
     pool.shutdown(wait=False, cancel_futures=True)
     for proc in workers:
         proc.kill()

@@ -117,8 +117,8 @@ def warmup(ns=DEFAULT_N, analyses=None, report=None, workers=None, pool=None) ->
             for task in stage:
                 done(_call(task))
     else:
-        from concurrent.futures import ProcessPoolExecutor
-        with ProcessPoolExecutor(max_workers=min(workers, widest)) as own:
+        from ..analyses.worker_pool import worker_pool
+        with worker_pool(min(workers, widest)) as own:
             _staged(plan, own, done)
     order = {(name, n): i for i, (n, name) in enumerate((n, a) for n in ns for a in names)}
     return sorted(rows, key=lambda r: order[(r["analysis"], r["n"])])

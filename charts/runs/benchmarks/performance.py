@@ -27,11 +27,11 @@ import os
 import statistics
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
 
 from ...analyses.lyapunov import lyapunov_spectrum
+from ...analyses.worker_pool import worker_pool
 from ...geometry.system import RotorSystem
 from ..cli_parser import OneLineParser
 from .environment import load, machine, spread
@@ -86,7 +86,7 @@ def ensemble_speedup(t_member, n_members):
     warm = [(0, 2.0, dict(n_batches=2, t_transient=0.0))]
     times = {}
     for workers in sorted({1, os.cpu_count() or 1}):
-        with ProcessPoolExecutor(max_workers=workers) as pool:
+        with worker_pool(workers) as pool:
             list(pool.map(_warm, warm * workers))
             t0 = time.perf_counter()
             cpu = list(pool.map(_member, jobs))
