@@ -1,0 +1,209 @@
+"""The ambient dynamics of a Mechanism: the constrained equations of motion solved as one
+saddle-point (KKT) system, their exact linearisation, and the projections onto the
+configuration manifold F = 0 and its tangent spaces.
+
+``acceleration`` solves
+
+    [ M  −Jᵀ ] [ q̈ ]   [ −C(q, v)    ]
+    [ J   0  ] [ λ  ] = [ −∂²F(v, v) ]
+
+(the equations of ``charts.mechanism.symbolic``); it needs M positive definite only on
+ker J, so massless coordinates (M singular, e.g. the free joint of the triple linkage with
+``joint_mass=0``) are allowed.  The projections are Newton steps of minimum norm (points) and
+M-orthogonal KKT solves (velocities, phase-space tangent vectors).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import MechanismError
+
+__all__ = ["AmbientDynamics", "RANK_TOL"]
+
+#: Relative size σ_min/σ_max of the constraint Jacobian below which a point is refused.
+RANK_TOL = 1e-9
+
+
+class AmbientDynamics:
+    """Points, velocities and the ambient flow of a mechanism.
+
+    The host class supplies: ``n``, ``k``, ``q`` (Symbols, for messages), ``name``,
+    ``bounds``, ``_periodic_mask`` and ``_eval(key, q)`` (``symbolic.SymbolicJets``).
+    """
+
+    def _point(self, q, name="q"):
+        q = np.asarray(q, dtype=float)
+        if q.shape != (self.n,) or not np.all(np.isfinite(q)):
+            raise MechanismError(f"{name} must be {self.n} finite numbers "
+                                 f"({', '.join(s.name for s in self.q)}), got {np.asarray(q).tolist()}")
+        return q
+
+    def constraint(self, q):
+        """F(q), shape (k,)."""
+        return self._eval("F", self._point(q))
+
+    def jacobian(self, q):
+        """J(q) = ∂F/∂q, shape (k, n)."""
+        return self._eval("J", self._point(q))
+
+    def mass_matrix(self, q):
+        """M(q), shape (n, n)."""
+        return self._eval("M", self._point(q))
+
+    def check_rank(self, q):
+        """Raise MechanismError where J(q) has rank < k (σ_min/σ_max < RANK_TOL)."""
+        J = self.jacobian(q)
+        s = np.linalg.svd(J, compute_uv=False)
+        if s[0] == 0 or s[-1] < RANK_TOL * s[0]:
+            raise MechanismError(
+                f"{self.name}: the constraint Jacobian has rank < {self.k} at q = {np.asarray(q).tolist()} "
+                f"(singular values {s.tolist()}): a singular point, not a smooth manifold there")
+        return J
+
+    def check_point(self, q, tol=1e-8):
+        """q as an array, checked to be on F = 0 (|F| ≤ tol) with J of full rank."""
+        q = self._point(q)
+        F = self.constraint(q)
+        if np.max(np.abs(F)) > tol:
+            raise MechanismError(f"q is off the constraint: |F| = {np.max(np.abs(F)):.3e} > {tol:g}; "
+                                 "use project_point")
+        self.check_rank(q)
+        return q
+
+    def check_tangent(self, q, u, name="u", tol=1e-8):
+        """u as an array, checked to be tangent at q (|J u| ≤ tol · max(1, |u|))."""
+        u = self._point(u, name)
+        r = self.jacobian(q) @ u
+        if np.max(np.abs(r)) > tol * max(1.0, np.max(np.abs(u))):
+            raise MechanismError(f"{name} is not tangent: |J {name}| = {np.max(np.abs(r)):.3e}; "
+                                 "use project_velocity")
+        return u
+
+    def _kkt(self, q, J=None):
+        M = self.mass_matrix(q)
+        J = self.jacobian(q) if J is None else J
+        K = np.zeros((self.n + self.k,) * 2)
+        K[:self.n, :self.n] = M
+        K[:self.n, self.n:] = -J.T
+        K[self.n:, :self.n] = J
+        return K, M, J
+
+    def multiplier_and_acceleration(self, q, v):
+        """(q̈, λ) of the ambient equations (see the module docstring) at (q, v)."""
+        q = self._point(q)
+        v = self._point(v, "v")
+        K, M, J = self._kkt(q)
+        dM = self._eval("dM", q)
+        C = np.einsum("ikj,j,k->i", dM, v, v) - 0.5 * np.einsum("jki,j,k->i", dM, v, v)
+        rhs = np.concatenate([-C, -np.einsum("cij,i,j->c", self._eval("F2", q), v, v)])
+        sol = np.linalg.solve(K, rhs)
+        return sol[:self.n], sol[self.n:]
+
+    def tangent_acceleration(self, q, v, dq, dv):
+        """The linearisation of ``acceleration`` (for tangent vectors, the analogue of eq (17)):
+        δq̈ at (q, v) along (δq, δv), shape (n,), from the differentiated KKT system
+        K δ(q̈, λ) = δb − δK (q̈, λ) (exact, with ∂²M and ∂³F; no finite differences)."""
+        q, v = self._point(q), self._point(v, "v")
+        dq, dv = self._point(dq, "dq"), self._point(dv, "dv")
+        K, M, J = self._kkt(q)
+        dM, d2M, F2 = self._eval("dM", q), self._eval("d2M", q), self._eval("F2", q)
+        C = np.einsum("ikj,j,k->i", dM, v, v) - 0.5 * np.einsum("jki,j,k->i", dM, v, v)
+        b = np.concatenate([-C, -np.einsum("cij,i,j->c", F2, v, v)])
+        x = np.linalg.solve(K, b)
+        dJ = np.einsum("cil,l->ci", F2, dq)
+        dK = np.zeros_like(K)
+        dK[:self.n, :self.n] = np.einsum("ijl,l->ij", dM, dq)
+        dK[:self.n, self.n:] = -dJ.T
+        dK[self.n:, :self.n] = dJ
+        W = dM - 0.5 * dM.transpose(2, 1, 0)            # W[i, k, j] = ∂_j M_ik − ½ ∂_i M_jk
+        dC = (np.einsum("ikjl,j,k,l->i", d2M, v, v, dq)
+              - 0.5 * np.einsum("jkil,j,k,l->i", d2M, v, v, dq)
+              + np.einsum("ikj,j,k->i", W, dv, v) + np.einsum("ikj,j,k->i", W, v, dv))
+        db = np.concatenate([-dC, -np.einsum("cijl,i,j,l->c", self._eval("F3", q), v, v, dq)
+                             - 2.0 * np.einsum("cij,i,j->c", F2, v, dv)])
+        return np.linalg.solve(K, db - dK @ x)[:self.n]
+
+    def acceleration(self, q, v):
+        """q̈ of the ambient constrained equations of motion at (q, v), shape (n,)."""
+        return self.multiplier_and_acceleration(q, v)[0]
+
+    def rhs(self, t, y):
+        """(q̇, v̇) = (v, acceleration): the ambient flow for ``scipy.integrate.solve_ivp``."""
+        return np.concatenate([y[self.n:], self.acceleration(y[:self.n], y[self.n:])])
+
+    def inner(self, q, a, b):
+        """⟨a, b⟩ = aᵀ M(q) b."""
+        return float(a @ self.mass_matrix(q) @ b)
+
+    def energy(self, q, v):
+        """T = ½ vᵀ M(q) v."""
+        return 0.5 * self.inner(q, v, v)
+    def project_point(self, q, iterations=50, tol=1e-13):
+        """A point on F = 0 near q: Newton with the minimum-norm step q ← q − J⁺F (J⁺ the
+        pseudo-inverse, in coordinates: M may be singular); checks the rank at the result."""
+        q = self._point(q).copy()
+        for _ in range(int(iterations)):
+            F = self.constraint(q)
+            if np.max(np.abs(F)) <= tol:
+                break
+            q -= np.linalg.lstsq(self.jacobian(q), F, rcond=None)[0]
+            if not np.all(np.isfinite(q)):
+                break
+        F = self.constraint(q) if np.all(np.isfinite(q)) else np.array([np.inf])
+        if not np.max(np.abs(F)) <= 1e3 * tol:
+            raise MechanismError(f"{self.name}: Newton projection did not converge "
+                                 f"(|F| = {np.max(np.abs(F)):.3e})")
+        self.check_rank(q)
+        return q
+
+    def project_velocity(self, q, v):
+        """The M-orthogonal projection of v onto ker J(q): v' with J v' = 0 and
+        ⟨v' − v, w⟩_M = 0 for every w in ker J (a KKT solve; M definite on ker J suffices)."""
+        q = self._point(q)
+        v = self._point(v, "v")
+        K, M, J = self._kkt(q)
+        K[:self.n, self.n:] = J.T
+        sol = np.linalg.solve(K, np.concatenate([M @ v, np.zeros(self.k)]))
+        return sol[:self.n]
+
+    def project_phase_tangent(self, q, v, dq, dv):
+        """The projection of a phase-space tangent vector (δq, δv) at (q, v) onto the tangent
+        space of TC = {F = 0, J v = 0}: the linearised constraints J δq = 0 and
+        J δv + ∂²F(v, δq) = 0, each part M-orthogonally (KKT solves).  Returns (δq', δv')."""
+        q, v = self._point(q), self._point(v, "v")
+        dq = self.project_velocity(q, dq)
+        dv = self._point(dv, "dv")
+        K, M, J = self._kkt(q)
+        K[:self.n, self.n:] = J.T
+        rhs = np.concatenate([M @ dv, -np.einsum("cij,i,j->c", self._eval("F2", q), v, dq)])
+        return dq, np.linalg.solve(K, rhs)[:self.n]
+
+    def tangent_basis(self, q):
+        """An orthonormal (Euclidean) basis of ker J(q), shape (n, d)."""
+        J = self.check_rank(q)
+        return np.linalg.svd(J)[2][self.k:].T
+
+    def random_state(self, seed=0, speed=1.0, attempts=200):
+        """Random (q, v) on the manifold with vᵀMv = speed²: angles uniform in (−π, π], the
+        other coordinates uniform in ``bounds``, projected by Newton (retried where it fails
+        or lands near a singular point); v a projected Gaussian vector."""
+        if not (np.isfinite(speed) and speed > 0):
+            raise MechanismError(f"speed must be positive and finite, got {speed}")
+        rng = np.random.default_rng(int(seed))
+        lo = np.array([-np.pi if p else self.bounds[s.name][0] for s, p in zip(self.q, self._periodic_mask)])
+        hi = np.array([np.pi if p else self.bounds[s.name][1] for s, p in zip(self.q, self._periodic_mask)])
+        for _ in range(int(attempts)):
+            try:
+                q = self.project_point(rng.uniform(lo, hi))
+                s = np.linalg.svd(self.jacobian(q), compute_uv=False)
+                if s[-1] < 1e-3 * s[0]:
+                    continue
+                v = self.project_velocity(q, rng.normal(size=self.n))
+                e = self.inner(q, v, v)
+                if e > 1e-12:
+                    q = np.where(self._periodic_mask, np.angle(np.exp(1j * q)), q)
+                    return q, v * (speed / np.sqrt(e))
+            except (MechanismError, np.linalg.LinAlgError):
+                continue
+        raise MechanismError(f"{self.name}: no random point found in {attempts} attempts")
+
