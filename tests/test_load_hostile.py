@@ -151,3 +151,20 @@ def test_every_kind_load_knows_has_its_schema():
     from charts.io.archive import KINDS
     from charts.io.file_checks import SCHEMAS
     assert set(SCHEMAS) == set(KINDS)
+
+
+@pytest.mark.parametrize("name", ["theta", "u", "t"])
+def test_one_flipped_bit_of_data_is_refused_naming_the_variable(valid, tmp_path, name):
+    """One bit flipped in the middle of a variable's numbers (found by their bytes): its HDF5
+    checksum (Fletcher-32, written by ``save``) fails, and the line names the variable,
+    where without it a wrong number would have loaded."""
+    import numpy as np
+    values = np.ascontiguousarray(xr.load_dataset(valid, engine="h5netcdf")[name].values)
+    middle = values.ravel()[values.size // 2:values.size // 2 + 2].tobytes()
+    data = bytearray(valid.read_bytes())
+    k = data.find(middle)
+    assert k > 0 and data.find(middle, k + 1) < 0             # found once
+    data[k + 5] ^= 0x04
+    path = tmp_path / "flipped.nc"
+    path.write_bytes(bytes(data))
+    _refused(path, rf"the data of variable '{name}' is damaged")

@@ -38,7 +38,7 @@ from .result_words import one_line, result_fields
 __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "index_coordinate",
            "attributes", "save", "load", "require_xarray", "ENGINE", "TITLES",
            "ENSEMBLE_TITLES", "GLOBALS", "COMMENT", "REFERENCE", "same_value", "SCHEMAS",
-           "COMPRESSION_BOUND", "check_layout"]
+           "COMPRESSION_BOUND", "check_layout", "checksummed"]
 
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
@@ -193,15 +193,25 @@ def attributes(ds) -> dict:
     return {k: v for k, v in decode_attributes(ds.attrs).items() if _setting(k)}
 
 
+def checksummed(ds) -> dict:
+    """The encoding that gives every array of numbers of ``ds`` (its variables with at least
+    one axis; HDF5 filters need chunks, which a scalar has not) HDF5's Fletcher-32 checksum:
+    a damaged byte of its data is then an error on reading (`load` names the variable), not
+    a wrong number."""
+    return {name: {"fletcher32": True} for name, v in ds.variables.items()
+            if v.ndim > 0 and v.size > 0 and v.dtype.kind in "biuf"}
+
+
 def save(ds, path) -> Path:
-    """Write the dataset to ``path`` (NetCDF-4), atomically; a Ctrl-C or SIGTERM meanwhile
-    is taken once the file is written (`signals_deferred`)."""
+    """Write the dataset to ``path`` (NetCDF-4), atomically, each array of numbers with its
+    checksum (`checksummed`); a Ctrl-C or SIGTERM meanwhile is taken once the file is
+    written (`signals_deferred`)."""
     require_xarray()
     path = Path(path)
     tmp = path.with_name(f".{path.name}.nc-tmp{os.getpid()}")
     with signals_deferred():            # a Ctrl-C meanwhile: taken once the file is written
         try:
-            ds.to_netcdf(tmp, engine=ENGINE)
+            ds.to_netcdf(tmp, engine=ENGINE, encoding=checksummed(ds))
             atomic_write(path, tmp.read_bytes())
         finally:
             if tmp.exists():
@@ -223,7 +233,7 @@ def load(path):
     check_netcdf4(path)
     variables, attrs = read(path, layout)
     kind = check_layout(path, variables, attrs)
-    ds = read(path, lambda p: xr.load_dataset(p, engine=ENGINE))
+    ds = read(path, lambda p: xr.load_dataset(p, engine=ENGINE), variables)
     from .file_settings import parse_json
     for name in ds.data_vars:                # the members' settings held as JSON text
         v = ds[name]

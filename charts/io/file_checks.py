@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["SCHEMAS", "COMPRESSION_BOUND", "check_layout", "check_netcdf4", "layout", "read",
-           "refused", "one_line"]
+           "refused", "one_line", "unreadable"]
 
 #: What the file of each kind holds, from what its ``to_xarray`` gives `dataset`: variables
 #: (data and coordinates) as name → their dimensions, numbers all (a name starting ``?`` is
@@ -185,10 +185,12 @@ def layout(path):
         return variables, dict(f.attrs)
 
 
-def read(path, read):
+def read(path, read, variables=()):
     """``read(path)``; a ValueError of one line naming ``path`` where HDF5 fails on its bytes
-    (errors of any type: OSError, RuntimeError, KeyError...).  The file objects that h5netcdf
-    leaves half-opened then are collected quietly (their ``close`` would print a traceback)."""
+    (errors of any type: OSError, RuntimeError, KeyError...), and the first of ``variables``
+    whose data cannot be read (`unreadable`: a damaged byte under a checksum, a broken
+    chunk).  The file objects that h5netcdf leaves half-opened then are collected quietly
+    (their ``close`` would print a traceback)."""
     import gc
     import sys
     failure, hook = None, sys.unraisablehook
@@ -198,11 +200,29 @@ def read(path, read):
             return read(path)
         except Exception as err:             # noqa: BLE001 - HDF5's errors are of any type
             failure = f"{type(err).__name__}: {one_line(err)}"
+            name = unreadable(path, variables)
         gc.collect()
     finally:
         sys.unraisablehook = hook
-    raise ValueError(f"{path} could not be read as NetCDF-4 (is it truncated or damaged?): "
-                     f"{failure}")
+    where = f": the data of variable {name!r} is damaged" if name is not None else ""
+    raise ValueError(f"{path} could not be read as NetCDF-4 (is it truncated or damaged?)"
+                     f"{where}: {failure}")
+
+
+def unreadable(path, variables):
+    """The first of ``variables`` (names) whose data h5netcdf cannot read from ``path``, or
+    None (all read, or the file cannot be opened at all)."""
+    import h5netcdf
+    try:
+        with h5netcdf.File(path, "r") as f:
+            for name in variables:
+                try:
+                    f.variables[name][...]
+                except Exception:            # noqa: BLE001 - HDF5's errors are of any type
+                    return name
+    except Exception:                        # noqa: BLE001
+        return None
+    return None
 
 
 #: The first bytes of an HDF5 file (NetCDF-4, what ``save`` writes), and of NetCDF-3.
