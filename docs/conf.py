@@ -1,11 +1,12 @@
-"""Sphinx configuration of the API reference: every public name of ``charts`` (``charts.__all__``),
+"""Sphinx configuration of the documentation site: the README, the guide pages of docs/ (Markdown,
+read by MyST) and the API reference, every public name of ``charts`` (``charts.__all__``)
 documented from its docstring by autodoc (NumPy-style sections read by napoleon).
 
-    python -m sphinx -W -b html docs/reference docs/reference/_build     # warnings fail
+    python -m sphinx -W -b html docs docs/_build     # warnings fail
 
 The page ``api.rst`` is written here at each build from ``charts._HOMES`` (the names grouped by
 the module they live in), so a new public name appears without an edit; tests/test_api_docs.py
-builds it with warnings as errors.
+builds the whole site with warnings as errors.
 """
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[1]))          # the checkout's charts, also uninstalled
+sys.path.insert(0, str(HERE.parent))          # the checkout's charts, also uninstalled
 
 import charts  # noqa: E402
 from charts.io.archive import Archivable  # noqa: E402
@@ -22,12 +23,14 @@ from charts.io.archive import Archivable  # noqa: E402
 project = "charts"
 author = "the charts developers"
 release = charts.__version__
-extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon"]
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "myst_parser"]
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True
 autodoc_member_order = "bysource"
 autodoc_typehints = "none"
-exclude_patterns = ["_build"]
+exclude_patterns = ["_build", "figures"]   # figures/: run outputs (report.md), not pages
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+myst_heading_anchors = 4        # links to a section (page.md#first-use) resolve as on GitHub
 html_theme = "alabaster"
 suppress_warnings = ["ref.python"]  # bare type words in prose ("ndarray") are not links
 

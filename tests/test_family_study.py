@@ -44,7 +44,7 @@ def _law_samples(rng, A, beta, size):
 def _docs_rows(n):
     """(weights, level) of the rows of the docs' tables for N = n (first table of each)."""
     text = DOCS.read_text()
-    head = text.index(f"#### N = {n},")
+    head = text.index(f"### N = {n},")
     table = text[head:].split("\n\n")[1]
     rows = set()
     for line in table.splitlines()[2:]:
