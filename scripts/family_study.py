@@ -1,4 +1,4 @@
-"""The family study Σ aᵢ cos θᵢ = c (docs/families.md): long angle runs at a few points
+"""The family study Σ aᵢ cos θᵢ = c (docs/families-study.md): long angle runs at a few points
 (growing samples), then the tables and figures from the sweeps and those runs.
 
     charts sweep families-n4 -o runs/families-n4

@@ -1,4 +1,4 @@
-"""The orientation of the splitting E_u ⊕ E_cs along orbits (docs/families.md): the sign of
+"""The orientation of the splitting E_u ⊕ E_cs along orbits (docs/families-study.md): the sign of
 the oriented volume V (``charts.analyses.tangency.oriented_volume``) at every sample of a
 CLV run, its smallest |V| and the smallest angle; then the closest passage of each orbit
 resolved at every step (`closest_passage`).

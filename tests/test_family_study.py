@@ -1,4 +1,4 @@
-"""The family study (docs/families.md): the bundled sweeps are what the docs say, the named
+"""The family study (docs/families-study.md): the bundled sweeps are what the docs say, the named
 weight patterns [sweep.weights] of sweeps, and the statistics of the small angles against
 closed forms on synthetic samples:
 
@@ -27,7 +27,7 @@ from charts.runs.sweep.spec import bundled_sweeps
 from charts.runs.sweep.statistics import result_statistics
 from charts.runs.sweep.table import WEIGHT_VECTOR, point_row
 
-DOCS = Path(__file__).resolve().parents[1] / "docs" / "families.md"
+DOCS = Path(__file__).resolve().parents[1] / "docs" / "families-study.md"
 #: statistical margin of the closed-form checks (two-sided, in standard errors)
 SIGMAS = 4.0
 #: relative margin of an error estimate against its closed form: the batch-means error of

@@ -1,5 +1,5 @@
 """The closest passage of E_u to E_cs resolved at every step, and the orientation of the
-splitting: an invariant of each orbit (section 4; docs/families.md).
+splitting: an invariant of each orbit (section 4; docs/families-study.md).
 
 The oriented volume
 
@@ -20,7 +20,7 @@ would be a tangency along the whole orbit.  By construction: the CLVs are v = Q 
 Gram–Schmidt basis of T_r and C upper triangular with a positive diagonal, so sign V =
 sign det[Q, a, b], which never vanishes.  A sign change of V between samples of one orbit
 can therefore only be rounding where |V| ≈ 10⁻¹⁶, and a certificate of a tangency by a sign
-change along one orbit is impossible (docs/families.md).  (The sign is a convention of the
+change along one orbit is impossible (docs/families-study.md).  (The sign is a convention of the
 run, set by its random initial vectors: two runs of one orbit may differ in it.)
 
 What can be resolved is the closest passage itself: `closest_passage` finds it in a scan and
