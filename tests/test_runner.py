@@ -232,7 +232,7 @@ def test_scene_exponents_agree_with_the_reference_values(tmp_path, n):
 
 def test_scene_and_api_give_identical_exponents_with_masses(tmp_path):
     """N = 4, m = (1, 2, 1, 2), seed 0: the scene below and the API call the docs give for it
-    (docs/scenes.md) agree exactly, exponents and standard errors, although the scene runs
+    (docs/scene-runs.md) agree exactly, exponents and standard errors, although the scene runs
     in checkpointed chunks that do not line up with the batches."""
     from charts import lyapunov_spectrum
 
