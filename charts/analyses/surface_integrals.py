@@ -33,8 +33,6 @@ inequality orders the two, and by Gauss–Bonnet the upper bound is also √⟨�
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass
-
 import numpy as np
 from ..jit import njit
 
@@ -42,14 +40,14 @@ from ..geometry.checks import integer, option
 from ..geometry.projection import tangent_part
 from ..solvers.gram_schmidt import orthonormal_rows
 from ..solvers.tangent import check_memory, memory_budget
+from ..geometry.surface_quadrature import (POU_POWER, SurfaceIntegrals, integrals_from_nodes,
+                                           partition_of_unity, torus_grid)
 from ..geometry.topology import euler_characteristic
 from .exact_curvature import exact_curvatures
 
 __all__ = ["SurfaceIntegrals", "surface_integrals", "surface_plan", "surface_nodes",
            "tangent_frames", "POU_POWER"]
 
-#: Power p of the partition of unity |aₖ sin θₖ|ᵖ / Σ |aₗ sin θₗ|ᵖ between the charts.
-POU_POWER = 8
 #: Bytes per cell of the n_grid² grid that `surface_integrals` holds at its peak: nodes,
 #: frames and curvatures of both branches of three charts (515–526 measured as the growth
 #: of the peak RSS at n_grid = 1024 and 2048, both routes).
@@ -70,9 +68,7 @@ def surface_nodes(system, n_grid=256):
     _surface_system(system)
     n_grid = integer("n_grid", n_grid, 8, 1 << 14)
     a, m, c = system.weights, system.masses, system.level
-    h = 2.0 * np.pi / n_grid
-    x = -np.pi + h * np.arange(n_grid)
-    ti, tj = (g.ravel() for g in np.meshgrid(x, x, indexing="ij"))
+    ti, tj, h = torus_grid(n_grid)
     thetas, weights, charts_ = [], [], []
     for k in range(3):
         i, j = [q for q in range(3) if q != k]
@@ -87,7 +83,7 @@ def surface_nodes(system, n_grid=256):
             theta[:, k] = np.arctan2(branch * np.sqrt(Di), -Ci)  # aₖ(sin, cos) = (±√D, −C)
             s = np.abs(a * np.sin(theta))
             s[:, k] = np.sqrt(Di)                              # the chart's own |aₖ sin θₖ|
-            pou = s[:, k] ** POU_POWER / np.sum(s ** POU_POWER, axis=1)
+            pou = partition_of_unity(s, k)       # s[:, k]ᵖ / Σ sᵖ, p = POU_POWER
             dA = np.sqrt(np.prod(m) * np.sum(s ** 2 / m, axis=1)) / s[:, k]
             thetas.append(theta)
             weights.append(pou * dA * h * h)
@@ -119,46 +115,6 @@ def _frames(theta, keep, minv, a, m, P):
         orthonormal_rows(P[i], m)
 
 
-@dataclass(frozen=True)
-class SurfaceIntegrals:
-    """The integrals of `surface_integrals` (N = 3; lengths in rad of the metric Σ m dθ²).
-
-    area : A = ∫ dA;  total_curvature : ∫ K dA;  euler_characteristic : χ by the Morse count
-    (``charts.geometry.topology``);  mean_sqrt_neg_curvature : (1/A) ∫ √max(−K, 0) dA;
-    max_curvature : the largest K at the nodes;  positive_area : the fraction of the area
-    where K > 0;  n_grid, route, params : how they were computed.
-    """
-    area: float
-    total_curvature: float
-    euler_characteristic: int
-    mean_sqrt_neg_curvature: float
-    max_curvature: float
-    positive_area: float
-    n_grid: int
-    route: str
-    params: dict
-
-    @property
-    def gauss_bonnet_error(self) -> float:
-        """∫ K dA − 2πχ: zero by the Gauss–Bonnet theorem, up to the quadrature's error."""
-        return self.total_curvature - 2.0 * np.pi * self.euler_characteristic
-
-    def entropy_bracket(self):
-        """(lower, upper) bounds of the leading exponent λ₁ at unit speed (module doc):
-        Osserman–Sarnak's mean √(−K), None unless K ≤ 0 at every node, and Katok's
-        √(2π|χ|/A), None unless χ < 0."""
-        upper = float(np.sqrt(2.0 * np.pi * abs(self.euler_characteristic) / self.area)) \
-            if self.euler_characteristic < 0 else None
-        lower = self.mean_sqrt_neg_curvature if self.max_curvature <= 0.0 else None
-        return lower, upper
-
-    def to_dict(self) -> dict:
-        out = asdict(self)
-        out["gauss_bonnet_error"] = self.gauss_bonnet_error
-        out["entropy_bracket"] = list(self.entropy_bracket())
-        return out
-
-
 def surface_plan(system, n_grid=256, route="chart"):
     """(n_grid, route) of `surface_integrals` checked before any work: N = 3, ``n_grid`` an
     integer in 8..16384 whose n_grid² cells fit the memory budget (`BYTES_PER_CELL` each),
@@ -182,10 +138,4 @@ def surface_integrals(system, n_grid=256, route="chart") -> SurfaceIntegrals:
     chi = euler_characteristic(system.weights, system.level)
     theta, dA, _ = surface_nodes(system, n_grid)
     K = exact_curvatures(system, theta, tangent_frames(system, theta), route)[:, 0, 0]
-    area = float(np.sum(dA))
-    return SurfaceIntegrals(
-        area=area, total_curvature=float(np.sum(K * dA)), euler_characteristic=chi,
-        mean_sqrt_neg_curvature=float(np.sum(np.sqrt(np.maximum(-K, 0.0)) * dA) / area),
-        max_curvature=float(K.max()), positive_area=float(np.sum(dA[K > 0.0]) / area),
-        n_grid=int(n_grid), route=route,
-        params=system.describe())
+    return integrals_from_nodes(K, dA, chi, n_grid, route, system.describe())

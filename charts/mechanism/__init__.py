@@ -4,11 +4,13 @@
 derives the ambient constrained equations of motion, projections, an atlas by the implicit
 function theorem, the induced metric, Christoffel symbols, Riemann tensor and the
 Gauss-equation curvature; ``rotors`` and ``triple_linkage`` are instances; ``integrate_ambient``
-and ``integrate_chart`` integrate a mechanism's geodesic flow.
+and ``integrate_chart`` integrate a mechanism's geodesic flow; ``surface_integrals`` gives the
+area, ∫K dA and the curvature's sign of a 2-dimensional configuration surface.
 """
 from .model import Mechanism, MechanismError
 from .instances import rotors, triple_linkage
 from .integrate import integrate_ambient, integrate_chart
+from .surface import surface_integrals
 
 __all__ = ["Mechanism", "MechanismError", "rotors", "triple_linkage", "integrate_ambient",
-           "integrate_chart"]
+           "integrate_chart", "surface_integrals"]

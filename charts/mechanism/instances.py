@@ -49,7 +49,25 @@ def rotors(n, masses=None, weights=None, level=0.0):
                                  masses=m, parameters=params, periodic=th)
     values = {**{f"m{i + 1}": x for i, x in enumerate(masses)},
               **{f"w{i + 1}": x for i, x in enumerate(weights)}, "c": level}
-    return _MODELS[key].with_parameters(name=f"rotors(n={n})", **values)
+    out = _MODELS[key].with_parameters(name=f"rotors(n={n})", **values)
+    out.sheets = _rotor_sheets
+    return out
+
+
+def _rotor_sheets(mech, chart, ti, tj):
+    """The points of the rotor surface with θ_i = ti, θ_j = tj (chart (i, j), N = 3): θ_k =
+    ±arccos((c − w_i cos θ_i − w_j cos θ_j)/w_k), NaN where there is none; two (S, 3) arrays."""
+    p = mech.parameter_values
+    w = np.array([p[f"w{i + 1}"] for i in range(mech.n)])
+    (i, j), k = chart, (set(range(mech.n)) - set(chart)).pop()
+    cos_k = (p["c"] - w[i] * np.cos(ti) - w[j] * np.cos(tj)) / w[k]
+    out = []
+    for sign in (1.0, -1.0):
+        q = np.empty((ti.size, 3))
+        q[:, i], q[:, j] = ti, tj
+        q[:, k] = np.where(np.abs(cos_k) < 1.0, sign * np.arccos(np.clip(cos_k, -1, 1)), np.nan)
+        out.append(q)
+    return out
 
 
 def triple_linkage(r, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0, rod_mass=0.0):
@@ -66,10 +84,47 @@ def triple_linkage(r, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0, rod_mass=0.0):
     joint_mass = _number("joint_mass", joint_mass, nonnegative=True)
     rod_mass = _number("rod_mass", rod_mass, nonnegative=True)
     span = 3 * r + abs(l - R)
-    return _linkage_model(bool(rod_mass)).with_parameters(
+    out = _linkage_model(bool(rod_mass)).with_parameters(
         r=r, l=l, R=R, I=inertia, m=joint_mass, mu=rod_mass,
         bounds={"x": (-span, span), "y": (-span, span)},
         name=f"triple_linkage(r={r:g}, l={l:g}, R={R:g})")
+    out.sheets = _linkage_sheets
+    return out
+
+
+def _linkage_sheets(mech, chart, ta, tb):
+    """The points of the triple linkage with θ_a = ta, θ_b = tb (chart (a, b) of two angles):
+    Z on both intersections of the circles of radius l about the hinges Q_a, Q_b, then θ_k of
+    the third disc on both intersections of its rim with the circle of radius l about Z; four
+    (S, 5) arrays, NaN rows where a sheet has no point (for ``charts.mechanism.surface``)."""
+    p = mech.parameter_values
+    r, l, R = p["r"], p["l"], p["R"]
+    (a, b), k = chart, (set(range(3)) - set(chart)).pop()
+    alpha = 2 * np.pi * np.arange(3) / 3
+    P = R * np.stack([np.cos(alpha), np.sin(alpha)], 1)
+
+    def hinge(j, t):
+        return P[j] + r * np.stack([np.cos(alpha[j] + t), np.sin(alpha[j] + t)], -1)
+    A, B = hinge(a, ta), hinge(b, tb)
+    d = np.linalg.norm(B - A, axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        perp = np.stack([A[:, 1] - B[:, 1], B[:, 0] - A[:, 0]], -1) / d[:, None]
+        half = np.sqrt(l * l - d * d / 4)                   # NaN where the rods a, b miss
+        out = []
+        for s in (1.0, -1.0):
+            Z = (A + B) / 2 + s * half[:, None] * perp
+            D = P[k] - Z
+            nD = np.linalg.norm(D, axis=-1)
+            c = (l * l - nD ** 2 - r * r) / (2 * r * nD)   # cos of the hinge's angle from D
+            acos = np.where(np.abs(c) < 1.0, np.arccos(np.clip(c, -1, 1)), np.nan)
+            for sign in (1.0, -1.0):
+                q = np.empty((ta.size, 5))
+                q[:, a], q[:, b] = ta, tb
+                q[:, k] = np.angle(np.exp(1j * (np.arctan2(D[:, 1], D[:, 0]) + sign * acos
+                                                - alpha[k])))
+                q[:, 3:] = Z
+                out.append(q)
+    return out
 
 
 def _linkage_model(rods):

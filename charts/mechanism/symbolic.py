@@ -96,7 +96,7 @@ class SymbolicJets:
         v = sp.symbols(" ".join(f"v_{s.name}" for s in self.q), real=True, seq=True)
         a = sp.symbols(" ".join(f"a_{s.name}" for s in self.q), real=True, seq=True)
         lam = sp.symbols(" ".join(f"lambda{i}" for i in range(self.k)), real=True, seq=True)
-        V, A, L = sp.Matrix(v), sp.Matrix(a), sp.Matrix(lam)
+        A, L = sp.Matrix(a), sp.Matrix(lam)
         C = sp.Matrix([sum((self.dM[i, kk, j] - sp.Rational(1, 2) * self.dM[j, kk, i]) * v[j] * v[kk]
                            for j in range(self.n) for kk in range(self.n)) for i in range(self.n)])
         eqs = list(self.M * A + C - self.J.T * L)
