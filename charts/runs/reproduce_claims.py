@@ -185,7 +185,7 @@ def _zero_exponents(results):
     return [f"- **The two zero exponents and the ±λ pairs** (§2) get no error bar: only the "
             f"leading N − 2 exponents do.  The CLV route's mean growth along the two zero "
             f"directions (restricted; {'; '.join(parts)}) is {size} a finite run's bias "
-            f"ln T / T = {bias:.1e} (T = {T:g}; docs/reproduce.md), so it neither confirms nor "
+            f"ln T / T = {bias:.1e} (T = {T:g}; docs/second-routes.md), so it neither confirms nor "
             "contradicts exact zeros."]
 
 
@@ -262,7 +262,7 @@ def curvature_gap_lines(results) -> list:
          "≈ Δt²·c⁗/12 with c⁗ = (K² − K̈)c − 2K̇ċ (from c̈ = −Kc): it is large where |K| is "
          "(close to the singular points of N = 4, where Σ sin²θ → 0) or where K changes fast, "
          "and it falls 4× per halving of Δt, as measured at the very samples of the largest "
-         "differences below (docs/reproduce.md, \"The two curvature routes\").  Largest "
+         "differences below (docs/second-routes.md, \"The two curvature routes\").  Largest "
          "difference on the diagonal per N, and its size in units of Δt²K²:", "",
          "| N | largest \\|K_a − K_b\\| | in | K there (route b) | 99.9 % of \\|K\\| below "
          "| relative | ÷ Δt²K² |",
