@@ -1,4 +1,4 @@
-"""The cold-start experiments of docs/performance.md ("What was tried"), for whichever copy of
+"""The cold-start experiments of docs/changelog.md ("Cold start", "What was tried"), for whichever copy of
 the package is imported (point PYTHONPATH at a modified copy, and NUMBA_CACHE_DIR at a new empty
 folder, to measure a variant from cold).
 
