@@ -13,13 +13,13 @@ from math import gcd
 
 import numpy as np
 
-from ..geometry.checks import integer, number
+from ..geometry.checks import integer, number, shown
 from ..solvers.progress import progress_reporter
 from ..solvers.status import MAX_STEPS, check_step
 from ..solvers.tangent import largest_divisor
 
 __all__ = ["flag", "inner_steps", "positive_time", "nonnegative_time", "steps_of", "positive_int", "progress_reporter",
-           "project_steps", "samples_of", "start_state", "unstable_dimension", "Documented"]
+           "project_steps", "samples_of", "start_state", "unstable_dimension", "rotor_system", "linkage_system", "seed_of", "Documented"]
 
 
 class Documented(float):
@@ -31,6 +31,17 @@ class Documented(float):
     def __repr__(self):
         return repr(float(self))
 
+
+#: Largest seed: the members' seeds seed, seed + 1, … stay within an int64 (NumPy's and the
+#: kernels' integers).
+MAX_SEED = 2 ** 62
+#: Most members of one ensemble: seeds and per-member arrays are sized by it before any work,
+#: and 10⁹ members at the fastest measured member (~0.1 ms) is already a day of one core.
+MAX_MEMBERS = 10 ** 9
+#: Most worker processes one may ask for (never more are started than there are jobs).
+MAX_WORKERS = 10 ** 6
+#: Largest speed |u| of an ensemble's states: ½|u|² beyond it overflows a float.
+MAX_SPEED = 1e150
 
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
 #: decimal inputs such as 0.1 / 0.01 = 9.999999999999998).
@@ -104,6 +115,11 @@ def inner_steps(name, t, dt, total, outer, outer_steps) -> int:
                     else gcd(total, outer_steps))
 
 
+def seed_of(seed, name="seed") -> int:
+    """``seed`` as an int in 0..`MAX_SEED`; ValueError naming ``name`` otherwise."""
+    return integer(name, seed, 0, MAX_SEED)
+
+
 def positive_int(name, x, minimum=1) -> int:
     """``x`` as an int; ValueError naming ``name`` unless an integer >= ``minimum`` (an
     integral float such as 4.0 counts, 2.7 and True do not: ``charts.geometry.checks``)."""
@@ -134,10 +150,28 @@ def start_state(system, theta0, u0, dt=None):
     """``system.check_state(theta0, u0)`` for a flow: the velocity must not be zero; with a
     fixed step ``dt``, the step is checked against the speed (``status.check_step``: refused
     when meaningless, a StepSizeWarning when every step is cut by the step cap)."""
-    theta0, u0 = system.check_state(theta0, u0)
+    theta0, u0 = rotor_system(system).check_state(theta0, u0, ("theta0", "u0"))
     speed = float(system.speed(u0))
     if not speed > 0:
         raise ValueError("u0 is zero: the geodesic flow needs a nonzero speed")
     if dt is not None:
         check_step(dt, speed, system.n)
     return theta0, u0
+
+
+def rotor_system(system):
+    """``system`` if it is a ``charts.RotorSystem``; TypeError naming ``system`` otherwise
+    (called first by every analysis of the rotors, before the system is used)."""
+    from ..geometry.system import RotorSystem
+    if not isinstance(system, RotorSystem):
+        raise TypeError(f"system must be a charts.RotorSystem, got {shown(system)}")
+    return system
+
+
+def linkage_system(system):
+    """``system`` if it is a ``charts.LinkageSystem``; TypeError naming ``system`` otherwise
+    (called first by every analysis of the linkage)."""
+    from ..geometry.linkage import LinkageSystem
+    if not isinstance(system, LinkageSystem):
+        raise TypeError(f"system must be a charts.LinkageSystem, got {shown(system)}")
+    return system

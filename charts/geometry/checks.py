@@ -11,10 +11,13 @@ steps would match); ``True``, ``2.7`` and ``"2"`` are not counts.
 from __future__ import annotations
 
 import math
+import os
+from pathlib import Path
 
 import numpy as np
 
-__all__ = ["number", "integer", "finite_array", "option", "shown"]
+__all__ = ["number", "integer", "finite_array", "option", "path", "instance", "callback",
+           "shown"]
 
 
 def shown(x) -> str:
@@ -116,3 +119,29 @@ def option(name, x, allowed):
         elif isinstance(x, type(a)) and x == a:
             return x
     raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {shown(x)}")
+
+
+def path(name, x) -> Path:
+    """``x`` as a ``Path``: a str or ``os.PathLike`` with a file name (not ``''``, ``'.'``
+    nor a folder's ``'..'``); ValueError naming ``name`` otherwise (a number is not a path)."""
+    if isinstance(x, bytes) or not isinstance(x, (str, os.PathLike)):
+        raise ValueError(f"{name} must be a file path (a str or os.PathLike), got {shown(x)}")
+    p = Path(x)
+    if p.name in ("", ".", ".."):
+        raise ValueError(f"{name} must name a file, got {shown(x)}")
+    return p
+
+
+def instance(name, x, cls, what=None):
+    """``x`` if it is a ``cls``; TypeError naming ``name`` and ``what`` (default the class's
+    name) otherwise."""
+    if not isinstance(x, cls):
+        raise TypeError(f"{name} must be a {what or cls.__name__}, got {shown(x)}")
+    return x
+
+
+def callback(name, x):
+    """``x`` if it is None or callable; TypeError naming ``name`` otherwise."""
+    if x is not None and not callable(x):
+        raise TypeError(f"{name} must be a callable or None, got {shown(x)}")
+    return x

@@ -31,7 +31,7 @@ import numpy as np
 from ..jit import njit
 
 from ..codegen.shipped import import_shipped
-from .checks import finite_array, number
+from .checks import finite_array, number, shown
 from .projection import rescale_speed
 from .system import RotorSystem
 
@@ -353,19 +353,25 @@ class LinkageSystem:
         v = np.asarray(v, dtype=float)
         return float(np.sqrt(np.sum(self.mass * v * v)))
 
-    def check_state(self, q, v):
-        """Validated float copies of (q, v), shape (7,) each; ValueError off the manifold."""
-        q = finite_array("q", q, (NQ,)).copy()
-        v = finite_array("v", v, (NQ,)).copy()
+    def check_state(self, q, v, names=("q", "v")):
+        """Validated float copies of (q, v), shape (7,) each; ValueError off the manifold,
+        naming the bad one by ``names`` (the caller's names, e.g. ("q0", "v0"))."""
+        if not (isinstance(names, tuple) and len(names) == 2
+                and all(isinstance(s, str) and s for s in names)):
+            raise TypeError(f"names must be a pair of non-empty str, got {shown(names)}")
+        nq, nv = names
+        q = finite_array(nq, q, (NQ,)).copy()
+        v = finite_array(nv, v, (NQ,)).copy()
         F = np.max(np.abs(self.constraints(q)))
         if F > TOL:
-            raise ValueError(f"q is off the linkage's manifold (max|F| = {F:.2e} > {TOL:g}); "
+            raise ValueError(f"{nq} is off the linkage's manifold (max|F| = {F:.2e} > {TOL:g}); "
                              "use LinkageSystem.project(q, v) or random_state")
-        Jv = np.max(np.abs(self.jacobian(q) @ v))
-        if Jv > TOL * max(1.0, np.max(np.abs(v))):
-            raise ValueError(f"v is not tangent to the manifold (max|J v| = {Jv:.2e}); "
+        with np.errstate(over="ignore", invalid="ignore"):
+            Jv = np.max(np.abs(self.jacobian(q) @ v))
+        if not Jv <= TOL * max(1.0, np.max(np.abs(v))):
+            raise ValueError(f"{nv} is not tangent to the manifold (max|J v| = {Jv:.2e}); "
                              "use LinkageSystem.project(q, v)")
-        self._check_rank("q", q, "the linkage has no tangent space there to move in")
+        self._check_rank(nq, q, "the linkage has no tangent space there to move in")
         return q, v
 
     # ------------------------------------------------------------------ states

@@ -22,7 +22,7 @@ import warnings
 import numpy as np
 
 from .atlas import best_charts, chart_coordinates, eliminated_angle, local_masses, local_weights
-from .checks import finite_array, integer, number
+from .checks import finite_array, integer, number, shown
 from .kernels import geometry
 from .projection import project_constraint, tangent_part
 from .structured import gauss_sectional
@@ -39,6 +39,18 @@ MAX_N = 1 << 20
 #: Largest number of entries of an array returned by ``christoffel`` / ``riemann`` (1 GiB of
 #: floats): the Riemann array of N = 64 has 63⁴ ≈ 1.6e7 entries, that of N = 256 4.2e9.
 MAX_ENTRIES = 2 ** 27
+#: Most Newton steps ``project_point`` may take (it converges in a handful; the cap keeps a
+#: count the int64 loop of ``project_constraint`` can hold).
+MAX_ITERATIONS = 10 ** 6
+
+
+def _label(what, name) -> str:
+    """``name``, an argument's name for messages, if it is a non-empty str (TypeError naming
+    ``what`` otherwise)."""
+    if not isinstance(name, str) or not name:
+        raise TypeError(f"{what} must be a non-empty str (an argument's name in messages), "
+                        f"got {shown(name)}")
+    return name
 
 
 class CriticalLevelWarning(UserWarning):
@@ -133,21 +145,24 @@ class RotorSystem:
         that weights of 1e-10 or 1e9 are checked as strictly as weights of 1."""
         return max(float(np.max(np.abs(self.weights))), abs(self.level))
 
-    def check_point(self, theta) -> np.ndarray:
+    def check_point(self, theta, name="theta") -> np.ndarray:
         """theta (N,) as a float array after checking it is on the manifold:
-        |Σ aᵢ cos θᵢ − level| within ``TOL['constraint']`` × `constraint_scale`."""
-        theta = finite_array("theta", theta, shape=(self.n,))
+        |Σ aᵢ cos θᵢ − level| within ``TOL['constraint']`` × `constraint_scale`; ValueError
+        naming ``name`` (the caller's name of the argument) otherwise."""
+        theta = finite_array(_label("name", name), theta, shape=(self.n,))
         F = float(self.weights @ np.cos(theta)) - self.level
         tol = TOL["constraint"] * self.constraint_scale
         if abs(F) > tol:
             what = "sum(cos theta)" if self.is_paper_family else "sum(a cos theta) - level"
-            raise ValueError(f"theta is off the manifold: {what} = {F:.3e} "
+            raise ValueError(f"{name} is off the manifold: {what} = {F:.3e} "
                              f"(tolerance {tol:g}); use RotorSystem.project_point")
         return theta
 
     def check_tangent(self, theta, u, name="u") -> np.ndarray:
         """u (N,) as a float array after checking it is tangent at theta:
         |Σ uᵢ aᵢ sin θᵢ| within ``TOL['tangency']`` × `constraint_scale` × max(1, |u|)."""
+        name = _label("name", name)
+        theta = finite_array("theta", theta, shape=(self.n,))
         u = finite_array(name, u, shape=(self.n,))
         G = float(u @ (self.weights * np.sin(theta)))
         tol = TOL["tangency"] * self.constraint_scale * max(1.0, float(np.linalg.norm(u)))
@@ -157,37 +172,51 @@ class RotorSystem:
                              f"(tolerance {tol:g}); use RotorSystem.project_tangent")
         return u
 
-    def check_state(self, theta, u):
+    def check_state(self, theta, u, names=("theta", "u")):
         """(theta, u) as float arrays after checking them: theta on the manifold, u tangent
-        there, finite energy; ValueError naming the bad one."""
-        theta = self.check_point(theta)
-        u = self.check_tangent(theta, u)
-        if not np.isfinite(self.energy(u)):
-            raise ValueError("u is too large: its kinetic energy overflows a float; rescale it")
+        there, finite energy; ValueError naming the bad one (by ``names``, the caller's
+        names of the two arguments, e.g. ("theta0", "u0"))."""
+        if not (isinstance(names, tuple) and len(names) == 2):
+            raise TypeError(f"names must be a pair of str, got {shown(names)}")
+        theta = self.check_point(theta, _label("names", names[0]))
+        u = self.check_tangent(theta, u, _label("names", names[1]))
+        with np.errstate(over="ignore"):
+            E = 0.5 * np.sum(self.masses * u ** 2)
+        if not np.isfinite(E):
+            raise ValueError(f"{names[1]} is too large: its kinetic energy overflows a float; "
+                             "rescale it")
         return theta, u
 
     # -- invariants and projections ----------------------------------------------------
     def energy(self, u):
-        """Kinetic energy ½ Σ mᵢuᵢ² of the velocities u (..., N)."""
-        return 0.5 * np.sum(self.masses * np.asarray(u) ** 2, axis=-1)
+        """Kinetic energy ½ Σ mᵢuᵢ² of the velocities u (..., N); ValueError naming u
+        unless u is finite with last axis N and its energy is within a float's range."""
+        u = finite_array("u", u)
+        if u.ndim == 0 or u.shape[-1] != self.n:
+            raise ValueError(f"u must have shape (..., {self.n}), got {u.shape}")
+        with np.errstate(over="ignore"):
+            E = 0.5 * np.sum(self.masses * u ** 2, axis=-1)
+        if not np.all(np.isfinite(E)):
+            raise ValueError("u is too large: its kinetic energy is beyond a float's range")
+        return E
 
     def speed(self, u):
         """|u|_g = √(Σ mᵢ uᵢ²)."""
         return np.sqrt(2.0 * self.energy(u))
 
     def inner(self, theta, a, b):
-        """Metric inner product of ambient tangent vectors: Σ mᵢ aᵢ bᵢ."""
+        """Metric inner product of ambient tangent vectors at theta: Σ mᵢ aᵢ bᵢ (the
+        metric is constant; theta is checked, finite of shape (N,))."""
+        finite_array("theta", theta, shape=(self.n,))
         a = finite_array("a", a, shape=(self.n,))
         b = finite_array("b", b, shape=(self.n,))
         return float(np.sum(self.masses * a * b))
 
     def project_point(self, theta, iterations=50):
         """Nearest-ish point on the manifold (Newton along M⁻¹∇F, ``projection.project_constraint``)."""
-        theta = np.array(theta, dtype=float)
-        if theta.shape != (self.n,) or not np.all(np.isfinite(theta)):
-            raise ValueError(f"theta must be {self.n} finite angles, got {theta.tolist()}")
+        theta = finite_array("theta", theta, shape=(self.n,)).copy()
         if not project_constraint(theta, self.masses, self.weights, self.level,
-                                  integer("iterations", iterations, 1)):
+                                  integer("iterations", iterations, 1, MAX_ITERATIONS)):
             raise ValueError("cannot project: the point is a critical point of sum(a cos theta)")
         return theta
 
@@ -225,7 +254,10 @@ class RotorSystem:
         the paper's weights; ties: the lowest index) at theta (N,), an int; or at each of the
         points theta (..., N), an int array: the switching rule's argmax
         (``charts.geometry.atlas.best_sine``)."""
-        s = np.abs(self.weights * np.sin(np.asarray(theta, dtype=float)))
+        theta = finite_array("theta", theta)
+        if theta.ndim == 0 or theta.shape[-1] != self.n:
+            raise ValueError(f"theta must have shape (..., {self.n}), got {theta.shape}")
+        s = np.abs(self.weights * np.sin(theta))
         k = best_charts(np.ascontiguousarray(s.reshape(-1, self.n))).reshape(s.shape[:-1])
         return int(k) if k.ndim == 0 else k
 
