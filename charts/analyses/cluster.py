@@ -155,7 +155,7 @@ def cluster_device(device, client) -> str:
 
     if client is None:
         return resolve_device(device)
-    if device not in ("cpu", "auto"):
+    if not isinstance(device, str) or device not in ("cpu", "auto"):
         raise ValueError(f"client= runs the members on the cluster's CPU workers; device must be "
                          f"'cpu' or 'auto' with it, got {device!r} (a GPU run: client=None, "
                          "device='cuda')")
@@ -188,7 +188,7 @@ def _cluster_pool(client, workers):
         c = client
     elif isinstance(client, Cluster):
         c = own = Client(client)
-    elif client == LOCAL:
+    elif isinstance(client, str) and client == LOCAL:
         own, cluster = dask_client(None, workers)
         c = own
     elif isinstance(client, str):

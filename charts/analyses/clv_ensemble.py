@@ -38,6 +38,7 @@ from .covariant import forward_members as _forward_cpu  # (the CPU twin of the C
 from .cluster import cluster_device
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, member_states_of,
                        run_ensemble)
+from .arguments import rotor_system
 
 __all__ = ["covariant_ensemble", "clv_ensemble_settings", "clvs_on_device",
            "clv_block_plan", "clv_block_bytes", "clv_states", "kernel_function"]
@@ -55,6 +56,7 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
     there.  ``"auto"``: the GPU when there is one.  ``client``: the members run as tasks of a
     Dask cluster instead (a ``Client``, a scheduler's address, or "local": a LocalCluster of
     ``workers`` processes; ``charts.analyses.cluster``, docs/cluster.md)."""
+    rotor_system(system)
     device = cluster_device(device, client)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)

@@ -32,6 +32,7 @@ backward pass reads them in chunks of `CHUNK` samples.  In memory in any case: t
 """
 from __future__ import annotations
 
+import os
 import shutil
 import tempfile
 from dataclasses import dataclass
@@ -44,7 +45,9 @@ from ..jit import njit
 from ..io.archive import Archivable, attributes, dataset, index_coordinate
 from ..io.result_words import ANGULAR_VELOCITY, RATE, exponent_words, smallest_words
 from ..jit.compilation import announces_compilation
+from ..geometry.checks import integer, option, shown
 from ..geometry.projection import project_tangent_sc
+from ..geometry.system import MAX_N
 from ..solvers.status import NONFINITE, RUNNING, status_error
 from ..solvers.driver import Phases
 from ..solvers.device import load_member, store_member
@@ -55,6 +58,7 @@ from .arguments import (positive_int, positive_time, progress_reporter, project_
 from .finite_time import domination, finite_time_statistics
 from .hyperbolicity import angle_statistics
 from .singular_values import smallest_singular_values
+from .arguments import flag, rotor_system
 
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
            "MAX_MEMORY", "CLVSettings", "clv_settings", "clv_flow", "ginelli_start",
@@ -69,16 +73,14 @@ CHUNK = 2048
 
 def clv_dimension(n, variant):
     """D, the number of CLVs: 2N−2 (``restricted``) or 2N (``full``)."""
-    if variant == "restricted":
-        return 2 * n - 2
-    if variant == "full":
-        return 2 * n
-    raise ValueError(f"variant must be 'restricted' or 'full', got {variant!r}")
+    return 2 * n - 2 if option("variant", variant, ("restricted", "full")) == "restricted" \
+        else 2 * n
 
 
 def sample_bytes(n, variant):
     """Bytes of the factors stored per sample point by the forward pass: Q (D, 2N),
     R (D, D) and the state (2N,)."""
+    n = integer("n", n, 3, MAX_N)
     D = clv_dimension(n, variant)
     return 8 * (D * 2 * n + D * D + 2 * n)
 
@@ -428,9 +430,15 @@ def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restrict
         Parent folder of that temporary folder (default: the system's temporary folder).
     progress : bool or callable(t_done, t_total)
     """
+    rotor_system(system)
+    keep_vectors = flag("keep_vectors", keep_vectors)
+    if scratch is not None and (isinstance(scratch, bytes) or str(scratch) == "" or
+                                not isinstance(scratch, (str, os.PathLike))):
+        raise ValueError(f"scratch must be a folder path (a str or os.PathLike) or None, got "
+                         f"{shown(scratch)}")
     cfg = clv_settings(system, t_final, variant, dt, n_unstable, t_transient, sample_every,
                         project_every, seed, max_memory)
-    theta0, u0 = start_state(system, theta0, u0)
+    theta0, u0 = start_state(system, theta0, u0, cfg.dt)
     flow = clv_flow(system, theta0, u0, cfg, variant)
     rep = progress_reporter(progress, cfg.n_steps * cfg.dt, f"CLV N={system.n} {variant}")
     on_disk = plan_storage(cfg, system.n, variant, keep_vectors, scratch)

@@ -40,7 +40,7 @@ from ..jit.kernel_calls import CallsKernel
 from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tangent_factors,
                              tangent_rate, transport_rate)
 from ..geometry.primitives import sincos
-from ..geometry.checks import finite_array
+from ..geometry.checks import finite_array, option
 from ..geometry.system import TOL
 from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
 from ..solvers.driver import Phases
@@ -50,6 +50,7 @@ from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reor
 from .arguments import (flag, positive_int, positive_time, progress_reporter, project_steps,
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
+from .arguments import rotor_system
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
            "exact_curvatures", "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
@@ -305,6 +306,7 @@ class CurvatureResult(Archivable):
     def diagonal(self, route="numerical"):
         """K_ii, shape (S, N−2), of route 'numerical' (a; the scenes' name, 'numeric' is
         accepted too) or 'exact' (b)."""
+        route = option("route", route, ("numerical", "numeric", "exact"))
         if route in ("numerical", "numeric"):
             K = self.K_numeric
         elif route == "exact":
@@ -393,6 +395,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     -------
     CurvatureResult
     """
+    rotor_system(system)
     n = system.n
     dt = positive_time("dt", dt)
     total = steps_of("t_final", t_final, dt)

@@ -41,6 +41,7 @@ from mpmath import iv
 
 from ..codegen.symbolic import ChartGeometry, weighted_sincos
 from ..geometry.checks import integer
+from .arguments import rotor_system
 
 __all__ = ["CurvatureCertificate", "certify_curvature_sign", "sign_polynomials", "COVER_RATIOS",
            "MAX_BOXES"]
@@ -64,7 +65,7 @@ def _interval(r):
 
 
 def _system3(system):
-    if system.n != 3:
+    if rotor_system(system).n != 3:
         raise ValueError(f"the curvature certificate is for the surface of N = 3 rotors, got "
                          f"N = {system.n}")
     return system

@@ -13,10 +13,13 @@ from ..io.archive import (ENSEMBLE_TITLES, Archivable, attributes, dataset, requ
 from ..io.file_settings import MEMBER, member_attributes, member_settings
 from ..io.result_words import RATE, counted, exponent_words, smallest_words
 from ..jit.compilation import announce, timed_call
+from ..geometry.checks import shown
 from ..geometry.energy_shares import LOCALISED_SHARE
 from ..solvers.progress import check_progress
 from .worker_pool import worker_pool
-from .arguments import positive_int, positive_time, progress_reporter
+from ..geometry.checks import integer
+from .arguments import (MAX_MEMBERS, MAX_SPEED, MAX_WORKERS, positive_time, progress_reporter,
+                        seed_of)
 from .cluster import cluster_pool
 from .spectrum_quantities import SpectrumQuantities
 from .statistics import standard_error
@@ -64,7 +67,12 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         return np.array([m.localised_fraction(share) for m in self.members])
 
     def concatenate(self, attribute):
-        """The members' array ``attribute`` joined along its first axis."""
+        """The members' array ``attribute`` joined along its first axis (ValueError naming
+        ``attribute`` unless every member holds an array of that name)."""
+        if not isinstance(attribute, str) or not self.members or not all(
+                isinstance(getattr(m, attribute, None), np.ndarray) for m in self.members):
+            raise ValueError(f"attribute must name an array of the members (e.g. "
+                             f"'exponents'), got {shown(attribute)}")
         return np.concatenate([getattr(m, attribute) for m in self.members])
 
     KIND = "ensemble"
@@ -222,12 +230,14 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
 
 def ensemble_arguments(n_trajectories, t_final, speed, seed, workers, progress):
     """Checked (n_trajectories, seed, workers) of an ensemble (ValueError naming the bad one)."""
-    n_trajectories = positive_int("n_trajectories", n_trajectories, 2)
-    seed = positive_int("seed", seed, 0)
+    n_trajectories = integer("n_trajectories", n_trajectories, 2, MAX_MEMBERS)
+    seed = seed_of(seed)
     if workers is not None:
-        workers = positive_int("workers", workers)
+        workers = integer("workers", workers, 1, MAX_WORKERS)
     positive_time("t_final", t_final)
-    positive_time("speed", speed)
+    if positive_time("speed", speed) > MAX_SPEED:
+        raise ValueError(f"speed={float(speed):g} is beyond {MAX_SPEED:g}: the kinetic energy "
+                         "½|u|² of such a state overflows a float")
     check_progress(progress)
     return n_trajectories, seed, workers
 

@@ -34,8 +34,9 @@ import numpy as np
 import sympy as sp
 
 from ..codegen.symbolic import ChartGeometry
-from ..geometry.checks import integer
+from ..geometry.checks import integer, shown
 from ..solvers.tangent import TangentFlow
+from .arguments import rotor_system
 
 __all__ = ["FlatTorusCertificate", "antipodal_torus", "certify_flat_torus", "torus_plan",
            "MAX_TORUS_N", "MAX_TORUS_STEPS"]
@@ -205,8 +206,8 @@ def torus_plan(system, steps=4096) -> int:
     n = system.n
     steps = integer("steps", steps, 1)
     if steps > MAX_TORUS_STEPS:
-        work = steps * (2 * n + 1)
-        raise ValueError(f"steps={steps} RK4 steps per period, with the 2N + 1 = {2 * n + 1} "
+        work = float(min(steps, 10 ** 300)) * (2 * n + 1)
+        raise ValueError(f"steps={shown(steps)} RK4 steps per period, with the 2N + 1 = {2 * n + 1} "
                          f"stacked vectors of N = {n}, is {work:.3g} vector steps (about "
                          f"{work * 80e-9:.3g} s at 80 ns each), more than the {MAX_TORUS_STEPS} "
                          "steps allowed; 4096 (the default) already closes the geodesic to "
@@ -227,6 +228,7 @@ def certify_flat_torus(system, *, steps=4096) -> FlatTorusCertificate:
     compute the monodromy of its closed geodesic (``steps`` RK4 steps per period, a whole
     number in 1..`MAX_TORUS_STEPS`; N at most `MAX_TORUS_N`: `torus_plan`, checked before
     any work); see the module doc for what it implies."""
+    rotor_system(system)
     steps = torus_plan(system, steps)
     params = dict(**system.describe(), steps=steps)
     found = antipodal_torus(system)

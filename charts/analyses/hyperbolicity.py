@@ -45,7 +45,8 @@ import numpy as np
 from ..io.archive import Archivable, attributes, dataset, index_coordinate
 from ..io.result_words import RATE, smallest_words
 from ..jit.compilation import announces_compilation
-from ..geometry.checks import finite_array
+from ..geometry.checks import finite_array, option
+from ..geometry.checks import path as file_path
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import check_memory
 from .worker_pool import worker_pool
@@ -59,6 +60,7 @@ from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, run_
 from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settings, forward_kernel
 from .singular_values import sin_to_angle, smallest_singular_values
 from .statistics import small_value_law
+from .arguments import rotor_system
 
 __all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
            "hyperbolicity_ensemble", "angle_params", "hyperbolicity_tally", "tally_on_device", "StoppedMember",
@@ -116,6 +118,7 @@ class AngleResult(Archivable):
         ``frac_small`` and the small-angle law's ``law_exponent``, ``law_exponent_se``,
         ``law_coef2``, ``law_coef2_se``, ``law_count`` (None where undefined).  To compare
         variants, call it once for each."""
+        variant = option("variant", variant, ("restricted", "full"))
         return angle_statistics(self.phi_restricted if variant == "restricted" else self.phi_full,
                                 small)
 
@@ -229,6 +232,7 @@ def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=Non
     -------
     AngleResult
     """
+    rotor_system(system)
     cfg = angle_settings(system, t_final, dt=dt, n_unstable=n_unstable, t_transient=t_transient,
                          sample_every=sample_every, checkpoint_every=checkpoint_every,
                          project_every=project_every, seed=seed)
@@ -311,6 +315,7 @@ def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0
     ``client``: the members run as tasks of a Dask cluster instead (a ``Client``, a
     scheduler's address, or "local": a LocalCluster of ``workers`` processes;
     ``charts.analyses.cluster``, docs/cluster.md), the same members bit for bit."""
+    rotor_system(system)
     device = cluster_device(device, client)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
@@ -370,9 +375,14 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
     is saved there after each chunk merged, and a run that finds it there (the same call,
     any ``chunk``, ``workers`` or ``client``) goes on from it instead of starting again; a
     lost worker or a Ctrl-C costs the chunks in flight; removed when the run is whole."""
+    rotor_system(system)
     device = cluster_device(device, client)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
+    if budget is not None:
+        budget = positive_int("budget", budget)
+    if checkpoint is not None:
+        checkpoint = file_path("checkpoint", checkpoint)
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
     params = dict(angle_params(system, cfg, float(speed)), device=device)
     rep = progress_reporter(progress, n_trajectories * t_final,

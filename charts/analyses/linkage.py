@@ -29,8 +29,9 @@ from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
-from .arguments import (Documented, flag, positive_int, positive_time, progress_reporter,
-                        inner_steps, project_steps, steps_of)
+from ..solvers.status import check_step
+from .arguments import (Documented, flag, linkage_system, positive_int, positive_time,
+                        progress_reporter, inner_steps, project_steps, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
@@ -230,11 +231,12 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     largest count at most that which divides t_final (and a written ``sample_every``), a
     default ``sample_every`` the nearest multiple of ``reorth_every`` that divides t_final.
     """
+    linkage_system(system)
     curvature = flag("curvature", curvature)
-    q0, v0 = system.check_state(q0, v0)
+    q0, v0 = system.check_state(q0, v0, ("q0", "v0"))
     if not system.speed(v0) > 0:
         raise ValueError("v0 has zero kinetic speed: the geodesic flow needs a nonzero speed")
-    dt = positive_time("dt", dt)
+    dt = check_step(positive_time("dt", dt), float(system.speed(v0)), 4)
     k = positive_int("n_exponents", n_exponents)
     if k > system.dim:
         raise ValueError(f"n_exponents={k} is out of range 1..{system.dim}")
@@ -246,7 +248,7 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
         raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
     n_batches = positive_int("n_batches", n_batches, 2)
     if total < n_batches * reorth:
-        raise ValueError(f"t_final={t_final:g} is too short for {n_batches} batches")
+        raise ValueError(f"t_final={t_final:g} is too short for n_batches={n_batches}")
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     seed = positive_int("seed", seed, 0)
     project = project_steps(project_every, dt)
@@ -299,6 +301,7 @@ def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     ``client``: the members run as tasks of a Dask cluster instead (a ``Client``, a
     scheduler's address, or "local": a LocalCluster of ``workers`` processes;
     ``charts.analyses.cluster``, docs/cluster.md)."""
+    linkage_system(system)
     return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
                         workers=workers, progress=progress, client=client,
                         desc=f"linkage eps={system.eps:g} ensemble", prime=_prime(kwargs),
@@ -324,7 +327,8 @@ def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=Documen
     never): (t (S + 1,), states (S + 1, 14)), row 0 the initial state (RK4 of
     ``charts.flows.linkage``).  Times written must be whole numbers of steps dt; a default
     left is the nearest whole number of steps at other dt (README, "Conventions")."""
-    q0, v0 = system.check_state(q0, v0)
+    linkage_system(system)
+    q0, v0 = system.check_state(q0, v0, ("q0", "v0"))
     dt = positive_time("dt", dt)
     total = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=total)

@@ -25,7 +25,8 @@ from ..flows.linkage import NY, acceleration
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from ..solvers.tangent import orthonormalize
-from .arguments import Documented, inner_steps, positive_time, project_steps, steps_of
+from .arguments import (Documented, inner_steps, linkage_system, positive_time, project_steps, seed_of,
+                        steps_of)
 from .hyperbolicity import angle_statistics
 
 __all__ = ["LinkageAngles", "linkage_angles", "angle_steps", "sin_angle"]
@@ -82,7 +83,8 @@ def linkage_angles(system, q0, v0, t_final, *, dt=0.01, t_transient=Documented(5
     other dt (README, "Conventions"): a default ``sample_every`` the largest count at most
     that which divides t_final (and a written t_transient), a default ``t_transient`` the
     nearest multiple of ``sample_every``."""
-    q0, v0 = system.check_state(q0, v0)
+    linkage_system(system)
+    q0, v0 = system.check_state(q0, v0, ("q0", "v0"))
     dt = positive_time("dt", dt)
     total, transient, sample = angle_steps(dt, t_final, t_transient, sample_every)
     if total % sample or transient % sample:
@@ -90,6 +92,7 @@ def linkage_angles(system, q0, v0, t_final, *, dt=0.01, t_transient=Documented(5
                          f"multiples of sample_every={sample_every:g}")
     S, Sb = total // sample, transient // sample
     project = project_steps(project_every, dt)
+    seed = seed_of(seed)
     fw = LinkageFlow(system, q0, v0, 2, dt=dt, reorth_every=1, project_every=project, seed=seed)
     fw.advance(transient)
     fw.logsum[:] = 0.0

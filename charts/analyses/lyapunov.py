@@ -34,6 +34,7 @@ from .arguments import (positive_int, positive_time, progress_reporter, project_
                         start_state, steps_of, inner_steps, Documented)
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends, batch_estimates
+from .arguments import rotor_system
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
            "lyapunov_spectrum", "lyapunov_schedule",
@@ -310,6 +311,7 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     SingularPointError
         The trajectory reached a singular point of the manifold (N = 4).
     """
+    rotor_system(system)
     rule = transient_rule(t_transient)
     if rule == "auto":
         # every other setting checked before the pilot runs (the transient is its outcome)

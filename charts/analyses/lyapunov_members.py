@@ -16,6 +16,7 @@ from ..solvers.device import DeviceFlows, cuda_module, device_bytes, flow_states
 from ..solvers.lanes import MIN_LANES, LaneFlows, lanes_pay
 from ..solvers.tangent import check_memory, inner_weights
 from .arguments import progress_reporter
+from .arguments import rotor_system
 from .cluster import cluster_device, cluster_pool
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
                        member_states_of)
@@ -56,6 +57,7 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     scheduler's address, or "local": a LocalCluster of ``workers`` processes;
     ``charts.analyses.cluster``, docs/cluster.md), as many blocks as the cluster has
     threads at least; the same members, bit for bit, as in local processes."""
+    rotor_system(system)
     unknown = sorted(set(kwargs) - SETTINGS)
     if unknown:
         raise TypeError(f"lyapunov_ensemble() got an unexpected keyword argument {unknown[0]!r} "

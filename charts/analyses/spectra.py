@@ -22,6 +22,7 @@ from ..io.archive import Archivable, attributes, dataset
 from ..io.result_words import ANGULAR_VELOCITY, counted
 from .arguments import (positive_time, progress_reporter, project_steps, samples_of,
                         start_state, steps_of, Documented)
+from .arguments import rotor_system
 
 __all__ = ["Waveform", "PowerSpectrum", "waveform", "power_spectrum"]
 
@@ -134,6 +135,7 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=Documented(0.
     left, ``sample_every`` 0.05 and ``project_every`` 1.0, the nearest whole number of steps
     at other dt: README, "Conventions"); ``progress``:
     True or callable(t_done, t_total)."""
+    rotor_system(system)
     dt = positive_time("dt", dt)
     total = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=total)

@@ -14,6 +14,7 @@ from functools import partial
 
 import numpy as np
 
+from ..geometry.checks import shown
 from .statistics import standard_error
 
 __all__ = ["kolmogorov_sinai_entropy", "kaplan_yorke_dimension", "with_error",
@@ -30,7 +31,7 @@ def kolmogorov_sinai_entropy(spectrum, positive=None) -> float:
     each with its own sign: an exponent consistent with zero counts in every estimate or in
     none, never only where it came out positive.  A NaN exponent (a failed estimate) makes
     the entropy NaN, whether or not it would count: it is never dropped as "not positive"."""
-    lam = np.asarray(spectrum, dtype=float)
+    lam = exponents(spectrum)
     if positive is not None:
         positive = np.asarray(positive)
         if positive.dtype != bool or positive.shape != lam.shape:
@@ -46,7 +47,7 @@ def kaplan_yorke_dimension(spectrum) -> float:
     """j + (λ₁ + … + λⱼ)/|λⱼ₊₁| with j the largest index whose partial sum is ≥ 0 (exponents
     sorted decreasing); 0 if λ₁ < 0, the number of exponents if every partial sum is ≥ 0;
     NaN if an exponent is NaN (never sorted to the end and dropped)."""
-    lam = np.sort(np.asarray(spectrum, dtype=float))[::-1]
+    lam = np.sort(exponents(spectrum))[::-1]
     if np.isnan(lam).any():
         return float("nan")
     if lam.size == 0 or lam[0] < 0:
@@ -58,6 +59,23 @@ def kaplan_yorke_dimension(spectrum) -> float:
     if j == lam.size:
         return float(j)
     return float(j + partial[j - 1] / abs(lam[j]))
+
+
+def exponents(spectrum) -> np.ndarray:
+    """``spectrum`` as a 1-D float array of exponents: real numbers, NaN allowed (a failed
+    estimate, kept), ±inf not; ValueError naming ``spectrum`` otherwise."""
+    a = spectrum if isinstance(spectrum, np.ndarray) else None
+    if a is None:
+        try:
+            a = np.asarray(spectrum)
+        except (TypeError, ValueError, OverflowError):
+            a = np.asarray(None)
+    if a.ndim != 1 or a.dtype.kind not in "iuf":
+        raise ValueError(f"spectrum must be a 1-D array of real numbers, got {shown(spectrum)}")
+    a = a.astype(float)
+    if np.isinf(a).any():
+        raise ValueError(f"spectrum has infinite entries: {shown(a)}")
+    return a
 
 
 def reconstructed_spectra(exponents, n_positive, total):

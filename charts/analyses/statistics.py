@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry.checks import finite_array, number
+
 __all__ = ["standard_error", "batch_ends", "batch_estimates", "small_value_law",
            "pool_small_value_laws", "block_minima", "law_from_batches"]
 
@@ -58,12 +60,13 @@ def small_value_law(samples, x0, n_batches=10):
     √(p(1−p)/n)/x0².  NaN where undefined (no sample below x0, fewer than two batches
     holding samples below it: `law_from_batches`).
     """
-    x = np.asarray(samples, dtype=float)
-    if x.ndim != 1 or x.size == 0:
+    x = finite_array("samples", samples, ndim=1)
+    if x.size == 0:
         raise ValueError(f"samples must be a non-empty 1-D array, got shape {x.shape}")
-    if not np.all(np.isfinite(x)) or np.any(x <= 0):
+    if np.any(x <= 0):
         raise ValueError("samples must be finite and > 0 (a power law of small values)")
-    if not (np.isscalar(x0) and np.isfinite(x0) and x0 > 0):
+    x0 = number("x0", x0)
+    if not x0 > 0:
         raise ValueError(f"x0 must be a finite number > 0, got {x0!r}")
     if isinstance(n_batches, bool) or not isinstance(n_batches, (int, np.integer)) \
             or n_batches < 1 or n_batches > x.size:

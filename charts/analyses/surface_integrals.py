@@ -44,6 +44,7 @@ from ..geometry.surface_quadrature import (POU_POWER, SurfaceIntegrals, integral
                                            partition_of_unity, torus_grid)
 from ..geometry.topology import euler_characteristic
 from .exact_curvature import exact_curvatures
+from .arguments import rotor_system
 
 __all__ = ["SurfaceIntegrals", "surface_integrals", "surface_plan", "surface_nodes",
            "tangent_frames", "POU_POWER"]
@@ -134,6 +135,7 @@ def surface_integrals(system, n_grid=256, route="chart") -> SurfaceIntegrals:
     curvature from ``route`` (``"chart"``: the generated Riemann tensor; ``"gauss"``: the
     Gauss equation, ``charts.analyses.exact_curvature``).  Every argument is checked before
     any work (`surface_plan`)."""
+    rotor_system(system)
     n_grid, route = surface_plan(system, n_grid, route)
     chi = euler_characteristic(system.weights, system.level)
     theta, dA, _ = surface_nodes(system, n_grid)

@@ -85,7 +85,7 @@ def cuda_available() -> bool:
 def resolve_device(device) -> str:
     """``"cpu"`` or ``"cuda"`` for the argument ``device`` ("cpu", "cuda" or "auto": the GPU
     when there is one); "cuda" without a GPU raises `DeviceUnavailable`."""
-    if device not in ("cpu", "cuda", "auto"):
+    if not isinstance(device, str) or device not in ("cpu", "cuda", "auto"):
         raise ValueError(f"device must be 'cpu', 'cuda' or 'auto', got {device!r}")
     if device == "auto":
         return "cuda" if cuda_available() else "cpu"

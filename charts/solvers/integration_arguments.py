@@ -14,7 +14,8 @@ from typing import Callable
 
 import numpy as np
 
-from ..geometry.checks import finite_array, number, option
+from ..geometry.checks import finite_array, number, option, shown
+from ..analyses.arguments import flag
 from ..geometry.system import RotorSystem
 from .events import check_events
 from .progress import progress_reporter
@@ -36,6 +37,8 @@ TOLERANCES = {
 
 METHODS = ("rk4", "dop853")
 FORMULATIONS = ("ambient", "chart")
+#: Most accepted steps between two progress calls (a chunk's arrays are sized by it).
+MAX_CHUNK_STEPS = 10 ** 9
 
 
 @dataclass(frozen=True)
@@ -118,10 +121,12 @@ def check_arguments(system, theta0, u0, t_final, *, t_span, formulation, method,
     same names); ValueError naming the first bad one."""
     if not isinstance(system, RotorSystem):
         raise ValueError(f"system must be a RotorSystem, got {type(system).__name__}")
-    if formulation not in FORMULATIONS:
-        raise ValueError(f"unknown formulation {formulation!r}; use one of {sorted(FORMULATIONS)}")
-    if method not in METHODS:
-        raise ValueError(f"unknown method {method!r}; use one of {sorted(METHODS)}")
+    if not isinstance(formulation, str) or formulation not in FORMULATIONS:
+        raise ValueError(f"unknown formulation {shown(formulation)}; use one of "
+                         f"{sorted(FORMULATIONS)}")
+    if not isinstance(method, str) or method not in METHODS:
+        raise ValueError(f"unknown method {shown(method)}; use one of {sorted(METHODS)}")
+    dense_output = flag("dense_output", dense_output)
     t0, t1 = _span(t_final, t_span)
     sign = -1.0 if t1 < t0 else 1.0
     duration = abs(t1 - t0)
@@ -129,8 +134,10 @@ def check_arguments(system, theta0, u0, t_final, *, t_span, formulation, method,
     theta0, u0, speed = _initial_state(system, theta0, u0)
     P = _transported(system, theta0, transport)
     dt, rtol, atol = _method_settings(method, dt, rtol, atol, speed, system.n, duration)
-    if isinstance(chunk_steps, bool) or not isinstance(chunk_steps, (int, np.integer)) or chunk_steps < 1:
-        raise ValueError(f"chunk_steps must be a positive integer, got {chunk_steps!r}")
+    if isinstance(chunk_steps, bool) or not isinstance(chunk_steps, (int, np.integer)) \
+            or not 1 <= chunk_steps <= MAX_CHUNK_STEPS:
+        raise ValueError(f"chunk_steps must be a positive integer (at most "
+                         f"{MAX_CHUNK_STEPS}), got {shown(chunk_steps)}")
     progress, bar = _progress(progress, duration, system.n)
     te_user, s_eval = _eval_times(t_eval, t0, t1, sign) if t_eval is not None else (None, np.zeros(0))
     chunk_steps = int(chunk_steps)
@@ -161,10 +168,14 @@ def _span(t_final, t_span):
     if (t_final is None) == (t_span is None):
         raise ValueError("give either t_final (from t = 0) or t_span=(t0, t1), not both")
     if t_span is None:
-        if isinstance(t_final, bool) or not isinstance(t_final, (int, float, np.integer, np.floating)) \
-                or not math.isfinite(t_final) or t_final < 0:
-            raise ValueError(f"t_final must be a finite number >= 0, got {t_final!r}")
-        return 0.0, float(t_final)
+        given = t_final
+        try:
+            t_final = number("t_final", t_final)
+        except ValueError:
+            t_final = math.nan
+        if not t_final >= 0:
+            raise ValueError(f"t_final must be a finite number >= 0, got {shown(given)}")
+        return 0.0, t_final
     try:
         t0, t1 = (float(x) for x in t_span)
     except (TypeError, ValueError):
@@ -176,7 +187,7 @@ def _span(t_final, t_span):
 
 def _initial_state(system, theta0, u0):
     """(θ₀, u₀, speed) checked: on the manifold, not at a singular point, moving."""
-    theta0, u0 = system.check_state(theta0, u0)
+    theta0, u0 = system.check_state(theta0, u0, ("theta0", "u0"))
     S0 = float(np.sum(np.sin(theta0) ** 2))
     if S0 < TOLERANCES["singular_S"]:
         raise ValueError(f"theta0 is a singular point of the manifold (sum(sin^2 theta) = {S0:.1e}); "
@@ -192,7 +203,7 @@ def _transported(system, theta0, transport):
     n = system.n
     if transport is None:
         return np.zeros((0, n))
-    P = np.array(transport, dtype=float)
+    P = finite_array("transport", transport)
     if P.ndim == 1:
         P = P[None, :]
     if P.ndim != 2 or P.shape[1] != n:
