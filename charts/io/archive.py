@@ -28,6 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..geometry.checks import path as file_path
 from .atomic import atomic_write, signals_deferred
 from .file_settings import FLATTENED, MEMBER, decode_attributes, encode
 from .file_checks import (COMPRESSION_BOUND, SCHEMAS, check_layout, check_netcdf4, layout,
@@ -207,7 +208,7 @@ def save(ds, path) -> Path:
     checksum (`checksummed`); a Ctrl-C or SIGTERM meanwhile is taken once the file is
     written (`signals_deferred`)."""
     require_xarray()
-    path = Path(path)
+    path = file_path("path", path)
     tmp = path.with_name(f".{path.name}.nc-tmp{os.getpid()}")
     with signals_deferred():            # a Ctrl-C meanwhile: taken once the file is written
         try:
@@ -227,7 +228,7 @@ def load(path):
     bytes are damaged, is refused with a ValueError of one line naming the file and the
     variable or attribute."""
     xr = require_xarray()
-    path = Path(path)
+    path = file_path("path", path)
     if not path.exists():
         raise FileNotFoundError(f"no such file: {path}")
     check_netcdf4(path)

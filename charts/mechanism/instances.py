@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ..geometry.checks import number
 from .model import Mechanism, MechanismError
 
 __all__ = ["rotors", "triple_linkage"]
@@ -17,9 +18,9 @@ _MODELS = {}
 
 def _number(name, x, positive=False, nonnegative=False):
     try:
-        x = float(x)
-    except (TypeError, ValueError):
-        raise MechanismError(f"{name} must be a real number, got {x!r}") from None
+        x = number(name, x)
+    except ValueError as exc:
+        raise MechanismError(str(exc)) from None
     if not np.isfinite(x) or (positive and not x > 0) or (nonnegative and not x >= 0):
         kind = "positive" if positive else "non-negative" if nonnegative else "finite"
         raise MechanismError(f"{name} must be {kind}, got {x}")

@@ -26,6 +26,7 @@ import sympy as sp
 from .atlas import Atlas
 from .dynamics import RANK_TOL, AmbientDynamics
 from .embedding import EmbeddingGeometry
+from ..geometry.checks import number, shown
 from .errors import MechanismError
 from .geometry import ChartGeometry
 from .symbolic import SymbolicJets
@@ -37,9 +38,30 @@ def _symbol(name, what):
     if isinstance(name, sp.Symbol):
         name = name.name
     if not isinstance(name, str) or not name.isidentifier() or keyword.iskeyword(name):
-        raise MechanismError(f"{what} names must be Python identifiers (str or sympy.Symbol), "
-                             f"got {name!r}")
+        raise MechanismError(f"{what} must be Python identifiers (str or sympy.Symbol), "
+                             f"got {shown(name)}")
     return sp.Symbol(name, real=True)
+
+
+def _check_containers(coordinates, constraints, masses, parameters, periodic, bounds, name):
+    """`MechanismError` naming the argument of `Mechanism` that is not the kind of container
+    its docstring says (before any entry is read)."""
+    seq = (list, tuple)
+    for arg, value, ok, kind in (
+            ("coordinates", coordinates, isinstance(coordinates, seq), "a list of names"),
+            ("constraints", constraints, isinstance(constraints, seq + (sp.Basic,)),
+             "a SymPy expression or a list of them"),
+            ("masses", masses, masses is None or isinstance(masses, seq + (np.ndarray,))
+             and np.ndim(masses) == 1, "None or a list of n entries"),
+            ("parameters", parameters, parameters is None or isinstance(parameters, dict),
+             "None or a dict {name: value}"),
+            ("periodic", periodic, isinstance(periodic, seq + (set, frozenset)),
+             "a list of coordinate names"),
+            ("bounds", bounds, bounds is None or isinstance(bounds, dict),
+             "None or a dict {name: (lo, hi)}"),
+            ("name", name, isinstance(name, str), "a str")):
+        if not ok:
+            raise MechanismError(f"{arg} must be {kind}, got {shown(value)}")
 
 
 class Mechanism(SymbolicJets, AmbientDynamics,
@@ -68,10 +90,11 @@ class Mechanism(SymbolicJets, AmbientDynamics,
 
     def __init__(self, coordinates, constraints, metric=None, *, masses=None, parameters=None,
                  periodic=(), bounds=None, name="mechanism"):
+        _check_containers(coordinates, constraints, masses, parameters, periodic, bounds, name)
         self.name = str(name)
         if isinstance(coordinates, (str, sp.Symbol)):
             raise MechanismError("coordinates must be a sequence of names, not one name")
-        self.q = tuple(_symbol(c, "coordinate") for c in coordinates)
+        self.q = tuple(_symbol(c, "coordinates") for c in coordinates)
         names = [s.name for s in self.q]
         if len(set(names)) != len(names):
             raise MechanismError(f"coordinate names must be distinct, got {names}")
@@ -79,18 +102,16 @@ class Mechanism(SymbolicJets, AmbientDynamics,
         if self.n < 2:
             raise MechanismError(f"need at least 2 coordinates, got {names}")
         parameters = dict(parameters or {})
-        self.params = tuple(_symbol(p, "parameter") for p in parameters)
+        self.params = tuple(_symbol(p, "parameters") for p in parameters)
         clash = set(names) & {p.name for p in self.params}
         if clash:
             raise MechanismError(f"{sorted(clash)} are both coordinates and parameters")
         values = []
         for p, v in parameters.items():
             try:
-                v = float(v)
-            except (TypeError, ValueError):
-                raise MechanismError(f"parameter {p} must be a real number, got {v!r}") from None
-            if not np.isfinite(v):
-                raise MechanismError(f"parameter {p} must be finite, got {v}")
+                v = number(f"parameters[{p!r}]", v)
+            except ValueError as exc:
+                raise MechanismError(str(exc)) from None
             values.append(v)
         self.param_values = np.array(values, dtype=float)
         # every symbol is made real: map the user's symbols (by name) onto ours
@@ -98,7 +119,7 @@ class Mechanism(SymbolicJets, AmbientDynamics,
 
         if isinstance(constraints, sp.Basic) and not isinstance(constraints, sp.MatrixBase):
             constraints = [constraints]
-        F = [self._expr(c, f"constraint {i}") for i, c in enumerate(constraints)]
+        F = [self._expr(c, f"constraints[{i}]") for i, c in enumerate(constraints)]
         self.k = len(F)
         if not 1 <= self.k < self.n:
             raise MechanismError(f"need 1 <= (number of constraints) < (number of coordinates) "
@@ -113,7 +134,7 @@ class Mechanism(SymbolicJets, AmbientDynamics,
             if len(masses) != self.n:
                 raise MechanismError(f"masses must have one entry per coordinate ({self.n}), "
                                      f"got {len(masses)}")
-            metric = sp.diag(*[self._expr(m, f"mass {i}") for i, m in enumerate(masses)])
+            metric = sp.diag(*[self._expr(m, f"masses[{i}]") for i, m in enumerate(masses)])
         else:
             metric = sp.Matrix(metric)
             if metric.shape != (self.n, self.n):
@@ -122,7 +143,7 @@ class Mechanism(SymbolicJets, AmbientDynamics,
             if not (metric - metric.T).applyfunc(sp.expand).is_zero_matrix:
                 raise MechanismError("metric must be symmetric")
         self.M = metric
-        self.periodic = tuple(_symbol(p, "periodic coordinate").name for p in periodic)
+        self.periodic = tuple(_symbol(p, "periodic").name for p in periodic)
         unknown = set(self.periodic) - set(names)
         if unknown:
             raise MechanismError(f"periodic names {sorted(unknown)} are not coordinates {names}")
@@ -131,7 +152,11 @@ class Mechanism(SymbolicJets, AmbientDynamics,
         for c, b in (bounds or {}).items():
             if c not in self.bounds:
                 raise MechanismError(f"bounds for {c!r}: not a coordinate of {names}")
-            lo, hi = map(float, b)
+            try:
+                lo, hi = (number(f"bounds[{c!r}]", x) for x in b)
+            except (TypeError, ValueError):
+                raise MechanismError(f"bounds for {c!r} must be (lo, hi), two finite numbers, "
+                                     f"got {shown(b)}") from None
             if not lo < hi:
                 raise MechanismError(f"bounds for {c!r} must be (lo, hi) with lo < hi, got {b}")
             self.bounds[c] = (lo, hi)

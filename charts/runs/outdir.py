@@ -25,6 +25,8 @@ import sys
 import time
 from pathlib import Path
 
+from ..geometry.checks import shown
+
 __all__ = ["OutputError", "prepare_output", "check_output", "check_writable", "OutputLock",
            "LOCK"]
 
@@ -76,7 +78,10 @@ def prepare_output(path, what: str = "-o") -> Path:
 
 def check_output(path, what: str = "-o") -> Path:
     """Refuse (:class:`OutputError`) an output folder that is a file, lies under a file, or
-    whose name or path is too long; creates nothing."""
+    whose name or path is too long, or that is not a path at all; creates nothing."""
+    if isinstance(path, bytes) or not isinstance(path, (str, os.PathLike)) or str(path) == "":
+        raise OutputError(f"{what} must be a folder path (a non-empty str or os.PathLike), got "
+                          f"{shown(path)}")
     path = Path(path)
     _folder_anchor(path, what)
     return path

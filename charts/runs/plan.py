@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ..geometry.checks import instance
 from .scene import Scene
 
 __all__ = ["Plan", "plan_scene", "ticks", "linkage_angles_plan",
@@ -111,6 +112,7 @@ def linkage_angles_plan(scene) -> dict:
 
 def plan_scene(scene: Scene) -> Plan:
     """The smallest computation serving ``scene.effects`` (no integration happens here)."""
+    instance("scene", scene, Scene, "charts.Scene (load_scene, parse_scene)")
     n = scene.system["n"]
     integ, run, eff = scene.integrator, scene.run, scene.effects
     ambient_rk4 = integ["formulation"] == "ambient" and integ["method"] == "rk4"

@@ -37,7 +37,9 @@ from pathlib import Path
 import numpy as np
 
 from ..jit.compilation import NOTE_SECONDS, compile_timer
+from ..analyses.arguments import flag
 from ..analyses.lyapunov import end_transient
+from ..geometry.checks import callback, instance
 from .engines import IntegrateEngine, KernelEngine, chunk_bounds, lyapunov_batch_ends
 from .io import atomic_write, npz_bytes
 from .netcdf_results import SCENE_NETCDF
@@ -103,9 +105,12 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
     ``force=True`` starts over: once the lock is held and the run is set up, the outputs of
     an earlier run there are removed (:func:`clear_run_outputs`; module doc).
     """
+    instance("scene", scene, Scene, "charts.Scene (load_scene, parse_scene)")
+    resume, quiet, force = flag("resume", resume), flag("quiet", quiet), flag("force", force)
+    callback("on_chunk", on_chunk)
     if force and resume:
         raise RunError("force=True and resume=True exclude each other (force starts over)")
-    outdir = prepare_output(outdir)
+    outdir = prepare_output(outdir, "outdir")
     with OutputLock(outdir, f"charts run {scene.name}") as lock:
         run = SceneRun(scene, outdir, resume, force=force)
         if force:

@@ -22,13 +22,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from ..analyses.arguments import Documented, steps_of
 from ..solvers.status import check_step
 from .input_files import read_toml
+from ..geometry.checks import path as file_path
 from ..geometry.checks import shown
-from .scene_checks import (Problems, multiple_of, section_values, table_values, unknown_key,
+from .scene_checks import (Problems, source_names, multiple_of, section_values, table_values, unknown_key,
                            where)
 from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
                             linkage_defaults, system_kind_problems)
@@ -64,8 +64,9 @@ def scene_to_dict(scene: Scene) -> dict:
 
 
 def load_scene(path) -> Scene:
-    """Read and validate a TOML scene file.  Raises :class:`SceneError`."""
-    path = Path(path)
+    """Read and validate a TOML scene file.  Raises :class:`SceneError` (ValueError for a
+    ``path`` that is not a path)."""
+    path = file_path("path", path)
     data = read_toml(path, "scene", SceneError, " (bundled scenes: `charts scenes`)")
     return parse_scene(data, source=str(path), default_name=path.stem)
 
@@ -73,6 +74,7 @@ def load_scene(path) -> Scene:
 # ---------------------------------------------------------------------------------------
 def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "scene") -> Scene:
     """Validate a scene given as a dict (as read from TOML).  Raises :class:`SceneError`."""
+    source_names(source, default_name, SceneError)
     if not isinstance(data, dict):
         raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
     problems = Problems(source)      # key-level problems of every section, reported together

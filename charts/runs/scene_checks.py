@@ -20,6 +20,14 @@ def where(source, section, key):
     return f"{source}: {loc}"
 
 
+def source_names(source, default_name, error=SceneError):
+    """``error`` naming ``source`` or ``default_name`` unless each is a str (the label of
+    the data in messages, and the name a nameless scene or sweep takes)."""
+    for name, value in (("source", source), ("default_name", default_name)):
+        if not isinstance(value, str):
+            raise error(f"{name} must be a str, got {shown(value)}")
+
+
 def unknown_key(source, section, key, allowed, error=SceneError):
     """The error (`SceneError` unless ``error`` says otherwise) for an unknown key, with the
     closest allowed key as a hint."""

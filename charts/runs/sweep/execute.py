@@ -14,7 +14,8 @@ import uuid
 from ...analyses.cluster import SCHEDULER_TIMEOUT_S
 from ...analyses.cluster import check_scheduler_address as cluster_address
 from ...analyses.cluster import dask_client as cluster_client
-from ...analyses.arguments import positive_int
+from ...analyses.arguments import MAX_WORKERS, flag
+from ...geometry.checks import callback, instance, integer, shown
 from ...io.result_words import counted
 from ..io import atomic_text
 from ..outdir import OutputLock, prepare_output
@@ -74,13 +75,19 @@ def run_sweep(sweep: Sweep, outdir, *, scheduler=None, workers=None, resume=Fals
     checked before any work and locked while the sweep writes into it (a second sweep or run
     into it refuses, :mod:`charts.runs.outdir`).
     """
+    instance("sweep", sweep, Sweep, "charts.Sweep (load_sweep, parse_sweep)")
+    resume, quiet, plots = flag("resume", resume), flag("quiet", quiet), flag("plots", plots)
+    callback("on_point", on_point)
+    if scheduler is not None and not isinstance(scheduler, str):
+        raise ValueError(f"scheduler must be a Dask scheduler address (a str) or None, got "
+                         f"{shown(scheduler)}")
     if scheduler:
         check_scheduler_address(scheduler)
     if workers is not None:
-        positive_int("workers", workers)
+        integer("workers", workers, 1, MAX_WORKERS)
     device = _sweep_device(device, scheduler)
     points = sweep_points(sweep)          # every point's scene validated before any file
-    outdir = prepare_output(outdir)
+    outdir = prepare_output(outdir, "outdir")
     with OutputLock(outdir, f"charts sweep {sweep.name}"):
         return _run_locked(sweep, points, outdir, scheduler, workers, resume, quiet, plots,
                            on_point, device)
@@ -91,8 +98,8 @@ def _sweep_device(device, scheduler) -> str:
     ``scheduler`` the workers' machines decide, so "auto" and "cuda" are passed on)."""
     from ...solvers.device import DeviceUnavailable, resolve_device
 
-    if device not in ("cpu", "cuda", "auto"):
-        raise SweepError(f"--device must be cpu, cuda or auto, got {device!r}")
+    if not isinstance(device, str) or device not in ("cpu", "cuda", "auto"):
+        raise SweepError(f"--device must be cpu, cuda or auto, got {shown(device)}")
     if scheduler:
         return device
     try:

@@ -13,8 +13,9 @@ from pathlib import Path
 
 from ..bundled import bundled_files, path_or_bundled
 from ..input_files import read_toml
+from ...geometry.checks import path as file_path
 from ...geometry.checks import shown
-from ..scene_checks import is_finite_number, unknown_key
+from ..scene_checks import is_finite_number, source_names, unknown_key
 from .expressions import ExpressionError, expression_symbols
 
 __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
@@ -71,8 +72,9 @@ def resolve_sweep(arg: str) -> Path:
 
 
 def load_sweep(path) -> Sweep:
-    """Read and validate a sweep file (TOML).  Raises :class:`SweepError`."""
-    path = Path(path)
+    """Read and validate a sweep file (TOML).  Raises :class:`SweepError` (ValueError for a
+    ``path`` that is not a path)."""
+    path = file_path("path", path)
     data = read_toml(path, "sweep", SweepError, " (bundled sweeps: `charts sweep --list`)")
     return parse_sweep(data, source=str(path), default_name=path.stem)
 
@@ -80,6 +82,9 @@ def load_sweep(path) -> Sweep:
 def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     """Validate a sweep given as a dict (as read from TOML); every point's scene is
     validated by :func:`charts.runs.sweep.sweep_points` too."""
+    source_names(source, default_name, SweepError)
+    if not isinstance(data, dict):
+        raise SweepError(f"{source}: a sweep is a TOML table, got {type(data).__name__}")
     top = {"name", "description", "scene", "sweep"}
     for key in data:
         if key not in top:
