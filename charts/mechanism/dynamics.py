@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from .errors import MechanismError
+from .kernels import kkt_matrix, motion_rhs, tangent_motion_rhs
 
 __all__ = ["AmbientDynamics", "RANK_TOL"]
 
@@ -79,13 +80,12 @@ class AmbientDynamics:
                                  "use project_velocity")
         return u
 
-    def _kkt(self, q, J=None):
+    def _kkt(self, q, J=None, sign=-1.0):
+        """(K, M, J) at q: K = [[M, sign·Jᵀ], [J, 0]] (`charts.mechanism.kernels.kkt_matrix`)."""
         M = self.mass_matrix(q)
         J = self.jacobian(q) if J is None else J
-        K = np.zeros((self.n + self.k,) * 2)
-        K[:self.n, :self.n] = M
-        K[:self.n, self.n:] = -J.T
-        K[self.n:, :self.n] = J
+        K = np.empty((self.n + self.k,) * 2)
+        kkt_matrix(M, J, sign, K)
         return K, M, J
 
     def multiplier_and_acceleration(self, q, v):
@@ -93,35 +93,26 @@ class AmbientDynamics:
         q = self._point(q)
         v = self._point(v, "v")
         K, M, J = self._kkt(q)
-        dM = self._eval("dM", q)
-        C = np.einsum("ikj,j,k->i", dM, v, v) - 0.5 * np.einsum("jki,j,k->i", dM, v, v)
-        rhs = np.concatenate([-C, -np.einsum("cij,i,j->c", self._eval("F2", q), v, v)])
-        sol = np.linalg.solve(K, rhs)
+        b = np.empty(self.n + self.k)
+        motion_rhs(self._eval("dM", q), self._eval("F2", q), v, b)
+        sol = np.linalg.solve(K, b)
         return sol[:self.n], sol[self.n:]
 
     def tangent_acceleration(self, q, v, dq, dv):
         """The linearisation of ``acceleration`` (for tangent vectors, the analogue of eq (17)):
         δq̈ at (q, v) along (δq, δv), shape (n,), from the differentiated KKT system
-        K δ(q̈, λ) = δb − δK (q̈, λ) (exact, with ∂²M and ∂³F; no finite differences)."""
+        K δ(q̈, λ) = δb − δK (q̈, λ) (exact, with ∂²M and ∂³F; no finite differences;
+        `charts.mechanism.kernels.tangent_motion_rhs`)."""
         q, v = self._point(q), self._point(v, "v")
         dq, dv = self._point(dq, "dq"), self._point(dv, "dv")
         K, M, J = self._kkt(q)
-        dM, d2M, F2 = self._eval("dM", q), self._eval("d2M", q), self._eval("F2", q)
-        C = np.einsum("ikj,j,k->i", dM, v, v) - 0.5 * np.einsum("jki,j,k->i", dM, v, v)
-        b = np.concatenate([-C, -np.einsum("cij,i,j->c", F2, v, v)])
+        dM, F2 = self._eval("dM", q), self._eval("F2", q)
+        b = np.empty(self.n + self.k)
+        motion_rhs(dM, F2, v, b)
         x = np.linalg.solve(K, b)
-        dJ = np.einsum("cil,l->ci", F2, dq)
-        dK = np.zeros_like(K)
-        dK[:self.n, :self.n] = np.einsum("ijl,l->ij", dM, dq)
-        dK[:self.n, self.n:] = -dJ.T
-        dK[self.n:, :self.n] = dJ
-        W = dM - 0.5 * dM.transpose(2, 1, 0)            # W[i, k, j] = ∂_j M_ik − ½ ∂_i M_jk
-        dC = (np.einsum("ikjl,j,k,l->i", d2M, v, v, dq)
-              - 0.5 * np.einsum("jkil,j,k,l->i", d2M, v, v, dq)
-              + np.einsum("ikj,j,k->i", W, dv, v) + np.einsum("ikj,j,k->i", W, v, dv))
-        db = np.concatenate([-dC, -np.einsum("cijl,i,j,l->c", self._eval("F3", q), v, v, dq)
-                             - 2.0 * np.einsum("cij,i,j->c", F2, v, dv)])
-        return np.linalg.solve(K, db - dK @ x)[:self.n]
+        r = np.empty(self.n + self.k)
+        tangent_motion_rhs(dM, self._eval("d2M", q), F2, self._eval("F3", q), v, x, dq, dv, r)
+        return np.linalg.solve(K, r)[:self.n]
 
     def acceleration(self, q, v):
         """q̈ of the ambient constrained equations of motion at (q, v), shape (n,)."""
@@ -161,8 +152,7 @@ class AmbientDynamics:
         ⟨v' − v, w⟩_M = 0 for every w in ker J (a KKT solve; M definite on ker J suffices)."""
         q = self._point(q)
         v = self._point(v, "v")
-        K, M, J = self._kkt(q)
-        K[:self.n, self.n:] = J.T
+        K, M, J = self._kkt(q, sign=1.0)
         sol = np.linalg.solve(K, np.concatenate([M @ v, np.zeros(self.k)]))
         return sol[:self.n]
 
@@ -173,8 +163,7 @@ class AmbientDynamics:
         q, v = self._point(q), self._point(v, "v")
         dq = self.project_velocity(q, dq)
         dv = self._point(dv, "dv")
-        K, M, J = self._kkt(q)
-        K[:self.n, self.n:] = J.T
+        K, M, J = self._kkt(q, sign=1.0)
         rhs = np.concatenate([M @ dv, -np.einsum("cij,i,j->c", self._eval("F2", q), v, dq)])
         return dq, np.linalg.solve(K, rhs)[:self.n]
 

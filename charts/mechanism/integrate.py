@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from .kernels import rk4_combine, rk4_stage
 from .model import MechanismError
 
 __all__ = ["integrate_ambient", "integrate_chart"]
@@ -23,11 +24,14 @@ def _times(t_final, samples):
 
 
 def _rk4(f, y, h):
-    k1 = f(y)
-    k2 = f(y + 0.5 * h * k1)
-    k3 = f(y + 0.5 * h * k2)
-    k4 = f(y + h * k3)
-    return y + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+    """One classical RK4 step of y' = f(y) (the tableau of `charts.mechanism.kernels`)."""
+    ks, point = [f(y)], np.empty_like(y)
+    for stage in (1, 2, 3):
+        rk4_stage(y, h, stage, ks[-1], point)
+        ks.append(f(point))
+    out = np.empty_like(y)
+    rk4_combine(y, h, *ks, out)
+    return out
 
 
 def integrate_ambient(mech, q0, v0, t_final, *, samples=100, method="dop853", dt=0.01,

@@ -22,7 +22,11 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-__all__ = ["SymbolicJets", "sparse_lambdify"]
+__all__ = ["SymbolicJets", "sparse_lambdify", "jets_source", "JET_ORDER"]
+
+#: The jets the compiled function of `jets_source` writes, in its argument order (after q and
+#: the parameters p): what the ambient flow and its linearisation read (``kernels``).
+JET_ORDER = ("J", "F2", "F3", "M", "dM", "d2M")
 
 
 def sparse_lambdify(args, array):
@@ -45,6 +49,36 @@ def sparse_lambdify(args, array):
             out[..., idx] = np.stack([np.broadcast_to(v, batch) for v in vals], axis=-1)
         return out.reshape(batch + shape)
     return f
+
+
+def jets_source(args, jets, name="jets"):
+    """Python source (``math`` only, numba-compilable) of ``name(q, p, *outs)`` that writes the
+    non-zero entries of each SymPy array of ``jets`` into its output array (same order and
+    shapes; the zero entries are not written: the caller zeroes the arrays once).  ``args``:
+    the coordinate Symbols, then the parameter Symbols, read as q[i] and p[j].  Common
+    subexpressions of all the jets are shared (``sympy.cse``, canonical order, so the source
+    is deterministic)."""
+    from sympy.printing.pycode import PythonCodePrinter
+
+    names = {s: f"q[{i}]" for i, s in enumerate(args[0])}
+    names.update({s: f"p[{j}]" for j, s in enumerate(args[1])})
+    entries = []
+    for a, arr in enumerate(jets):
+        arr = sp.Array(arr)
+        shape = arr.shape
+        for flat, e in enumerate(sp.flatten(arr.tolist())):
+            if e != 0:
+                entries.append((a, np.unravel_index(flat, shape), e))
+    subs, reduced = sp.cse([e for *_, e in entries], symbols=sp.numbered_symbols("x"),
+                           order="canonical")
+    printer = PythonCodePrinter({"standard": "python3"})
+    pr = lambda e: printer.doprint(e.xreplace({s: sp.Symbol(v) for s, v in names.items()}))
+    outs = [f"o{a}" for a in range(len(jets))]
+    lines = [f"def {name}(q, p, {', '.join(outs)}):"]
+    lines += [f"    {s} = {pr(e)}" for s, e in subs]
+    lines += [f"    o{a}[{', '.join(map(str, ix))}] = {pr(e)}"
+              for (a, ix, _), e in zip(entries, reduced)]
+    return "import math\n\n\n" + "\n".join(lines + ["    return 0"]) + "\n"
 
 
 class SymbolicJets:
@@ -115,6 +149,24 @@ class SymbolicJets:
                 "M": sparse_lambdify(args, self.M.tolist()),
                 "dM": sparse_lambdify(args, self.dM),
                 "d2M": sparse_lambdify(args, self.d2M)}
+
+    def compiled_jets(self):
+        """The jets of `JET_ORDER` as one numba-compiled function ``jets(q, p, J, F2, F3, M,
+        dM, d2M)`` (`jets_source`), compiled once per symbolic model and shared by the copies
+        of ``with_parameters`` (the parameters are the argument p)."""
+        num = self._num
+        if "compiled" not in num:
+            from ..jit import njit
+            namespace = {}
+            exec(compile(jets_source((self.q, self.params), [self._jet_array(key) for key in JET_ORDER]),
+                         f"<jets of {self.name}>", "exec"), namespace)
+            num["compiled"] = njit(namespace["jets"])
+        return num["compiled"]
+
+    def _jet_array(self, key):
+        """The SymPy array of the jet ``key`` (as ``_num``'s)."""
+        return {"J": self.J, "F2": self.F2, "F3": self.F3, "M": self.M, "dM": self.dM,
+                "d2M": self.d2M}[key]
 
     def derive(self):
         """Derive and lambdify everything now (otherwise done on first use); returns self."""

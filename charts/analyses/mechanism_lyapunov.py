@@ -1,0 +1,151 @@
+"""Lyapunov exponents of a Mechanism's geodesic flow (section 2's method on any holonomic
+mechanism, docs/mechanisms.md).
+
+The trajectory and k phase tangent vectors are advanced by the mechanism's compiled tangent
+flow (``charts.mechanism.tangent_flow``: the KKT equations of motion and their exact
+linearisation, RK4, projected back onto TC every ``project_every``); every ``reorth_every``
+they are re-orthonormalised by eq (18) in the kinetic metric and the log-norms summed.  The
+error bars are batch means, as for the rotors (``charts.analyses.lyapunov``).
+
+What the spectrum of a geodesic flow looks like.  On a d-dimensional configuration manifold
+the phase space TC has dimension 2d, so there are 2d exponents.  The flow is Hamiltonian and
+reversible, so they come in pairs λ, −λ; two of them are zero, one for the flow direction
+and one for the energy shell's normal (a change of speed only rescales time).  The d − 1
+leading ones, λ₁ ≥ … ≥ λ_{d−1}, determine the rest: (λ₁, …, λ_{d−1}, 0, 0, −λ_{d−1}, …, −λ₁).
+For a surface (d = 2) that is (λ₁, 0, 0, −λ₁), and Pesin's formula gives the Liouville
+entropy of an ergodic flow as λ₁.  All exponents are proportional to the speed.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..geometry.checks import option
+from ..mechanism.model import Mechanism
+from ..mechanism.errors import MechanismError
+from ..mechanism.tangent_flow import INNER_PRODUCTS, MechanismTangentFlow
+from .arguments import Documented, positive_int, positive_time, seed_of, steps_of
+from .lyapunov import exponents_from_marks
+from .statistics import batch_ends
+
+__all__ = ["MechanismLyapunov", "lyapunov_spectrum"]
+
+
+@dataclass(frozen=True)
+class MechanismLyapunov:
+    """Result of `lyapunov_spectrum`.
+
+    exponents : (k,)  the exponents (1/time), in eq (18)'s Gram–Schmidt order: largest first
+        once converged.
+    stderr : (k,)  two-sided standard errors (batch means).
+    batches : (n_batches, k)  the per-batch estimates behind ``stderr``.
+    energy_error : float  the largest |T/T₀ − 1| at the batch ends (RK4 and the projections
+        do not conserve the energy exactly).
+    params : dict  the settings, the mechanism (name, parameter values) and the start.
+    """
+    exponents: np.ndarray
+    stderr: np.ndarray
+    batches: np.ndarray
+    energy_error: float
+    params: dict = field(default_factory=dict)
+
+    def summary(self) -> str:
+        """One line: the exponents ± their standard errors, the averaging time and batches."""
+        lam = ", ".join(f"{x:+.4f} ± {s:.4f}" for x, s in zip(self.exponents, self.stderr))
+        p = self.params
+        return (f"{p['mechanism']}: λ = {lam} (t = {p['t_final']:g}, {p['n_batches']} batches, "
+                f"dt = {p['dt']:g}, speed {p['speed']:.6g})")
+
+
+def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner="theta",
+                      t_transient=Documented(50.0), n_batches=20,
+                      reorth_every=Documented(0.1), project_every=Documented(1.0),
+                      seed=0) -> MechanismLyapunov:
+    """Lyapunov exponents of ``mech``'s geodesic flow along the trajectory from (q0, v0).
+
+    Parameters
+    ----------
+    mech : charts.mechanism.Mechanism
+    q0, v0 : ndarray, shape (n,)
+        A point on F = 0 (|F| ≤ 1e-10; ``mech.project_point``) and a tangent velocity there
+        (``mech.project_velocity``).  The exponents scale with the speed √(v0ᵀ M v0).
+    t_final : float
+        Averaging time after the transient, a whole number of steps.
+    dt : float
+        RK4 step.
+    n_exponents : int, optional
+        Number of exponents; default d − 1, the positive ones of a d-dimensional manifold
+        (module docstring); at most d with ``inner="theta"``, 2d with ``inner="full"``.
+    inner : {"theta", "full"}
+        Eq (18)'s inner product: the kinetic metric on the position parts δq (the paper's
+        θ-only product) or on δq and δv.
+    t_transient : float
+        Time discarded first, so that the vectors align (default 50, the rotors' default at
+        N = 3: 25 e-foldings at λ₁ ≈ 0.5 and unit speed).
+    n_batches : int
+        Blocks of the batch-means standard error (≥ 2).
+    reorth_every : float
+        Time between re-orthonormalisations (default 0.1, the nearest whole number of steps
+        that divides the run).
+    project_every : float or None
+        Time between projections onto TC (default 1.0; None: never).
+    seed : int
+        Seed of the random initial tangent vectors.
+
+    Returns
+    -------
+    MechanismLyapunov
+
+    Raises
+    ------
+    MechanismError
+        ``mech`` is not a Mechanism, (q0, v0) is not a state of it, or the flow met a
+        singular point.
+    ValueError
+        Another bad argument (named in the message).
+    """
+    if not isinstance(mech, Mechanism):
+        raise MechanismError(f"mech must be a charts.mechanism.Mechanism, got "
+                             f"{type(mech).__name__}")
+    dt = positive_time("dt", dt)
+    inner = option("inner", inner, INNER_PRODUCTS)
+    d = mech.dim
+    kmax = d if inner == "theta" else 2 * d
+    k = max(d - 1, 1) if n_exponents is None else positive_int("n_exponents", n_exponents)
+    if k > kmax:
+        raise ValueError(f"n_exponents={k} is out of range 1..{kmax} for a {d}-dimensional "
+                         f"manifold with inner={inner!r}; use inner='full' for up to {2 * d}")
+    total = steps_of("t_final", t_final, dt)
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    n_batches = positive_int("n_batches", n_batches, 2)
+    reorth = steps_of("reorth_every", reorth_every, dt, divides=total)
+    if total % reorth:
+        raise ValueError(f"t_final={t_final:g} must be a multiple of reorth_every={reorth_every:g}")
+    if total < n_batches * reorth:
+        raise ValueError(f"t_final={t_final:g} is too short for n_batches={n_batches} of at "
+                         f"least reorth_every={reorth_every:g}; increase t_final")
+    project = 0 if project_every is None else steps_of("project_every", project_every, dt)
+    seed = seed_of(seed)
+    q0 = mech._point(q0, "q0")
+    v0 = mech._point(v0, "v0")
+
+    flow = MechanismTangentFlow(mech, q0, v0, k, dt=dt, reorth=reorth, project=project,
+                                inner=inner, seed=seed)
+    E0 = flow.energy()
+    flow.advance(transient)
+    flow.logsum[:] = 0.0
+    start = flow.steps
+    ends = batch_ends(total, n_batches, reorth)
+    logs = np.zeros((n_batches, k))
+    energy_error = 0.0
+    for b, end in enumerate(ends):
+        flow.advance(start + end - flow.steps)
+        logs[b] = flow.logsum
+        energy_error = max(energy_error, abs(flow.energy() / E0 - 1.0))
+    exponents, batches, stderr = exponents_from_marks(logs, ends, dt)
+    params = dict(mechanism=mech.name, parameters=mech.parameter_values, dt=dt,
+                  t_final=total * dt, t_transient=transient * dt, n_batches=n_batches,
+                  reorth_every=reorth * dt, project_every=project * dt or None, inner=inner,
+                  seed=seed, speed=float(np.sqrt(2 * E0)), q0=q0.tolist(), v0=v0.tolist())
+    return MechanismLyapunov(exponents, stderr, batches, float(energy_error), params)
