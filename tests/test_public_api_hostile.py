@@ -90,6 +90,11 @@ def angle_result():
 
 
 @functools.cache
+def angle_tally():
+    return charts.hyperbolicity_tally(S4, 2, 0.5, workers=1, t_transient=0.0)
+
+
+@functools.cache
 def curvature_result():
     return charts.curvature_along_trajectory(S4, THETA, U, 0.5, t_transient=0.0)
 
@@ -133,11 +138,11 @@ def sweep_file():
     return path
 
 
-def _circle():
+def _sphere():
     import sympy
-    x, y = sympy.symbols("x y")
-    return {"coordinates": ["x", "y"], "constraints": [x ** 2 + y ** 2 - 1],
-            "masses": [1.0, 1.0]}
+    x, y, z = sympy.symbols("x y z")
+    return {"coordinates": ["x", "y", "z"], "constraints": [x ** 2 + y ** 2 + z ** 2 - 1],
+            "masses": [1.0, 1.0, 1.0]}
 
 
 @dataclasses.dataclass
@@ -222,7 +227,7 @@ TABLE = {
                       takes=PROGRESS),
     "load": Entry(charts.load, {"path": Fresh(saved_file)}, paths=("path",),
                   raises={FileNotFoundError: "a missing file (tests/test_archive.py)"}),
-    "Mechanism": Entry(charts.Mechanism, _circle()),
+    "Mechanism": Entry(charts.Mechanism, _sphere()),
     "triple_linkage": Entry(charts.triple_linkage, {"r": 0.3}),
     "LinkageSystem": Entry(charts.LinkageSystem, {"eps": 0.1}),
     "linkage_run": Entry(charts.linkage_run, {**LINKAGE, "t_final": 0.5, "t_transient": 0.0,
@@ -285,8 +290,61 @@ for _name in ("energy", "speed"):
     TABLE[f"RotorSystem.{_name}"] = Entry(getattr(S4, _name), {"u": U})
 TABLE["RotorSystem.random_state"] = Entry(S4.random_state, {})
 TABLE["RotorSystem.inner"] = Entry(S4.inner, {"theta": THETA, "a": U, "b": U})
+W = S4.project_tangent(THETA, np.ones(4))
+Q, V = S4.to_chart(THETA, U, 0)
+for _name in ("christoffel_contract", "curvature_operator", "sectional_curvature_gauss"):
+    _a, _b = ("x", "y") if _name == "curvature_operator" else ("v", "w")
+    TABLE[f"RotorSystem.{_name}"] = Entry(getattr(S4, _name), {"theta": THETA, _a: U, _b: W})
+TABLE["RotorSystem.to_chart"] = Entry(S4.to_chart, {"theta": THETA, "u": U, "chart": 0})
+TABLE["RotorSystem.from_chart"] = Entry(S4.from_chart, {"q": Q, "v": V, "chart": 0,
+                                                        "branch": int(np.sign(np.sin(THETA[0])))})
+for _name in ("constraints", "jacobian", "disk_margin", "constraint_rank_margin"):
+    TABLE[f"LinkageSystem.{_name}"] = Entry(method(linkage, _name),
+                                            {"q": Fresh(lambda: linkage_state()[0])},
+                                            signature_of=getattr(charts.LinkageSystem, _name))
+TABLE["LinkageSystem.project"] = Entry(method(linkage, "project"),
+                                       {"q": Fresh(lambda: linkage_state()[0]),
+                                        "v": Fresh(lambda: linkage_state()[1])},
+                                       signature_of=charts.LinkageSystem.project)
+TABLE["LinkageSystem.speed"] = Entry(method(linkage, "speed"),
+                                     {"v": Fresh(lambda: linkage_state()[1])},
+                                     signature_of=charts.LinkageSystem.speed)
+TABLE["LinkageSystem.random_state"] = Entry(method(linkage, "random_state"), {},
+                                            signature_of=charts.LinkageSystem.random_state)
+TABLE["LinkageSystem.first_order_disk"] = Entry(method(linkage, "first_order_disk"),
+                                                {"theta": THETA},
+                                                signature_of=charts.LinkageSystem.first_order_disk)
+TABLE["LinkageSystem.from_rotor_state"] = Entry(method(linkage, "from_rotor_state"),
+                                                {"theta": THETA, "u": U},
+                                                signature_of=charts.LinkageSystem.from_rotor_state)
+
+
+@functools.cache
+def sphere():
+    return charts.Mechanism(**_sphere())
+
+
+@functools.cache
+def sphere_state():
+    return sphere().random_state(seed=1)
+
+
+SPHERE_Q = Fresh(lambda: sphere_state()[0])
+SPHERE_V = Fresh(lambda: sphere_state()[1])
+for _name, _base in (("random_state", {}), ("metric", {"q": SPHERE_Q}),
+                     ("check_point", {"q": SPHERE_Q}), ("project_point", {"q": SPHERE_Q}),
+                     ("check_tangent", {"q": SPHERE_Q, "u": SPHERE_V}),
+                     ("project_velocity", {"q": SPHERE_Q, "v": SPHERE_V}),
+                     ("energy", {"q": SPHERE_Q, "v": SPHERE_V}),
+                     ("gaussian_curvature", {"q": SPHERE_Q}), ("christoffel", {"q": SPHERE_Q}),
+                     ("constraint", {"q": SPHERE_Q}), ("jacobian", {"q": SPHERE_Q}),
+                     ("inner", {"q": SPHERE_Q, "a": SPHERE_V, "b": SPHERE_V})):
+    TABLE[f"Mechanism.{_name}"] = Entry(method(sphere, _name), _base,
+                                        signature_of=getattr(charts.Mechanism, _name))
+TABLE["AngleTally.statistics"] = Entry(method(angle_tally, "statistics"), {},
+                                       signature_of=charts.AngleTally.statistics)
 TABLE["RotorSystem.sectional_curvature"] = Entry(
-    S4.sectional_curvature, {"theta": THETA, "v": U, "w": S4.project_tangent(THETA, np.ones(4))})
+    S4.sectional_curvature, {"theta": THETA, "v": U, "w": W})
 
 
 def _analyses(module, name):

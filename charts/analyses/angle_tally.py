@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..io.archive import Archivable, attributes, dataset, load
-from ..geometry.checks import finite_array, integer
+from ..geometry.checks import finite_array, integer, shown
 from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
 
@@ -461,8 +461,8 @@ def _same(x):
 
 
 def _variant(variant) -> int:
-    if variant not in VARIANTS:
-        raise ValueError(f"variant must be one of {VARIANTS}, got {variant!r}")
+    if not isinstance(variant, str) or variant not in VARIANTS:
+        raise ValueError(f"variant must be one of {VARIANTS}, got {shown(variant)}")
     return VARIANTS.index(variant)
 
 

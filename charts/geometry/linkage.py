@@ -31,7 +31,7 @@ import numpy as np
 from ..jit import njit
 
 from ..codegen.shipped import import_shipped
-from .checks import finite_array, number, shown
+from .checks import finite_array, integer, number, shown
 from .projection import rescale_speed
 from .system import RotorSystem
 
@@ -350,8 +350,14 @@ class LinkageSystem:
         return float(np.linalg.svd(C, compute_uv=False)[-1])
 
     def speed(self, v) -> float:
-        v = np.asarray(v, dtype=float)
-        return float(np.sqrt(np.sum(self.mass * v * v)))
+        """Kinetic speed √(Σ mᵢ vᵢ²) of v (7,); ValueError naming v unless finite, of that
+        shape and within a float's range."""
+        v = finite_array("v", v, (NQ,))
+        with np.errstate(over="ignore"):
+            s = float(np.sqrt(np.sum(self.mass * v * v)))
+        if not np.isfinite(s):
+            raise ValueError("v is too large: its kinetic speed is beyond a float's range")
+        return s
 
     def check_state(self, q, v, names=("q", "v")):
         """Validated float copies of (q, v), shape (7,) each; ValueError off the manifold,
@@ -441,6 +447,7 @@ class LinkageSystem:
         seven coordinates (stream seed + 7919) and projected: it is not the rotor state's
         (max |Δθ̇ᵢ| 0.14 to 1.69 at speed 1 over those seeds), nor, therefore, is the
         trajectory.  `from_rotor_state` starts from a given rotor state, velocity included."""
+        seed = integer("seed", seed, 0)
         theta, u = RotorSystem(4).random_state(seed=seed, speed=1.0)
         q, v = self.from_rotor_state(theta, u, branch)
         v = np.random.default_rng(seed + 7919).normal(size=NQ)
@@ -449,8 +456,8 @@ class LinkageSystem:
 
 def _branch(branch) -> int:
     """``branch``: +1 or −1, the sign of sin α of the disk (ValueError otherwise)."""
-    if isinstance(branch, bool) or branch not in (1, -1):
-        raise ValueError(f"branch must be +1 or -1 (the sign of sin α), got {branch!r}")
+    if isinstance(branch, bool) or np.ndim(branch) != 0 or branch not in (1, -1):
+        raise ValueError(f"branch must be +1 or -1 (the sign of sin α), got {shown(branch)}")
     return int(branch)
 
 

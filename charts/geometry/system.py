@@ -299,9 +299,9 @@ class RotorSystem:
     def from_chart(self, q, v, chart, branch):
         """Ambient (theta, u) from local (q, v) of ``chart`` on sign branch ``branch`` = ±1."""
         chart = integer("chart", chart, 0, self.n - 1)
-        if isinstance(branch, bool) or branch not in (1, -1):
+        if isinstance(branch, bool) or np.ndim(branch) != 0 or branch not in (1, -1):
             raise ValueError(f"branch must be +1 or -1 (the sign of sin theta_{chart}), "
-                             f"got {branch!r}")
+                             f"got {shown(branch)}")
         q = finite_array("q", q, shape=(self.dim,))
         v = finite_array("v", v, shape=(self.dim,))
         a = local_weights(self.weights, chart)

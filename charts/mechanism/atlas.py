@@ -13,6 +13,7 @@ import itertools
 
 import numpy as np
 
+from ..geometry.checks import finite_array, integer, shown
 from .errors import MechanismError
 
 __all__ = ["Atlas", "chart_scores"]
@@ -38,7 +39,11 @@ class Atlas:
     """
 
     def _chart_index(self, chart):
-        chart = tuple(int(i) for i in chart)
+        try:
+            chart = tuple(integer("chart", i, 0, self.n - 1) for i in chart)
+        except (TypeError, ValueError):
+            raise MechanismError(f"a chart is {self.dim} distinct coordinate indices in "
+                                 f"0..{self.n - 1}, got {shown(chart)}") from None
         if len(chart) != self.dim or len(set(chart)) != self.dim or not all(0 <= i < self.n for i in chart):
             raise MechanismError(f"a chart is {self.dim} distinct coordinate indices in 0..{self.n - 1}"
                                  f", got {chart}")
@@ -117,7 +122,10 @@ class Atlas:
     def _resolve(self, q, chart, near):
         """(point, chart): q is a point of the manifold in ambient coordinates (n,), or, with
         ``chart`` and ``near`` given, the chart coordinates (d,) lifted from ``near``."""
-        q = np.asarray(q, dtype=float)
+        try:
+            q = finite_array("q", q)
+        except ValueError as exc:
+            raise MechanismError(str(exc)) from None
         if q.shape == (self.dim,) and self.dim != self.n:
             if chart is None or near is None:
                 raise MechanismError(f"q has {self.dim} entries: chart coordinates need chart= and "

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry.checks import finite_array, integer, number, shown
 from .errors import MechanismError
 from .kernels import kkt_matrix, motion_rhs, tangent_motion_rhs
 
@@ -25,6 +26,16 @@ __all__ = ["AmbientDynamics", "RANK_TOL"]
 RANK_TOL = 1e-9
 
 
+def _tolerance(tol) -> float:
+    """``tol`` as a positive finite float; `MechanismError` naming it otherwise."""
+    try:
+        tol = number("tol", tol)
+    except ValueError as exc:
+        raise MechanismError(str(exc)) from None
+    if not tol > 0:
+        raise MechanismError(f"tol must be positive, got {tol!r}")
+    return tol
+
 class AmbientDynamics:
     """Points, velocities and the ambient flow of a mechanism.
 
@@ -33,11 +44,11 @@ class AmbientDynamics:
     """
 
     def _point(self, q, name="q"):
-        q = np.asarray(q, dtype=float)
-        if q.shape != (self.n,) or not np.all(np.isfinite(q)):
-            raise MechanismError(f"{name} must be {self.n} finite numbers "
-                                 f"({', '.join(s.name for s in self.q)}), got {np.asarray(q).tolist()}")
-        return q
+        try:
+            return finite_array(name, q, shape=(self.n,))
+        except ValueError as exc:
+            raise MechanismError(f"{exc}: {name} is {self.n} finite numbers "
+                                 f"({', '.join(s.name for s in self.q)})") from None
 
     def constraint(self, q):
         """F(q), shape (k,)."""
@@ -64,6 +75,7 @@ class AmbientDynamics:
     def check_point(self, q, tol=1e-8):
         """q as an array, checked to be on F = 0 (|F| ≤ tol) with J of full rank."""
         q = self._point(q)
+        tol = _tolerance(tol)
         F = self.constraint(q)
         if np.max(np.abs(F)) > tol:
             raise MechanismError(f"q is off the constraint: |F| = {np.max(np.abs(F)):.3e} > {tol:g}; "
@@ -73,6 +85,11 @@ class AmbientDynamics:
 
     def check_tangent(self, q, u, name="u", tol=1e-8):
         """u as an array, checked to be tangent at q (|J u| ≤ tol · max(1, |u|))."""
+        if not isinstance(name, str) or not name:
+            raise MechanismError(f"name must be a non-empty str (the argument's name in "
+                                 f"messages), got {shown(name)}")
+        tol = _tolerance(tol)
+        q = self._point(q)
         u = self._point(u, name)
         r = self.jacobian(q) @ u
         if np.max(np.abs(r)) > tol * max(1.0, np.max(np.abs(u))):
@@ -124,16 +141,32 @@ class AmbientDynamics:
 
     def inner(self, q, a, b):
         """⟨a, b⟩ = aᵀ M(q) b."""
-        return float(a @ self.mass_matrix(q) @ b)
+        a, b = self._point(a, "a"), self._point(b, "b")
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = float(a @ self.mass_matrix(self._point(q)) @ b)
+        if not np.isfinite(out):
+            raise MechanismError("a and b are too large: their inner product is beyond a "
+                                 "float's range")
+        return out
 
     def energy(self, q, v):
         """T = ½ vᵀ M(q) v."""
-        return 0.5 * self.inner(q, v, v)
+        v = self._point(v, "v")
+        with np.errstate(over="ignore", invalid="ignore"):
+            T = 0.5 * float(v @ self.mass_matrix(self._point(q)) @ v)
+        if not np.isfinite(T):
+            raise MechanismError("v is too large: its kinetic energy is beyond a float's range")
+        return T
     def project_point(self, q, iterations=50, tol=1e-13):
         """A point on F = 0 near q: Newton with the minimum-norm step q ← q − J⁺F (J⁺ the
         pseudo-inverse, in coordinates: M may be singular); checks the rank at the result."""
         q = self._point(q).copy()
-        for _ in range(int(iterations)):
+        tol = _tolerance(tol)
+        try:
+            iterations = integer("iterations", iterations, 1, 10 ** 6)
+        except ValueError as exc:
+            raise MechanismError(str(exc)) from None
+        for _ in range(iterations):
             F = self.constraint(q)
             if np.max(np.abs(F)) <= tol:
                 break
@@ -176,9 +209,15 @@ class AmbientDynamics:
         """Random (q, v) on the manifold with vᵀMv = speed²: angles uniform in (−π, π], the
         other coordinates uniform in ``bounds``, projected by Newton (retried where it fails
         or lands near a singular point); v a projected Gaussian vector."""
-        if not (np.isfinite(speed) and speed > 0):
+        try:
+            speed = number("speed", speed)
+            seed = integer("seed", seed, 0)
+            attempts = integer("attempts", attempts, 1, 10 ** 7)
+        except ValueError as exc:
+            raise MechanismError(str(exc)) from None
+        if not speed > 0:
             raise MechanismError(f"speed must be positive and finite, got {speed}")
-        rng = np.random.default_rng(int(seed))
+        rng = np.random.default_rng(seed)
         lo = np.array([-np.pi if p else self.bounds[s.name][0] for s, p in zip(self.q, self._periodic_mask)])
         hi = np.array([np.pi if p else self.bounds[s.name][1] for s, p in zip(self.q, self._periodic_mask)])
         for _ in range(int(attempts)):
