@@ -26,6 +26,7 @@ For N = 3 with equal masses, eq (22) gives the Gaussian curvature in closed form
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from dataclasses import dataclass
 from math import sqrt
 
@@ -42,7 +43,7 @@ from ..flows.ambient import (flow_rhs, multiplier, state_rate, state_stage, tang
 from ..geometry.primitives import sincos
 from ..geometry.checks import finite_array, option
 from ..geometry.system import TOL
-from ..solvers.rk import rk4_combine, rk4_node, rk4_point, rk4_stage_point
+from ..solvers.rk import rk4_combine, rk4_point, rk4_stages
 from ..solvers.driver import Phases
 from ..solvers.status import RUNNING, status_error
 from ..solvers.tangent import (Records, Stack, TangentFlow, orthonormalize, reorth_steps,
@@ -70,11 +71,64 @@ def gaussian_curvature_eq22(theta):
     return -(np.cos(theta) ** 2).sum(-1) / (2.0 * ((np.sin(theta) ** 2).sum(-1)) ** 2)
 
 
+#: The arrays and sizes of the frame steps' hooks (``work`` of ``charts.solvers.rk.rk4_stages``):
+#: the packed state z = [y; X; P] (length L = 2N + 2N·k + N·kp), its stage point zt, the
+#: stages K (4L), the result ``out`` (z itself, or a copy), the weighted sin/cos s0, c0 at z,
+#: those s, c of the stage point, the angle shift dl, eq (17)'s factors f, g, p, q, M⁻¹, the
+#: weights and the sizes N, k, kp, L.
+FrameStep = namedtuple("FrameStep", ["z", "zt", "K", "out", "s0", "c0", "s", "c", "dl", "f", "g",
+                                     "p", "q", "minv", "wts", "n", "k", "kp", "L"])
+
+
+@njit(cache=True, inline="always")
+def _frame_start(w, _eqs):
+    """`rk4_stages`' start of `frame_step`: stage 0's point is a copy (`_frame_point`)."""
+    return 0.0, 0
+
+
+@njit(cache=True, inline="always")
+def _frame_point(w, st, a):
+    """`rk4_stages`' stage point of `frame_step`: zt = z + a·K_{st−1} (`rk4_point`), a copy
+    of z at stage 0."""
+    z, zt, L = w.z, w.zt, w.L
+    if st == 0:
+        for i in range(L):
+            zt[i] = z[i]
+    else:
+        rk4_point(z, w.K, (st - 1) * L, a, L, zt)
+
+
+@njit(cache=True, inline="always")
+def _frame_rate(w, _eqs, st, hmin):
+    """`rk4_stages`' stage rates of `frame_step` at zt (its sin/cos from libm,
+    ``state_stage``) into stage st of K: eq (8), eq (17) for the k vectors, eq (19) for the
+    kp frame vectors."""
+    zt, K, s, c, f, g, p, q, minv, n, k = w.zt, w.K, w.s, w.c, w.f, w.g, w.p, w.q, w.minv, w.n, w.k
+    d = 2 * n
+    oP = d + k * d
+    o = st * w.L
+    lam, iB = state_stage(zt, 0, n, minv, w.wts, s, c, K, o)
+    tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)
+    for r in range(k):
+        tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)
+    for r in range(w.kp):
+        transport_rate(zt, oP + r * n, n, zt, 0, f, c, iB, K, o + oP + r * n)
+    return hmin
+
+
+@njit(cache=True, inline="always")
+def _frame_combine(w, h):
+    """`rk4_stages`' end of the frame steps: ``out`` from z and the stages (`rk4_combine`)."""
+    rk4_combine(w.z, w.K, h, w.L, w.out)
+
+
 @njit(cache=True)
 def frame_step(y, X, P, minv, a, h, work):
     """One RK4 step of size h, in place, of eq (8) for y (2N,), eq (17) for the rows of X
-    (k, 2N) and eq (19) for the rows of P (kp, N); weights a; ``work`` of at least 6L + 6N
-    floats, L = 2N + 2Nk + N·kp (the packed state, its stage point, the stages, the factors)."""
+    (k, 2N) and eq (19) for the rows of P (kp, N), the one body ``charts.solvers.rk.
+    rk4_stages`` on the packed state [y; X; P]; weights a; ``work`` of at least 6L + 6N
+    floats, L = 2N + 2Nk + N·kp (the packed state, its stage point, the stages, the
+    factors)."""
     n = y.size // 2
     d = 2 * n
     k = X.shape[0]
@@ -90,16 +144,8 @@ def frame_step(y, X, P, minv, a, h, work):
     z[:d] = y
     z[d:oP] = X.ravel()
     z[oP:] = P.ravel()
-    for st in range(4):
-        rk4_stage_point(z, K, st, h, L, zt)
-        o = st * L
-        lam, iB = state_stage(zt, 0, n, minv, a, s, c, K, o)
-        tangent_factors(zt, 0, n, minv, s, c, lam, f, g, p, q)
-        for r in range(k):
-            tangent_rate(zt, d + r * d, n, f, g, p, q, iB, K, o + d + r * d)
-        for r in range(kp):
-            transport_rate(zt, oP + r * n, n, zt, 0, f, c, iB, K, o + oP + r * n)
-    rk4_combine(z, K, h, L, z)
+    rk4_stages(FrameStep(z, zt, K, z, s, c, s, c, s, f, g, p, q, minv, a, n, k, kp, L), 0, h,
+               _frame_start, _frame_point, _frame_rate, _frame_combine)
     y[:] = z[:d]
     X[:, :] = z[d:oP].reshape((k, d))
     P[:, :] = z[oP:].reshape((kp, n))
@@ -154,6 +200,33 @@ def _frame_rates(zt, n, k, kp, minv, s, c, f, g, p, q, K, o):
         transport_rate(zt, oP + r * n, n, zt, 0, f, c, iB, K, o + oP + r * n)
 
 
+@njit(cache=True, inline="always")
+def _shared_start(w, _eqs):
+    """`rk4_stages`' start of the steps of `numerical_curvature`: stage 0, the same for both,
+    is in K already."""
+    return 0.0, 1
+
+
+@njit(cache=True, inline="always")
+def _shifted_point(w, st, a):
+    """`rk4_stages`' stage point of `numerical_curvature`: zt = z + a·K_{st−1} (`rk4_point`),
+    its sin/cos shifted from those at z (``charts.solvers.tangent.shift_sincos``)."""
+    z, zt, K, dl, n = w.z, w.zt, w.K, w.dl, w.n
+    op = np.uint64(st - 1) * w.L
+    rk4_point(z, K, op, a, w.L, zt)
+    for j in range(n):
+        dl[j] = a * K[op + j]
+    shift_sincos(w.s0, w.c0, dl, zt, n, w.wts, w.s, w.c)
+
+
+@njit(cache=True, inline="always")
+def _shifted_rate(w, _eqs, st, hmin):
+    """`rk4_stages`' stage rates of `numerical_curvature` (`_frame_rates`)."""
+    _frame_rates(w.zt, w.n, w.k, w.kp, w.minv, w.s, w.c, w.f, w.g, w.p, w.q, w.K,
+                 np.uint64(st) * w.L)
+    return hmin
+
+
 @njit(cache=True)
 def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K, work=None):
     """Route (a), eqs (20)–(21) with the minus sign: K[i, j] from one RK4 step of ±dt of
@@ -189,17 +262,9 @@ def numerical_curvature(y, Xj, P, minv, wts, m, dt, uu, K, work=None):
     nu, ku, kpu, Lu = np.uint64(n), np.uint64(k), np.uint64(kp), np.uint64(L)
     _frame_rates(z, nu, ku, kpu, minv, s0, c0, f, g, p, q, Kst, np.uint64(0))  # stage 0, shared
     cs[:, :] = 0.0
+    w = FrameStep(z, zt, Kst, z2, s0, c0, s, c, dl, f, g, p, q, minv, wts, nu, ku, kpu, Lu)
     for sign in (1.0, -1.0):
-        h = sign * dt
-        for st in range(1, 4):
-            a = rk4_node(st) * h
-            op = np.uint64(st - 1) * Lu
-            rk4_point(z, Kst, op, a, Lu, zt)
-            for j in range(nu):
-                dl[j] = a * Kst[op + j]
-            shift_sincos(s0, c0, dl, zt, nu, wts, s, c)
-            _frame_rates(zt, nu, ku, kpu, minv, s, c, f, g, p, q, Kst, op + Lu)
-        rk4_combine(z, Kst, h, Lu, z2)
+        rk4_stages(w, 0, sign * dt, _shared_start, _shifted_point, _shifted_rate, _frame_combine)
         for i in range(k):
             for j in range(k):
                 acc = 0.0

@@ -6,7 +6,8 @@ reads its parameters from the float array ``par`` and returns a scalar *health* 
 formulations use to flag trouble (distance² to a singular point, or < 0 outside a chart).
 The steppers return the smallest health seen over their stages.
 
-* :func:`rk4_step` — the classical fourth-order method (the paper's integrator).
+* :func:`rk4_stages` — the one body of the classical fourth-order method (the paper's
+  integrator), each driver's layout in its hooks; :func:`rk4_step` — it for a right-hand side.
 * :func:`dop853_step`, :func:`dop853_dense`, :func:`dense_eval`, :func:`initial_step`,
   :func:`step_factor` — the adaptive eighth-order method DOP853 of Hairer, Nørsett & Wanner
   with its 5th/3rd-order blended error estimate and 7th-order dense output, exactly as in
@@ -32,7 +33,7 @@ __all__ = [
     "NO_REFCOUNT",
     "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "stage_point",
     "rk4_sum", "rk4_stage_point",
-    "rk4_combine",
+    "rk4_combine", "rk4_stages",
     "rk4_step", "dop853_step", "dop853_dense", "hermite_dense", "dense_eval", "initial_step", "step_factor",
     "N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER",
 ]
@@ -112,23 +113,76 @@ def rk4_stage_point(z, K, st, h, L, zt):
         rk4_point(z, K, (st - 1) * L, rk4_node(st) * h, L, zt)
 
 
+@njit(cache=True, inline="always")
+def rk4_stages(work, eqs, h, start, point, rate, combine):
+    """The one body of a classical RK4 step of size h (`RK4_NODES`, `RK4_WEIGHTS`): every
+    RK4 step of charts is this loop with its driver's hooks for its layout (compile-time
+    arguments, inlined: each driver compiles the loop with its own hooks):
+
+    * ``start(work, eqs) -> (health, first)``: the step's start; first = 1 where it computed
+      the rates of stage 0 at the start point itself, 0 where ``point`` makes stage 0's
+      point (a copy: the rates then compile once, not twice);
+    * ``point(work, st, a)``: the point of stage st, z + a·K_{st−1} with a = c_st·h
+      (`rk4_point`, or its lanes' form);
+    * ``rate(work, eqs, st, hmin) -> hmin``: the rates of stage st at that point, and the
+      smallest health so far (numba's ``min`` does not compile for the GPU: the stacked
+      flows' hooks keep none);
+    * ``combine(work, h)``: the new point from the four stages (`rk4_combine`).
+
+    ``work``: the driver's arrays and sizes (a tuple); ``eqs``: its equations (a right-hand
+    side, or a vectors' hook), handed to ``start`` and ``rate``.  Returns the smallest
+    health.  Stage 0 in ``start`` keeps the loop free of a branch on the stage: with counted
+    arrays one kept an atomic reference-count pair per array and stage (178 of the 209 ns of
+    a chart step with a trivial right-hand side, N = 5; docs/performance.md); the stacked
+    flows, whose arrays are borrowed, branch in ``point`` instead.  The drivers: `rk4_step` (a
+    right-hand side), ``charts.solvers.tangent.stacked_rk4_step`` (every stacked flow, CPU
+    and GPU), the lanes' step of ``charts.solvers.lanes`` and the frame steps of
+    ``charts.analyses.curvature``."""
+    hmin, first = start(work, eqs)
+    for st in range(first, 4):
+        point(work, st, rk4_node(st) * h)
+        hmin = rate(work, eqs, st, hmin)
+    combine(work, h)
+    return hmin
+
+
+@njit(cache=True, inline="always")
+def _rhs_start(work, f):
+    """`rk4_stages`' stage 0 for a right-hand side ``f``: f(y) into K[0]."""
+    y, par, K, Kf, ytmp, ynew, n = work
+    return f(y, par, K[0]), 1
+
+
+@njit(cache=True, inline="always")
+def _rhs_point(work, st, a):
+    """`rk4_stages`' stage point for a right-hand side: ytmp = y + a·K[st − 1]."""
+    y, par, K, Kf, ytmp, ynew, n = work
+    rk4_point(y, Kf, np.uint64(st - 1) * n, a, n, ytmp)
+
+
+@njit(cache=True, inline="always")
+def _rhs_rate(work, f, st, hmin):
+    """`rk4_stages`' stage rate for a right-hand side ``f``: f(ytmp) into K[st]."""
+    y, par, K, Kf, ytmp, ynew, n = work
+    return min(hmin, f(ytmp, par, K[st]))
+
+
+@njit(cache=True, inline="always")
+def _rhs_combine(work, h):
+    """`rk4_stages`' end for a right-hand side: ynew from y and the stages."""
+    y, par, K, Kf, ytmp, ynew, n = work
+    rk4_combine(y, Kf, h, n, ynew)
+
+
 @njit(cache=True, **NO_REFCOUNT)
 def rk4_step(f, y, h, par, K, ytmp, ynew):
-    """One classical RK4 step of size ``h`` from ``y``, shape (n,), into ``ynew``.
+    """One classical RK4 step of size ``h`` from ``y``, shape (n,), into ``ynew``: the one
+    body `rk4_stages` with the right-hand side ``f`` (`RHS_SIG`).
 
     ``K`` : work array, shape (≥ 4, n), C-contiguous; ``ytmp`` : work array, shape (n,).
-    Returns the smallest health over the four stages.  Stage 0 is evaluated at y itself,
-    outside the stage loop, and the loop calls the branch-free `rk4_point`: a branch on the
-    stage in the loop kept an atomic reference-count pair per array and stage (`rk4_point`;
-    178 of the 209 ns of a step with a trivial right-hand side, N = 5)."""
-    n = np.uint64(y.size)
-    Kf = K.reshape(K.size)
-    hmin = f(y, par, K[0])
-    for st in range(1, 4):
-        rk4_point(y, Kf, np.uint64(st - 1) * n, rk4_node(st) * h, n, ytmp)
-        hmin = min(hmin, f(ytmp, par, K[st]))
-    rk4_combine(y, Kf, h, n, ynew)
-    return hmin
+    Returns the smallest health over the four stages."""
+    work = (y, par, K, K.reshape(K.size), ytmp, ynew, np.uint64(y.size))
+    return rk4_stages(work, f, h, _rhs_start, _rhs_point, _rhs_rate, _rhs_combine)
 
 
 @njit(cache=True)
