@@ -15,7 +15,7 @@ from numba.core.inline_closurecall import InlineWorker
 
 from charts.jit import inliner
 from charts.solvers.status import sum_squares
-from charts.solvers.tangent import stacked_rk4_step
+from charts.solvers.tangent import substep_loop
 
 
 def _dump(blocks) -> str:
@@ -88,7 +88,7 @@ def test_one_copy_is_the_same_ir_with_one_scope():
     """Copied in one deepcopy, a charts function's blocks dump exactly as numba's copies one
     by one do, and share one copied scope (numba's inliner asserts a single scope) instead of
     one copy of the whole scope per block."""
-    the_ir = run_frontend(stacked_rk4_step.py_func)
+    the_ir = run_frontend(substep_loop.py_func)
     per_block = {label: copy.deepcopy(block) for label, block in the_ir.blocks.items()}
     one = copy.deepcopy(the_ir.blocks)
     assert len(the_ir.blocks) > 3

@@ -34,14 +34,14 @@ from ..geometry.primitives import LANE_WIDTH, SHIFT_MAX, shifted, sincos
 from ..geometry.projection import project_state_into, project_tangent, project_tangent_sc
 from .gram_schmidt import inner_term, orthonormal_rows, orthonormalize, orthonormalize_lanes
 from .driver import Phases, borrowed, keep_alive, log_sums, phased_loop
-from .rk import rk4_combine, rk4_node, rk4_point
+from .rk import rk4_combine, rk4_point, rk4_stages
 from .status import (CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, status_error,
                      fixed_step_status, next_substep, singular_floor, substep_count,
                      sum_squares)
 
 __all__ = ["TangentFlow", "StackedFlow", "tangent_kernel", "orthonormalize", "orthonormal_rows",
            "inner_weights", "orthonormalize_lanes", "inner_term", "shift_sincos",
-           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "state_point_rate", "rk4_finish", "stacked_rk4_step",
+           "shift_sincos_lanes", "shifted", "stacked_loop", "stacked_work", "tangent_loop", "stacked_rk4_step", "StackedStep",
            "tangent_vectors_rate", "reorth_steps", "substeps", "substep_loop", "REORTH_TIME", "largest_divisor", "check_memory",
            "memory_budget", "stacked_bytes", "RotorStack", "stacked_step", "stacked_project",
            "stacked_reorth", "stacked_record", "Stack", "Rotors", "Stepping", "Records",
@@ -96,13 +96,19 @@ def shift_sincos_lanes(s0, c0, dl, theta, n, a, s, c):
         _libm_beyond_shift(dl, theta, n, a, s, c)
 
 
+#: The arrays and sizes of `stacked_rk4_step`, its hooks' ``work`` (`rk4_stages`).
+StackedStep = namedtuple("StackedStep", ["Zf", "Zt", "K", "th", "dl", "s", "c", "w0", "w1", "w2",
+                                         "w3", "s0", "c0", "minv", "wts", "n", "R", "d", "L"])
+
+
 @njit(cache=True, inline="always")
 def stacked_rk4_step(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, h, n, R, d, L,
                      vectors_rate):
     """One RK4 step of size h (h < 0: backward), in place, of eq (8) for the state Zf[:2N]
     and of a linear flow of the R − 1 vector rows after it (flat, length L = R·d): the one
-    RK4 step of every stacked flow.  The weighted sin/cos s0, c0 of the state's angles are
-    kept current (weights wts) by the angle shift from the step's start (`shift_sincos`);
+    body ``charts.solvers.rk.rk4_stages`` with the stacked layout's hooks, the one RK4 step
+    of every stacked flow.  The weighted sin/cos s0, c0 of the state's angles are kept
+    current (weights wts) by the angle shift from the step's start (`shift_sincos`);
     w0…w3 and the rest are work space.
 
     ``vectors_rate(Zt, n, minv, s, c, lam, iB, w0, w1, w2, w3, K, o, R, d)`` is the
@@ -119,31 +125,68 @@ def stacked_rk4_step(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts,
     equations is unsigned: Numba compiles a negative-index wraparound
     (``i + (i >> 63 & len)``) into every signed array access whose sign LLVM cannot prove,
     i.e. every ``x[o + j]`` with a run-time offset o, which cost a quarter of the step.
-    Stage 0 is handled outside the branch-free `rk4_point`: an inlined function that
-    branches on the stage releases its arrays at different places in its two branches, and
-    Numba's reference-count pruning then leaves an atomic incref/decref pair per array and
-    stage in the loop (docs/performance.md).  The lane kernel's step
-    (``charts.solvers.lanes``) is this step in the lanes' memory layout."""
-    for j in range(n):
+    The lane kernel's step (``charts.solvers.lanes``) is the same body in the lanes'
+    memory layout."""
+    rk4_stages(StackedStep(Zf, Zt, K, th, dl, s, c, w0, w1, w2, w3, s0, c0, minv, wts, n, R, d, L),
+               vectors_rate, h, _stacked_start, _stacked_point, _stacked_rate, _stacked_combine)
+
+
+@njit(cache=True, inline="always")
+def _stacked_start(w, vectors_rate):
+    """`rk4_stages`' start of `stacked_rk4_step`: the start angles into th; stage 0's point
+    is a copy that `_stacked_point` makes (the rates, eq (8) and the hook, then compile once:
+    twice, the first call of an analysis took 20 % longer to compile, measured)."""
+    Zf, th = w.Zf, w.th
+    for j in range(w.n):
         th[j] = Zf[j]
-    for st in range(4):
-        o = np.uint64(st) * L           # offset of stage st in K
-        if st == 0:
-            for i in range(L):
-                Zt[i] = Zf[i]
-            for j in range(n):
-                s[j] = s0[j]
-                c[j] = c0[j]
-        else:
-            a = rk4_node(st) * h
-            op = o - L                  # the previous stage
-            rk4_point(Zf, K, op, a, L, Zt)
-            for j in range(n):
-                dl[j] = a * K[op + j]
-            shift_sincos(s0, c0, dl, Zt, n, wts, s, c)
-        lam, iB = state_point_rate(Zt, n, minv, s, c, K, o)
-        vectors_rate(Zt, n, minv, s, c, lam, iB, w0, w1, w2, w3, K, o, R, d)
-    rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts)
+    return 0.0, 0
+
+
+@njit(cache=True, inline="always")
+def _stacked_point(w, st, a):
+    """`rk4_stages`' stage point of `stacked_rk4_step`: Zt = Zf + a·K_{st−1} and its
+    sin/cos s, c shifted from s0, c0 (`shift_sincos`); copies of Zf, s0, c0 at stage 0,
+    outside the branch-free `rk4_point` (an inlined function that branches on the stage
+    releases its arrays at different places in its two branches, and Numba's reference-count
+    pruning then leaves an atomic incref/decref pair per array and stage in the loop)."""
+    Zf, Zt, K, dl, s, c, s0, c0, n, L = w.Zf, w.Zt, w.K, w.dl, w.s, w.c, w.s0, w.c0, w.n, w.L
+    if st == 0:
+        for i in range(L):
+            Zt[i] = Zf[i]
+        for j in range(n):
+            s[j] = s0[j]
+            c[j] = c0[j]
+    else:
+        op = np.uint64(st - 1) * L      # offset of the previous stage in K
+        rk4_point(Zf, K, op, a, L, Zt)
+        for j in range(n):
+            dl[j] = a * K[op + j]
+        shift_sincos(s0, c0, dl, Zt, n, w.wts, s, c)
+
+
+@njit(cache=True, inline="always")
+def _stacked_rate(w, vectors_rate, st, hmin):
+    """`rk4_stages`' stage rates of `stacked_rk4_step` at Zt with sin/cos s, c into stage st
+    of K: eq (8), then the vectors' hook from the state's multiplier Λ and 1/B."""
+    Zt, K, s, c, minv, n = w.Zt, w.K, w.s, w.c, w.minv, w.n
+    zero = np.uint64(0)
+    o = np.uint64(st) * w.L
+    lam, B = multiplier(Zt, zero, n, minv, s, c)
+    state_rate(Zt, zero, n, minv, s, lam, K, o)
+    iB = 1.0 / B if B > 0.0 else 0.0
+    vectors_rate(Zt, n, minv, s, c, lam, iB, w.w0, w.w1, w.w2, w.w3, K, o, w.R, w.d)
+    return hmin
+
+
+@njit(cache=True, inline="always")
+def _stacked_combine(w, h):
+    """`rk4_stages`' end of `stacked_rk4_step`: Zf from its stages K, and the weighted
+    sin/cos s0, c0 shifted from the step's start angles th to the new ones."""
+    Zf, th, dl, n = w.Zf, w.th, w.dl, w.n
+    rk4_combine(Zf, w.K, h, w.L, Zf)
+    for j in range(n):
+        dl[j] = Zf[j] - th[j]
+    shift_sincos(w.s0, w.c0, dl, Zf, n, w.wts, w.s0, w.c0)
 
 
 @njit(cache=True, inline="always")
@@ -158,31 +201,12 @@ def tangent_vectors_rate(Zt, n, minv, s, c, lam, iB, f, g, p, q, K, o, R, d):
 
 
 @njit(cache=True, inline="always")
-def state_point_rate(Zt, n, minv, s, c, K, o):
-    """Eq (8) at the stage point Zt (state first, sin/cos s, c) into K[o:o+2N]; returns
-    (Λ, 1/B) for the vectors' rates at the same point (the stage of both RK4 steps, the
-    tangent one here and the adjoint one of ``charts.analyses.adjoint_pass``)."""
-    zero = np.uint64(0)
-    lam, B = multiplier(Zt, zero, n, minv, s, c)
-    state_rate(Zt, zero, n, minv, s, lam, K, o)
-    return lam, (1.0 / B if B > 0.0 else 0.0)
-
-
-@njit(cache=True, inline="always")
-def rk4_finish(Zf, K, h, L, th, dl, s0, c0, n, wts):
-    """The end of an RK4 step of both steps: Zf from its stages K, and the weighted sin/cos
-    s0, c0 shifted from the step's start angles th to the new ones."""
-    rk4_combine(Zf, K, h, L, Zf)
-    for j in range(n):
-        dl[j] = Zf[j] - th[j]
-    shift_sincos(s0, c0, dl, Zf, n, wts, s0, c0)
-
-
-@njit(cache=True, inline="always")
 def substep_loop(Zf, work, s0, c0, minv, wts, level, dt, hc, nsub, n, nu, Ru, du, Lu,
                  vectors_rate):
-    """The step dt (< 0: backward) by `stacked_rk4_step` with the hook ``vectors_rate``, as
-    the policy of ``charts.solvers.status`` takes it: one step where ``nsub`` = 1 (the cap
+    """The step dt (< 0: backward) by `stacked_rk4_step` with the hook ``vectors_rate`` (its
+    body ``rk4_stages`` with its hooks, called here directly: each level of inlining re-runs
+    numba's passes over everything inlined below it), as the policy of
+    ``charts.solvers.status`` takes it: one step where ``nsub`` = 1 (the cap
     ``hc`` at the step's start not below |dt|), else sub-steps (`next_substep`: equal ones as
     planned from the cap, each within its own cap once the point comes closer), each from a
     point that passes the singular-point test (`singular_floor`).  Returns RUNNING, or
@@ -193,6 +217,7 @@ def substep_loop(Zf, work, s0, c0, minv, wts, level, dt, hc, nsub, n, nu, Ru, du
     compiling, the backward pass's another 3.8 s), and no slower (measured).  ``work``: the
     step's work arrays (`stacked_work`)."""
     Zt, K, th, dl, s, c, f, g, p, q = work
+    w = StackedStep(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, nu, Ru, du, Lu)
     adt = abs(dt)
     h = dt
     planned = 0
@@ -211,8 +236,8 @@ def substep_loop(Zf, work, s0, c0, minv, wts, level, dt, hc, nsub, n, nu, Ru, du
             hs, adaptive = next_substep(left, S, sum_squares(Zf, n, n), hp, adaptive, _CAP)
             if adaptive:
                 h = hs if dt > 0.0 else -hs
-        stacked_rk4_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, minv, wts, h, nu, Ru,
-                         du, Lu, vectors_rate)
+        rk4_stages(w, vectors_rate, h, _stacked_start, _stacked_point, _stacked_rate,
+                   _stacked_combine)
         left -= abs(h)
         if nsub > 1 and (left <= 0.0 if adaptive else sub + 1 == planned):
             break
