@@ -1,4 +1,4 @@
-"""Every public callable, every parameter, hostile values (docs/reliability.md, "Hostile input").
+"""Every public callable, every parameter, hostile values (docs/reliability.md, "Bad input").
 
 The enumeration is real: ``charts.__all__`` is walked with `inspect.signature`, and a name
 without an entry here fails `test_every_public_name_has_an_entry` (a new public function must
@@ -148,9 +148,9 @@ def _sphere():
 @dataclasses.dataclass
 class Entry:
     """One public callable: ``fn`` called with ``base`` (keywords; `Fresh` values made anew),
-    each parameter in turn made hostile.  ``takes``: {parameter: the documented kinds of
-    nonsense-looking values it accepts (``"callable"``, ``"object"``: any object, e.g. a
-    progress callback or a Dask client)}; ``skip``: parameters not made hostile, with why."""
+    each parameter in turn made hostile.  ``takes``: {parameter: what it documents to take;
+    ``"object"``: any object, so nonsense is not refused, `NAN_EXPONENT`: NaN entries};
+    ``skip``: parameters not made hostile, with why."""
     fn: object
     base: dict
     takes: dict = dataclasses.field(default_factory=dict)
@@ -179,10 +179,6 @@ def method(make, name):
         return getattr(make(), name)(**kw)
     call.__name__ = name
     return call
-
-
-def _sig(cls, name):
-    return getattr(cls, name)
 
 
 LINKAGE = {"system": Fresh(linkage), "q0": Fresh(lambda: linkage_state()[0]),
@@ -341,6 +337,8 @@ for _name, _base in (("random_state", {}), ("metric", {"q": SPHERE_Q}),
                      ("inner", {"q": SPHERE_Q, "a": SPHERE_V, "b": SPHERE_V})):
     TABLE[f"Mechanism.{_name}"] = Entry(method(sphere, _name), _base,
                                         signature_of=getattr(charts.Mechanism, _name))
+TABLE["Scene.wants"] = Entry(method(lambda: charts.parse_scene(SCENE), "wants"),
+                             {"effect": "lyapunov"}, signature_of=charts.Scene.wants)
 TABLE["AngleTally.statistics"] = Entry(method(angle_tally, "statistics"), {},
                                        signature_of=charts.AngleTally.statistics)
 TABLE["RotorSystem.sectional_curvature"] = Entry(

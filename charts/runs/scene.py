@@ -53,6 +53,10 @@ class Scene:
     source: str = "<dict>"
 
     def wants(self, effect: str) -> bool:
+        """Whether the scene asks for ``effect``, one of the known effects (`EFFECTS`;
+        SceneError naming ``effect`` otherwise)."""
+        if not isinstance(effect, str) or effect not in EFFECTS:
+            raise SceneError(f"effect must be one of {', '.join(EFFECTS)}, got {shown(effect)}")
         return effect in self.effects
 
 
