@@ -4,6 +4,7 @@ rotor surface Σ cos θ = 3δ it tends to as r → 0 (docs/triple-linkage.md).
 
     python scripts/triple_linkage_study.py [--grid 192] [--share-grid 96] [--json FILE]
     python scripts/triple_linkage_study.py --limit      # the r → 0 limit's table only
+    python scripts/triple_linkage_study.py --lyapunov [--t-final 10000] [--seed 0]
 
 Each row: ``charts.mechanism.surface_integrals`` on grid² nodes per angle chart (the Gauss
 route; the chart route for the rods' configuration-dependent metric), χ the integer nearest
@@ -11,7 +12,11 @@ route; the chart route for the rods' configuration-dependent metric), χ the int
 best chart of its node (the node values bound the range from inside); the share of area with
 K > 0 on two grids (the indicator converges only at first order in the grid step: the two
 values say how far).  Katok's bound √(2π|χ|/A) (χ < 0) bounds the Liouville entropy at unit
-speed, not λ₁ itself: the library computes no exponent on a mechanism yet.
+speed, not λ₁ itself.
+
+``--lyapunov``: λ₁ at unit speed (``charts.analyses.mechanism_lyapunov.lyapunov_spectrum``,
+the mechanism's compiled tangent flow, RK4 dt = 0.01, 20 batches) from one random state per
+case, next to mean √(−K) and Katok's bound from the surface integrals (grid 96²).
 """
 from __future__ import annotations
 
@@ -95,6 +100,48 @@ def limit(grid=64, radii=(0.2, 0.1, 0.05, 0.025), deltas=(0.0, 0.1)) -> str:
     return "\n".join(lines)
 
 
+#: (label, keyword arguments of triple_linkage, or None for the rotor limit Σ cos θ = 0)
+LYAPUNOV_ROWS = [("r → 0 (rotors, Σcos θ = 0)", None)]
+LYAPUNOV_ROWS += [(f"r = {r:g}", dict(r=r)) for r in (0.05, 0.1, 0.2, 0.3, 0.4)]
+
+
+def lyapunov_rows(t_final=10000.0, seed=0, grid=96, dt=0.01, n_batches=20):
+    """λ₁ ± its standard error per case of `LYAPUNOV_ROWS` (unit speed, t_transient 50), with
+    the surface's mean √(−K) and Katok's bound √(2π|χ|/A) on grid² nodes per chart."""
+    from charts.analyses.mechanism_lyapunov import lyapunov_spectrum
+
+    out = []
+    for label, params in LYAPUNOV_ROWS:
+        t0 = time.perf_counter()
+        mech = rotors(3) if params is None else triple_linkage(**params)
+        q, v = mech.random_state(seed)
+        res = lyapunov_spectrum(mech, q, v, t_final, dt=dt, n_batches=n_batches, seed=seed)
+        s = surface_integrals(mech, grid, route="gauss")
+        chi = int(round(s.total_curvature / (2 * np.pi)))
+        out.append(dict(label=label, params=mech.parameter_values, lambda1=float(res.exponents[0]),
+                        stderr=float(res.stderr[0]), n_batches=n_batches, t_final=t_final, dt=dt,
+                        seed=seed, energy_error=res.energy_error, chi=chi,
+                        max_curvature=s.max_curvature, mean_sqrt_neg_k=s.mean_sqrt_neg_curvature,
+                        katok_bound=float(np.sqrt(2 * np.pi * abs(chi) / s.area)),
+                        seconds=time.perf_counter() - t0))
+        print(f"{label}: {out[-1]['seconds']:.1f} s", flush=True)
+    return out
+
+
+def lyapunov_table(rows) -> str:
+    from scipy.stats import t as student
+
+    lines = ["| case | λ₁ ± s.e. | 95 % interval | mean √(−K) | √(2π\\|χ\\|/A) | max K "
+             "| \\|T/T₀ − 1\\| |", "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lam, se = r["lambda1"], r["stderr"]
+        w = student.ppf(0.975, r["n_batches"] - 1) * se      # batch means: Student's t
+        lines.append(f"| {r['label']} | {lam:.4f} ± {se:.4f} | [{lam - w:.4f}, "
+                     f"{lam + w:.4f}] | {r['mean_sqrt_neg_k']:.4f} | {r['katok_bound']:.4f} "
+                     f"| {r['max_curvature']:.2e} | {r['energy_error']:.0e} |")
+    return "\n".join(lines)
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--grid", type=int, default=192, help="nodes per chart axis (default 192)")
@@ -104,7 +151,21 @@ def main(argv=None):
     p.add_argument("--limit", action="store_true",
                    help="only the r → 0 limit's table (area and ∫K against the rotors', 64² "
                    "nodes per chart)")
+    p.add_argument("--lyapunov", action="store_true",
+                   help="only λ₁ at unit speed for the rotor limit and r = 0.05 … 0.4")
+    p.add_argument("--t-final", type=float, default=10000.0,
+                   help="--lyapunov's averaging time (default 10000)")
+    p.add_argument("--seed", type=int, default=0, help="--lyapunov's random state (default 0)")
     args = p.parse_args(argv)
+    if args.lyapunov:
+        rows = lyapunov_rows(args.t_final, args.seed)
+        print(f"\nλ₁ at unit speed, t = {args.t_final:g} after a transient of 50, dt = 0.01, "
+              f"20 batches, seed {args.seed}; surface integrals on 96² nodes per chart\n")
+        print(lyapunov_table(rows))
+        if args.json:
+            with open(args.json, "w", encoding="utf-8") as f:
+                json.dump(rows, f, indent=1)
+        return
     if args.limit:
         print(limit())
         return
