@@ -22,6 +22,7 @@ valid array), then by values a Hypothesis strategy draws.  Property:
 """
 from __future__ import annotations
 
+import atexit
 import dataclasses
 import functools
 import importlib
@@ -29,6 +30,7 @@ import inspect
 import math
 import os
 import pkgutil
+import shutil
 import tempfile
 import warnings
 from pathlib import Path
@@ -56,6 +58,7 @@ EXAMPLES = 1500
 #: A folder for every file the calls write (paths given as hostile strings are relative:
 #: the tests run inside it).
 WORK = Path(tempfile.mkdtemp(prefix="charts-hostile-"))
+atexit.register(shutil.rmtree, WORK, ignore_errors=True)
 
 
 class Fresh:
