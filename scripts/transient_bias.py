@@ -2,6 +2,7 @@
 runs per transient (errors across the members), to compare with a long reference.
 
     python scripts/transient_bias.py --n 5 --t-final 50 --members 128 --transients 0 10 50 100 300 auto
+    python scripts/transient_bias.py --n 5 --t-final 50 --members 512 --transients 50 scaled
     python scripts/transient_bias.py --n 5 --t-final 2000 --members 16 --transients 100      # reference
 """
 import argparse
@@ -28,11 +29,12 @@ def main():
     for tr in a.transients:
         t0 = time.perf_counter()
         e = charts.lyapunov_ensemble(S, a.members, a.t_final, workers=a.workers, seed=1,
-                                     n_batches=4, t_transient=tr if tr == "auto" else float(tr))
+                                     n_batches=4,
+                                     t_transient=tr if tr in ("auto", "scaled") else float(tr))
         E = np.array([m.exponents for m in e.members])
         se = E.std(axis=0, ddof=1) / np.sqrt(len(E))
         used = e.members[0].params["t_transient"]
-        label = f"auto ({used:g})" if tr == "auto" else f"{used:g}"
+        label = f"{tr} ({used:g})" if tr in ("auto", "scaled") else f"{used:g}"
         print(f"| {a.n} | {a.t_final:g} | {a.members} | {label} | {E[:, 0].mean():.4f} ± {se[0]:.4f} "
               f"| {E[:, -1].mean():.4f} ± {se[-1]:.4f} |  ({time.perf_counter() - t0:.0f} s)",
               flush=True)

@@ -126,7 +126,7 @@ def test_the_device_route_tallies_the_sines_it_would_return():
     sf, sr, *_ = angles_on_device(S, cfg, seeds, 1.0, backend="cpu", block=200)
     whole = AngleTally.empty(3)
     whole.add_both(sf, sr)
-    got = tally_on_device(S, cfg, AngleTally.empty(3, dict(seed=3)), 1.0, backend="cpu",
+    got = tally_on_device(S, cfg, AngleTally.empty(3, dict(members_seed=3)), 1.0, backend="cpu",
                           block=200)
     assert got.n.tolist() == [60] * 3
     _same(got, whole, rtol=1e-13)         # the ladder's sums added block by block
@@ -144,7 +144,7 @@ def test_the_cpu_route_tallies_the_ensemble():
         ref.add(m.phi_full[None], i, "full")
         ref.add(m.phi_restricted[None], i, "restricted")
     _same(t, ref)
-    assert t.params["seed"] == 2 and t.params["sample_every"] == 0.1
+    assert t.params["members_seed"] == 2 and t.params["sample_every"] == 0.1
     assert t.statistics()["min_seed"] in (2, 3, 4)
     assert "\n" not in repr(t) and "angles of 3 members" in repr(t)
 
@@ -176,7 +176,7 @@ def test_saved_and_loaded(tmp_path):
     pytest.importorskip("xarray")
     from charts import load
     t = _fed(_angles(3, 500), _angles(3, 500, 1), [0, 500])
-    t.params.update(n=4, seed=0)
+    t.params.update(n=4, members_seed=0)
     t._open.clear()
     back = load(t.save(tmp_path / "tally.nc"))
     assert back == t and back.statistics() == t.statistics()
@@ -220,7 +220,8 @@ def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
         consume(np.sin(phi[:, 200:]), np.sin(phi[:, 200:]), stop)
     monkeypatch.setattr(hyp, "angles_on_device", fake)
     with pytest.warns(StoppedMember, match="singular point"):
-        t = tally_on_device(None, None, AngleTally.empty(3, dict(seed=7, sample_every=0.1)),
+        t = tally_on_device(None, None,
+                            AngleTally.empty(3, dict(members_seed=7, sample_every=0.1)),
                             1.0, backend="cpu")
     assert t.n.tolist() == [300, 100, 300]
     assert t.params["stopped"] == [[8, 12.5]]

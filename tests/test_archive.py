@@ -318,7 +318,7 @@ def _rebuild(ds, name, a=None):
             t_eval=ds["t"].values if a["options_output"] == "t_eval" else None)
     common = dict(dt=float(a["params_dt"]), t_transient=float(a["params_t_transient"]),
                   project_every=_plain(a, "params_project_every"),
-                  seed=_plain(a, "params_seed", int))
+                  seed=_plain(a, "params_vectors_seed", int))
     t_final = float(a["params_t_final"])
     if name == "lyapunov":
         return charts.lyapunov_spectrum(
@@ -370,7 +370,7 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
             assert ds.attrs[key], key
         # the settings' units, which attributes cannot carry, are said once in the CF comment
         assert "time units of the flow" in ds.attrs["comment"]
-        assert "params_seed seeds the random tangent vectors" in ds.attrs["comment"]
+        assert "vectors_seed seeds the random tangent vectors" in ds.attrs["comment"]
         assert all(dim in ds.coords for dim in ds.sizes), (name, set(ds.sizes) - set(ds.coords))
         for v in list(ds.data_vars.values()) + list(ds.coords.values()):
             assert "units" in v.attrs, (name, v.name)
@@ -400,11 +400,13 @@ def test_a_reader_without_charts_can_rebuild_the_call(results, name, tmp_path):
             a = ds.attrs
             system = charts.RotorSystem(n, masses=masses.tolist(), weights=weights.tolist())
             top = dict(t_transient=float(a["params_t_transient"]), dt=float(a["params_dt"]),
-                       seed=int(a["params_seed"]), speed=float(a["params_speed"]), workers=1,
+                       seed=int(a["params_members_seed"]), speed=float(a["params_speed"]),
+                       workers=1,
                        sample_every=float(a["params_sample_every"]),
                        n_unstable=int(a["params_n_unstable"])) if member == "angles" else dict(
                        t_transient=float(a["params_t_transient"]), dt=float(a["params_dt"]),
-                       seed=int(a["params_seed"]), speed=float(a["params_speed"]), workers=1,
+                       seed=int(a["params_members_seed"]), speed=float(a["params_speed"]),
+                       workers=1,
                        n_exponents=int(a["params_n_exponents"]),
                        reorth_every=float(a["params_reorth_every"]))
             run = charts.lyapunov_ensemble if member == "lyapunov" else charts.hyperbolicity_ensemble
@@ -426,7 +428,9 @@ def test_an_ensemble_file_keeps_its_members_settings_flat(results, tmp_path):
         assert "member_attrs" not in ds.attrs
         assert int(ds.attrs["member.params.n"]) == ens.params["n"]
         assert np.array_equal(ds.attrs["member.params.masses"], ens.members[0].params["masses"])
-        assert list(ds["member.params.seed"].values) == [m.params["seed"] for m in ens.members]
+        for seed in ("vectors_seed", "state_seed"):     # each member's, a variable along member
+            assert list(ds[f"member.params.{seed}"].values) == [m.params[seed]
+                                                                 for m in ens.members]
         assert not any(isinstance(v, str) and v.startswith("json:") for v in ds.attrs.values())
     back = load(path)
     assert [m.params for m in back.members] == [m.params for m in ens.members]
@@ -479,7 +483,7 @@ def test_an_ensemble_records_its_resolved_settings(results, tmp_path):
                 "n_batches", "project_every"):
         assert key in ens.params, key
     assert ens.params["dt"] == 0.01 and ens.params["t_final"] == 10.0
-    assert type(written.params["speed"]) is float and ens.params["seed"] == 0
+    assert type(written.params["speed"]) is float and ens.params["members_seed"] == 0
     assert "theta0" not in ens.params
     ds = ens.to_xarray()
     assert ds.attrs["params_dt"] == 0.01 and ds.attrs["params_n_trajectories"] == 2
@@ -540,7 +544,7 @@ def test_no_attribute_is_json_where_netcdf_has_a_native_form(results, tmp_path):
 #: settings); and what NetCDF cannot hold natively (an empty list or dict, lists of lists or
 #: of mixed types, keys that cannot be parts of names, a string that looks like JSON, an
 #: integer beyond int64), which stays JSON.
-AWKWARD = dict(n=4, dt=0.01, seed=7, exact=True, project=False, project_every=None,
+AWKWARD = dict(n=4, dt=0.01, vectors_seed=7, exact=True, project=False, project_every=None,
                masses=[1.0], counts=[3], names=["theta"], label="θ₀ ≤ π", empty=[],
                mixed=[1, "a", None], rows=[[1.0, 2.0]], dotted={"a.b": 1},
                text="json:not json", huge=2 ** 70,
@@ -575,7 +579,7 @@ def test_settings_of_every_type_come_back_with_their_types(tmp_path):
             "params_empty", "params_mixed", "params_rows", "params_dotted", "params_text",
             "params_huge", "params_curvature.none"}
     _same(load(tmp_path / "l.nc").params, AWKWARD, "params")
-    members = [_tiny_lyapunov({**AWKWARD, "seed": seed, "curvature": {
+    members = [_tiny_lyapunov({**AWKWARD, "vectors_seed": seed, "curvature": {
         **AWKWARD["curvature"], "sample_every": every}}) for seed, every in ((1, 0.1), (2, 0.2))]
     ens = EnsembleResult(members, params={"n": 4, "exact": True, "masses": [1.0]})
     with xr.open_dataset(ens.save(tmp_path / "e.nc"), engine="h5netcdf") as ds:

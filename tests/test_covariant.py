@@ -222,5 +222,5 @@ def test_progress_reaches_the_total_and_the_result_states_its_layout():
     r = covariant_lyapunov_vectors(s, th, u, 5.0, variant="full", t_transient=2.0,
                                    progress=lambda done, total: calls.append((done, total)))
     assert calls[-1][0] == pytest.approx(calls[-1][1]) == pytest.approx(2.0 + 4.9 + 2.0)
-    assert r.params["D"] == 8 and r.params["m"] == 2 and r.params["stored_samples"] == 70
+    assert r.params["D"] == 8 and r.params["n_unstable"] == 2 and r.params["stored_samples"] == 70
     assert r.t[0] == pytest.approx(2.0) and r.t.size == 50

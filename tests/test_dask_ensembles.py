@@ -62,7 +62,8 @@ def test_lyapunov_ensemble_on_the_cluster_is_the_local_one(client):
     for a, b in zip(there.members, here.members):
         for f in ("exponents", "stderr", "history", "batches"):
             assert np.array_equal(getattr(a, f), getattr(b, f)), f
-        assert a.params["seed"] == b.params["seed"]
+        assert a.params["state_seed"] == b.params["state_seed"]
+        assert a.params["vectors_seed"] == b.params["vectors_seed"]
     assert there.params == here.params
 
 

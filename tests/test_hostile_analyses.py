@@ -403,12 +403,12 @@ def test_an_ensembles_auto_transient_checks_every_setting_before_its_pilot(monke
     import pytest
 
     import charts
-    from charts.analyses import lyapunov_members
+    from charts.analyses import lyapunov
 
     def no_pilot(*args, **kwargs):
         raise AssertionError("the pilot ran before the settings were checked")
 
-    monkeypatch.setattr(lyapunov_members, "auto_transient", no_pilot)
+    monkeypatch.setattr(lyapunov, "auto_transient", no_pilot)
     S = charts.RotorSystem(3)
     for bad, match in ((dict(dt=-0.01), "dt"), (dict(n_batches=0), "n_batches"),
                        (dict(n_exponents=7), "n_exponents")):

@@ -350,7 +350,8 @@ def test_the_linkage_saves_plots_and_runs_ensembles(tmp_path):
     e = charts.linkage_ensemble(L, 3, 4.0, workers=1, t_transient=1.0, n_batches=2)
     assert e.params["eps"] == 0.1 and e.exponents.shape == (2,)
     again = charts.load(e.save(tmp_path / "ensemble.nc"))
-    assert [m.params["seed"] for m in again.members] == [0, 1, 2]
+    assert [m.params["state_seed"] for m in again.members] == [0, 1, 2]
+    assert [m.params["vectors_seed"] for m in again.members] == [0, 1, 2]
     assert np.array_equal(again.exponents, e.exponents)
     with xr.open_dataset(tmp_path / "ensemble.nc", engine="h5netcdf") as ds:
         assert list(ds["exponent"].values) == [1, 2] and ds["K"].dims[-1] == "exponent"

@@ -9,6 +9,7 @@ import pytest
 from charts import (RotorSystem, covariant_lyapunov_vectors, curvature_along_trajectory,
                     hyperbolicity_angles, lyapunov_spectrum, waveform)
 from charts.analyses.linkage import linkage_run
+from charts.analyses.transients import scaled_transient
 from charts.analyses.linkage_angles import linkage_angles
 from charts.runs.runner import run_scene
 from charts.runs.scene import parse_scene
@@ -84,15 +85,17 @@ def _resolved(effects, **run):
 
 def test_parsed_defaults_are_the_apis():
     sc = _resolved({"lyapunov": {}, "angles": {}, "clv": {}})
-    assert sc.run["t_transient"] == default(lyapunov_spectrum, "t_transient")
+    # a rule ("scaled") resolved as the API resolves it: by N and the speed (N = 4: 80)
+    assert default(lyapunov_spectrum, "t_transient") == "scaled"
+    assert sc.run["t_transient"] == scaled_transient(4, 1.0) == 80.0
+    assert sc.transient_rule.startswith("scaled")
     assert sc.integrator["dt"] == default(lyapunov_spectrum, "dt") == default(hyperbolicity_angles, "dt")
     assert sc.effects["angles"]["t_transient"] == default(hyperbolicity_angles, "t_transient")
     assert sc.effects["clv"]["t_transient"] == default(covariant_lyapunov_vectors, "t_transient")
     # the main pass of lyapunov and curvature together: the two APIs agree
     assert default(lyapunov_spectrum, "t_transient") == default(curvature_along_trajectory,
                                                                  "t_transient")
-    assert _resolved({"curvature": {}}).run["t_transient"] == default(curvature_along_trajectory,
-                                                                      "t_transient")
+    assert _resolved({"curvature": {}}).run["t_transient"] == scaled_transient(4, 1.0)
     assert _resolved({"waveforms": {}}).run["t_transient"] == default(waveform, "t_transient")
     assert _resolved({"angles": {}}).run["t_transient"] == default(hyperbolicity_angles,
                                                                    "t_transient")

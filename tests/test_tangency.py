@@ -24,7 +24,7 @@ def scan():
 
 
 def test_v_is_bounded_by_the_angle_and_keeps_its_sign(scan):
-    V = oriented_volume(scan.vectors, scan.params["m"], scan.states, SYSTEM.weights)
+    V = oriented_volume(scan.vectors, scan.params["n_unstable"], scan.states, SYSTEM.weights)
     assert np.unique(np.sign(V)).size == 1
     assert np.nanmin(scan.phi) < 1e-3                 # the orbit does come close
     assert np.abs(V).min() < 1e-3
@@ -32,7 +32,7 @@ def test_v_is_bounded_by_the_angle_and_keeps_its_sign(scan):
 
 
 def test_v_is_the_product_of_the_principal_sines(scan):
-    m = scan.params["m"]
+    m = scan.params["n_unstable"]
     V = oriented_volume(scan.vectors[::500], m, scan.states[::500], SYSTEM.weights)
     for j, v in zip(range(0, len(scan.t), 500), V):
         E = scan.vectors[j]

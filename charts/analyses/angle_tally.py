@@ -107,7 +107,7 @@ class AngleTally(Archivable):
         """A tally of ``members`` members with nothing added yet."""
         members = integer("members", members, 1)
         params = dict(params or {})
-        seeds = int(params.get("seed", 0)) + np.arange(int(members), dtype=np.int64)
+        seeds = int(params.get("members_seed", 0)) + np.arange(int(members), dtype=np.int64)
         tally = cls(**_sums(len(VARIANTS), int(members)), params=params, seeds=seeds)
         tally._open.update(carries(len(VARIANTS), int(members)))
         return tally
@@ -121,7 +121,7 @@ class AngleTally(Archivable):
         tallies = list(tallies)
         if not tallies or not all(isinstance(t, cls) for t in tallies):
             raise ValueError("merged takes one or more AngleTally")
-        own = ("seed", "device", "stopped")
+        own = ("members_seed", "device", "stopped")
 
         def settings(t):
             return {k: v for k, v in t.params.items() if k not in own}
@@ -134,7 +134,7 @@ class AngleTally(Archivable):
             raise ValueError("a seed appears in more than one tally: its member would count twice")
         arrays = {k: np.concatenate([getattr(t, k) for t in tallies], axis=0 if k == "n" else 1)
                   for k in SUMS}
-        params = dict(tallies[0].params, seed=int(seeds[0]),
+        params = dict(tallies[0].params, members_seed=int(seeds[0]),
                       device="+".join(sorted({str(t.params.get("device", "?")) for t in tallies})))
         stopped = [s for t in tallies for s in t.params.get("stopped") or []]
         params.pop("stopped", None)
@@ -388,7 +388,9 @@ class AngleTally(Archivable):
                              "sum of the squared minima"),
             "episodes": (member, self.episodes, "1",
                          f"runs of consecutive angles below {SMALL_ANGLE} rad"),
-            "seed": (("member",), self.seeds, "1", "the member's seed (its initial state)")},
+            "state_seed": (("member",), self.seeds, "1",
+                           "the seed of the member's initial state (RotorSystem.random_state) "
+                           "and of its tangent vectors")},
             coords={"variant": (("variant",), np.array(VARIANTS), "1"),
                     "edge": (("edge",), EDGES, "rad"),
                     "x0": (("x0",), np.array(LAW_X0), "rad"),
@@ -398,8 +400,10 @@ class AngleTally(Archivable):
 
     @classmethod
     def from_xarray(cls, ds):
+        # "seed": the name of the members' state seeds in files written before the rename
+        seeds = ds["state_seed"] if "state_seed" in ds else ds["seed"]
         return cls(**{k: ds[k].values for k in SUMS}, params=attributes(ds)["params"],
-                   seeds=ds["seed"].values)
+                   seeds=seeds.values)
 
 
 def _check_resumed(path, tally, done) -> int:

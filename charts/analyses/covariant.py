@@ -334,7 +334,8 @@ class CovariantResult(Archivable):
 
     def domination(self, windows):
         """`domination` test of the growth rates along the CLVs."""
-        return domination(self.growth, self.params["m"], self.params["sample_every"], windows)
+        return domination(self.growth, self.params["n_unstable"], self.params["sample_every"],
+                          windows)
 
     def summary_parts(self):
         """The variant, the smallest angles and the growth rates along the CLVs."""
@@ -462,10 +463,11 @@ def covariant_result(system, cfg, variant, phi, phi_v, lost, gs, states, vectors
     the S samples' intervals (S, D), its states, its CLVs (or None), its measured speed
     and its initial state ``start`` = (theta0, u0)."""
     t = (cfg.n_tr + np.arange(cfg.S) * cfg.sample) * cfg.dt
-    params = dict(**system.describe(), variant=variant, dt=cfg.dt, m=cfg.m, D=cfg.D,
+    params = dict(**system.describe(), variant=variant, dt=cfg.dt, D=cfg.D,
                   t_final=cfg.n_win * cfg.dt, t_transient=cfg.n_tr * cfg.dt,
                   sample_every=cfg.tau, speed=speed, project_every=cfg.project * cfg.dt or None,
-                  seed=cfg.seed, bytes_per_sample=sample_bytes(system.n, variant),
+                  vectors_seed=cfg.seed, state_seed="given",
+                  bytes_per_sample=sample_bytes(system.n, variant),
                   stored_samples=cfg.total, n_unstable=cfg.m, keep_vectors=vectors is not None,
                   theta0=np.asarray(start[0], dtype=float).tolist(),
                   u0=np.asarray(start[1], dtype=float).tolist())

@@ -52,6 +52,7 @@ from .arguments import (flag, positive_int, positive_time, progress_reporter, pr
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
 from .arguments import rotor_system
+from .transients import resolve_transient, transient_rule
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
            "exact_curvatures", "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]
@@ -428,7 +429,7 @@ class CurvatureResult(Archivable):
 
 @announces_compilation
 def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
-                               sample_every=Documented(0.1), t_transient=Documented(50.0),
+                               sample_every=Documented(0.1), t_transient="scaled",
                                exact=True, project_every=Documented(1.0), seed=0,
                                progress=False) -> CurvatureResult:
     """Sectional curvatures K_ij along the trajectory from (theta0, u0), routes (a) and (b).
@@ -444,9 +445,10 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     sample_every : float
         Time between sample points (a multiple of dt; default 0.1, the nearest whole
         number of steps at other dt that divides t_final: README, "Conventions").
-    t_transient : float
-        Time for the Lyapunov vectors to converge before sampling (default 50, the nearest
-        whole number of steps at other dt).
+    t_transient : float, "scaled" or "auto"
+        Time for the Lyapunov vectors to converge before sampling: "scaled" (default), 5 N² /
+        speed within (50, 5000), "auto" from a pilot run, as `lyapunov_spectrum`'s
+        (``charts.analyses.transients``); a duration the nearest whole number of steps.
     exact : bool
         Also evaluate route (b) at the same points and frames.
     project_every : float or None
@@ -466,11 +468,14 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     total = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=total)
     S = samples_of(total, sample, t_final, sample_every)
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    if transient_rule(t_transient) is None:
+        steps_of("t_transient", t_transient, dt, allow_zero=True)
     project = project_steps(project_every, dt)
     seed = positive_int("seed", seed, 0)
     exact = flag("exact", exact)
     theta0, u0 = start_state(system, theta0, u0, dt)
+    t_transient, rule = resolve_transient(t_transient, system, theta0, u0, dt=dt, seed=seed)
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     k = n - 2
     reorth = reorth_steps(dt, sample, transient)  # orthonormal (and in T_r) at every sample
     flow = TangentFlow(system, theta0, u0, k, dt=dt, inner="theta", restricted=True,
@@ -496,7 +501,10 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
     t = (np.arange(1, S + 1) * sample) * dt
     params = dict(**system.describe(), dt=dt, sample_every=sample * dt,
                   t_transient=transient * dt, project_every=project * dt or None,
-                  speed=flow.speed, t_final=float(t[-1]), seed=seed, exact=bool(exact),
+                  speed=flow.speed, t_final=float(t[-1]), vectors_seed=seed,
+                  state_seed="given", exact=bool(exact),
                   theta0=np.asarray(theta0, dtype=float).tolist(),
                   u0=np.asarray(u0, dtype=float).tolist())
+    if rule is not None:
+        params["transient_rule"] = rule
     return CurvatureResult(t, Ys[:, :n], Ys[:, n:], Ps, Ka, Kb, params)

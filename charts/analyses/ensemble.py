@@ -11,6 +11,7 @@ import numpy as np
 from ..io.archive import (ENSEMBLE_TITLES, Archivable, attributes, dataset, require_xarray,
                        same_value)
 from ..io.file_settings import MEMBER, member_attributes, member_settings
+from ..io.renamed_settings import NOTE
 from ..io.result_words import RATE, counted, exponent_words, smallest_words
 from ..jit.compilation import announce, timed_call
 from ..geometry.checks import shown
@@ -131,6 +132,9 @@ class EnsembleResult(SpectrumQuantities, Archivable):
         ex = ds["ensemble_exponents"].values if "ensemble_exponents" in ds else None
         se = ds["ensemble_stderr"].values if "ensemble_stderr" in ds else None
         ratio = ds["batch_error_ratio"].values if "batch_error_ratio" in ds else None
+        if NOTE in a["params"]:                  # a file from before the seeds' names: member
+            for m in members:                    # i had seed + i for its state and vectors
+                m.params.setdefault("state_seed", m.params.get("vectors_seed"))
         return cls(members=members, exponents=ex, stderr=se, params=a["params"],
                    error_ratio=ratio)
 
@@ -309,9 +313,10 @@ def _announced(timed, name, n):
         yield result
 
 
-#: Members' settings that are each member's own (its initial state, its measured speed),
-#: never the ensemble's even where the members happen to share them.
-OWN_SETTINGS = ("seed", "speed", "theta0", "u0")
+#: Members' settings that are each member's own (its initial state and the seeds of that
+#: state and of its tangent vectors, its measured speed), never the ensemble's even where the
+#: members happen to share them.
+OWN_SETTINGS = ("vectors_seed", "state_seed", "speed", "theta0", "u0")
 
 
 def resolved_settings(members, kwargs) -> dict:
@@ -331,12 +336,17 @@ def resolved_settings(members, kwargs) -> dict:
 
 def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleResult:
     """The `EnsembleResult` of ``members`` (seeds seed, seed+1, …); its ``params``: the
-    system, the ensemble's own arguments and the members' resolved settings
-    (`resolved_settings`), so that equal calls typed differently give equal results and a
-    file's top level names every setting."""
+    system, the ensemble's own arguments (``members_seed``: the first member's seed) and the
+    members' resolved settings (`resolved_settings`), so that equal calls typed differently
+    give equal results and a file's top level names every setting.  Member i records the seed
+    of its initial state, ``state_seed`` = seed + i (``system.random_state(seed=seed + i,
+    speed=speed)``), beside ``vectors_seed``, the seed of its tangent vectors."""
+    for i, m in enumerate(members):
+        if getattr(m, "params", None) is not None:
+            m.params["state_seed"] = seed + i
     res = EnsembleResult(members, params={**resolved_settings(members, kwargs),
                                           **system.describe(), "n_trajectories": len(members),
-                                          "seed": seed, "speed": float(speed),
+                                          "members_seed": seed, "speed": float(speed),
                                           "t_final": float(t_final)})
     if all(hasattr(m, "exponents") for m in members):
         E = np.array([m.exponents for m in members])

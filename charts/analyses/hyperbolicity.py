@@ -293,10 +293,10 @@ def angle_params(system, cfg: AngleSettings, speed) -> dict:
     """The settings of an angle test with ``cfg`` as its results record them (the system,
     every duration in time units, the speed, the seed)."""
     dt = cfg.dt
-    return dict(**system.describe(), dt=dt, m=cfg.m, n_unstable=cfg.m, t_final=cfg.n_win * dt,
+    return dict(**system.describe(), dt=dt, n_unstable=cfg.m, t_final=cfg.n_win * dt,
                 t_transient=cfg.n_tr * dt, sample_every=cfg.sample * dt, speed=speed,
                 checkpoint_every=cfg.ce * dt, project_every=cfg.project * dt or None,
-                seed=cfg.seed)
+                vectors_seed=cfg.seed, state_seed="given")
 
 
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
@@ -384,7 +384,9 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
     if checkpoint is not None:
         checkpoint = file_path("checkpoint", checkpoint)
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
-    params = dict(angle_params(system, cfg, float(speed)), device=device)
+    params = dict(angle_params(system, cfg, float(speed)), device=device, members_seed=seed)
+    for own in ("vectors_seed", "state_seed"):      # each member's: the tally's ``seeds``
+        params.pop(own)
     rep = progress_reporter(progress, n_trajectories * t_final,
                             f"angles N={system.n} tally ({device.upper()})")
     try:
@@ -452,7 +454,7 @@ def _tally_chunk(job):
     `hyperbolicity_angles` from ``system.random_state(seed=s, speed=speed)`` (as
     `hyperbolicity_ensemble`'s members), tallied and dropped."""
     system, first, count, speed, t_final, params, kwargs = job
-    part = AngleTally.empty(count, dict(params, seed=first))
+    part = AngleTally.empty(count, dict(params, members_seed=first))
     for i in range(count):
         s = first + i
         theta0, u0 = system.random_state(seed=s, speed=speed)
@@ -478,7 +480,7 @@ def _merge_chunk(tally, part, first):
 
 
 def tally_on_device(system, cfg, tally, speed, *, backend="cuda", workers=1, **kw):
-    """The angle test of ``tally``'s members (seeds ``tally.params["seed"]`` on) by
+    """The angle test of ``tally``'s members (seeds ``tally.params["members_seed"]`` on) by
     ``charts.analyses.angle_blocks.angles_on_device`` (``backend``, ``kw``: its arguments),
     each block's sines added to ``tally`` on ``workers`` threads as they arrive."""
     seeds = tally.seeds.tolist()

@@ -280,7 +280,8 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     params = dict(**system.describe(), t_final=total * dt, dt=dt,
                   t_transient=transient * dt, n_batches=n_batches, reorth_every=reorth * dt,
                   sample_every=sample * dt, project_every=project * dt if project else None,
-                  n_exponents=k, curvature=bool(curvature), speed=flow.speed, seed=seed,
+                  n_exponents=k, curvature=bool(curvature), speed=flow.speed,
+                  vectors_seed=seed, state_seed="given",
                   q0=q0.tolist(), v0=v0.tolist())
     return LinkageResult(exps, stderr, batches, np.arange(1, S + 1) * sample * dt, states, K,
                          min_sin2, float(flow.health[0]), params)

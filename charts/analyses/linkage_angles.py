@@ -118,5 +118,6 @@ def linkage_angles(system, q0, v0, t_final, *, dt=0.01, t_transient=Documented(5
             phi[j - 1] = np.arcsin(min(1.0, sin_angle(ys[j - 1], Us[j - 1], bw.Z[1:], system, w)))
     bexp = bw.logsum / (total * dt)
     params = dict(eps=system.eps, rho=system.rho, dt=dt, t_final=total * dt,
-                  t_transient=transient * dt, sample_every=sample * dt, seed=seed)
+                  t_transient=transient * dt, sample_every=sample * dt, vectors_seed=seed,
+                  state_seed="given")
     return LinkageAngles(np.arange(S + 1) * sample * dt, phi, fexp, bexp, params)

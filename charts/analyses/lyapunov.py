@@ -34,6 +34,8 @@ from .arguments import (positive_int, positive_time, progress_reporter, project_
                         start_state, steps_of, inner_steps, Documented)
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends, batch_estimates
+from .transients import (AUTO_EFOLDINGS, AUTO_RULE, AUTO_TRANSIENT_RANGE, PILOT_TIMES,
+                         resolve_transient, transient_rule)
 from .arguments import rotor_system
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
@@ -69,7 +71,9 @@ def lyapunov_settings(system, t_final, *, dt=0.01, n_exponents=None, inner="thet
                       space="restricted", t_transient=Documented(50.0), n_batches=20,
                       reorth_every=Documented(0.1), project_every=Documented(1.0),
                       record_every=Documented(1.0), seed=0) -> LyapunovSettings:
-    """Check the arguments of `lyapunov_spectrum` (ValueError naming the bad one)."""
+    """Check the arguments of `lyapunov_spectrum` (ValueError naming the bad one); its
+    ``t_transient`` is a duration, a rule ("scaled", "auto") resolved by the caller first
+    (`charts.analyses.transients.resolve_transient`)."""
     n = system.n
     dt = positive_time("dt", dt)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
@@ -253,7 +257,7 @@ class LyapunovResult(SpectrumQuantities, Archivable):
 
 @announces_compilation
 def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
-                      inner="theta", space="restricted", t_transient=Documented(50.0),
+                      inner="theta", space="restricted", t_transient="scaled",
                       n_batches=20, reorth_every=Documented(0.1),
                       project_every=Documented(1.0), record_every=Documented(1.0), seed=0,
                       progress=False) -> LyapunovResult:
@@ -278,11 +282,15 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
         Inner product of eq (18): θ-parts only (the paper's) or θ- and u-parts.
     space : {'restricted', 'full'}
         Keep the tangent vectors in the constraint-preserving subspace T_r, or not.
-    t_transient : float or "auto"
-        Time discarded first so that the vectors align with the Lyapunov vectors.  "auto":
-        `AUTO_EFOLDINGS` e-foldings of the smallest positive exponent, from a pilot run
-        (`auto_transient`); the default 50 biases the smallest exponents of short runs at
-        N ≥ 5 (docs/large-n.md).
+    t_transient : float, "scaled" or "auto"
+        Time discarded first so that the vectors align with the Lyapunov vectors.
+        "scaled" (default): 5 N² / speed time units within (50, 5000), 15 e-foldings of the
+        measured smallest positive exponent ≈ 3 speed / N² (50 at N = 3, 125 at N = 5, 320 at
+        N = 8; `charts.analyses.transients` gives the measurements: a fixed 50 biased the
+        smallest exponent of short runs by −11 % at N = 5 and −22 % at N = 8).  "auto":
+        `AUTO_EFOLDINGS` e-foldings of the smallest positive exponent from a pilot run
+        (`auto_transient`).  The rule and the duration are recorded in ``params``
+        (``transient_rule``, ``t_transient``).
     n_batches : int
         Number of blocks for the batch-means standard error.
     reorth_every : float
@@ -297,7 +305,7 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
         Time between rows of the convergence history (a multiple of ``reorth_every``;
         default 1.0, the nearest such multiple at other dt).
     seed : int
-        Seed of the random initial tangent vectors.
+        Seed of the random initial tangent vectors (``params["vectors_seed"]``).
     progress : bool or callable(t_done, t_total)
 
     Returns
@@ -312,15 +320,16 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
         The trajectory reached a singular point of the manifold (N = 4).
     """
     rotor_system(system)
-    rule = transient_rule(t_transient)
-    if rule == "auto":
-        # every other setting checked before the pilot runs (the transient is its outcome)
+    if transient_rule(t_transient) is not None:
+        # every other setting checked before a pilot runs (the transient is its outcome)
         lyapunov_settings(system, t_final, dt=dt, n_exponents=n_exponents, inner=inner,
                           space=space, t_transient=0.0, n_batches=n_batches,
                           reorth_every=reorth_every, project_every=project_every,
                           record_every=record_every, seed=seed)
-        t_transient = auto_transient(system, theta0, u0, dt=dt, n_exponents=n_exponents,
-                                     inner=inner, space=space, seed=seed)
+        start_state(system, theta0, u0, dt)
+    t_transient, rule = resolve_transient(t_transient, system, theta0, u0, dt=dt,
+                                          n_exponents=n_exponents, inner=inner, space=space,
+                                          seed=seed)
     cfg = lyapunov_settings(system, t_final, dt=dt, n_exponents=n_exponents, inner=inner,
                             space=space, t_transient=t_transient, n_batches=n_batches,
                             reorth_every=reorth_every, project_every=project_every,
@@ -336,33 +345,9 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     logs = averaging_logs(flow, cfg, partial(flow.advance, where=where), rep.update)
     rep.close()
     res = lyapunov_result(system, cfg, logs, flow.speed, flow.shares, start)
-    if rule == "auto":
-        res.params["transient_rule"] = AUTO_RULE
+    if rule is not None:
+        res.params["transient_rule"] = rule
     return res
-
-
-#: ``t_transient="auto"``: this many e-foldings of the smallest positive exponent, estimated
-#: by a pilot run, so that the last tangent vector has aligned with its Oseledets direction
-#: (its misalignment decays at the gap to the zero exponent next to it).  Measured
-#: (docs/large-n.md, "Transients"): with fewer the smallest exponent comes out biased, by
-#: −12 % at N = 5 (T = 50, transient 10) and −24 % at N = 8 (T = 100, transient 50).
-AUTO_EFOLDINGS = 15.0
-#: The pilot of the rule: (transient, averaging time), both in time units.
-PILOT_TIMES = (50.0, 200.0)
-#: Bounds of the rule's transient (time units); the exponent it divides is floored at 1 %
-#: of the largest, so that a pilot's near-zero estimate does not ask for an endless transient.
-AUTO_TRANSIENT_RANGE = (50.0, 5000.0)
-AUTO_RULE = (f"auto: {AUTO_EFOLDINGS:g} / (smallest positive exponent of a pilot of "
-             f"{PILOT_TIMES[1]:g} after {PILOT_TIMES[0]:g}), within {AUTO_TRANSIENT_RANGE}")
-
-
-def transient_rule(t_transient):
-    """"auto" for ``t_transient="auto"``, None for a duration; ValueError for another string."""
-    if isinstance(t_transient, str):
-        if t_transient != "auto":
-            raise ValueError(f"t_transient must be a duration or 'auto', got {t_transient!r}")
-        return "auto"
-    return None
 
 
 def auto_transient(system, theta0, u0, *, dt=0.01, n_exponents=None, inner="theta",
@@ -449,7 +434,8 @@ def lyapunov_result(system, cfg: LyapunovSettings, logs, speed, shares=None,
                   inner=cfg.inner, space=cfg.space, t_transient=cfg.transient * cfg.dt,
                   n_batches=cfg.n_batches, reorth_every=cfg.reorth * cfg.dt,
                   project_every=cfg.project * cfg.dt or None, record_every=cfg.record * cfg.dt,
-                  n_exponents=k, speed=speed, seed=cfg.seed)
+                  n_exponents=k, speed=speed, vectors_seed=cfg.seed,
+                  state_seed="given")
     if start is not None:
         params.update(theta0=np.asarray(start[:n], dtype=float).tolist(),
                       u0=np.asarray(start[n:], dtype=float).tolist())

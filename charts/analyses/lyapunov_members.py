@@ -20,8 +20,9 @@ from .arguments import rotor_system
 from .cluster import cluster_device, cluster_pool
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
                        member_states_of)
-from .lyapunov import (AUTO_RULE, auto_transient, averaging_logs, end_transient, lyapunov_flow,
-                       lyapunov_result, lyapunov_schedule, lyapunov_settings, transient_rule)
+from .lyapunov import (averaging_logs, end_transient, lyapunov_flow, lyapunov_result,
+                       lyapunov_schedule, lyapunov_settings)
+from .transients import resolve_transient, transient_rule
 
 __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states", "members_pay",
            "plan_memory", "result_bytes", "LANE_BLOCK", "MIN_LANES"]
@@ -67,17 +68,18 @@ def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     device = cluster_device(device, client)
     if lanes is not None and not isinstance(lanes, bool):
         raise ValueError(f"lanes must be None (where they pay), True or False, got {lanes!r}")
-    if transient_rule(kwargs.get("t_transient")) == "auto":   # one transient for all members:
-        # every other setting and the memory checked before the pilot runs
+    kwargs.setdefault("t_transient", "scaled")            # lyapunov_spectrum's default
+    rule = transient_rule(kwargs["t_transient"])
+    if rule is not None:                                   # one transient for all members:
+        # every other setting and the memory checked before a pilot runs
         plan_memory(system, lyapunov_settings(system, t_final, seed=seed,
                                               **{**kwargs, "t_transient": 0.0}),
                     n_trajectories, device)
         pilot = {k: kwargs[k] for k in ("dt", "n_exponents", "inner", "space") if k in kwargs}
-        tr = auto_transient(system, *system.random_state(seed=seed, speed=speed), seed=seed,
-                            **pilot)                          # the first member's pilot
+        tr, text = resolve_transient(rule, system, *system.random_state(seed=seed, speed=speed),
+                                     seed=seed, **pilot)      # the first member's state
         dt = kwargs.get("dt", 0.01)
-        kwargs = {**kwargs, "t_transient": round(float(tr) / dt) * dt,
-                  "transient_rule": AUTO_RULE}
+        kwargs = {**kwargs, "t_transient": round(float(tr) / dt) * dt, "transient_rule": text}
     rule = kwargs.pop("transient_rule", None)
     cfg = lyapunov_settings(system, t_final, seed=seed, **kwargs)
     if rule is not None:

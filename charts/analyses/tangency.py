@@ -197,7 +197,7 @@ def _state_at(system, theta0, u0, t, dt, project):
 def _resolved(system, theta, u, t0, window, dt, transient, sample, seed):
     clv = covariant_lyapunov_vectors(system, theta, u, window, dt=dt, t_transient=transient,
                                      sample_every=sample, seed=seed, keep_vectors=True)
-    vol = oriented_volume(clv.vectors, clv.params["m"], clv.states, system.weights)
+    vol = oriented_volume(clv.vectors, clv.params["n_unstable"], clv.states, system.weights)
     t = t0 + clv.t
     cr, mg = sign_changes(t, vol)
     return ResolvedWindow(dt, transient, t, vol, clv.phi, cr, mg), clv.states
@@ -248,5 +248,5 @@ def closest_passage(system, theta0, u0, t_scan, *, window=6.0, t_transient=40.0,
              "scan_difference": float(np.max(np.abs(scan.states[inside] - st_ref[at])))}
     kept = bool(all(np.unique(np.sign(r.volume)).size == 1 for r in (ref, short, fine)))
     params = dict(**system.describe(), t_scan=float(t_scan), window=window,
-                  t_transient=t_transient, dt=dt, seed=seed)
+                  t_transient=t_transient, dt=dt, vectors_seed=seed, state_seed="given")
     return ClosestPassage(t_min, phi_min, [ref, short, fine], diffs, kept, params)

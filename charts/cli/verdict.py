@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..runs.cli_parser import positive_count
+from ..runs.cli_parser import positive_count, transient_arg
 from ..runs.interrupts import EXIT_INTERRUPTED, interrupt_for
 from ..runs.io import atomic_text
 
@@ -67,8 +67,10 @@ def add_parser(sub) -> None:
     g.add_argument("--family", metavar="SWEEP",
                    help="the distinct systems of a bundled sweep (e.g. families-n4) instead "
                    "of --n")
-    g.add_argument("--t-transient", type=float, default=100.0, metavar="T",
-                   help="transient of both passes (default 100)")
+    g.add_argument("--t-transient", type=transient_arg, default=100.0, metavar="T",
+                   help="transient of both passes (default 100), or a rule of each system: "
+                   "'scaled' (5 N^2 time units within 50..5000) or 'auto' (from a pilot run "
+                   "of the first member)")
     g.add_argument("--workers", type=positive_count, default=None, metavar="W",
                    help="processes on the CPU (default: one per core)")
     g.add_argument("--out", type=Path, metavar="DIR",
@@ -143,6 +145,17 @@ def _plan_certificates(args, systems) -> None:
             torus_plan(system)
 
 
+def _transient_of(t_transient, system) -> float:
+    """``--t-transient`` for ``system``: a number as given; "scaled" and "auto" resolved as
+    ``lyapunov_spectrum`` resolves them, "auto" from the first member's state (seed 0, unit
+    speed), on the grid of the default step 0.01."""
+    if not isinstance(t_transient, str):
+        return t_transient
+    from ..analyses.transients import resolve_transient
+    tr, _ = resolve_transient(t_transient, system, *system.random_state(seed=0, speed=1.0))
+    return round(round(float(tr) / 0.01) * 0.01, 10)
+
+
 def _plan_statistics(args, systems, t_final) -> None:
     """Every system and setting of ``--statistics`` checked before the first system runs:
     ``--t-transient``, the members' settings (``angle_settings``) and, on the CPU, the
@@ -151,11 +164,13 @@ def _plan_statistics(args, systems, t_final) -> None:
     from ..analyses.forward_pass import angle_settings
     from ..analyses.hyperbolicity import check_cpu_store
     from ..solvers.device import resolve_device
-    nonnegative_time("--t-transient", args.t_transient)
+    rule = isinstance(args.t_transient, str)          # resolved per system, once checked
+    if not rule:
+        nonnegative_time("--t-transient", args.t_transient)
     cpu = getattr(args, "scheduler", None) or resolve_device(args.device) == "cpu"
     for label, system in systems:
         try:
-            cfg = angle_settings(system, t_final, t_transient=args.t_transient,
+            cfg = angle_settings(system, t_final, t_transient=0.0 if rule else args.t_transient,
                                  sample_every=0.1)
             if cpu:
                 check_cpu_store(cfg, t_final)
@@ -165,6 +180,7 @@ def _plan_statistics(args, systems, t_final) -> None:
 
 def _statistics(args) -> int:
     """``charts verdict --statistics``: `statistics_verdict` of each system in turn."""
+    from ..analyses.transients import scaled_transient
     from ..io.archive import load
     from ..geometry.system import RotorSystem
     from ..runs.verdict import (case_verdict, family_systems, format_statistics,
@@ -199,13 +215,14 @@ def _statistics(args) -> int:
               "workers. With --out DIR the members done are kept: Ctrl-C, then the same "
               "command, goes on from them", file=sys.stderr, flush=True)
     elif resolve_device(args.device) == "cpu":
-        integrated = args.members * (2 * t_final + 3 * args.t_transient)
+        tr = args.t_transient if not isinstance(args.t_transient, str) else max(
+            scaled_transient(s.n, 1.0) for _, s in systems)       # "auto": about as much
+        integrated = args.members * (2 * t_final + 3 * tr)
         print(f"charts: the angle test at scale runs on the CPU here: {args.members} members x "
               f"T = {t_final:g} per system, {integrated:.3g} time units to integrate (both "
               "passes; on an H100 10⁸ angles took about 5 s). With --out DIR the members done "
               "are kept: Ctrl-C, then the same command, goes on from them", file=sys.stderr,
               flush=True)
-    wanted = dict(members=args.members, t_final=t_final, t_transient=args.t_transient)
     done = {}
     if args.out is not None:
         args.out.mkdir(parents=True, exist_ok=True)
@@ -215,6 +232,8 @@ def _statistics(args) -> int:
     reports = []
     for label, system in systems:
         slug = _slug(system)
+        wanted = dict(members=args.members, t_final=t_final,
+                      t_transient=_transient_of(args.t_transient, system))
         path = None if args.out is None else args.out / f"{slug}.nc"
         if slug in done and all(done[slug][k] == v for k, v in wanted.items()):
             rep = dict(done[slug], **case_verdict(done[slug]))   # an earlier report: its verdict
@@ -222,7 +241,7 @@ def _statistics(args) -> int:
             rep = dict(tally_report(saved, label), file=str(path))
         else:
             rep = statistics_verdict(system, args.samples, members=args.members,
-                                     device=args.device, t_transient=args.t_transient,
+                                     device=args.device, t_transient=wanted["t_transient"],
                                      out=path, label=label, progress=_progress(label),
                                      workers=args.workers,
                                      checkpoint=None if args.out is None

@@ -31,6 +31,7 @@ import numpy as np
 from ..geometry.checks import path as file_path
 from .atomic import atomic_write, signals_deferred
 from .file_settings import FLATTENED, MEMBER, decode_attributes, encode
+from .renamed_settings import renamed
 from .file_checks import (COMPRESSION_BOUND, SCHEMAS, check_layout, check_netcdf4, layout,
                           read, refused)
 from .file_checks import one_line as short
@@ -102,13 +103,16 @@ ENSEMBLE_TITLES = {
 #: CF global attributes every file carries (not settings: `attributes` leaves them out).
 GLOBALS = ("Conventions", "title", "history", "source", "references", "institution", "comment")
 #: CF ``comment`` of every file: the units of the settings, which NetCDF attributes cannot
-#: carry themselves (every variable has its own ``units``), and what ``params_seed`` seeds.
+#: carry themselves (every variable has its own ``units``), and what each seed seeds.
 COMMENT = ("Units of the settings (params_*, options_*, member.params.*): times (t_final, "
            "t_transient, dt, t_span, every *_every) in time units of the flow; angles (theta0) "
            "in rad; velocities (u0) and speed in rad / time (the linkage's q0, v0: see "
-           "q_component_units).  params_seed seeds the random tangent vectors; in an ensemble, "
-           "member i has seed + i for its initial state and its tangent vectors.  Every "
-           "variable carries its own units.")
+           "q_component_units).  Seeds: vectors_seed seeds the random tangent vectors; "
+           "state_seed the initial state (RotorSystem.random_state), or 'given' where the "
+           "caller gave it; members_seed is an ensemble's first member's seed, member i "
+           "having members_seed + i for its state and its vectors (files written before "
+           "these names: params_seed, params_m, read as the new names).  n_unstable is the "
+           "dimension of the expanding subspace E_u.  Every variable carries its own units.")
 #: CF ``references`` of every file: the paper.
 REFERENCE = ("S. P. Kuznetsov, Chaos and hyperchaos of geodesic flows on curved manifolds "
              "corresponding to mechanically coupled rotators")
@@ -190,8 +194,13 @@ def _setting(key) -> bool:
 def attributes(ds) -> dict:
     """The dataset's settings as they were saved (the inverse of `encode`): the `FLATTENED`
     dicts gathered from their entries (or, in a file written before, read from their JSON
-    text); without the ``charts_*`` stamps, the CF globals and the members' settings."""
-    return {k: v for k, v in decode_attributes(ds.attrs).items() if _setting(k)}
+    text); without the ``charts_*`` stamps, the CF globals and the members' settings.  A
+    file written before settings were renamed has its ``params`` under the new names, with
+    a note (`charts.io.renamed_settings`)."""
+    out = {k: v for k, v in decode_attributes(ds.attrs).items() if _setting(k)}
+    if "params" in out:
+        out["params"] = renamed(out["params"], ds.attrs.get("charts_kind"))
+    return out
 
 
 def checksummed(ds) -> dict:

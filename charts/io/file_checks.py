@@ -16,7 +16,9 @@ __all__ = ["SCHEMAS", "COMPRESSION_BOUND", "check_layout", "check_netcdf4", "lay
 #: (data and coordinates) as name → their dimensions, numbers all (a name starting ``?`` is
 #: optional, checked where present); attributes as name → "integer", "number" or "text".  An
 #: ensemble's file holds its members' variables (`SCHEMAS` of ``member_kind``), each with or
-#: without a leading ``member`` dimension.  `check_layout` refuses a file that differs.
+#: without a leading ``member`` dimension.  `check_layout` refuses a file that differs.  A
+#: tally's ``seed``: its ``state_seed`` in files written before the rename
+#: (``charts.io.renamed_settings``).
 SCHEMAS = {
     "trajectory": ({"t": "t", "theta": "t rotor", "u": "t rotor", "switch_t": "switch",
                     "switch_from": "switch", "switch_to": "switch", "?transported": "t vector rotor",
@@ -37,7 +39,7 @@ SCHEMAS = {
                      "law_count": "variant member x0", "law_logsum": "variant member x0",
                      "ladder_count": "variant member size", "ladder_sum": "variant member size",
                      "ladder_sumsq": "variant member size", "episodes": "variant member",
-                     "seed": "member"}, {}),
+                     "?state_seed": "member", "?seed": "member"}, {}),
     "covariant": ({"t": "t", "phi": "t", "phi_vectors": "t", "growth": "t clv",
                    "gs_rates": "t clv", "states": "t component", "?vectors": "t clv component"},
                   {"variant": "text"}),

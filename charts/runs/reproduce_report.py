@@ -49,6 +49,7 @@ def _settings(cfg, tasks):
     from ..analyses.lyapunov import lyapunov_settings
     from ..analyses.spectra import waveform
     from ..geometry.system import RotorSystem
+    from .reproduce import CURVATURE_TRANSIENT
     seeds = {}
     for (kind, n, _), (_, args) in sorted(tasks.items(), key=lambda kv: str(kv[0])):
         got = args[1] if isinstance(args[1], (list, tuple)) else [args[1]]
@@ -66,7 +67,7 @@ def _settings(cfg, tasks):
                     seeds=seeds["angle"]),
         curvature=dict(members=1, t_final=cfg["curv_t"],
                        dt=_default(curvature_along_trajectory, "dt"),
-                       t_transient=_default(curvature_along_trajectory, "t_transient"),
+                       t_transient=CURVATURE_TRANSIENT,
                        sample_every=_default(curvature_along_trajectory, "sample_every"),
                        batches=CURVE_BATCHES, seeds=seeds["curv"]),
         waveform=dict(members=1, t_final=cfg["wave_t"], dt=_default(waveform, "dt"),

@@ -33,6 +33,7 @@ from .scene_checks import (Problems, source_names, multiple_of, section_values, 
 from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
                             linkage_defaults, system_kind_problems)
 from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError, api_default
+from .scene_transients import refuse_linkage_rules, scene_transients
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
            "scene_to_dict"]
@@ -51,6 +52,8 @@ class Scene:
     run: dict
     effects: dict = field(default_factory=dict)
     source: str = "<dict>"
+    #: the rule that gave the transients ("scaled", "auto": its text), None where written
+    transient_rule: str | None = None
 
     def wants(self, effect: str) -> bool:
         """Whether the scene asks for ``effect``, one of the known effects (`EFFECTS`;
@@ -144,6 +147,8 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         # atol: None = integrate's default, rtol·min(1, speed)
 
     _transients(linkage, run, "t_transient" in raw_run, effects)
+    if linkage:
+        refuse_linkage_rules(source, run, effects)
     if method == "rk4":
         _follow_dt(linkage, run, integ, effects, integ["dt"])
 
@@ -154,9 +159,11 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     elif grid is not None:
         multiple_of(source, "run", "sample_dt", run["sample_dt"], grid, "[integrator] dt")
     sdt = run["sample_dt"]
+    n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
+    # the transients a rule names, once t_final and the steps are known good ("auto" pilots)
+    rule = scene_transients(source, linkage, system, initial, integ, run, effects)
     if run["t_transient"] > 0:
         multiple_of(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
-    n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
     if run["checkpoint_every"] is None:
         per = max(1, n_samples // 20)
         run["checkpoint_every"] = per * sdt
@@ -173,7 +180,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                          f"[effects.<name>] table (effects: {', '.join(EFFECTS)})")
 
     return Scene(name=name, description=top["description"], system=system, initial=initial,
-                 integrator=integ, run=run, effects=effects, source=source)
+                 integrator=integ, run=run, effects=effects, source=source, transient_rule=rule)
 
 
 #: Defaults that must divide t_final (the API's ``divides``): per effect table, the keys.

@@ -69,6 +69,21 @@ def coerce(source, section, key, spec: Key, value):
             bad = "a finite number (an integer beyond a float's range is not)"
         else:
             value = float(value)
+    elif kind == "duration":                # a time, or the name of a transient rule
+        if isinstance(value, str):
+            from ..analyses.transients import TRANSIENT_RULES
+            if value in TRANSIENT_RULES:
+                return value
+            hint = difflib.get_close_matches(value, TRANSIENT_RULES, n=1, cutoff=0.5)
+            did = f" — did you mean {shown(hint[0])}?" if hint else ""
+            raise SceneError(f"{loc} = {shown(value)} is not allowed{did} (expected a number "
+                             f"of time units, or one of {', '.join(map(repr, TRANSIENT_RULES))})")
+        if not is_number(value):
+            bad = "a number, 'scaled' or 'auto'"
+        elif not _finite(value):
+            bad = "a finite number (an integer beyond a float's range is not)"
+        else:
+            value = float(value)
     elif kind == "str":
         if not isinstance(value, str):
             bad = "a string"

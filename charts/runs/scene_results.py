@@ -64,9 +64,19 @@ def progress_of(st: RunState, ends, transient, unit) -> dict:
 
 
 def result_header(st: RunState, status, ends, transient, unit) -> dict:
-    """The first entries of result.json: status, scene, source, versions and progress."""
-    return {"status": status, "scene": scene_to_dict(st.scene), "source": st.scene.source,
-            "versions": versions(), "progress": progress_of(st, ends, transient, unit)}
+    """The first entries of result.json: status, scene, source, versions, progress and the
+    provenance of the start: ``state_seed``, the seed the initial state was drawn from
+    (``RotorSystem.random_state``; the tangent vectors' seed too), or "given" where the scene
+    gives θ and u; ``transient_rule``, where a rule ("scaled", "auto") gave the transient
+    that ``scene.run.t_transient`` holds."""
+    sc = st.scene
+    out = {"status": status, "scene": scene_to_dict(sc), "source": sc.source,
+           "versions": versions(), "progress": progress_of(st, ends, transient, unit),
+           "state_seed": "given" if sc.initial.get("theta") is not None
+           else sc.initial.get("seed")}
+    if sc.transient_rule:
+        out["transient_rule"] = sc.transient_rule
+    return out
 
 
 def resume_command(st: RunState, outdir: Path) -> str:

@@ -68,7 +68,8 @@ class SceneError(ValueError):
 # ---------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Key:
-    kind: str                      # "int", "float", "str", "bool", "floats", "ints"
+    kind: str                      # "int", "float", "str", "bool", "floats", "ints",
+                                   # "duration" (a float or a transient rule's name)
     default: Any = None            # None: no default (optional, or required if required=True)
     doc: str = ""
     choices: tuple = ()
@@ -175,9 +176,12 @@ SCHEMA: dict[str, dict[str, Key]] = {
     "run": {
         "t_final": Key("float", None, "Simulated time after the transient.", check=_gt(0),
                        required=True),
-        "t_transient": Key("float", None, "Time integrated first and discarded (also settles "
-                           "the Lyapunov vectors). Default: the API's default of the call the "
-                           "main pass mirrors: lyapunov_spectrum's with lyapunov, else "
+        "t_transient": Key("duration", None, "Time integrated first and discarded (also "
+                           "settles the Lyapunov vectors), or a rule of the rotors: \"scaled\" "
+                           "(5 N^2 / speed within 50..5000) or \"auto\" (from a pilot run of "
+                           "the scene's state), resolved when the scene is read. Default: the "
+                           "API's default of the call the main pass mirrors: "
+                           "lyapunov_spectrum's (\"scaled\") with lyapunov, else "
                            "curvature_along_trajectory's with curvature (linkage: "
                            "linkage_run's), else waveform's; with only angles or clv, "
                            "that pass's. Written, it is every pass's transient.", check=_ge(0)),
@@ -234,9 +238,10 @@ EFFECTS: dict[str, dict[str, Key]] = {
                          check=_ge(1)),
         "sample_every": Key("float", FromAPI("angles", "sample_every"), "Simulated time "
                             "between angle samples; a multiple of dt.", check=_gt(0)),
-        "t_transient": Key("float", None, "Transient of the angles pass (default: [run] "
+        "t_transient": Key("duration", None, "Transient of the angles pass (default: [run] "
                            "t_transient where written, else hyperbolicity_angles's; "
-                           "linkage: linkage_angles's); a multiple of dt.", check=_ge(0)),
+                           "linkage: linkage_angles's); a multiple of dt, or \"scaled\" or "
+                           "\"auto\" as [run] t_transient.", check=_ge(0)),
     },
     "clv": {
         "variant": Key("str", "both", "Covariant Lyapunov vectors (Ginelli's method) in "
@@ -252,9 +257,10 @@ EFFECTS: dict[str, dict[str, Key]] = {
                        "domination test (default [1.0, 10.0]); multiples of sample_every.",
                        check=lambda v: None if v and all(x > 0 for x in v)
                        else "a non-empty list of numbers, each > 0"),
-        "t_transient": Key("float", None, "Transient of the CLV pass (default: [run] "
+        "t_transient": Key("duration", None, "Transient of the CLV pass (default: [run] "
                            "t_transient where written, else covariant_lyapunov_vectors's); "
-                           "a multiple of dt.", check=_ge(0)),
+                           "a multiple of dt, or \"scaled\" or \"auto\" as [run] "
+                           "t_transient.", check=_ge(0)),
     },
     "switches": {},
     "drift": {
