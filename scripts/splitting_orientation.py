@@ -29,7 +29,7 @@ def main():
         s = RotorSystem(**kw)
         th, u = s.random_state(seed=seed)
         c = covariant_lyapunov_vectors(s, th, u, a.t_final, keep_vectors=True)
-        V = oriented_volume(c.vectors, c.params["m"], c.states, s.weights)
+        V = oriented_volume(c.vectors, c.params["n_unstable"], c.states, s.weights)
         print(f"| {name} | {seed} | {V.size} | {' '.join(f'{x:+.0f}' for x in np.unique(np.sign(V)))} "
               f"| {np.abs(V).min():.1e} | {np.nanmin(c.phi):.1e} | "
               f"{np.nanmax(np.abs(V) / np.sin(c.phi)):.3f} |", flush=True)
