@@ -153,7 +153,6 @@ def test_the_cpu_tally_runs_all_its_chunks_in_one_pool(monkeypatch):
     """Three chunks on two workers: one process pool for the whole tally (none started per
     chunk), and the tally of the run in one process."""
     assert np.diff(np.linspace(0, 6, 6 // 2 + 1).round()).tolist() == [2, 2, 2]
-    import concurrent.futures
     import charts.analyses.ensemble as ens_mod
     import charts.analyses.hyperbolicity as hyp
     S = RotorSystem(3)
@@ -161,12 +160,13 @@ def test_the_cpu_tally_runs_all_its_chunks_in_one_pool(monkeypatch):
     ref = hyperbolicity_tally(S, 6, 2.0, workers=1, **kw)
     started = []
 
-    class Counted(concurrent.futures.ProcessPoolExecutor):
-        def __init__(self, *a, **k):
-            started.append(k.get("max_workers"))
-            super().__init__(*a, **k)
-    monkeypatch.setattr(hyp, "ProcessPoolExecutor", Counted)
-    monkeypatch.setattr(ens_mod, "ProcessPoolExecutor", Counted)
+    real = hyp.worker_pool
+
+    def counted(max_workers, *a, **k):
+        started.append(max_workers)
+        return real(max_workers, *a, **k)
+    monkeypatch.setattr(hyp, "worker_pool", counted)
+    monkeypatch.setattr(ens_mod, "worker_pool", counted)
     got = hyperbolicity_tally(S, 6, 2.0, workers=2, **kw)
     assert started == [2]
     _same(got, ref)

@@ -132,12 +132,12 @@ def test_an_ensemble_never_starts_more_processes_than_jobs(monkeypatch):
     """workers=10**6 for two members starts two processes (the pool is asked for two)."""
     import charts.analyses.ensemble as ensemble
     asked = []
-    real = ensemble.ProcessPoolExecutor
+    real = ensemble.worker_pool
 
     def pool(max_workers=None):
         asked.append(max_workers)
-        return real(max_workers=max_workers)
+        return real(max_workers)
 
-    monkeypatch.setattr(ensemble, "ProcessPoolExecutor", pool)
+    monkeypatch.setattr(ensemble, "worker_pool", pool)
     res = charts.lyapunov_ensemble(SYSTEM, 2, 2.0, workers=10**6, t_transient=0.0, n_batches=2)
     assert asked == [2] and len(res.members) == 2

@@ -443,7 +443,7 @@ def test_a_linkage_ensemble_compiles_in_this_process_before_its_workers_start(mo
     settings = dict(same, t_transient=1.0, n_batches=2, reorth_every=0.2, sample_every=1.0)
     alone = linkage.linkage_ensemble(L, 2, 2.0, workers=1, **settings)
     monkeypatch.setattr(linkage, "linkage_run", recorded)
-    monkeypatch.setattr(ensemble, "ProcessPoolExecutor", Pool)
+    monkeypatch.setattr(ensemble, "worker_pool", Pool)
     e = linkage.linkage_ensemble(L, 2, 2.0, workers=2, **settings)
     assert [c[0] for c in calls] == ["run", "pool", "run", "run"]
     _, t_prime, prime = calls[0]
