@@ -144,6 +144,12 @@ class MechanismTangentFlow:
 
     def __init__(self, mech, q0, v0, k, *, dt, reorth, project, inner="theta", seed=0):
         n = mech.n
+        if inner not in INNER_PRODUCTS:
+            raise MechanismError(f"inner must be one of {INNER_PRODUCTS}, got {inner!r}")
+        kmax = (2 if inner == "full" else 1) * mech.dim
+        if not 0 <= int(k) <= kmax:
+            raise MechanismError(f"k={k} tangent vectors: a {mech.dim}-dimensional manifold has "
+                                 f"room for 0..{kmax} with inner={inner!r}")
         self.mech, self.n, self.k = mech, n, int(k)
         self.dt, self.reorth, self.project = float(dt), int(reorth), int(project)
         self.full = inner == "full"
@@ -170,9 +176,6 @@ class MechanismTangentFlow:
         self._driver = _driver_of(mech)
         if self.k:
             self._orthonormalize(np.zeros(self.k))
-            if self.k > (2 if self.full else 1) * mech.dim:
-                raise MechanismError(f"k={self.k} tangent vectors exceed the {mech.dim}-dimensional "
-                                     f"manifold's {(2 if self.full else 1) * mech.dim} for inner={inner!r}")
 
     @property
     def y(self):
