@@ -5,9 +5,10 @@ and (17), projected onto the invariants every ``project_every`` steps and re-ort
 (eq 18) every ``reorth_every`` steps.  The lanes are a structure of arrays, the lane
 innermost (``charts.solvers.lane_layout``: element i of the stacked state Z = [y; X] of lane
 l at ``i·Lp + l``, Lp = L rounded up to a multiple of ``LANE_WIDTH`` = 8), and every loop
-over lanes runs in blocks of 8 lanes, one AVX-512 register: the RK4 stages (the equations'
-lane loops ``*_lanes`` of ``charts.flows.ambient``, the stage point and sum of
-``charts.solvers.rk``, `shift_sincos_lanes`), the step policy (``fixed_step_status``), the
+over lanes runs in blocks of 8 lanes, one AVX-512 register: the RK4 step (the one body
+``charts.solvers.rk.rk4_stages`` with the lanes' hooks: the equations' lane loops ``*_lanes``
+of ``charts.flows.ambient``, the stage point and sum of ``charts.solvers.rk``,
+`shift_sincos_lanes`), the step policy (``fixed_step_status``), the
 projection onto T_r (`project_tangent_lanes`) and Gram–Schmidt (`orthonormalize_lanes`).  Lane by lane, on a copy in the one-trajectory layout, remain what
 calls libm (the projection of the state, `project_state` and `sincos`; the logs of eq 18's
 norms) and a step the singular-point policy cuts into sub-steps (`substeps`).  The time
@@ -39,7 +40,7 @@ from ..geometry.energy_shares import energies_lanes, record_share_of
 from ..geometry.primitives import LANE_WIDTH, sincos
 from ..geometry.projection import project_state, project_tangent_lanes
 from .lane_layout import gather, lane_arrays, lanes_in, lanes_out, scatter
-from .rk import RK4_WEIGHTS, rk4_node, rk4_sum, stage_point
+from .rk import RK4_WEIGHTS, rk4_stages, rk4_sum, stage_point
 from .status import CAP_FRACTION, NONFINITE, RUNNING, SINGULAR, fixed_step_status, status_error
 from .driver import Phases, borrowed, keep_alive, no_record, phased_loop
 from .tangent import orthonormalize_lanes, shift_sincos_lanes, substeps
@@ -50,55 +51,93 @@ __all__ = ["lanes_kernel", "LaneFlows", "MIN_LANES", "lanes_compiled", "lanes_pa
 _CAP = CAP_FRACTION["rk4"]
 
 
+#: The arrays and sizes of the lanes' RK4 step, its hooks' ``work`` (``charts.solvers.rk.
+#: rk4_stages``): the flat lanes Zf (length M = R·d·L, element i of lane l at i·L + l), the
+#: stage point Zt, the stages K, the start angles th, the angle shift dl, the stage point's
+#: sin/cos s, c, eq (17)'s factors f, g, p, q, the weighted sin/cos s0, c0 (N·L), Λ, 1/B and
+#: their work dlam (L), M⁻¹, the weights per lane wl (element j·L + l = aⱼ) and the sizes N,
+#: R, d, M, L (unsigned, as in ``charts.solvers.tangent.stacked_rk4_step``).
+LaneStep = namedtuple("LaneStep", ["Zf", "Zt", "K", "th", "dl", "s", "c", "f", "g", "p", "q",
+                                   "s0", "c0", "lam", "iB", "dlam", "minv", "wl", "n", "R", "d",
+                                   "M", "L"])
+
+
 @njit(cache=True, inline="always")
-def _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, minv, wl, h, n,
-                R, d, M, L):
-    """One RK4 step of size h of eqs (8) + (17) for the L lanes of Zf (flat, length
-    M = R·d·L, element i of lane l at i·L + l); s0, c0, shape (N·L,), the weighted sin/cos
-    of the angles, updated; wl = the weights, element j·L + l = aⱼ.  The lane form of
-    `charts.solvers.tangent.stacked_rk4_step` with eq (17)'s hook: the same operations per lane, in the same order,
-    written out as there (the stage points as shared inline functions, called from the two
-    branches of the stage loop, cost both kernels ~40 %, measured).  Sizes unsigned
-    (``np.uint64``) as there; every loop in blocks of `LANE_WIDTH` (L a multiple)."""
+def _lanes_start(w, _eqs):
+    """`rk4_stages`' stage 0 of the lanes' step: the start angles into th, eqs (8) + (17) at
+    Zf, s0, c0 themselves (no copies) into K[0:M], before the stage loop (stage points as
+    inline functions called from two branches of the loop cost the kernel ~40 %, measured).
+    Sizes unsigned (R − 1 with a signed 1 would make the row index signed)."""
+    Zf, s0, c0, n, L = w.Zf, w.s0, w.c0, w.n, w.L
     W = LANE_WIDTH
     nl = n * L
     z0 = nl - nl
+    th = w.th
     for i0 in range(z0, nl, W):
         for t in range(W):
             th[i0 + t] = Zf[i0 + t]
-    dL = d * L
-    one = np.uint64(1)  # (R − 1 with a signed 1 would make the row index signed)
+    dL = w.d * L
+    multiplier_lanes(Zf, z0, n, L, w.minv, s0, c0, w.lam, w.iB)
+    state_rate_lanes(Zf, z0, n, L, w.minv, s0, w.lam, w.K, z0)
+    tangent_factors_lanes(Zf, z0, n, L, w.minv, s0, c0, w.lam, w.f, w.g, w.p, w.q)
+    tangent_rate_lanes(Zf, dL, w.R - np.uint64(1), n, L, w.f, w.g, w.p, w.q, w.iB, w.dlam, w.K,
+                       dL)
+    return 0.0, 1
+
+
+@njit(cache=True, inline="always")
+def _lanes_point(w, st, a):
+    """`rk4_stages`' stage point of the lanes' step: `rk4_point` in blocks of `LANE_WIDTH`,
+    the sin/cos shifted from s0, c0 (`shift_sincos_lanes`)."""
+    Zf, Zt, K, dl, M = w.Zf, w.Zt, w.K, w.dl, w.M
+    W = LANE_WIDTH
+    nl = w.n * w.L
+    z0 = nl - nl
+    op = np.uint64(st - 1) * M          # the previous stage
+    for i0 in range(z0, M, W):
+        for t in range(W):
+            Zt[i0 + t] = stage_point(Zf[i0 + t], a, K[op + i0 + t])
+    for i0 in range(z0, nl, W):
+        for t in range(W):
+            dl[i0 + t] = a * K[op + i0 + t]
+    shift_sincos_lanes(w.s0, w.c0, dl, Zt, nl, w.wl, w.s, w.c)
+
+
+@njit(cache=True, inline="always")
+def _lanes_rate(w, _eqs, st, hmin):
+    """`rk4_stages`' stage rates of the lanes' step: eqs (8) + (17) at Zt, s, c into stage
+    st of K."""
+    Zt, s, c, n, L = w.Zt, w.s, w.c, w.n, w.L
+    z0 = n - n
+    o = np.uint64(st) * w.M
+    dL = w.d * L
+    multiplier_lanes(Zt, z0, n, L, w.minv, s, c, w.lam, w.iB)
+    state_rate_lanes(Zt, z0, n, L, w.minv, s, w.lam, w.K, o)
+    tangent_factors_lanes(Zt, z0, n, L, w.minv, s, c, w.lam, w.f, w.g, w.p, w.q)
+    tangent_rate_lanes(Zt, dL, w.R - np.uint64(1), n, L, w.f, w.g, w.p, w.q, w.iB, w.dlam, w.K,
+                       o + dL)
+    return hmin
+
+
+@njit(cache=True, inline="always")
+def _lanes_combine(w, h):
+    """`rk4_stages`' end of the lanes' step: `rk4_combine` in blocks of `LANE_WIDTH`, then
+    s0, c0 shifted from the start angles th to the new ones."""
+    Zf, K, dl, th, M = w.Zf, w.K, w.dl, w.th, w.M
+    W = LANE_WIDTH
+    nl = w.n * w.L
+    z0 = nl - nl
     h6 = RK4_WEIGHTS[0] * h
-    # stage 0 at Zf, s0, c0 themselves (no copies)
-    multiplier_lanes(Zf, z0, n, L, minv, s0, c0, lam, iB)
-    state_rate_lanes(Zf, z0, n, L, minv, s0, lam, K, z0)
-    tangent_factors_lanes(Zf, z0, n, L, minv, s0, c0, lam, f, g, p, q)
-    tangent_rate_lanes(Zf, dL, R - one, n, L, f, g, p, q, iB, dlam, K, dL)
-    for st in range(1, 4):
-        o = np.uint64(st) * M
-        a = rk4_node(st) * h
-        op = o - M
-        for i0 in range(z0, M, W):  # `rk4_point`
-            for t in range(W):
-                Zt[i0 + t] = stage_point(Zf[i0 + t], a, K[op + i0 + t])
-        for i0 in range(z0, nl, W):
-            for t in range(W):
-                dl[i0 + t] = a * K[op + i0 + t]
-        shift_sincos_lanes(s0, c0, dl, Zt, nl, wl, s, c)
-        multiplier_lanes(Zt, z0, n, L, minv, s, c, lam, iB)
-        state_rate_lanes(Zt, z0, n, L, minv, s, lam, K, o)
-        tangent_factors_lanes(Zt, z0, n, L, minv, s, c, lam, f, g, p, q)
-        tangent_rate_lanes(Zt, dL, R - one, n, L, f, g, p, q, iB, dlam, K, o + dL)
     M2 = M + M
     M3 = M2 + M
-    for i0 in range(z0, M, W):  # `rk4_combine`
+    for i0 in range(z0, M, W):
         for t in range(W):
             i = i0 + t
             Zf[i] = rk4_sum(Zf[i], h6, K[i], K[M + i], K[M2 + i], K[M3 + i])
     for i0 in range(z0, nl, W):
         for t in range(W):
             dl[i0 + t] = Zf[i0 + t] - th[i0 + t]
-    shift_sincos_lanes(s0, c0, dl, Zf, nl, wl, s0, c0)
+    shift_sincos_lanes(w.s0, w.c0, dl, Zf, nl, w.wl, w.s0, w.c0)
 
 
 def lanes_kernel(Z, sc, counter, status, stopped, frozen, minv, m, wts, level, speed, dt,
@@ -154,7 +193,8 @@ def _lanes_policy_step(fl, rate):
     """One step dt of every lane: the policy across the lanes (padding too); a lane at a
     singular point or with a non-finite state stops (`_stop`), one nearer a singular point
     than the step allows takes its step alone in sub-steps (`substeps`, in the
-    one-trajectory layout) after the lanes' step (`_lanes_step`) has moved the others.
+    one-trajectory layout) after the lanes' step (``rk4_stages`` with the lanes' hooks,
+    `LaneStep`) has moved the others.
     ``rate`` is unused (the lanes' step has eq (17) written in)."""
     n = len(fl.n_tag)
     k = len(fl.k_tag)
@@ -193,8 +233,9 @@ def _lanes_policy_step(fl, rate):
             subcap[nsub] = hc
             gather(Zf, s0, c0, Lp, l, subZ[nsub], subS[nsub, 0], subS[nsub, 1])
             nsub += 1
-    _lanes_step(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, fl.minv, wl, dt,
-                nu, Ru, du, Mu, Lu)
+    rk4_stages(LaneStep(Zf, Zt, K, th, dl, s, c, f, g, p, q, s0, c0, lam, iB, dlam, fl.minv, wl,
+                        nu, Ru, du, Mu, Lu), 0, dt, _lanes_start, _lanes_point, _lanes_rate,
+               _lanes_combine)    # the lanes' step: eqs (8) + (17) in the one RK4 body
     for t in range(nsub):
         l = sub[t]
         zz = subZ[t]
