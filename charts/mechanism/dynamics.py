@@ -200,6 +200,10 @@ class AmbientDynamics:
         rhs = np.concatenate([M @ dv, -np.einsum("cij,i,j->c", self._eval("F2", q), v, dq)])
         return dq, np.linalg.solve(K, rhs)[:self.n]
 
+    def wrap_angles(self, q):
+        """q with its periodic coordinates taken into (−π, π] (the others unchanged)."""
+        return np.where(self._periodic_mask, np.angle(np.exp(1j * np.asarray(q))), q)
+
     def tangent_basis(self, q):
         """An orthonormal (Euclidean) basis of ker J(q), shape (n, d)."""
         J = self.check_rank(q)
@@ -229,7 +233,7 @@ class AmbientDynamics:
                 v = self.project_velocity(q, rng.normal(size=self.n))
                 e = self.inner(q, v, v)
                 if e > 1e-12:
-                    q = np.where(self._periodic_mask, np.angle(np.exp(1j * q)), q)
+                    q = self.wrap_angles(q)
                     return q, v * (speed / np.sqrt(e))
             except (MechanismError, np.linalg.LinAlgError):
                 continue

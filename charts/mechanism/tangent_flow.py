@@ -197,9 +197,10 @@ class MechanismTangentFlow:
         self.Z[1:] = self._A[:, m:]
 
     def project_now(self):
-        """The state onto F = 0 and ker J, the vectors onto the tangent space of TC."""
+        """The state onto F = 0 and ker J (its angles taken into (−π, π], so that they keep
+        their precision over long runs), the vectors onto the tangent space of TC."""
         n, mech = self.n, self.mech
-        q = mech.project_point(self.Z[0, :n])
+        q = mech.wrap_angles(mech.project_point(self.Z[0, :n]))   # (the jets are periodic)
         v = mech.project_velocity(q, self.Z[0, n:])
         self.Z[0] = np.concatenate([q, v])
         for r in range(self.k):
