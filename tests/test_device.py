@@ -117,10 +117,10 @@ def test_device_members_equal_the_ensemble_members():
     ens = lyapunov_ensemble(SYSTEM, 4, 8.0, seed=7, workers=1, speed=1.3, lanes=True, **kw)
     cfg = lyapunov_settings(SYSTEM, 8.0, seed=7, **kw)
     got = lyapunov_device((SYSTEM, cfg, [7, 8, 9, 10], 1.3), backend="cpu", workers=2)
-    for m, r in zip(ens.members, got):
+    for i, (m, r) in enumerate(zip(ens.members, got)):
         for a in ("exponents", "stderr", "batches", "history", "history_t"):
             assert np.array_equal(getattr(m, a), getattr(r, a)), a
-        assert m.params == r.params
+        assert m.params == {**r.params, "state_seed": 7 + i}     # the ensemble drew the state
 
 
 @pytest.mark.skipif(cuda_available(), reason="this machine has a GPU")
