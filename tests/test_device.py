@@ -163,12 +163,19 @@ def test_the_clv_rows_run_on_the_twin():
 
 
 def test_ensembles_too_large_for_memory_are_refused_before_they_start():
-    """10¹² members: refused at once with the bytes and the remedy, on both routes."""
-    from charts.analyses.hyperbolicity import hyperbolicity_ensemble
-    with pytest.raises(ValueError, match=r"results of 1000000000000 members .* GiB.*fewer members"):
-        lyapunov_ensemble(RotorSystem(4), 10**12, 100.0)
-    with pytest.raises(ValueError, match=r"angles of 1000000000000 members .* GiB"):
-        hyperbolicity_ensemble(RotorSystem(4), 10**12, 100.0)
+    """10⁹ members (the most an ensemble takes): refused at once with the bytes and the
+    remedy, on every route that keeps per-member results; more members are refused by count."""
+    from charts.analyses.hyperbolicity import hyperbolicity_ensemble, hyperbolicity_tally
+    S = RotorSystem(4)
+    with pytest.raises(ValueError, match=r"results of 1000000000 members .* GiB.*fewer members"):
+        lyapunov_ensemble(S, 10**9, 100.0)
+    with pytest.raises(ValueError, match=r"angles of 1000000000 members .* GiB"):
+        hyperbolicity_ensemble(S, 10**9, 100.0)
+    with pytest.raises(ValueError, match=r"sums of a tally of 1000000000 members need \d+\.\d GiB"
+                                         r".*fewer members"):
+        hyperbolicity_tally(S, 10**9, 100.0)
+    with pytest.raises(ValueError, match=r"n_trajectories must be an integer in 2\.\.1000000000"):
+        lyapunov_ensemble(S, 10**12, 100.0)
 
 
 def test_the_states_compile_once_before_the_workers(monkeypatch):

@@ -405,7 +405,7 @@ RESULTS = {"IntegrationResult", "EnsembleResult", "LyapunovResult", "CurvatureRe
 INTERNAL = {
     "angle_blocks": {"block_plan", "block_bytes", "angle_states", "angles_on_device",
                      "kernel_functions"},
-    "angle_tally": {"carries"},
+    "angle_tally": {"carries", "member_bytes"},
     "arguments": {"flag", "rotor_system", "linkage_system", "seed_of", "inner_steps", "positive_time", "nonnegative_time", "steps_of",
                   "positive_int", "progress_reporter", "project_steps", "samples_of",
                   "start_state", "unstable_dimension"},

@@ -32,7 +32,7 @@ from .singular_values import sin_to_angle
 from .statistics import law_from_batches, standard_error
 
 __all__ = ["AngleTally", "VARIANTS", "EDGES", "LAW_X0", "LADDER", "JACKKNIFE_GROUPS", "SMALL_ANGLE",
-           "carries"]
+           "carries", "member_bytes"]
 
 #: the two angles of the test, in the order of a tally's first axis.
 VARIANTS = ("full", "restricted")
@@ -64,6 +64,13 @@ def _sums(V, L):
                 ladder_count=np.zeros((V, L, LADDER), np.int64),
                 ladder_sum=np.zeros((V, L, LADDER)), ladder_sumsq=np.zeros((V, L, LADDER)),
                 episodes=np.zeros((V, L), np.int64))
+
+
+def member_bytes(V=len(VARIANTS)) -> int:
+    """Bytes of one member of a tally of ``V`` variants: its sums, what it carries between
+    blocks and its seed (the plan of ``hyperbolicity_tally`` before any allocation)."""
+    arrays = list(_sums(V, 1).values()) + list(carries(V, 1).values())
+    return sum(a.nbytes for a in arrays) + 8
 
 
 def carries(V, L):

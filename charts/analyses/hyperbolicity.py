@@ -52,7 +52,7 @@ from ..solvers.tangent import check_memory
 from .worker_pool import worker_pool
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
-from .angle_tally import SMALL_ANGLE, SUMS, AngleTally
+from .angle_tally import SMALL_ANGLE, SUMS, AngleTally, member_bytes
 from .arguments import positive_int, positive_time, progress_reporter, start_state, Documented
 from .cluster import cluster_device, cluster_pool
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble,
@@ -383,6 +383,8 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
         budget = positive_int("budget", budget)
     if checkpoint is not None:
         checkpoint = file_path("checkpoint", checkpoint)
+    check_memory(n_trajectories * member_bytes(), f"the sums of a tally of {n_trajectories} members",
+                 "run fewer members (several tallies combine with AngleTally.merged)")
     cfg = angle_settings(system, t_final, seed=seed, **kwargs)
     params = dict(angle_params(system, cfg, float(speed)), device=device, members_seed=seed)
     for own in ("vectors_seed", "state_seed"):      # each member's: the tally's ``seeds``

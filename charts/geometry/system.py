@@ -206,8 +206,9 @@ class RotorSystem:
 
     def inner(self, theta, a, b):
         """Metric inner product of ambient tangent vectors at theta: Σ mᵢ aᵢ bᵢ (the
-        metric is constant; theta is checked, finite of shape (N,))."""
-        finite_array("theta", theta, shape=(self.n,))
+        metric is constant: theta may be None, else it is checked, finite of shape (N,))."""
+        if theta is not None:
+            finite_array("theta", theta, shape=(self.n,))
         a = finite_array("a", a, shape=(self.n,))
         b = finite_array("b", b, shape=(self.n,))
         return float(np.sum(self.masses * a * b))
