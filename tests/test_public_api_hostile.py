@@ -414,7 +414,7 @@ INTERNAL = {
     "clv_ensemble": {"clv_ensemble_settings", "clvs_on_device", "clv_block_plan",
                      "clv_block_bytes", "clv_states", "kernel_function"},
     "covariant": {"clv_dimension", "clv_settings", "clv_flow", "ginelli_start", "clv_samples",
-                  "covariant_result", "forward_members"},
+                  "covariant_result", "forward_members", "result_bytes"},
     "curvature": {"exact_curvature_matrix", "exact_curvatures"},
     "curvature_certificate": {"sign_polynomials"},
     "ensemble": {"run_ensemble", "ensemble_arguments", "map_jobs", "stream_jobs",

@@ -30,10 +30,10 @@ import numpy as np
 from ..solvers.device import THREADS_PER_BLOCK, DeviceArrays, cuda_module, flow_states, member_stops
 from ..solvers.status import RUNNING
 from ..solvers.tangent import check_memory
-from .arguments import progress_reporter
+from .arguments import flag, progress_reporter
 from .covariant import (CLVSettings, backward_coefficients, clv_flow, clv_forward_member,
                         clv_samples, clv_settings, covariant_lyapunov_vectors, covariant_result,
-                        ginelli_start)
+                        ginelli_start, result_bytes)
 from .covariant import forward_members as _forward_cpu  # (the CPU twin of the CUDA kernel)
 from .cluster import cluster_device
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, member_states_of,
@@ -76,7 +76,11 @@ def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted",
             rep.close()
         return ensemble_result(members, system, seed, speed, t_final,
                                {**kwargs, "variant": variant, "device": "cuda"})
-    tau = clv_ensemble_settings(system, t_final, variant, seed, kwargs).tau
+    cfg = clv_ensemble_settings(system, t_final, variant, seed, kwargs)
+    check_memory(n_trajectories * result_bytes(cfg, system.n, flag("keep_vectors", kwargs.get("keep_vectors", False))),
+                 f"the results of {n_trajectories} members ({cfg.S} samples each)",
+                 "run fewer members, shorten t_final or raise sample_every")
+    tau = cfg.tau
     short = (2 * tau, {"t_transient": 0.0})         # the priming call: two samples
     return run_ensemble(covariant_lyapunov_vectors, system, n_trajectories, t_final,
                         speed=speed, seed=seed, workers=workers, progress=progress,

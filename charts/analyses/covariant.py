@@ -63,7 +63,7 @@ from .arguments import flag, rotor_system
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
            "MAX_MEMORY", "CLVSettings", "clv_settings", "clv_flow", "ginelli_start",
            "clv_samples", "covariant_result", "factor_sample", "backward_coefficients",
-           "clv_forward_member", "forward_members"]
+           "clv_forward_member", "forward_members", "result_bytes"]
 
 #: default limit (bytes) of the stored factors kept in memory; beyond it they go to disk.
 MAX_MEMORY = 256 << 20
@@ -235,6 +235,14 @@ def _angle(A, B):
     return np.arcsin(np.clip(sv, 0.0, 1.0))
 
 
+def result_bytes(cfg, n, keep_vectors=False) -> int:
+    """Bytes of one `CovariantResult` of the settings ``cfg`` for N = n: its growth rates
+    over every sample and its angles, rates and states over the window (and the CLVs
+    themselves with ``keep_vectors``)."""
+    results = 8 * (cfg.total * cfg.D + cfg.S * (2 + 2 * cfg.D + 2 * n))
+    return results + (8 * cfg.S * cfg.D * 2 * n if keep_vectors else 0)
+
+
 def plan_storage(cfg, n, variant, keep_vectors, scratch) -> bool:
     """Whether the stored factors go to disk; ValueError with the numbers, before anything is
     allocated, when the results (and the factors kept in memory, or the CLVs with
@@ -242,9 +250,7 @@ def plan_storage(cfg, n, variant, keep_vectors, scratch) -> bool:
     the factors on disk exceed 90 % of the free space of the scratch folder."""
     factors = cfg.total * sample_bytes(n, variant)
     on_disk = factors > cfg.max_memory
-    results = 8 * (cfg.total * cfg.D + cfg.S * (2 + 2 * cfg.D + 2 * n))
-    vectors = 8 * cfg.S * cfg.D * 2 * n if keep_vectors else 0
-    check_memory(results + vectors + (0 if on_disk else factors),
+    check_memory(result_bytes(cfg, n, keep_vectors) + (0 if on_disk else factors),
                  f"covariant_lyapunov_vectors' {cfg.S} samples" + (" with their CLVs"
                                                                      if keep_vectors else ""),
                  "shorten t_final, raise sample_every" + (" or drop keep_vectors"

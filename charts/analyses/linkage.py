@@ -26,12 +26,13 @@ from ..io.file_settings import MEMBER_DIMS
 from ..io.result_words import ANGULAR_VELOCITY, RATE, exponent_words
 from ..jit.compilation import announces_compilation
 from ..flows.linkage import NY, acceleration
-from ..geometry.checks import finite_array
+from ..geometry.checks import finite_array, integer
 from ..geometry.linkage import NQ
 from ..solvers.linkage import LinkageFlow
 from ..solvers.status import check_step
-from .arguments import (Documented, flag, linkage_system, positive_int, positive_time,
-                        progress_reporter, inner_steps, project_steps, steps_of)
+from ..solvers.tangent import check_memory
+from .arguments import (MAX_MEMBERS, Documented, flag, linkage_system, positive_int,
+                        positive_time, progress_reporter, inner_steps, project_steps, steps_of)
 from .ensemble import EnsembleResult, run_ensemble
 from .lyapunov import exponents_from_marks
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
@@ -303,10 +304,28 @@ def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     scheduler's address, or "local": a LocalCluster of ``workers`` processes;
     ``charts.analyses.cluster``, docs/cluster.md)."""
     linkage_system(system)
+    n_trajectories = integer("n_trajectories", n_trajectories, 2, MAX_MEMBERS)
+    check_memory(n_trajectories * _member_bytes(t_final, kwargs),
+                 f"the results of {n_trajectories} members",
+                 "run fewer members, or sample less often (sample_every)")
     return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
                         workers=workers, progress=progress, client=client,
                         desc=f"linkage eps={system.eps:g} ensemble", prime=_prime(kwargs),
                         **kwargs)
+
+
+def _member_bytes(t_final, kwargs) -> int:
+    """Bytes of one member's `LinkageResult` (its samples of curvature and state, its
+    exponents and batches) with the settings ``kwargs`` (`linkage_run`'s defaults for the rest)."""
+    default = inspect.signature(linkage_run).parameters
+
+    def get(key):
+        return kwargs.get(key, default[key].default)
+    dt = positive_time("dt", get("dt"))
+    total, _, sample = run_steps(dt, t_final, get("reorth_every"), get("sample_every"))
+    k = positive_int("n_exponents", get("n_exponents"))
+    n_batches = positive_int("n_batches", get("n_batches"), 2)
+    return 8 * ((total // max(sample, 1) + 1) * (k + NY + 1) + k * (n_batches + 3))
 
 
 def _prime(kwargs):
