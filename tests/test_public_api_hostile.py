@@ -427,7 +427,7 @@ INTERNAL = {
     "hyperbolicity": {"angle_result", "angle_members", "angle_params", "tally_on_device"},
     "linkage": {"run_steps", "gauss_curvature", "frame_curvatures", "cone_distance"},
     "linkage_angles": {"angle_steps", "sin_angle"},
-    "lyapunov": {"lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
+    "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
                  "chunk_sizes", "averaging_logs", "end_transient", "reconstruct_spectrum",
                  "auto_transient", "transient_rule", "identify_nonphysical",
                  "exponents_from_marks"},

@@ -11,9 +11,7 @@ from __future__ import annotations
 
 from math import gcd
 
-import numpy as np
-
-from ..geometry.checks import integer, number, shown
+from ..geometry.checks import flag, integer, number, shown  # noqa: F401 - flag re-exported
 from ..solvers.progress import progress_reporter
 from ..solvers.status import MAX_STEPS, check_step
 from ..solvers.tangent import largest_divisor
@@ -46,17 +44,6 @@ MAX_SPEED = 1e150
 #: Relative slack when checking that a duration is a whole number of steps (rounding of
 #: decimal inputs such as 0.1 / 0.01 = 9.999999999999998).
 GRID_RTOL = 1e-9
-
-
-def flag(name, x) -> bool:
-    """A yes/no setting: True or False, or 1 or 0 as a saved file's plain attributes hold
-    them (``charts.io.file_settings``), so that a call repeated from a file runs; ValueError for
-    anything else."""
-    if isinstance(x, (bool, np.bool_)):
-        return bool(x)
-    if isinstance(x, (int, np.integer)) and x in (0, 1):
-        return bool(x)
-    raise ValueError(f"{name} must be True or False (or 1 or 0), got {x!r}")
 
 
 def positive_time(name, x) -> float:

@@ -52,7 +52,8 @@ from .arguments import (flag, positive_int, positive_time, progress_reporter, pr
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
 from .arguments import rotor_system
-from .transients import resolve_transient, transient_rule
+from .lyapunov import resolve_transient
+from .transients import transient_rule
 
 __all__ = ["CurvatureResult", "curvature_along_trajectory", "exact_curvature_matrix",
            "exact_curvatures", "gaussian_curvature_eq22", "curvature_frame", "frame_step", "numerical_curvature"]

@@ -34,14 +34,15 @@ from .arguments import (positive_int, positive_time, progress_reporter, project_
                         start_state, steps_of, inner_steps, Documented)
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends, batch_estimates
+from . import transients
 from .transients import (AUTO_EFOLDINGS, AUTO_RULE, AUTO_TRANSIENT_RANGE, PILOT_TIMES,
-                         resolve_transient, transient_rule)
+                         transient_rule)
 from .arguments import rotor_system
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
            "lyapunov_spectrum", "lyapunov_schedule",
            "lyapunov_result", "chunk_sizes", "averaging_logs", "end_transient",
-           "reconstruct_spectrum", "auto_transient", "transient_rule", "AUTO_EFOLDINGS",
+           "reconstruct_spectrum", "auto_transient", "resolve_transient", "transient_rule", "AUTO_EFOLDINGS",
            "PILOT_TIMES", "AUTO_TRANSIENT_RANGE", "AUTO_RULE",
            "identify_nonphysical", "exponents_from_marks"]
 
@@ -348,6 +349,14 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
     if rule is not None:
         res.params["transient_rule"] = rule
     return res
+
+
+def resolve_transient(t_transient, system, theta0, u0, **pilot):
+    """``charts.analyses.transients.resolve_transient`` with `auto_transient` as the pilot
+    of "auto": the duration (and the rule's text) of ``t_transient`` for a run from
+    (theta0, u0)."""
+    return transients.resolve_transient(t_transient, system, theta0, u0, auto_transient,
+                                         **pilot)
 
 
 def auto_transient(system, theta0, u0, *, dt=0.01, n_exponents=None, inner="theta",

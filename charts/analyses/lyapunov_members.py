@@ -21,8 +21,8 @@ from .cluster import cluster_device, cluster_pool
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_jobs,
                        member_states_of)
 from .lyapunov import (averaging_logs, end_transient, lyapunov_flow, lyapunov_result,
-                       lyapunov_schedule, lyapunov_settings)
-from .transients import resolve_transient, transient_rule
+                       lyapunov_schedule, lyapunov_settings, resolve_transient)
+from .transients import transient_rule
 
 __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states", "members_pay",
            "plan_memory", "result_bytes", "LANE_BLOCK", "MIN_LANES"]

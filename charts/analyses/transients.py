@@ -104,15 +104,16 @@ def kinetic_speed(system, u0) -> float:
     return float(np.sqrt(np.sum(np.asarray(system.masses, dtype=float) * u * u)))
 
 
-def resolve_transient(t_transient, system, theta0, u0, **pilot):
+def resolve_transient(t_transient, system, theta0, u0, auto, **pilot):
     """(duration, rule text or None) of ``t_transient`` for a run from (theta0, u0): a
-    duration as given; "scaled" by N and the speed of u0; "auto" by its pilot run from
-    (theta0, u0) with the run's settings ``pilot`` (dt, n_exponents, inner, space, seed).
-    Check the run's other settings before calling it: "auto" runs its pilot here."""
+    duration as given; "scaled" by N and the speed of u0; "auto" by its pilot run
+    ``auto(system, theta0, u0, **pilot)`` with the run's settings ``pilot`` (dt,
+    n_exponents, inner, space, seed; ``charts.analyses.lyapunov.resolve_transient`` passes
+    its ``auto_transient``).  Check the run's other settings before calling it: "auto" runs
+    its pilot here."""
     rule = transient_rule(t_transient)
     if rule == "scaled":
         return scaled_transient(system.n, kinetic_speed(system, u0)), SCALED_RULE
     if rule == "auto":
-        from .lyapunov import auto_transient
-        return auto_transient(system, theta0, u0, **pilot), AUTO_RULE
+        return auto(system, theta0, u0, **pilot), AUTO_RULE
     return t_transient, None

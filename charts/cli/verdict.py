@@ -151,7 +151,7 @@ def _transient_of(t_transient, system) -> float:
     speed), on the grid of the default step 0.01."""
     if not isinstance(t_transient, str):
         return t_transient
-    from ..analyses.transients import resolve_transient
+    from ..analyses.lyapunov import resolve_transient
     tr, _ = resolve_transient(t_transient, system, *system.random_state(seed=0, speed=1.0))
     return round(round(float(tr) / 0.01) * 0.01, 10)
 

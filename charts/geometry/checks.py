@@ -11,20 +11,13 @@ steps would match); ``True``, ``2.7`` and ``"2"`` are not counts.
 from __future__ import annotations
 
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 
-__all__ = ["number", "integer", "finite_array", "option", "path", "instance", "callback",
+from ..io.file_checks import path, shown  # noqa: F401 - the checks' home for files, re-exported
+
+__all__ = ["number", "integer", "finite_array", "option", "flag", "path", "instance", "callback",
            "shown"]
-
-
-def shown(x) -> str:
-    """``repr(x)`` for a message, at most 80 characters (a million masses are not echoed);
-    NumPy arrays and scalars as the Python values they hold (``2.5``, not ``np.float64(2.5)``)."""
-    text = repr(x.tolist() if isinstance(x, (np.ndarray, np.generic)) else x)
-    return text if len(text) <= 80 else text[:77] + "..."
 
 
 def _scalar(x):
@@ -121,15 +114,15 @@ def option(name, x, allowed):
     raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {shown(x)}")
 
 
-def path(name, x) -> Path:
-    """``x`` as a ``Path``: a str or ``os.PathLike`` with a file name (not ``''``, ``'.'``
-    nor a folder's ``'..'``); ValueError naming ``name`` otherwise (a number is not a path)."""
-    if isinstance(x, bytes) or not isinstance(x, (str, os.PathLike)):
-        raise ValueError(f"{name} must be a file path (a str or os.PathLike), got {shown(x)}")
-    p = Path(x)
-    if p.name in ("", ".", ".."):
-        raise ValueError(f"{name} must name a file, got {shown(x)}")
-    return p
+def flag(name, x) -> bool:
+    """A yes/no setting: True or False, or 1 or 0 as a saved file's plain attributes hold
+    them (``charts.io.file_settings``), so that a call repeated from a file runs; ValueError for
+    anything else."""
+    if isinstance(x, (bool, np.bool_)):
+        return bool(x)
+    if isinstance(x, (int, np.integer)) and x in (0, 1):
+        return bool(x)
+    raise ValueError(f"{name} must be True or False (or 1 or 0), got {x!r}")
 
 
 def instance(name, x, cls, what=None):

@@ -28,10 +28,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..geometry.checks import path as file_path
 from .atomic import atomic_write, signals_deferred
 from .file_settings import FLATTENED, MEMBER, decode_attributes, encode
 from .renamed_settings import renamed
+from .file_checks import path as file_path
 from .file_checks import (COMPRESSION_BOUND, SCHEMAS, check_layout, check_netcdf4, layout,
                           read, refused)
 from .file_checks import one_line as short

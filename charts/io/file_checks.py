@@ -5,12 +5,13 @@ header checked against the kind's schema (`SCHEMAS`, `check_layout`): variables,
 numbers, sizes against the file's own size, attributes, bounded JSON."""
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
 
 __all__ = ["SCHEMAS", "COMPRESSION_BOUND", "check_layout", "check_netcdf4", "layout", "read",
-           "refused", "one_line", "unreadable"]
+           "refused", "one_line", "unreadable", "path", "shown"]
 
 #: What the file of each kind holds, from what its ``to_xarray`` gives `dataset`: variables
 #: (data and coordinates) as name → their dimensions, numbers all (a name starting ``?`` is
@@ -57,6 +58,24 @@ SCHEMAS = {
 #: deflate, HDF5's compression, packs into a byte is about 1032); more is a damaged or
 #: hostile header, which would otherwise be allocated on loading.
 COMPRESSION_BOUND = 1024
+
+
+def shown(x) -> str:
+    """``repr(x)`` for a message, at most 80 characters (a million masses are not echoed);
+    NumPy arrays and scalars as the Python values they hold (``2.5``, not ``np.float64(2.5)``)."""
+    text = repr(x.tolist() if isinstance(x, (np.ndarray, np.generic)) else x)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def path(name, x) -> Path:
+    """``x`` as a ``Path``: a str or ``os.PathLike`` with a file name (not ``''``, ``'.'``
+    nor a folder's ``'..'``); ValueError naming ``name`` otherwise (a number is not a path)."""
+    if isinstance(x, bytes) or not isinstance(x, (str, os.PathLike)):
+        raise ValueError(f"{name} must be a file path (a str or os.PathLike), got {shown(x)}")
+    p = Path(x)
+    if p.name in ("", ".", ".."):
+        raise ValueError(f"{name} must name a file, got {shown(x)}")
+    return p
 
 
 def one_line(err) -> str:

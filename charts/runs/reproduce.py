@@ -322,7 +322,7 @@ def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
                               | dict(fraction_positive=(c["Kb"] > 0).mean(0).tolist(),
                                      samples=int(c["Kb"].shape[0])) for n, c in curv.items()},
                    angles=ang, clv=clv)
-    reproduce_report.add_measurements(summary, cfg, curv, _tasks(cfg))
+    reproduce_report.add_measurements(summary, cfg, curv, _tasks(cfg), CURVATURE_TRANSIENT)
     atomic_text(out / "results.json", json.dumps(summary, indent=1, default=float))
     reproduce_report.write_report(out, reproduce_clv.report_lines(clv, NS, cfg["angle_transient"]))
     if not quiet:

@@ -40,16 +40,15 @@ def _default(func, name):
     return float(inspect.signature(func).parameters[name].default)
 
 
-def _settings(cfg, tasks):
+def _settings(cfg, tasks, curvature_transient):
     """The run's settings and seeds, from the preset ``cfg``, the task arguments ``tasks``
-    (``{(kind, N, i): (function, args)}`` of ``charts.runs.reproduce``) and the defaults of
-    the analyses the tasks leave (dt, sample steps, the curvature's transient)."""
+    (``{(kind, N, i): (function, args)}`` of ``charts.runs.reproduce``), the curvature
+    tasks' transient and the defaults of the analyses the tasks leave (dt, sample steps)."""
     from ..analyses.curvature import curvature_along_trajectory
     from ..analyses.hyperbolicity import hyperbolicity_angles
     from ..analyses.lyapunov import lyapunov_settings
     from ..analyses.spectra import waveform
     from ..geometry.system import RotorSystem
-    from .reproduce import CURVATURE_TRANSIENT
     seeds = {}
     for (kind, n, _), (_, args) in sorted(tasks.items(), key=lambda kv: str(kv[0])):
         got = args[1] if isinstance(args[1], (list, tuple)) else [args[1]]
@@ -67,7 +66,7 @@ def _settings(cfg, tasks):
                     seeds=seeds["angle"]),
         curvature=dict(members=1, t_final=cfg["curv_t"],
                        dt=_default(curvature_along_trajectory, "dt"),
-                       t_transient=CURVATURE_TRANSIENT,
+                       t_transient=curvature_transient,
                        sample_every=_default(curvature_along_trajectory, "sample_every"),
                        batches=CURVE_BATCHES, seeds=seeds["curv"]),
         waveform=dict(members=1, t_final=cfg["wave_t"], dt=_default(waveform, "dt"),
@@ -101,12 +100,13 @@ def _curvature_numbers(c, dt, batches):
     return out
 
 
-def add_measurements(summary, cfg, curv, tasks):
+def add_measurements(summary, cfg, curv, tasks, curvature_transient):
     """Add to ``summary`` (what ``results.json`` holds) what the report needs besides the
     sections' numbers: ``run`` (`_settings`) and, per N of ``curv`` (the curvature tasks'
     outputs), the batch-means errors of the curvature statistics and the largest difference
-    of the two curvature routes (`_curvature_numbers`)."""
-    run = _settings(cfg, tasks)
+    of the two curvature routes (`_curvature_numbers`); ``curvature_transient``: the
+    curvature tasks' transient."""
+    run = _settings(cfg, tasks, curvature_transient)
     summary["run"] = run
     cv = run["curvature"]
     for n, c in curv.items():

@@ -72,7 +72,7 @@ def _resolved(rule, key):
     settings ``key`` holds (cached: a sweep's worker reads its point's scene again)."""
     import numpy as np
 
-    from ..analyses.transients import resolve_transient
+    from ..analyses.lyapunov import resolve_transient
     from ..geometry.system import RotorSystem
     n, masses, weights, level, speed, seed, theta, u, dt, k, inner = key
     system = RotorSystem(n, None if masses is None else list(masses),

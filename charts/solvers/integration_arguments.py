@@ -15,7 +15,7 @@ from typing import Callable
 import numpy as np
 
 from ..geometry.checks import finite_array, number, option, shown
-from ..analyses.arguments import flag
+from ..geometry.checks import flag
 from ..geometry.system import RotorSystem
 from .events import check_events
 from .progress import progress_reporter
