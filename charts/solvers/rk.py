@@ -32,7 +32,7 @@ from .dop853_coefficients import A, B, D, E3, E5, INTERPOLATOR_POWER, N_STAGES, 
 __all__ = [
     "NO_REFCOUNT",
     "RHS_SIG", "RHS_TYPE", "RK4_NODES", "RK4_WEIGHTS", "rk4_node", "rk4_point", "stage_point",
-    "rk4_sum", "rk4_stage_point",
+    "rk4_sum",
     "rk4_combine", "rk4_stages",
     "rk4_step", "dop853_step", "dop853_dense", "hermite_dense", "dense_eval", "initial_step", "step_factor",
     "N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER",
@@ -101,16 +101,6 @@ def rk4_combine(z, K, h, L, out):
     L3 = L2 + L
     for i in range(L):
         out[i] = rk4_sum(z[i], h6, K[i], K[L + i], K[L2 + i], K[L3 + i])
-
-
-@njit(cache=True, inline="always")
-def rk4_stage_point(z, K, st, h, L, zt):
-    """`rk4_point` of stage ``st`` of a step h (a copy of z for stage 0)."""
-    if st == 0:
-        for i in range(L):
-            zt[i] = z[i]
-    else:
-        rk4_point(z, K, (st - 1) * L, rk4_node(st) * h, L, zt)
 
 
 @njit(cache=True, inline="always")
