@@ -28,10 +28,10 @@ LAYERS = (
     ("io",),                                # results on disk (result types by name)
     ("codegen",),                           # the symbolic derivation and its emitter
     ("geometry",),                          # the manifold, the atlas, projections, kernels
-    ("mechanism",),                         # symbolic holonomic mechanisms (charts.mechanism)
     ("flows",),                             # the equations (8), (14), (16), (17), (19)
     ("plotting",),                          # figures; the results' plot() import it lazily
     ("solvers",),                           # steppers, the loop, formulations, integrate
+    ("mechanism",),                         # symbolic holonomic mechanisms (charts.mechanism)
     ("analyses",),                          # Lyapunov, curvature, CLVs, spectra, ...
     ("runs", "data"),                       # scenes, sweeps, benchmarks; the bundled TOML files
     ("cli", "__main__"),                    # the ``charts`` command, ``python -m charts``

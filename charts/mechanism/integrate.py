@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .kernels import rk4_combine, rk4_stage
+from ..solvers.rk import RK4_NODES, rk4_combine, rk4_point
 from .model import MechanismError
 
 __all__ = ["integrate_ambient", "integrate_chart"]
@@ -24,13 +24,17 @@ def _times(t_final, samples):
 
 
 def _rk4(f, y, h):
-    """One classical RK4 step of y' = f(y) (the tableau of `charts.mechanism.kernels`)."""
-    ks, point = [f(y)], np.empty_like(y)
-    for stage in (1, 2, 3):
-        rk4_stage(y, h, stage, ks[-1], point)
-        ks.append(f(point))
-    out = np.empty_like(y)
-    rk4_combine(y, h, *ks, out)
+    """One classical RK4 step of y' = f(y), y of shape (n,): the one tableau of
+    ``charts.solvers.rk`` (`RK4_NODES`, `rk4_point`, `rk4_combine`) on the rates of the NumPy
+    ``f``."""
+    n = y.size
+    K = np.empty((4, n))                            # the stages' rates, flat in Kf
+    Kf, point, out = K.reshape(-1), np.empty(n), np.empty(n)
+    K[0] = f(y)
+    for st in (1, 2, 3):
+        rk4_point(y, Kf, (st - 1) * n, RK4_NODES[st] * h, n, point)
+        K[st] = f(point)
+    rk4_combine(y, Kf, h, n, out)
     return out
 
 

@@ -10,15 +10,12 @@ The equations of motion are the saddle-point (KKT) system of ``dynamics``,
 and their linearisation along a phase-space tangent vector (δq, δv) (eq (17)'s analogue) is
 the same system differentiated, K δ(q̈, λ) = δb − δK (q̈, λ).  Index order as in ``symbolic``:
 J[a, i], F2[a, i, j], F3[a, i, j, l], dM[i, j, l] = ∂_l M_ij, d2M[i, j, l, m] = ∂_l∂_m M_ij.
-
-The classical RK4 tableau (`rk4_stage`, `rk4_combine`) lives here too, for the mechanism's
-integrators (``integrate``, ``tangent_flow``).
 """
 from __future__ import annotations
 
 from ..jit import njit
 
-__all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_rhs", "rk4_stage", "rk4_combine"]
+__all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_rhs"]
 
 
 @njit(cache=True)
@@ -100,21 +97,3 @@ def tangent_motion_rhs(dM, d2M, F2, F3, v, x, dq, dv, r):
             dkx += dj * x[i]
         r[n + c] = -d3 - 2.0 * d2 - dkx
 
-
-@njit(cache=True)
-def rk4_stage(y, h, stage, k, out):
-    """The point of RK4 stage ``stage`` + 1 (1, 2, 3) from the previous stage's rate k:
-    out = y + cₛ h k with c = (½, ½, 1); any array shape."""
-    c = 1.0 if stage == 3 else 0.5
-    yf, kf, of = y.reshape(-1), k.reshape(-1), out.reshape(-1)
-    for i in range(yf.size):
-        of[i] = yf[i] + c * h * kf[i]
-
-
-@njit(cache=True)
-def rk4_combine(y, h, k1, k2, k3, k4, out):
-    """The classical RK4 step: out = y + h/6 (k1 + 2 k2 + 2 k3 + k4); ``out`` may be ``y``."""
-    yf, of = y.reshape(-1), out.reshape(-1)
-    a, b, c, d = k1.reshape(-1), k2.reshape(-1), k3.reshape(-1), k4.reshape(-1)
-    for i in range(yf.size):
-        of[i] = yf[i] + h / 6.0 * (a[i] + 2.0 * b[i] + 2.0 * c[i] + d[i])

@@ -1,5 +1,6 @@
 """The tangent flow of a Mechanism: its ambient constrained flow and k phase-space tangent
-vectors, advanced together by classical RK4, compiled.
+vectors, advanced together by classical RK4 (the one body ``charts.solvers.rk.rk4_stages``
+with the hooks of this layout), compiled.
 
 One step of size h advances the state y = (q, v), shape (2n,), by the KKT equations of motion
 and each tangent vector (δq, δv) by their exact linearisation (both from
@@ -20,13 +21,16 @@ inner products are the metric's.
 """
 from __future__ import annotations
 
+from collections import namedtuple
+
 import numpy as np
 
 from ..geometry.gram_schmidt import orthonormalize
 from ..jit import njit
 from ..jit.kernel_calls import CallsKernel
+from ..solvers.rk import rk4_combine, rk4_point, rk4_stages
 from .errors import MechanismError
-from .kernels import kkt_matrix, motion_rhs, rk4_combine, rk4_stage, tangent_motion_rhs
+from .kernels import kkt_matrix, motion_rhs, tangent_motion_rhs
 from .symbolic import JET_ORDER
 
 __all__ = ["MechanismTangentFlow", "INNER_PRODUCTS"]
@@ -87,22 +91,51 @@ def _metric_rows(M, Z, full, A):
             A[r, m + i] = Z[1 + r, i]
 
 
-def _advance(jets, p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, ks, Zs):
-    """``steps`` RK4 steps of Z = [y; X] (step numbers first + 1 …), the vectors
-    re-orthonormalised after every step number divisible by ``reorth`` (their log-norms added
-    to ``logs``)."""
+#: The arrays and sizes of the flow's RK4 hooks (``work`` of ``charts.solvers.rk.rk4_stages``):
+#: the parameters p, Z = [y; X], shape (1 + k, 2n), and its stage point Zs, with their flat
+#: views Zf, Zsf (length L = (1 + k)·2n), the stage rates K, shape (4, 1 + k, 2n), and its flat
+#: view Kf (stage st at offset st·L), `_rate`'s arrays jq, jv, jt and lin (its ``work``: the
+#: KKT matrix and the right-hand sides), and L.
+FlowStep = namedtuple("FlowStep", ["p", "Z", "Zf", "Zs", "Zsf", "K", "Kf", "jq", "jv", "jt",
+                                   "lin", "L"])
+
+
+@njit(cache=True, inline="always")
+def _flow_start(w, jets):
+    """`rk4_stages`' stage 0 of the flow: the rates at Z itself into K[0]."""
+    _rate(jets, w.p, w.Z, w.K[0], w.jq, w.jv, w.jt, w.lin)
+    return 0.0, 1
+
+
+@njit(cache=True, inline="always")
+def _flow_point(w, st, a):
+    """`rk4_stages`' stage point of the flow: Zs = Z + a·K[st − 1] (`rk4_point`, flat)."""
+    rk4_point(w.Zf, w.Kf, np.uint64(st - 1) * w.L, a, w.L, w.Zsf)
+
+
+@njit(cache=True, inline="always")
+def _flow_rate(w, jets, st, hmin):
+    """`rk4_stages`' stage rates of the flow at Zs into K[st] (`_rate`)."""
+    _rate(jets, w.p, w.Zs, w.K[st], w.jq, w.jv, w.jt, w.lin)
+    return hmin
+
+
+@njit(cache=True, inline="always")
+def _flow_combine(w, h):
+    """`rk4_stages`' end of the flow: Z from Z and the stages, in place (`rk4_combine`)."""
+    rk4_combine(w.Zf, w.Kf, h, w.L, w.Zf)
+
+
+def _advance(jets, p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, K, Zs):
+    """``steps`` RK4 steps of Z = [y; X] (step numbers first + 1 …; `rk4_stages` with the
+    `FlowStep` hooks, stage rates in K, shape (4, 1 + k, 2n)), the vectors re-orthonormalised
+    after every step number divisible by ``reorth`` (their log-norms added to ``logs``)."""
     n = jq.shape[0]
     m = 2 * n if full else n
-    k1, k2, k3, k4 = ks
+    w = FlowStep(p, Z, Z.reshape(-1), Zs, Zs.reshape(-1), K, K.reshape(-1), jq, jv, jt, work,
+                 np.uint64(Z.size))
     for s in range(steps):
-        _rate(jets, p, Z, k1, jq, jv, jt, work)
-        rk4_stage(Z, h, 1, k1, Zs)
-        _rate(jets, p, Zs, k2, jq, jv, jt, work)
-        rk4_stage(Z, h, 2, k2, Zs)
-        _rate(jets, p, Zs, k3, jq, jv, jt, work)
-        rk4_stage(Z, h, 3, k3, Zs)
-        _rate(jets, p, Zs, k4, jq, jv, jt, work)
-        rk4_combine(Z, h, k1, k2, k3, k4, Z)
+        rk4_stages(w, jets, h, _flow_start, _flow_point, _flow_rate, _flow_combine)
         if (first + s + 1) % reorth == 0 and Z.shape[0] > 1:
             for i in range(n):
                 jq[i] = Z[0, i]
@@ -114,7 +147,7 @@ def _advance(jets, p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt
                     Z[1 + r, i] = A[r, m + i]
 
 
-def _jets_types(p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, ks, Zs):
+def _jets_types(p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, K, Zs):
     """The argument types the driver calls the jets function with (``CallsKernel``)."""
     return (jq, p) + tuple(jt.types)
 
@@ -171,7 +204,7 @@ class MechanismTangentFlow:
         self._jt = tuple(np.zeros(mech._eval(key, q0).shape) for key in JET_ORDER)
         nk = n + mech.k
         self._work = (np.zeros((nk, nk)), np.zeros(nk), np.zeros((nk, max(self.k, 1))))
-        self._ks = tuple(np.zeros_like(self.Z) for _ in range(4))
+        self._K = np.zeros((4,) + self.Z.shape)                # the RK4 stages' rates
         self._Zs = np.zeros_like(self.Z)
         self._driver = _driver_of(mech)
         if self.k:
@@ -214,7 +247,7 @@ class MechanismTangentFlow:
             seg = left if not self.project else min(left, self.project - self.steps % self.project)
             self._driver(self.mech.param_values, self.Z, self.steps, seg, self.reorth, self.dt,
                          self.full, self.logsum, self._wts, self._A, self._jq, self._jv,
-                         self._jt, self._work, self._ks, self._Zs)
+                         self._jt, self._work, self._K, self._Zs)
             self.steps += seg
             left -= seg
             if not np.all(np.isfinite(self.Z)):
