@@ -126,8 +126,9 @@ def rk4_stages(work, eqs, h, start, point, rate, combine):
     a chart step with a trivial right-hand side, N = 5; docs/performance.md); the stacked
     flows, whose arrays are borrowed, branch in ``point`` instead.  The drivers: `rk4_step` (a
     right-hand side), ``charts.solvers.tangent.stacked_rk4_step`` (every stacked flow, CPU
-    and GPU), the lanes' step of ``charts.solvers.lanes`` and the frame steps of
-    ``charts.analyses.curvature``."""
+    and GPU), the lanes' step of ``charts.solvers.lanes``, the frame steps of
+    ``charts.analyses.curvature`` and a mechanism's tangent flow
+    (``charts.mechanism.tangent_flow``)."""
     hmin, first = start(work, eqs)
     for st in range(first, 4):
         point(work, st, rk4_node(st) * h)
