@@ -11,6 +11,7 @@
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 
@@ -30,6 +31,18 @@ def charts_cache_dir(tmp_path_factory):
         os.environ.pop("CHARTS_CACHE_DIR", None)
     else:
         os.environ["CHARTS_CACHE_DIR"] = old
+
+
+@pytest.fixture
+def python_sigint():
+    """SIGINT raising KeyboardInterrupt in this process for the test (Python's own handler),
+    whatever the disposition the test run inherited: a shell starts a background job with
+    SIGINT ignored, and Python then leaves it ignored."""
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
 
 
 @pytest.fixture(scope="session")

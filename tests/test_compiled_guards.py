@@ -42,7 +42,7 @@ PUBLIC = {
     "from_rotor_state with short u": ("L.from_rotor_state(th, np.zeros(2))", ["u", "shape (4,)"]),
     "gauss_curvature of a short q": ("gauss_curvature(L, np.zeros(3), v0, v0)", ["q", "shape (7,)"]),
     "gauss_curvature of a short X": ("gauss_curvature(L, q0, np.zeros(3), v0)", ["X", "shape (7,)"]),
-    "linkage_run from q = 0": ("linkage_run(L, np.zeros(7), np.zeros(7), 1.0)", ["q is off"]),
+    "linkage_run from q = 0": ("linkage_run(L, np.zeros(7), np.zeros(7), 1.0)", ["q0 is off"]),
 }
 
 CHILD = """

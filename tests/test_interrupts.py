@@ -48,7 +48,7 @@ def test_sigterm_is_an_interrupt_with_its_own_status():
         assert interrupts.exit_status(130) == 130
 
 
-def test_a_save_finishes_before_the_interrupt_is_taken(tmp_path):
+def test_a_save_finishes_before_the_interrupt_is_taken(tmp_path, python_sigint):
     """A Ctrl-C while a result is written (``charts.io.archive.save``, the tally's
     checkpoint) is taken once the file is whole: no half-built file object, whose
     finalizer printed ``Exception ignored in: <function File.close …>``."""

@@ -331,7 +331,8 @@ def test_a_point_asks_dask_for_no_client_of_the_cluster(monkeypatch):
 
 
 @pytest.mark.skipif(not hasattr(signal, "pthread_sigmask"), reason="POSIX signal masks")
-def test_a_ctrl_c_while_the_local_cluster_starts_interrupts_once_it_has(monkeypatch):
+def test_a_ctrl_c_while_the_local_cluster_starts_interrupts_once_it_has(monkeypatch,
+                                                                        python_sigint):
     """The worker processes start with Ctrl-C held back from them; a Ctrl-C that reaches
     the sweep meanwhile is not lost: once the cluster has started it is raised, and the
     cluster and its client are closed.  The handler and the signal mask are as before."""
