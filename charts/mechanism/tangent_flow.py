@@ -29,6 +29,7 @@ from ..geometry.gram_schmidt import orthonormalize
 from ..jit import njit
 from ..jit.kernel_calls import CallsKernel
 from ..solvers.rk import rk4_combine, rk4_point, rk4_stages
+from ..solvers.tangent import StackedFlow
 from .errors import MechanismError
 from .kernels import kkt_matrix, motion_rhs, tangent_motion_rhs
 from .symbolic import JET_ORDER
@@ -152,7 +153,7 @@ def _jets_types(p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, w
     return (jq, p) + tuple(jt.types)
 
 
-class MechanismTangentFlow:
+class MechanismTangentFlow(StackedFlow):
     """A mechanism's state and ``k`` phase tangent vectors under its flow (module docstring).
 
     Parameters
@@ -195,7 +196,7 @@ class MechanismTangentFlow:
             dq, dv = mech.project_phase_tangent(q0, v0, *rng.normal(size=(2, n)))
             self.Z[1 + r] = np.concatenate([dq, dv])
         self.logsum = np.zeros(self.k)
-        self.steps = 0
+        self.counter = np.zeros(1, dtype=np.int64)          # the steps taken (`steps`)
         m = 2 * n if self.full else n
         self._wts = np.concatenate([np.ones(m), np.zeros(2 * n)])
         self._A = np.zeros((self.k, m + 2 * n))
@@ -209,14 +210,6 @@ class MechanismTangentFlow:
         self._driver = _driver_of(mech)
         if self.k:
             self._orthonormalize(np.zeros(self.k))
-
-    @property
-    def y(self):
-        return self.Z[0]
-
-    @property
-    def X(self):
-        return self.Z[1:]
 
     def energy(self) -> float:
         """T = ½ vᵀ M(q) v of the state."""
@@ -248,7 +241,7 @@ class MechanismTangentFlow:
             self._driver(self.mech.param_values, self.Z, self.steps, seg, self.reorth, self.dt,
                          self.full, self.logsum, self._wts, self._A, self._jq, self._jv,
                          self._jt, self._work, self._K, self._Zs)
-            self.steps += seg
+            self.counter[0] += seg
             left -= seg
             if not np.all(np.isfinite(self.Z)):
                 raise MechanismError(f"{self.mech.name}: the tangent flow left the finite numbers "
