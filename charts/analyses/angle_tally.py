@@ -29,7 +29,8 @@ import numpy as np
 from ..io.archive import Archivable, attributes, dataset, load
 from ..geometry.checks import finite_array, integer, shown
 from .singular_values import sin_to_angle
-from .statistics import law_from_batches, standard_error
+from .statistics import jackknife_slopes, law_from_batches, standard_error
+from .tally_checkpoint import check_resumed
 
 __all__ = ["AngleTally", "VARIANTS", "EDGES", "LAW_X0", "LADDER", "JACKKNIFE_GROUPS", "SMALL_ANGLE",
            "carries", "member_bytes"]
@@ -154,7 +155,8 @@ class AngleTally(Archivable):
         """(the tally saved at ``path`` by an interrupted run of ``members`` members with
         ``params``, members done): its whole members, ``params["members_done"]`` of them;
         ValueError naming the file where it holds another run's tally, or one whose sums
-        disagree with themselves or with its ``members_done`` (`_check_resumed`): such a
+        disagree with themselves or with its ``members_done``
+        (``charts.analyses.tally_checkpoint.check_resumed``): such a
         file would count members twice, or leave some out."""
         try:
             saved = load(path)
@@ -169,7 +171,8 @@ class AngleTally(Archivable):
                 or np.shape(saved.n) != (members,):
             raise ValueError(f"{path} holds the tally of another run; remove it or name "
                              "another checkpoint")
-        done = _check_resumed(path, saved, saved.params.pop("members_done"))
+        done = check_resumed(path, saved, saved.params.pop("members_done"),
+                             _sums(len(VARIANTS), members))
         saved._open.update(carries(len(VARIANTS), members))     # whole members: no carry
         return saved, done
 
@@ -352,7 +355,8 @@ class AngleTally(Archivable):
         out["block_minima"] = [[10 ** (j + 1), float(np.nanmean(means[:, i])),
                                 float(standard_error(means[~np.isnan(means[:, i]), i]))]
                                for i, j in enumerate(levels)]
-        out["slopes"] = _slopes(means, levels)
+        out["slopes"] = [[10 ** (levels[i] + 1), 10 ** (levels[i + 1] + 1), *slope]
+                         for i, slope in enumerate(jackknife_slopes(means, JACKKNIFE_GROUPS))]
         stopped = self.params.get("stopped") or []
         out["stopped"] = [list(x) for x in stopped]
         ep = int(self.episodes[v].sum())
@@ -413,49 +417,6 @@ class AngleTally(Archivable):
                    seeds=seeds.values)
 
 
-def _check_resumed(path, tally, done) -> int:
-    """``done``, the members_done of the checkpoint ``tally`` read from ``path``, as an
-    integer once the file is found consistent: each sum of the shape of its members, finite
-    where a sum must be, and the members done exactly those with angles (all of one count),
-    those after them empty; ValueError naming the file and the field otherwise."""
-    def bad(what):
-        raise ValueError(f"{path} is not a usable checkpoint: {what}; remove it to start over")
-    L, V = tally.n_members, len(VARIANTS)
-    if isinstance(done, bool) or not isinstance(done, (int, np.integer)) or not 0 <= done <= L:
-        bad(f"members_done = {done!r} is not a count of its {L} members")
-    done = int(done)
-    shapes = dict(n=(L,), min=(V, L), argmin=(V, L), zeros=(V, L), below=(V, L, EDGES.size),
-                  law_count=(V, L, len(LAW_X0)), law_logsum=(V, L, len(LAW_X0)),
-                  ladder_count=(V, L, LADDER), ladder_sum=(V, L, LADDER),
-                  ladder_sumsq=(V, L, LADDER), episodes=(V, L))
-    for name, shape in shapes.items():
-        x = np.asarray(getattr(tally, name))
-        if x.shape != shape:
-            bad(f"{name} has shape {x.shape}, a tally of {L} members has {shape}")
-        if x.dtype.kind not in "iuf":
-            bad(f"{name} holds {x.dtype} values, not numbers")
-        if name != "min" and not np.all(np.isfinite(x)):
-            bad(f"{name} holds non-finite values")
-        if np.any(x < (-1 if name == "argmin" else 0)):
-            bad(f"{name} holds negative values")
-    if np.any(np.isnan(tally.min)):
-        bad("min holds NaN")
-    with_angles = np.flatnonzero(tally.n > 0)
-    if with_angles.size != done or (done and with_angles[-1] != done - 1):
-        bad(f"members_done = {done}, but {with_angles.size} of its members have angles (n > 0)"
-            + (f", the last member {int(with_angles[-1])}" if with_angles.size else ""))
-    if done and np.any(tally.n[:done] != tally.n[0]):
-        bad(f"the members done have unequal counts n ({int(tally.n[:done].min())} to "
-            f"{int(tally.n[:done].max())}) where each ran the whole window")
-    for name in shapes:
-        x = np.asarray(getattr(tally, name))
-        rest = x[done:] if name == "n" else x[:, done:]
-        empty = np.inf if name == "min" else -1 if name == "argmin" else 0
-        if np.any(rest != empty):
-            bad(f"{name} holds sums of members past members_done = {done}")
-    return done
-
-
 def _finite_or_none(x):
     """``x`` (nested dicts and lists) with every non-finite float as None: JSON as it is."""
     if isinstance(x, dict):
@@ -475,28 +436,3 @@ def _variant(variant) -> int:
     if not isinstance(variant, str) or variant not in VARIANTS:
         raise ValueError(f"variant must be one of {VARIANTS}, got {shown(variant)}")
     return VARIANTS.index(variant)
-
-
-def _slopes(means, levels):
-    """[size a, size b, slope, jackknife se] of ln(mean minimum) between neighbouring
-    sizes; ``means`` (members, levels) the members' mean block minima (NaN: a member that
-    stopped before its first block of that size), over the members holding both sizes."""
-    out = []
-    for i in range(len(levels) - 1):
-        m = means[:, i:i + 2]
-        m = m[~np.isnan(m).any(axis=1)]
-        L = m.shape[0]
-        groups = np.array_split(np.arange(L), min(JACKKNIFE_GROUPS, L))
-
-        def slope(rows):
-            with np.errstate(divide="ignore", invalid="ignore"):    # a mean minimum of 0
-                return np.log(m[rows, 1].mean() / m[rows, 0].mean()) / np.log(10.0)
-        full = slope(slice(None))
-        if len(groups) >= 2:
-            jack = np.array([slope(np.setdiff1d(np.arange(L), g)) for g in groups])
-            G = len(groups)
-            se = float(np.sqrt((G - 1) / G * np.sum((jack - jack.mean()) ** 2)))
-        else:
-            se = float("nan")
-        out.append([10 ** (levels[i] + 1), 10 ** (levels[i + 1] + 1), float(full), se])
-    return out

@@ -7,7 +7,7 @@ import numpy as np
 from ..geometry.checks import finite_array, number
 
 __all__ = ["standard_error", "batch_ends", "batch_estimates", "small_value_law",
-           "pool_small_value_laws", "block_minima", "law_from_batches"]
+           "pool_small_value_laws", "block_minima", "law_from_batches", "jackknife_slopes"]
 
 
 def standard_error(samples, axis=0):
@@ -159,3 +159,29 @@ def pool_small_value_laws(laws):
     cse = np.where(k > 0, np.array([d["coef2_se"] for d in laws], dtype=float), 0.0)
     return dict(count=int(K), n=int(N), x0=x0, exponent=float(beta_p), exponent_se=beta_se,
                 coef2=float(K / N / x0 ** 2), coef2_se=float(np.sqrt(np.sum((n * cse) ** 2)) / N))
+
+
+def jackknife_slopes(means, groups):
+    """[slope, jackknife se] of log10(mean of column i + 1 / mean of column i) for each pair
+    of neighbouring columns of ``means`` (members, columns; NaN: a member without that
+    column), over the members holding both, the jackknife over at most ``groups`` groups of
+    members (se NaN with fewer than 2)."""
+    out = []
+    for i in range(means.shape[1] - 1):
+        m = means[:, i:i + 2]
+        m = m[~np.isnan(m).any(axis=1)]
+        L = m.shape[0]
+        parts = np.array_split(np.arange(L), min(groups, L))
+
+        def slope(rows):
+            with np.errstate(divide="ignore", invalid="ignore"):    # a mean of 0
+                return np.log(m[rows, 1].mean() / m[rows, 0].mean()) / np.log(10.0)
+        full = slope(slice(None))
+        if len(parts) >= 2:
+            jack = np.array([slope(np.setdiff1d(np.arange(L), g)) for g in parts])
+            G = len(parts)
+            se = float(np.sqrt((G - 1) / G * np.sum((jack - jack.mean()) ** 2)))
+        else:
+            se = float("nan")
+        out.append([float(full), se])
+    return out
