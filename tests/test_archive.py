@@ -95,10 +95,14 @@ def test_every_result_type_prints_as_one_short_line(results):
     import importlib
 
     from charts.analyses.hyperbolicity import AngleResult
+    from charts.analyses.mechanism_lyapunov import lyapunov_spectrum as mechanism_lyapunov
     L = charts.LinkageSystem(0.1)
     every = dict(results, linkage=charts.linkage_run(L, *L.random_state(seed=2), 2.0,
                                                      t_transient=0.0, n_batches=2),
                  wide=_tiny_lyapunov({"n": 64, "t_final": 10.0}),
+                 mechanism_lyapunov=mechanism_lyapunov(charts.triple_linkage(0.3),
+                                                       *charts.triple_linkage(0.3).random_state(1),
+                                                       2.0, t_transient=0.0, n_batches=2),
                  scene=SceneResult({"scene": {"name": "tiny"}, "status": "complete"},
                                    {f"array_{i}": np.zeros(3) for i in range(40)}, "name = 'tiny'"),
                  sweep=SweepTable({f"column_{i}": np.arange(5) for i in range(40)}))

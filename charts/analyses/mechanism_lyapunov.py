@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geometry.checks import option
+from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
+from ..io.result_words import RATE, exponent_words
 from ..mechanism.model import Mechanism
 from ..mechanism.errors import MechanismError
 from ..mechanism.tangent_flow import INNER_PRODUCTS, MechanismTangentFlow
@@ -32,9 +34,10 @@ from .statistics import batch_ends
 __all__ = ["MechanismLyapunov", "lyapunov_spectrum"]
 
 
-@dataclass(frozen=True)
-class MechanismLyapunov:
-    """Result of `lyapunov_spectrum`.
+@dataclass(frozen=True, eq=False, repr=False)
+class MechanismLyapunov(Archivable):
+    """Result of `lyapunov_spectrum`; saved by ``save(path)`` (NetCDF, kind
+    ``"mechanism_lyapunov"``) and read back by ``charts.load``.
 
     exponents : (k,)  the exponents (1/time), in eq (18)'s Gram–Schmidt order: largest first
         once converged.
@@ -42,7 +45,10 @@ class MechanismLyapunov:
     batches : (n_batches, k)  the per-batch estimates behind ``stderr``.
     energy_error : float  the largest |T/T₀ − 1| at the batch ends (RK4 and the projections
         do not conserve the energy exactly).
-    params : dict  the settings, the mechanism (name, parameter values) and the start.
+    params : dict  the settings, the mechanism (``mechanism``: its name, ``parameters``: its
+        parameter values, ``coordinates``: the names of q) and the start (``q0``, ``v0``;
+        ``state_seed`` "given": the caller gave them; ``vectors_seed``: the seed of the random
+        tangent vectors).
     """
     exponents: np.ndarray
     stderr: np.ndarray
@@ -50,12 +56,55 @@ class MechanismLyapunov:
     energy_error: float
     params: dict = field(default_factory=dict)
 
+    KIND = "mechanism_lyapunov"
+
     def summary(self) -> str:
         """One line: the exponents ± their standard errors, the averaging time and batches."""
         lam = ", ".join(f"{x:+.4f} ± {s:.4f}" for x, s in zip(self.exponents, self.stderr))
         p = self.params
         return (f"{p['mechanism']}: λ = {lam} (t = {p['t_final']:g}, {p['n_batches']} batches, "
                 f"dt = {p['dt']:g}, speed {p['speed']:.6g})")
+
+    def summary_parts(self):
+        """The mechanism, the averaging time and the exponents ± their standard errors."""
+        p = self.params
+        T = p.get("t_final")
+        return [str(p.get("mechanism", "")), f"T = {T:g}" if T is not None else "",
+                exponent_words(self.exponents, self.stderr)]
+
+    def to_xarray(self):
+        """Dataset: exponents, stderr (exponent); batches (batch, exponent), with the batch
+        ends' averaging times as the coordinate ``batch_t``; the settings (``params``) and
+        ``energy_error`` as attributes."""
+        p = self.params
+        ends = batch_ends(round(p["t_final"] / p["dt"]), p["n_batches"],
+                          round(p["reorth_every"] / p["dt"]))
+        data = {"exponents": (("exponent",), self.exponents, RATE,
+                              "Lyapunov exponents λᵢ (eq 18), λ₁ the largest"),
+                "stderr": (("exponent",), self.stderr, RATE, "two-sided standard error"),
+                "batches": (("batch", "exponent"), self.batches, RATE, "batch estimates")}
+        coords = {"exponent": exponent_coordinate(len(self.exponents)),
+                  "batch_t": (("batch",), np.asarray(ends, dtype=float) * p["dt"], "time",
+                              "averaging time at the batch's end")}
+        return dataset(self.KIND, data, coords=coords,
+                       attrs={"params": p, "energy_error": float(self.energy_error)},
+                       title=f"Lyapunov spectrum of the mechanism {p.get('mechanism')} "
+                             "(charts.analyses.mechanism_lyapunov.lyapunov_spectrum)")
+
+    @classmethod
+    def from_xarray(cls, ds):
+        attrs = attributes(ds)
+        return cls(exponents=ds["exponents"].values, stderr=ds["stderr"].values,
+                   batches=ds["batches"].values, energy_error=float(attrs["energy_error"]),
+                   params=attrs["params"])
+
+    def plot(self, ax=None, **kw):
+        """The exponents ± their standard errors against i, each beside its batch estimates
+        (the spread the error bars come from); ``(fig, ax)``
+        (``charts.plotting.mechanism.plot_mechanism_exponents``)."""
+        from ..plotting.mechanism import plot_mechanism_exponents
+        return plot_mechanism_exponents(self.exponents, self.stderr, self.batches,
+                                        self.params, ax=ax, **kw)
 
 
 def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner="theta",
@@ -91,7 +140,7 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
     project_every : float or None
         Time between projections onto TC (default 1.0; None: never).
     seed : int
-        Seed of the random initial tangent vectors.
+        Seed of the random initial tangent vectors (``params["vectors_seed"]``).
 
     Returns
     -------
@@ -147,5 +196,6 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
     params = dict(mechanism=mech.name, parameters=mech.parameter_values, dt=dt,
                   t_final=total * dt, t_transient=transient * dt, n_batches=n_batches,
                   reorth_every=reorth * dt, project_every=project * dt or None, inner=inner,
-                  seed=seed, speed=float(np.sqrt(2 * E0)), q0=q0.tolist(), v0=v0.tolist())
+                  vectors_seed=seed, state_seed="given", speed=float(np.sqrt(2 * E0)),
+                  coordinates=[c.name for c in mech.q], q0=q0.tolist(), v0=v0.tolist())
     return MechanismLyapunov(exponents, stderr, batches, float(energy_error), params)

@@ -54,6 +54,7 @@ KINDS = {
     "spectrum": "charts.analyses.spectra:PowerSpectrum",
     "ensemble": "charts.analyses.ensemble:EnsembleResult",
     "linkage": "charts.analyses.linkage:LinkageResult",
+    "mechanism_lyapunov": "charts.analyses.mechanism_lyapunov:MechanismLyapunov",
     "scene": "charts.runs.netcdf_results:SceneResult",
     "sweep": "charts.runs.netcdf_results:SweepTable",
 }
@@ -87,6 +88,8 @@ TITLES = {
     "spectrum": "power spectrum (charts.power_spectrum)",
     "ensemble": "ensemble of independent trajectories (an EnsembleResult)",
     "linkage": "Lyapunov exponents and curvature of the Appendix's linkage (charts.linkage_run)",
+    "mechanism_lyapunov": "Lyapunov spectrum of a mechanism "
+                          "(charts.analyses.mechanism_lyapunov.lyapunov_spectrum)",
     "scene": "scene results (charts run)",
     "sweep": "sweep table (charts sweep)",
 }

@@ -51,6 +51,9 @@ SCHEMAS = {
     "linkage": ({"exponents": "exponent", "stderr": "exponent", "batches": "batch exponent",
                  "K": "sample exponent", "states": "sample component", "t": "sample"},
                 {"min_sin2": "number", "min_health": "number"}),
+    "mechanism_lyapunov": ({"exponents": "exponent", "stderr": "exponent",
+                            "batches": "batch exponent", "batch_t": "batch"},
+                           {"energy_error": "number"}),
     "scene": ({}, {"result": "json", "scene_text": "text"}),
     "sweep": ({}, {"column_order": "any"}),
 }
