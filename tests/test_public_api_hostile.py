@@ -348,6 +348,16 @@ TABLE["RotorSystem.sectional_curvature"] = Entry(
     S4.sectional_curvature, {"theta": THETA, "v": U, "w": W})
 
 
+@functools.cache
+def rotor_mechanism():
+    return charts.mechanism.rotors(3)
+
+
+@functools.cache
+def rotor_state():
+    return rotor_mechanism().random_state(seed=3)
+
+
 def _analyses(module, name):
     return getattr(importlib.import_module(f"charts.analyses.{module}"), name)
 
@@ -385,6 +395,10 @@ ANALYSES = {
                    "holding one (docstring)" for k in (".exponent", ".coef2")}),
     "covariant.sample_bytes": Entry(_analyses("covariant", "sample_bytes"),
                                     {"n": 4, "variant": "restricted"}),
+    "mechanism_angles.mechanism_angles": Entry(
+        _analyses("mechanism_angles", "mechanism_angles"),
+        {"mech": Fresh(lambda: rotor_mechanism()), "q0": Fresh(lambda: rotor_state()[0]),
+         "v0": Fresh(lambda: rotor_state()[1]), **SHORT}),
     "linkage_angles.linkage_angles": Entry(_analyses("linkage_angles", "linkage_angles"),
                                            {**LINKAGE, "t_final": 0.5, "t_transient": 0.5}),
 }
@@ -427,6 +441,8 @@ INTERNAL = {
     "hyperbolicity": {"angle_result", "angle_members", "angle_params", "tally_on_device"},
     "linkage": {"run_steps", "gauss_curvature", "frame_curvatures", "cone_distance"},
     "linkage_angles": {"angle_steps", "sin_angle"},
+    "mechanism_angles": {"sin_angle"},
+    "mechanism_arguments": {"mechanism_of", "mechanism_state"},
     "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
                  "chunk_sizes", "averaging_logs", "end_transient", "reconstruct_spectrum",
                  "auto_transient", "transient_rule", "identify_nonphysical",
