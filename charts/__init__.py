@@ -62,7 +62,7 @@ _HOMES = {
     "Mechanism": ".mechanism.model",
     "MechanismError": ".mechanism.model",
     "triple_linkage": ".mechanism.instances",
-    "LinkageSystem": ".geometry.linkage",
+    "LinkageSystem": ".mechanism.linkage",
     "DegenerateMetricError": ".solvers.linkage",
     "LinkageResult": ".analyses.linkage",
     "linkage_run": ".analyses.linkage",

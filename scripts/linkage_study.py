@@ -24,7 +24,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def cone_table(eps_list):
     from charts.analyses.linkage import CONE_POINTS, cone_distance, gauss_curvature
-    from charts.geometry.linkage import LinkageSystem
+    from charts.mechanism.linkage import LinkageSystem
 
     rows = []
     for eps in eps_list:
@@ -48,7 +48,7 @@ def dynamics(eps_list, seeds, t_final, t_transient):
     import charts
     from charts.analyses.linkage import linkage_run
     from charts.analyses.statistics import standard_error
-    from charts.geometry.linkage import LinkageSystem
+    from charts.mechanism.linkage import LinkageSystem
 
     out = []
     R4 = charts.RotorSystem(4)
@@ -83,7 +83,7 @@ def angles(eps_list, seeds, t_final):
     """Angles between E_u and E_cs (section 4), restricted variant, against RotorSystem(4)."""
     import charts
     from charts.analyses.linkage_angles import linkage_angles
-    from charts.geometry.linkage import LinkageSystem
+    from charts.mechanism.linkage import LinkageSystem
 
     out = []
     R4 = charts.RotorSystem(4)

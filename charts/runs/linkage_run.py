@@ -15,7 +15,7 @@ __all__ = ["linkage_system", "linkage_start", "linkage_flow", "linkage_invariant
 
 def linkage_system(scene):
     """The scene's `LinkageSystem`."""
-    from ..geometry.linkage import LinkageSystem
+    from ..mechanism.linkage import LinkageSystem
 
     s = scene.system
     return LinkageSystem(s["eps"], s["rho"], disk_mass=s["disk_mass"],

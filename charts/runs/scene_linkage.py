@@ -57,7 +57,7 @@ def system_kind_problems(source, raw_sys, kind, problems) -> None:
 def check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_int) -> None:
     """The joined rules of a linkage scene's [system], [initial] and [integrator]; fills
     ``n = 4``, ``rho`` (default 2ε), the unit rotor moments ``masses``."""
-    from ..geometry.linkage import LinkageSystem
+    from ..mechanism.linkage import LinkageSystem
 
     if "n" in raw_sys and system["n"] != 4:
         raise SceneError(f"{where(source, 'system', 'n')} = {shown(system['n'])} is not allowed with "
