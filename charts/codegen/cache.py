@@ -12,7 +12,8 @@ not match (half-written by a full disk, edited, or left by an interrupted deriva
 that does not import, is derived again with a message on stderr.  Derivation is serialised
 by a file lock (``rotor_nN.lock``, ``fcntl.flock``; released by the kernel if the process
 dies): two processes that need the same N at once derive it once, the second waits and
-loads the first one's file.
+loads the first one's file.  `load_or_write` is that machinery for any generated module: a
+mechanism's jets (``charts.codegen.mechanism``) are cached through it, keyed by their model.
 """
 from __future__ import annotations
 
@@ -30,7 +31,7 @@ import sympy
 from ..io.atomic import atomic_write
 from .emit import module_name, module_source
 
-__all__ = ["cache_dir", "load_or_generate"]
+__all__ = ["cache_dir", "load_or_generate", "load_or_write"]
 
 
 def _generator_digest() -> str:
@@ -58,7 +59,7 @@ def _say(msg: str) -> None:
 
 
 @contextlib.contextmanager
-def _derivation_lock(path: Path, n: int):
+def _derivation_lock(path: Path, what: str):
     """An exclusive ``flock`` on ``path`` (waits, saying so, while another process holds it)."""
     try:
         import fcntl
@@ -69,7 +70,7 @@ def _derivation_lock(path: Path, n: int):
         try:
             fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
-            _say(f"waiting for another process deriving the geometry for N={n} ({path})")
+            _say(f"waiting for another process deriving the {what} ({path})")
             fcntl.flock(fh, fcntl.LOCK_EX)
         try:
             yield
@@ -119,22 +120,22 @@ def _folder() -> Path:
     return folder
 
 
-def _derive(n: int, path: Path, reason: str, paper: bool) -> None:
+def _derive(what: str, label: str, path: Path, reason: str, source) -> None:
     if reason != "missing":
-        _say(f"the cached geometry for N={n} at {path} is unusable: {reason}; deriving it again")
+        _say(f"the cached {what} at {path} is unusable: {reason}; deriving it again")
         for stale in (path, path.with_name(path.name + ".sha256")):
             if stale.is_dir() and not stale.is_symlink():
                 _clear(stale)
     t0 = time.perf_counter()
-    _say(f"deriving geometry for N={n} (not shipped); cached at {path}")
-    data = module_source(n, paper).encode("utf-8")
+    _say(f"deriving {what} (not shipped); cached at {path}")
+    data = source().encode("utf-8")
     atomic_write(path, data)            # concurrent readers never see half a file
     atomic_write(path.with_name(path.name + ".sha256"), (_digest(data) + "\n").encode())
-    _say(f"N={n} derived in {time.perf_counter() - t0:.1f} s")
+    _say(f"{label} derived in {time.perf_counter() - t0:.1f} s")
 
 
-def _import(n: int, path: Path, paper: bool):
-    name = f"charts_ondemand_{module_name(n, paper)}"
+def _import(stem: str, path: Path):
+    name = f"charts_ondemand_{stem}"
     spec = importlib.util.spec_from_file_location(name, path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
@@ -145,21 +146,30 @@ def _import(n: int, path: Path, paper: bool):
 def load_or_generate(n: int, paper: bool = False):
     """The generated module for N rotors (``paper``: its specialisation to a = 1, c = 0) from
     the cache, derived (once, under a file lock) when missing, corrupt or stale."""
+    return load_or_write(module_name(n, paper), f"geometry for N={n}",
+                         lambda: module_source(n, paper), f"N={n}")
+
+
+def load_or_write(name: str, what: str, source, label: str | None = None):
+    """The cached module ``name`` (``name.py`` in `cache_dir`), written from ``source()`` (its
+    text; once, under a file lock) when missing, corrupt or stale.  ``what`` names it in the
+    messages ("geometry for N=7"), ``label`` in the timing line (default ``what``)."""
+    label = what if label is None else label
     folder = _folder()
-    name = module_name(n, paper)
     path = folder / f"{name}.py"
     lock = folder / f"{name}.lock"
     if lock.is_dir() and not lock.is_symlink():
         _say(f"the geometry cache's lock {lock} is a folder; replacing it")
         _clear(lock)
-    with _derivation_lock(lock, n):
+    with _derivation_lock(lock, what):
         reason = _problem(path)
         if reason is not None:
-            _derive(n, path, reason, paper)
+            _derive(what, label, path, reason, source)
         try:
-            return _import(n, path, paper)
+            return _import(name, path)
         except Exception as exc:        # noqa: BLE001 - a hash-valid file that fails to import
             if reason is not None:      # freshly derived: a real error, not a corrupt cache
                 raise
-            _derive(n, path, f"it does not import ({type(exc).__name__}: {exc})", paper)
-            return _import(n, path, paper)
+            _derive(what, label, path, f"it does not import ({type(exc).__name__}: {exc})",
+                    source)
+            return _import(name, path)

@@ -33,8 +33,9 @@ class DamagedModuleError(ImportError):
 
 def write_all(outdir: Path, ns=None, verbose=True) -> dict:
     """Write every shipped module into ``outdir``: ``__init__.py``, ``rotor_nN.py`` and
-    ``rotor_nN_paper.py`` for N in ``ns`` (default `SHIPPED_N`) and ``linkage.py``; returns
-    the seconds each N (and the linkage) took."""
+    ``rotor_nN_paper.py`` for N in ``ns`` (default `SHIPPED_N`), ``linkage.py`` and the
+    mechanisms' jets (``charts.codegen.mechanism.write_shipped``); returns the seconds each N
+    (the linkage, each mechanism) took."""
     from .emit import SHIPPED_N, init_source, linkage_source, module_name, module_source
     from .symbolic import ChartGeometry
 
@@ -56,6 +57,9 @@ def write_all(outdir: Path, ns=None, verbose=True) -> dict:
     timings["linkage"] = time.perf_counter() - t0
     if verbose:
         print(f"  linkage: {timings['linkage']:.1f} s", flush=True)
+    from .mechanism import write_shipped
+
+    timings.update(write_shipped(outdir, verbose))
     return timings
 
 

@@ -10,7 +10,9 @@ J = ∂F/∂q, ∂²F, ∂³F, ∂M, ∂²M, and writes the ambient equations of
 
 Each derivative tensor is lambdified to NumPy (only its non-zero entries, the parameters as
 arguments); everything numerical downstream (``dynamics``, ``atlas``, ``geometry``,
-``embedding``) is exact linear algebra on these jets at a point, no finite differences.
+``embedding``) is exact linear algebra on these jets at a point, no finite differences.  The
+compiled flows read the same jets from generated code (`SymbolicJets.compiled_jets`; the
+derivatives and the generator are ``charts.codegen.mechanism``'s).
 
 Index order: J[a, i] = ∂F_a/∂q_i, F2[a, i, j], F3[a, i, j, l]; dM[i, j, l] = ∂_l M_ij,
 d2M[i, j, l, m] = ∂_l∂_m M_ij.
@@ -22,11 +24,9 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-__all__ = ["SymbolicJets", "sparse_lambdify", "jets_source", "JET_ORDER"]
+from ..codegen.mechanism import JET_ORDER, derivative, jets_module
 
-#: The jets the compiled function of `jets_source` writes, in its argument order (after q and
-#: the parameters p): what the ambient flow and its linearisation read (``kernels``).
-JET_ORDER = ("J", "F2", "F3", "M", "dM", "d2M")
+__all__ = ["SymbolicJets", "sparse_lambdify", "JET_ORDER"]
 
 
 def sparse_lambdify(args, array):
@@ -51,36 +51,6 @@ def sparse_lambdify(args, array):
     return f
 
 
-def jets_source(args, jets, name="jets"):
-    """Python source (``math`` only, numba-compilable) of ``name(q, p, *outs)`` that writes the
-    non-zero entries of each SymPy array of ``jets`` into its output array (same order and
-    shapes; the zero entries are not written: the caller zeroes the arrays once).  ``args``:
-    the coordinate Symbols, then the parameter Symbols, read as q[i] and p[j].  Common
-    subexpressions of all the jets are shared (``sympy.cse``, canonical order, so the source
-    is deterministic)."""
-    from sympy.printing.pycode import PythonCodePrinter
-
-    names = {s: f"q[{i}]" for i, s in enumerate(args[0])}
-    names.update({s: f"p[{j}]" for j, s in enumerate(args[1])})
-    entries = []
-    for a, arr in enumerate(jets):
-        arr = sp.Array(arr)
-        shape = arr.shape
-        for flat, e in enumerate(sp.flatten(arr.tolist())):
-            if e != 0:
-                entries.append((a, np.unravel_index(flat, shape), e))
-    subs, reduced = sp.cse([e for *_, e in entries], symbols=sp.numbered_symbols("x"),
-                           order="canonical")
-    printer = PythonCodePrinter({"standard": "python3"})
-    pr = lambda e: printer.doprint(e.xreplace({s: sp.Symbol(v) for s, v in names.items()}))
-    outs = [f"o{a}" for a in range(len(jets))]
-    lines = [f"def {name}(q, p, {', '.join(outs)}):"]
-    lines += [f"    {s} = {pr(e)}" for s, e in subs]
-    lines += [f"    o{a}[{', '.join(map(str, ix))}] = {pr(e)}"
-              for (a, ix, _), e in zip(entries, reduced)]
-    return "import math\n\n\n" + "\n".join(lines + ["    return 0"]) + "\n"
-
-
 class SymbolicJets:
     """The derivatives of a mechanism's F and M, symbolic and lambdified.
 
@@ -97,26 +67,22 @@ class SymbolicJets:
     @cached_property
     def F2(self):
         """∂²F_a/∂q_i∂q_j, SymPy Array (k, n, n)."""
-        return sp.Array([[[sp.diff(self.J[a, i], self.q[j]) for j in range(self.n)]
-                          for i in range(self.n)] for a in range(self.k)])
+        return derivative(self.J, self.q)
 
     @cached_property
     def F3(self):
         """∂³F, SymPy Array (k, n, n, n)."""
-        return sp.Array([[[[sp.diff(self.F2[a, i, j], x) for x in self.q] for j in range(self.n)]
-                           for i in range(self.n)] for a in range(self.k)])
+        return derivative(self.F2, self.q)
 
     @cached_property
     def dM(self):
         """∂_l M_ij as dM[i, j, l], SymPy Array (n, n, n)."""
-        return sp.Array([[[sp.diff(self.M[i, j], x) for x in self.q] for j in range(self.n)]
-                         for i in range(self.n)])
+        return derivative(self.M, self.q)
 
     @cached_property
     def d2M(self):
         """∂_l∂_m M_ij as d2M[i, j, l, m], SymPy Array (n, n, n, n)."""
-        return sp.Array([[[[sp.diff(self.dM[i, j, l], x) for x in self.q] for l in range(self.n)]
-                          for j in range(self.n)] for i in range(self.n)])
+        return derivative(self.dM, self.q)
 
     @cached_property
     def constant_metric(self) -> bool:
@@ -152,15 +118,17 @@ class SymbolicJets:
 
     def compiled_jets(self):
         """The jets of `JET_ORDER` as one numba-compiled function ``jets(q, p, J, F2, F3, M,
-        dM, d2M)`` (`jets_source`), compiled once per symbolic model and shared by the copies
-        of ``with_parameters`` (the parameters are the argument p)."""
+        dM, d2M)``: the generated module of this symbolic model (``charts.codegen.mechanism``:
+        shipped in ``generated/`` for the named instances, else written on first use into the
+        disk cache, found by the model's key), compiled with numba's disk cache, so that a
+        second process neither derives nor compiles; shared by the copies of
+        ``with_parameters`` (the parameters are the argument p)."""
         num = self._num
         if "compiled" not in num:
             from ..jit import njit
-            namespace = {}
-            exec(compile(jets_source((self.q, self.params), [self._jet_array(key) for key in JET_ORDER]),
-                         f"<jets of {self.name}>", "exec"), namespace)
-            num["compiled"] = njit(namespace["jets"])
+            mod = jets_module(self.q, self.params, self.F, self.M, say=self.name,
+                              arrays=lambda: [self._jet_array(key) for key in JET_ORDER])
+            num["compiled"] = njit(cache=True)(mod.jets)
         return num["compiled"]
 
     def _jet_array(self, key):
