@@ -8,8 +8,10 @@ import numpy as np
 import pytest
 
 import charts
+from charts.analyses.curvature import gaussian_curvature_eq22
 from charts.analyses.mechanism_angles import mechanism_angles
-from charts.mechanism import MechanismError, rotors
+from charts.analyses.mechanism_curvature import mechanism_curvature
+from charts.mechanism import MechanismError, rotors, triple_linkage
 
 TOL = {
     # the two routes' trajectories separate at rounding level, grown by e^{λt} (λ ≈ 0.5):
@@ -20,6 +22,14 @@ TOL = {
     # statistics of angles from two trajectories that decorrelate after t ≈ 17 (measured):
     # independent estimates, two-sided, within a few combined standard errors
     "sigmas": 3.0,
+    # the same curvature at the same points and frames by two routes of rounding-level
+    # error (Riemann tensor of generated/lambdified jets, the Gauss equation, eq (22)):
+    # measured 2e-10 between the rotors' and the mechanism's routes (the trajectories
+    # agree to ~1e-11 over t ≤ 25), 2e-11 against eq (22)
+    "same_curvature": 1e-8,
+    # route (a) against route (b): the central difference's O(Δt²) truncation at Δt =
+    # 0.01 (measured 3.3e-5 on rotors(3), 7e-6 on rotors(5), for |K| ≤ 0.4)
+    "jacobi": 2e-4,
 }
 
 
@@ -106,3 +116,86 @@ def test_angles_bad_input_is_refused(rot3, start):
     res = mechanism_angles(rot3, q, v, 1.0, t_transient=0.0)
     with pytest.raises(ValueError, match="full"):
         res.statistics("full")
+
+
+def _same_frames(a, b):
+    """Frames equal up to the sign of each row (a Lyapunov vector's sign is arbitrary)."""
+    return np.max(np.abs(np.abs(a) - np.abs(b)))
+
+
+@pytest.mark.parametrize("n", [3, 5])
+def test_curvature_meets_the_rotors_curvature(n):
+    """On ``rotors(n)`` (a surface for n = 3, a 4-dimensional manifold for n = 5) the
+    generic curvature along a trajectory (frames from the mechanism's Lyapunov vectors,
+    route (a) by the ambient flow and parallel transport, route (b) by the Riemann tensor in
+    a chart) equals ``charts.curvature_along_trajectory(RotorSystem(n))`` at the same
+    times, states (angles modulo 2π: the mechanism wraps them) and frames; for n = 3 also
+    eq (22)'s closed form."""
+    mech = rotors(n)
+    q, v = mech.random_state(3)
+    T = 5.0 if n == 3 else 1.0
+    mine = mechanism_curvature(mech, q, v, T, t_transient=20.0)
+    ref = charts.curvature_along_trajectory(charts.RotorSystem(n), q, v, T, t_transient=20.0)
+    np.testing.assert_allclose(mine.t, ref.t, rtol=0, atol=1e-12)
+    wrapped = np.angle(np.exp(1j * (mine.theta - ref.theta)))
+    assert np.max(np.abs(wrapped)) < TOL["same_curvature"]
+    assert _same_frames(mine.frames, ref.frames) < TOL["same_curvature"]
+    assert np.max(np.abs(mine.K_exact - ref.K_exact)) < TOL["same_curvature"]
+    assert np.max(np.abs(mine.K_numeric - ref.K_numeric)) < TOL["jacobi"]
+    assert np.max(np.abs(mine.K_numeric - mine.K_exact)) < TOL["jacobi"]
+    assert np.max(np.abs(mine.K_exact)) > 0.01               # not a comparison of zeros
+    if n == 3:
+        assert np.max(np.abs(mine.K_exact[:, 0, 0] - gaussian_curvature_eq22(mine.theta))) \
+            < TOL["same_curvature"]
+
+
+def test_curvature_by_the_gauss_equation_in_four_dimensions():
+    """The intrinsic K_ij of ``rotors(5)`` equals the Gauss equation of the embedding (no
+    chart, no Christoffel symbols): the diagonal as K(p_i, p_0), the off-diagonal by
+    polarisation, K_ij = K(p_i + p_j, p_0) − (K_ii + K_jj)/2 for an orthonormal frame."""
+    mech = rotors(5)
+    q, v = mech.random_state(4)
+    res = mechanism_curvature(mech, q, v, 0.3, t_transient=0.0)
+    for q, P, K in zip(res.theta, res.frames, res.K_exact):
+        g = lambda a, b: mech.gauss_equation_curvature(q, a, b)
+        for i in range(1, 4):
+            assert abs(K[i - 1, i - 1] - g(P[i], P[0])) < TOL["same_curvature"]
+            for j in range(i + 1, 4):
+                off = g(P[i] + P[j], P[0]) - (K[i - 1, i - 1] + K[j - 1, j - 1]) / 2
+                assert abs(K[i - 1, j - 1] - off) < TOL["same_curvature"]
+        np.testing.assert_allclose(K, K.T, atol=TOL["same_curvature"])
+
+
+def test_curvature_of_a_surface_is_its_gaussian_curvature():
+    """On the triple linkage (a surface, the metric semi-definite: a massless joint) the one
+    sectional curvature at every sample is the Gaussian curvature, by the intrinsic route and
+    by the Gauss equation, and route (a) meets it within its O(Δt²)."""
+    mech = triple_linkage(0.3)
+    q, v = mech.random_state(2)
+    res = mechanism_curvature(mech, q, v, 0.5, t_transient=1.0)
+    K = res.K_exact[:, 0, 0]
+    gauss = mech.gauss_equation_curvatures(res.theta)
+    intrinsic = [mech.gaussian_curvature(x) for x in res.theta]
+    assert np.max(np.abs(K - gauss)) < TOL["same_curvature"] * max(1.0, np.max(np.abs(K)))
+    assert np.max(np.abs(K - intrinsic)) < TOL["same_curvature"] * max(1.0, np.max(np.abs(K)))
+    assert np.max(np.abs(res.K_numeric[:, 0, 0] - K)) < TOL["jacobi"] * max(1.0, np.max(np.abs(K)))
+
+
+def test_curvature_bad_input_is_refused(rot3, start):
+    q, v = start
+    cases = [
+        (dict(mech=None), MechanismError, "mech"),
+        (dict(q0=q + 0.1), MechanismError, "q0"),
+        (dict(v0=np.ones(3)), MechanismError, "v0"),
+        (dict(t_final=0.0), ValueError, "t_final"),
+        (dict(sample_every=0.3), ValueError, "sample_every"),
+        (dict(exact="yes"), ValueError, "exact"),
+        (dict(t_transient=-1.0), ValueError, "t_transient"),
+        (dict(seed=1.5), ValueError, "seed"),
+    ]
+    for kw, err, word in cases:
+        args = dict(mech=rot3, q0=q, v0=v, t_final=1.0, t_transient=0.0)
+        args.update(kw)
+        with pytest.raises(err, match=word):
+            mechanism_curvature(args.pop("mech"), args.pop("q0"), args.pop("v0"),
+                                args.pop("t_final"), **args)

@@ -399,6 +399,10 @@ ANALYSES = {
         _analyses("mechanism_angles", "mechanism_angles"),
         {"mech": Fresh(lambda: rotor_mechanism()), "q0": Fresh(lambda: rotor_state()[0]),
          "v0": Fresh(lambda: rotor_state()[1]), **SHORT}),
+    "mechanism_curvature.mechanism_curvature": Entry(
+        _analyses("mechanism_curvature", "mechanism_curvature"),
+        {"mech": Fresh(lambda: rotor_mechanism()), "q0": Fresh(lambda: rotor_state()[0]),
+         "v0": Fresh(lambda: rotor_state()[1]), **SHORT}),
     "linkage_angles.linkage_angles": Entry(_analyses("linkage_angles", "linkage_angles"),
                                            {**LINKAGE, "t_final": 0.5, "t_transient": 0.5}),
 }
@@ -443,6 +447,7 @@ INTERNAL = {
     "linkage_angles": {"angle_steps", "sin_angle"},
     "mechanism_angles": {"sin_angle"},
     "mechanism_arguments": {"mechanism_of", "mechanism_state"},
+    "mechanism_curvature": {"jacobi_frame", "jacobi_curvature", "riemann_curvature"},
     "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
                  "chunk_sizes", "averaging_logs", "end_transient", "reconstruct_spectrum",
                  "auto_transient", "transient_rule", "identify_nonphysical",
