@@ -199,3 +199,54 @@ def test_curvature_bad_input_is_refused(rot3, start):
         with pytest.raises(err, match=word):
             mechanism_curvature(args.pop("mech"), args.pop("q0"), args.pop("v0"),
                                 args.pop("t_final"), **args)
+
+
+def test_public_analyses_route_a_mechanism_to_the_generic_ones(rot3, start):
+    """``charts.lyapunov_spectrum``, ``hyperbolicity_angles`` and
+    ``curvature_along_trajectory`` hand a Mechanism to the generic analyses: the same
+    numbers bit for bit, positional or by keyword in either spelling of the state."""
+    from charts.analyses import mechanism_lyapunov
+    q, v = start
+    ref = mechanism_lyapunov.lyapunov_spectrum(rot3, q, v, 2.0, n_batches=2, t_transient=1.0)
+    for call in (lambda: charts.lyapunov_spectrum(rot3, q, v, 2.0, n_batches=2, t_transient=1.0),
+                 lambda: charts.lyapunov_spectrum(rot3, q0=q, v0=v, t_final=2.0, n_batches=2,
+                                                  t_transient=1.0),
+                 lambda: charts.lyapunov_spectrum(system=rot3, theta0=q, u0=v, t_final=2.0,
+                                                  n_batches=2, t_transient=1.0)):
+        np.testing.assert_array_equal(call().batches, ref.batches)
+    angles = charts.hyperbolicity_angles(rot3, q, v, 0.5, t_transient=0.5)
+    np.testing.assert_array_equal(
+        angles.phi_restricted, mechanism_angles(rot3, q, v, 0.5, t_transient=0.5).phi_restricted)
+    curv = charts.curvature_along_trajectory(rot3, q, v, 0.3, t_transient=0.0)
+    np.testing.assert_array_equal(
+        curv.K_exact, mechanism_curvature(rot3, q, v, 0.3, t_transient=0.0).K_exact)
+
+
+def test_the_route_refuses_what_the_generic_analysis_does_not_take(rot3, start):
+    q, v = start
+    with pytest.raises(TypeError, match="space"):
+        charts.lyapunov_spectrum(rot3, q, v, 2.0, space="full")
+    with pytest.raises(TypeError, match="checkpoint_every"):
+        charts.hyperbolicity_angles(rot3, q, v, 2.0, checkpoint_every=1.0)
+    with pytest.raises(TypeError, match="q0 or theta0"):
+        charts.curvature_along_trajectory(rot3, q0=q, theta0=q, v0=v, t_final=1.0)
+
+
+def test_rotors_keep_their_route_and_other_systems_are_routed_by_type():
+    """A RotorSystem (a Mechanism or not) keeps its own analyses, bit for bit with the
+    undecorated function; the Appendix linkage goes to the generic route exactly when it
+    is a Mechanism."""
+    from charts.analyses import lyapunov
+    from charts.analyses.mechanism_route import generic_mechanism
+    S = charts.RotorSystem(3)
+    th, u = S.random_state(seed=1)
+    assert not generic_mechanism(S)
+    assert generic_mechanism(rotors(3))
+    L = charts.LinkageSystem(0.1)
+    assert generic_mechanism(L) == isinstance(L, charts.Mechanism)
+    assert not generic_mechanism("rotors") and not generic_mechanism(None)
+    a = charts.lyapunov_spectrum(S, th, u, 2.0, n_batches=2, t_transient=1.0)
+    b = lyapunov.lyapunov_spectrum.__wrapped__(S, th, u, 2.0, n_batches=2, t_transient=1.0)
+    np.testing.assert_array_equal(a.exponents, b.exponents)
+    with pytest.raises(TypeError, match="system"):
+        charts.lyapunov_spectrum("rotors", th, u, 2.0)

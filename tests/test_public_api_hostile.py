@@ -448,6 +448,7 @@ INTERNAL = {
     "mechanism_angles": {"sin_angle"},
     "mechanism_arguments": {"mechanism_of", "mechanism_state"},
     "mechanism_curvature": {"jacobi_frame", "jacobi_curvature", "riemann_curvature"},
+    "mechanism_route": {"generic_mechanism", "mechanism_route"},
     "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
                  "chunk_sizes", "averaging_logs", "end_transient", "reconstruct_spectrum",
                  "auto_transient", "transient_rule", "identify_nonphysical",

@@ -52,6 +52,7 @@ from .arguments import (flag, positive_int, positive_time, progress_reporter, pr
                         samples_of, start_state, steps_of, Documented)
 from .exact_curvature import exact_curvature_matrix, exact_curvatures
 from .arguments import rotor_system
+from .mechanism_route import mechanism_route
 from .lyapunov import resolve_transient
 from .transients import transient_rule
 
@@ -428,6 +429,7 @@ class CurvatureResult(Archivable):
         return plot_curvature({route: self.diagonal(route)}, axes=ax, **kw)
 
 
+@mechanism_route("mechanism_curvature", "mechanism_curvature")
 @announces_compilation
 def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
                                sample_every=Documented(0.1), t_transient="scaled",

@@ -61,6 +61,7 @@ from .forward_pass import AngleSettings, adjoint_start, angle_flow, angle_settin
 from .singular_values import sin_to_angle, smallest_singular_values
 from .statistics import small_value_law
 from .arguments import rotor_system
+from .mechanism_route import mechanism_route
 
 __all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
            "hyperbolicity_ensemble", "angle_params", "hyperbolicity_tally", "tally_on_device", "StoppedMember",
@@ -188,6 +189,7 @@ def angle_statistics(phi, small=SMALL_ANGLE):
     return out
 
 
+@mechanism_route("mechanism_angles", "mechanism_angles")
 @announces_compilation
 def hyperbolicity_angles(system, theta0, u0, t_final, *, dt=0.01, n_unstable=None,
                          t_transient=Documented(100.0), sample_every=Documented(0.1),

@@ -38,6 +38,7 @@ from . import transients
 from .transients import (AUTO_EFOLDINGS, AUTO_RULE, AUTO_TRANSIENT_RANGE, PILOT_TIMES,
                          transient_rule)
 from .arguments import rotor_system
+from .mechanism_route import mechanism_route
 
 __all__ = ["LyapunovResult", "LyapunovSettings", "lyapunov_settings", "lyapunov_flow",
            "lyapunov_spectrum", "lyapunov_schedule",
@@ -256,6 +257,7 @@ class LyapunovResult(SpectrumQuantities, Archivable):
         return [f"T = {T:g}" if T is not None else "", exponent_words(self.exponents, self.stderr)]
 
 
+@mechanism_route("mechanism_lyapunov", "lyapunov_spectrum")
 @announces_compilation
 def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
                       inner="theta", space="restricted", t_transient="scaled",
