@@ -2,6 +2,7 @@
 (see :mod:`charts.runs.verdict`, docs/hyperbolicity.md)."""
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 import warnings
@@ -13,7 +14,28 @@ from ..runs.cli_parser import positive_count, transient_arg
 from ..runs.interrupts import EXIT_INTERRUPTED, interrupt_for
 from ..runs.io import atomic_text
 
-__all__ = ["add_parser", "cmd_verdict"]
+__all__ = ["add_parser", "cmd_verdict", "radii_arg", "DEFAULT_RADII"]
+
+#: The rim radii of ``--triple-linkage`` given without a list (about a minute on 2 cores with
+#: the default grid and runs; docs/hyperbolicity.md).
+DEFAULT_RADII = (0.05, 0.1, 0.2, 0.3)
+
+
+def radii_arg(text: str) -> list:
+    """argparse type of ``--triple-linkage``: rim radii r > 0, separated by commas."""
+    out = []
+    for item in text.split(","):
+        try:
+            r = float(item)
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"the rim radii are numbers r > 0 separated by commas (e.g. 0.05,0.1), got "
+                f"{item.strip()!r}") from None
+        if not (np.isfinite(r) and r > 0):
+            raise argparse.ArgumentTypeError(f"a rim radius must be a finite number r > 0 "
+                                             f"(r -> 0 is the rotors': --n 3), got {item.strip()}")
+        out.append(r)
+    return out
 
 
 def add_parser(sub) -> None:
@@ -30,22 +52,44 @@ def add_parser(sub) -> None:
         "monodromy of its closed geodesic. Each case ends in one verdict line: 'hyperbolic "
         "(Anosov)', 'not hyperbolic' or 'open', the class of its evidence ('theorem with "
         "certificate', 'theorem', 'statistics', 'no proof') and why (in the JSON: verdict, "
-        "evidence, reason). Default: N = 3, 4, 5 of the paper. See docs/hyperbolicity.md.")
-    p.add_argument("--n", type=int, nargs="+", default=[3, 4, 5], metavar="N",
-                   help="rotor counts (default 3 4 5)")
+        "evidence, reason). Default: N = 3, 4, 5 of the paper. --triple-linkage: the triple "
+        "linkage at each rim radius r (its surface integrals and lambda1; no theorem is "
+        "certified at a finite r). See docs/hyperbolicity.md.")
+    p.add_argument("--n", type=int, nargs="+", default=None, metavar="N",
+                   help="rotor counts (default 3 4 5, none with --triple-linkage)")
     p.add_argument("--masses", type=float, nargs="+", metavar="M",
                    help="masses (one N only; default all 1)")
     p.add_argument("--weights", type=float, nargs="+", metavar="A",
                    help="weights of the constraint sum(a cos theta) = level (one N only; "
                    "default all 1)")
     p.add_argument("--level", type=float, default=0.0, help="level of the constraint (default 0)")
-    p.add_argument("--grid", type=positive_count, default=256, metavar="G",
-                   help="quadrature points per chart axis (default 256)")
+    p.add_argument("--grid", type=positive_count, default=None, metavar="G",
+                   help="quadrature points per chart axis (default 256; 96 for the triple "
+                   "linkage)")
     p.add_argument("--t-final", type=float, default=3000.0, metavar="T",
                    help="length of each exponent's run (default 3000)")
     p.add_argument("--seeds", type=int, nargs="+", default=[1, 2], metavar="S",
                    help="seeds of the exponent's runs (default 1 2)")
     p.add_argument("--json", type=Path, metavar="FILE", help="also write the reports as JSON")
+    t = p.add_argument_group(
+        "the triple linkage", "--triple-linkage R1,R2,... reports the triple linkage "
+        "(charts.triple_linkage, R = 1, unit inertias) at each rim radius r: chi read from "
+        "Gauss-Bonnet by both curvature routes, the area, K's range and the share of area "
+        "with K > 0 at the nodes, lambda1 at unit speed (--t-final, --seeds) against Katok's "
+        "bound, and the verdict: 'open' wherever chi < 0 (K > 0 somewhere, and Hunt-MacKay's "
+        "theorem gives no bound on r), 'not hyperbolic' where the surface has chi > 0")
+    t.add_argument("--triple-linkage", type=radii_arg, nargs="?", metavar="R1,R2,...",
+                   const=list(DEFAULT_RADII),
+                   help="rim radii r > 0 (default, without a list: "
+                   + ",".join(f"{r:g}" for r in DEFAULT_RADII) + ")")
+    t.add_argument("--rod-length", type=float, default=1.0, metavar="L",
+                   help="the rods' length l (default 1 = R; the limit r -> 0 is then "
+                   "sum cos theta = 3 (l - R) / r)")
+    t.add_argument("--joint-mass", type=float, default=0.0, metavar="M",
+                   help="mass of the joint (default 0)")
+    t.add_argument("--rod-mass", type=float, default=0.0, metavar="MU",
+                   help="mass of each uniform rod (default 0; > 0 makes the metric depend on "
+                   "the configuration, and only the chart route of K runs)")
     g = p.add_argument_group(
         "statistics at scale", "--statistics runs the angle test (restricted and full angles) "
         "on many members instead of the certificates, tallied as it goes (on a GPU the memory "
@@ -88,16 +132,31 @@ def cmd_verdict(args) -> int:
     from ..geometry.system import RotorSystem
     from ..runs.verdict import format_verdict, surface_verdict, torus_verdict, verdict_passed
 
-    if len(args.n) > 1 and (args.masses or args.weights or args.level != 0.0):
-        raise ValueError("--masses, --weights and --level describe one system: give one --n")
+    linkage = getattr(args, "triple_linkage", None)
+    if args.n is None:
+        args.n = [] if linkage else [3, 4, 5]
+    if args.masses or args.weights or args.level != 0.0:
+        if len(args.n) != 1:
+            raise ValueError("--masses, --weights and --level describe one system of rotors: "
+                             "give one --n")
+    if not linkage and (args.rod_length != 1.0 or args.joint_mass or args.rod_mass):
+        raise ValueError("--rod-length, --joint-mass and --rod-mass describe the triple "
+                         "linkage: give --triple-linkage")
     _check_outputs(args)
     if args.statistics:
+        if linkage:
+            raise ValueError("--statistics runs the angle test of the rotors; leave out "
+                             "--triple-linkage (its angle test is not run by charts verdict)")
         return _statistics_interruptible(args)
+    grid = args.grid
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")               # a critical level is refused below
         systems = [RotorSystem(n, masses=args.masses, weights=args.weights, level=args.level)
                    for n in args.n]
+    args.grid = 256 if grid is None else grid
     _plan_certificates(args, systems)
+    if linkage:
+        _plan_linkage(args, 96 if grid is None else grid)
     reports = []
     for n, system in zip(args.n, systems):
         if n == 3:
@@ -107,6 +166,8 @@ def cmd_verdict(args) -> int:
             rep = torus_verdict(system)
         print(format_verdict(rep) + "\n", flush=True)
         reports.append(rep)
+    if linkage:
+        reports += _linkage_reports(args, 96 if grid is None else grid)
     if args.json is not None:
         atomic_text(args.json, json.dumps(reports, indent=1))
     return 0 if all(verdict_passed(r) for r in reports) else 1
@@ -143,6 +204,51 @@ def _plan_certificates(args, systems) -> None:
                 lyapunov_settings(system, args.t_final, seed=integer("--seeds", seed, 0))
         else:
             torus_plan(system)
+
+
+def _linkage_settings(args) -> dict:
+    return dict(l=args.rod_length, joint_mass=args.joint_mass, rod_mass=args.rod_mass)
+
+
+def _plan_linkage(args, grid) -> None:
+    """Every r of ``--triple-linkage`` and the settings of its reports checked before the
+    first report starts (`charts.runs.verdict.linkage_plan`: the linkage's parameters, that it
+    assembles and is regular; ``--grid``, ``--t-final``, ``--seeds``); ValueError naming the
+    flag and the r."""
+    from ..analyses.arguments import steps_of
+    from ..geometry.checks import integer
+    from ..runs.verdict import linkage_plan
+    integer("--grid", grid, 8, 1 << 12)
+    steps_of("--t-final", args.t_final, 0.01)            # the exponent's RK4 step
+    for seed in args.seeds:
+        integer("--seeds", seed, 0)
+    for name, value in (("--rod-length", args.rod_length), ("--joint-mass", args.joint_mass),
+                        ("--rod-mass", args.rod_mass)):
+        if not np.isfinite(value) or value < 0 or (name == "--rod-length" and value == 0):
+            raise ValueError(f"{name} must be a finite number "
+                             f"{'> 0' if name == '--rod-length' else '>= 0'}, got {value}")
+    for r in args.triple_linkage:
+        try:
+            linkage_plan(r, **_linkage_settings(args))
+        except ValueError as exc:
+            raise ValueError(f"--triple-linkage {r:g}: {exc}") from None
+
+
+def _linkage_reports(args, grid) -> list:
+    """``--triple-linkage``: `linkage_verdict` at each r, each printed when done (progress on
+    stderr before each step), then the table of all of them."""
+    from ..runs.verdict import format_linkage_table, format_verdict, linkage_verdict
+    reports = []
+    for i, r in enumerate(args.triple_linkage):
+        def progress(line, r=r, i=i):
+            print(f"charts: triple linkage r = {r:g} ({i + 1} of {len(args.triple_linkage)}): "
+                  f"{line}", file=sys.stderr, flush=True)
+        rep = linkage_verdict(r, **_linkage_settings(args), n_grid=grid, t_final=args.t_final,
+                              seeds=args.seeds, progress=progress)
+        print(format_verdict(rep) + "\n", flush=True)
+        reports.append(rep)
+    print(format_linkage_table(reports) + "\n", flush=True)
+    return reports
 
 
 def _transient_of(t_transient, system) -> float:

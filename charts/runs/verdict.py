@@ -3,7 +3,9 @@
 exponent against the bracket of Katok's and Osserman–Sarnak's inequalities and the certified
 sign of the curvature; for N ≥ 4 the flat totally geodesic torus that rules out the Anosov
 property, with the monodromy of its closed geodesic.  Where neither applies, the statistics
-of the angle test at scale (`statistics_verdict`, ``charts verdict --statistics``).  Each
+of the angle test at scale (`statistics_verdict`, ``charts verdict --statistics``).  For the
+triple linkage (`linkage_verdict`, ``charts verdict --triple-linkage``) the surface integrals
+and λ₁ at each r, where no theorem is certified at a given r.  Each
 report carries its verdict (`case_verdict`: "hyperbolic (Anosov)", "not hyperbolic" or
 "open", the class of its evidence and one sentence why), derived from the certificates'
 outcomes, never from N alone.
@@ -23,13 +25,24 @@ from ..analyses.surface_integrals import surface_integrals
 
 __all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed",
            "statistics_verdict", "tally_report", "family_systems", "format_statistics",
-           "members_window", "case_verdict", "verdict_line", "VERDICTS", "EVIDENCE"]
+           "members_window", "case_verdict", "verdict_line", "VERDICTS", "EVIDENCE",
+           "linkage_verdict", "linkage_plan", "format_linkage_table", "CHI_TOLERANCE"]
+
+#: The largest distance of ∫K dA / 2π from the integer χ it is read as, for a surface whose χ
+#: the quadrature reads (the triple linkage): Gauss–Bonnet makes it an integer, and the default
+#: grid meets it by 3·10⁻⁶ or better up to r = 0.4 (docs/triple-linkage.md); a larger one
+#: means the grid does not resolve the curvature, or the surface is singular.
+CHI_TOLERANCE = 1e-3
+#: Hopf's and Klingenberg's argument on a closed surface with χ > 0 (the end of a sentence).
+_HOPF = ("a closed surface without conjugate points has int K dA <= 0 (Hopf 1948): there are "
+         "conjugate points, which an Anosov geodesic flow never has (Klingenberg 1974)")
 
 #: The verdicts a case can get (`case_verdict`).
 VERDICTS = ("hyperbolic (Anosov)", "not hyperbolic", "open")
 #: The classes of evidence behind a verdict: a theorem whose hypotheses a certificate of the
-#: library proves; a theorem whose hypotheses are exact (topology, a symbolic proof); the angle
-#: statistics only; nothing that decides.
+#: library proves; a theorem whose hypotheses are exact (topology, a symbolic proof); sampled
+#: statistics only (the angles of the angle test, or a leading exponent resolved above 0 on
+#: sampled trajectories; always "open"); nothing that decides.
 EVIDENCE = ("theorem with certificate", "theorem", "statistics", "no proof")
 
 
@@ -42,24 +55,30 @@ def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict
     routes = {route: surface_integrals(system, n_grid, route).to_dict()
               for route in ("chart", "gauss")}
     lower, upper = routes["chart"]["entropy_bracket"]
-    exponents = []
-    for seed in seeds:
-        r = lyapunov_spectrum(system, *system.random_state(seed=seed, speed=1.0), t_final)
-        lam, se = float(r.exponents[0]), float(r.stderr[0])
-        # consistent: no bound violated by more than 3 standard errors; resolved: the whole
-        # ±3 s.e. interval inside the bracket
-        consistent = (lower is None or lam + 3 * se > lower) and \
-            (upper is None or lam - 3 * se < upper)
-        resolved = (lower is None or lam - 3 * se > lower) and \
-            (upper is None or lam + 3 * se < upper)
-        exponents.append(dict(seed=int(seed), t_final=float(t_final), lambda1=lam, stderr=se,
-                              consistent=bool(consistent), resolved_inside=bool(resolved)))
+    exponents = [_exponent(lyapunov_spectrum(system, *system.random_state(seed=seed, speed=1.0),
+                                             t_final), seed, t_final, (lower, upper))
+                 for seed in seeds]
     cert = certify_curvature_sign(system).to_dict()
     rep = dict(system=system.describe(),
                n_grid=int(n_grid), routes=routes, bracket=[lower, upper],
                exponents=exponents, certificate=cert,
                seconds=time.perf_counter() - t0)
     return dict(rep, **case_verdict(rep))
+
+
+def _exponent(result, seed, t_final, bracket) -> dict:
+    """The JSON entry of one λ₁ run (a result with ``exponents`` and ``stderr``) against the
+    entropy bracket (lower, upper; None where a bound does not apply): consistent when no
+    bound is violated by more than 3 standard errors, resolved inside when the whole ±3 s.e.
+    interval lies inside."""
+    lower, upper = bracket
+    lam, se = float(result.exponents[0]), float(result.stderr[0])
+    consistent = (lower is None or lam + 3 * se > lower) and \
+        (upper is None or lam - 3 * se < upper)
+    resolved = (lower is None or lam - 3 * se > lower) and \
+        (upper is None or lam + 3 * se < upper)
+    return dict(seed=int(seed), t_final=float(t_final), lambda1=lam, stderr=se,
+                consistent=bool(consistent), resolved_inside=bool(resolved))
 
 
 def torus_verdict(system) -> dict:
@@ -72,6 +91,96 @@ def torus_verdict(system) -> dict:
     return dict(rep, **case_verdict(rep))
 
 
+#: Nodes per axis of each angle chart in `linkage_plan`'s check that the linkage assembles.
+PLAN_GRID = 16
+
+
+def linkage_plan(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0):
+    """The triple linkage (R = 1, inertia 1) of rim radius ``r``, rod length ``l``, masses of
+    the joint and of each rod, checked before any long work: its parameters
+    (``charts.mechanism.triple_linkage``), that it assembles (points of its configuration
+    surface above a `PLAN_GRID`² grid of each angle chart) and that the surface is regular
+    there (finite area elements and curvatures: r = R = l is not, two hinges meet at the
+    centre); MechanismError (a ValueError) naming what fails otherwise."""
+    from ..mechanism import MechanismError, triple_linkage
+    from ..mechanism.surface import curvatures, surface_nodes
+    mech = triple_linkage(r, l=l, joint_mass=joint_mass, rod_mass=rod_mass)
+    where = f"r = {mech.parameter_values['r']:g}, l = {mech.parameter_values['l']:g}, R = 1"
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")       # NaN at singular nodes: refused below
+        try:
+            q, dA = surface_nodes(mech, PLAN_GRID)
+        except MechanismError as exc:
+            if "no point of the surface" not in str(exc):
+                raise
+            raise MechanismError(
+                f"the triple linkage does not assemble at {where}: no configuration above a "
+                f"{PLAN_GRID}^2 grid of each pair of disc angles (the three rods must reach "
+                "one joint: it needs at least r + l >= R)") from None
+        K = curvatures(mech, q, "chart")
+    if not (np.all(np.isfinite(dA)) and np.all(np.isfinite(K))):
+        raise MechanismError(
+            f"the triple linkage is singular at {where}: area elements or curvatures are not "
+            f"finite at points above the {PLAN_GRID}^2 grid (the constraints lose rank there, "
+            "or the kinetic metric degenerates: with a massless joint, the joint moving while "
+            "the discs stand still), so it is not a closed smooth Riemannian surface and no "
+            "verdict applies")
+    return mech
+
+
+def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_final=3000.0,
+                    seeds=(1, 2), progress=None) -> dict:
+    """Every piece of the triple linkage's verdict at rim radius ``r`` (`linkage_plan`'s
+    linkage) as one JSON-ready dict, with the keys of `surface_verdict`'s and without a
+    certificate: the surface integrals on ``n_grid``² nodes per angle chart
+    (``charts.mechanism.surface``) by the chart and, for a constant metric, the Gauss route,
+    with χ read as the integer nearest ∫K dA / 2π and the smallest K at the nodes; the
+    limit r → 0 (the rotor surface Σ cos θ = 3δ, δ = (l − R)/r, its χ by the Morse count);
+    λ₁ at unit speed over ``t_final`` from each seed's random state
+    (``charts.analyses.mechanism_lyapunov``) against the entropy bracket.  ``progress``: a
+    callable given a line before each step."""
+    from dataclasses import replace
+
+    from ..analyses.mechanism_lyapunov import lyapunov_spectrum as mechanism_lyapunov
+    from ..geometry.surface_quadrature import integrals_from_nodes
+    from ..geometry.topology import euler_characteristic
+    from ..mechanism.surface import curvatures, surface_nodes
+    say = progress or (lambda line: None)
+    t0 = time.perf_counter()
+    mech = linkage_plan(r, l=l, joint_mass=joint_mass, rod_mass=rod_mass)
+    p = mech.parameter_values
+    system = dict(kind="triple_linkage", name=mech.name, r=p["r"], l=p["l"], R=p["R"],
+                  inertia=p["I"], joint_mass=p["m"], rod_mass=p["mu"],
+                  delta=(p["l"] - p["R"]) / p["r"])
+    route_names = ("chart", "gauss") if mech.constant_metric else ("chart",)
+    say(f"surface integrals on {n_grid}^2 nodes per angle chart (the "
+        f"{' and '.join(route_names)} route{'s' if len(route_names) > 1 else ''})")
+    q, dA = surface_nodes(mech, n_grid)
+    routes = {}
+    for route in route_names:
+        K = curvatures(mech, q, route)
+        s = integrals_from_nodes(K, dA, 0, n_grid, route, dict(p, mechanism=mech.name))
+        s = replace(s, euler_characteristic=int(round(s.total_curvature / (2 * np.pi))))
+        routes[route] = dict(s.to_dict(), min_curvature=float(K.min()),
+                             euler_characteristic_from="nearest integer to int K dA / 2 pi")
+    level = 3.0 * system["delta"]
+    try:
+        limit_chi = euler_characteristic((1.0, 1.0, 1.0), level)
+    except ValueError:                        # a critical level: cone points, no χ
+        limit_chi = None
+    limit = dict(level=level, euler_characteristic=limit_chi,
+                 command=f"charts verdict --n 3 --level {level:g}")
+    bracket = routes["chart"]["entropy_bracket"]
+    exponents = []
+    for seed in seeds:
+        say(f"lambda1 at unit speed, seed {seed}, T = {t_final:g}")
+        exponents.append(_exponent(mechanism_lyapunov(mech, *mech.random_state(seed), t_final,
+                                                      seed=seed), seed, t_final, bracket))
+    rep = dict(system=system, n_grid=int(n_grid), routes=routes, bracket=bracket, limit=limit,
+               exponents=exponents, seconds=time.perf_counter() - t0)
+    return dict(rep, **case_verdict(rep))
+
+
 def _surface_case(rep: dict) -> tuple:
     """(verdict, evidence, reason) of a `surface_verdict` report: from χ (the Morse count,
     exact) and the curvature certificate's outcome only; Gauss–Bonnet and the exponents are
@@ -81,10 +190,8 @@ def _surface_case(rep: dict) -> tuple:
     outcome = cert["verdict"]
     if chi > 0:
         return ("not hyperbolic", "theorem",
-                f"chi = {chi} (Morse count), so int K dA = 2 pi chi > 0 (Gauss-Bonnet), and a "
-                "closed surface without conjugate points has int K dA <= 0 (Hopf 1948): there "
-                "are conjugate points, which an Anosov geodesic flow never has (Klingenberg "
-                "1974)")
+                f"chi = {chi} (Morse count), so int K dA = 2 pi chi > 0 (Gauss-Bonnet), and "
+                + _HOPF)
     if outcome == "positive somewhere" and chi == 0:
         return ("not hyperbolic", "theorem with certificate",
                 "chi = 0 (Morse count), so int K dA = 0 (Gauss-Bonnet), and K > 0 is certified "
@@ -93,11 +200,11 @@ def _surface_case(rep: dict) -> tuple:
                 "1948), so there are conjugate points, which an Anosov geodesic flow never has "
                 "(Klingenberg 1974)")
     if outcome == "positive somewhere":
-        return ("open", "no proof",
+        evidence, exponents = _exponent_evidence(rep)
+        return ("open", evidence,
                 f"K > 0 is certified on a box (chi = {chi}), so no curvature theorem applies, "
-                "and a surface with some positive curvature can still be Anosov: nothing run "
-                "here decides (the exponent inside the entropy bracket is consistency, not "
-                "proof)")
+                "and a surface with some positive curvature can still be Anosov; "
+                + exponents)
     if outcome == "nonpositive" and chi < 0:
         if cert["zeros"]:
             return ("hyperbolic (Anosov)", "theorem with certificate",
@@ -162,15 +269,98 @@ def _statistics_case(rep: dict) -> tuple:
             "command runs the curvature certificate for N = 3 and the flat torus for N >= 4)")
 
 
+def _exponent_evidence(rep: dict) -> tuple:
+    """(evidence, clause) for a surface where no theorem applies: "statistics" when every λ₁
+    run of the report lies above 0 by 3 standard errors, "no proof" otherwise; the clause
+    ends the reason."""
+    runs = rep.get("exponents") or []
+    if runs and all(e["lambda1"] - 3 * e["stderr"] > 0 for e in runs):
+        lams = ", ".join(f"{e['lambda1']:.3f} +- {e['stderr']:.3f}" for e in runs)
+        return ("statistics",
+                f"lambda1 = {lams} at unit speed (T = {runs[0]['t_final']:g}, {len(runs)} "
+                f"sampled trajector{'y' if len(runs) == 1 else 'ies'}) is statistics: a "
+                "positive exponent on typical orbits is consistent with the Anosov property but "
+                "does not prove a uniform splitting on the whole unit tangent bundle")
+    return ("no proof", "no exponent run here is resolved above 0, and none would decide: "
+            "nothing run here decides")
+
+
+#: What Hunt and MacKay's theorem gives at a finite r (a clause of the linkage's reasons).
+_HUNT_MACKAY = ("Hunt and MacKay (Nonlinearity 16, 2003) prove the Anosov property for some "
+                "non-empty open set of lengths and masses, by structural stability from the "
+                "limit r -> 0 with l = R (the N = 3 rotor surface, K <= 0 certified: charts "
+                "verdict --n 3), with no explicit bound on r, so it certifies no given r")
+
+
+def _is_linkage(rep: dict) -> bool:
+    return isinstance(rep.get("system"), dict) and rep["system"].get("kind") == "triple_linkage"
+
+
+def _chi_settled(rep: dict) -> bool:
+    """Every route reads the same χ, each ∫K dA / 2π within `CHI_TOLERANCE` of it."""
+    routes = rep["routes"].values()
+    return len({r["euler_characteristic"] for r in routes}) == 1 and all(
+        abs(r["total_curvature"] / (2 * np.pi) - r["euler_characteristic"]) <= CHI_TOLERANCE
+        for r in routes)
+
+
+def _linkage_case(rep: dict) -> tuple:
+    """(verdict, evidence, reason) of a `linkage_verdict` report: from χ as the quadrature
+    reads it (Gauss–Bonnet; measured, not certified) and the curvature at the nodes (floating
+    point); no theorem is certified at a finite r, so χ < 0 gives "open" at best."""
+    s, routes = rep["system"], rep["routes"]
+    names = " and ".join(routes)
+    totals = ", ".join(f"{r['total_curvature'] / (2 * np.pi):.6f} ({route})"
+                       for route, r in routes.items())
+    if not _chi_settled(rep):
+        return ("open", "no proof",
+                f"the quadrature does not settle chi at r = {s['r']:g}, l = {s['l']:g}: int K "
+                f"dA / 2 pi = {totals} on {rep['n_grid']}^2 nodes per chart, not within "
+                f"{CHI_TOLERANCE:g} of one integer (a finer --grid, or a singular surface), so "
+                "no theorem can be applied")
+    chi = next(iter(routes.values()))["euler_characteristic"]
+    off = max(abs(r["total_curvature"] / (2 * np.pi) - chi) for r in routes.values())
+    lim = rep["limit"]
+    morse = ("" if lim["euler_characteristic"] is None else
+             f"; the limit r -> 0, sum cos theta = {lim['level']:g}, has chi = "
+             f"{lim['euler_characteristic']} by the Morse count")
+    measured = (f"chi = {chi} read from Gauss-Bonnet (int K dA / 2 pi within {off:.1g} of it "
+                f"by the {names} route{'s' if len(routes) > 1 else ''}; measured, not "
+                f"certified{morse})")
+    if chi > 0:
+        return ("not hyperbolic", "theorem",
+                f"{measured}, so some component is a sphere, and " + _HOPF)
+    if chi == 0:
+        return ("open", "no proof",
+                f"{measured}, which does not fix the components (a torus, or a sphere with a "
+                "surface of genus 2), and no certificate of K is run on the linkage")
+    c = routes["chart"]
+    kmax = max(r["max_curvature"] for r in routes.values())
+    if kmax > 0:
+        curv = (f"K > 0 on {100 * c['positive_area']:.2g} % of the area (largest K "
+                f"{kmax:.2g} at the nodes, in floating point by the {names} "
+                f"route{'s' if len(routes) > 1 else ''}, no interval certificate), so neither "
+                "Anosov's theorem (K < 0) nor Eberlein's condition (K <= 0) applies, and a "
+                "surface with some positive curvature can still be Anosov")
+    else:
+        curv = ("K <= 0 at every node, but nodes prove no sign (near the limit's 8 zeros K > 0 "
+                "on regions of order r^2 that a grid can miss: docs/triple-linkage.md), so no "
+                "curvature theorem applies")
+    evidence, exponents = _exponent_evidence(rep)
+    return ("open", evidence, f"{measured}; {curv}; {_HUNT_MACKAY}; {exponents}")
+
+
 def case_verdict(rep: dict) -> dict:
-    """The verdict of one report of ``charts verdict`` (`surface_verdict`, `torus_verdict`
-    or `tally_report`) as ``dict(verdict, evidence, reason)``: ``verdict`` one of `VERDICTS`,
-    ``evidence`` one of `EVIDENCE`, ``reason`` one sentence.  Derived from what the report
-    holds — the curvature certificate's outcome and χ (N = 3), the flat-torus proof (N ≥ 4);
-    a certificate that is undecided or fails gives "open", and angle statistics alone give
-    "open"."""
+    """The verdict of one report of ``charts verdict`` (`surface_verdict`, `torus_verdict`,
+    `linkage_verdict` or `tally_report`) as ``dict(verdict, evidence, reason)``: ``verdict``
+    one of `VERDICTS`, ``evidence`` one of `EVIDENCE`, ``reason`` one sentence.  Derived from
+    what the report holds — the curvature certificate's outcome and χ (N = 3), the flat-torus
+    proof (N ≥ 4), the measured χ and curvature of the triple linkage; a certificate that is
+    undecided or fails gives "open", and sampled statistics alone give "open"."""
     if "torus" in rep:
         verdict, evidence, reason = _torus_case(rep)
+    elif _is_linkage(rep):
+        verdict, evidence, reason = _linkage_case(rep)
     elif "certificate" in rep:
         verdict, evidence, reason = _surface_case(rep)
     else:
@@ -187,9 +377,13 @@ def verdict_line(rep: dict) -> str:
 def verdict_passed(rep: dict) -> bool:
     """Every check of a report holds: Gauss–Bonnet to 1e-6 relative, no exponent outside
     the bracket by over 3 standard errors, a curvature certificate that decided (N = 3); a
-    torus proof with every step true (N ≥ 4)."""
+    torus proof with every step true (N ≥ 4); for the triple linkage, χ read alike by every
+    route within `CHI_TOLERANCE` and no exponent above Katok's bound by over 3 standard
+    errors."""
     if "torus" in rep:
         return all(s["holds"] for s in rep["torus"]["proof"])
+    if _is_linkage(rep):
+        return _chi_settled(rep) and all(e["consistent"] for e in rep["exponents"])
     chi = rep["routes"]["chart"]["euler_characteristic"]
     scale = 2 * np.pi * max(abs(chi), 1)
     return (all(abs(r["gauss_bonnet_error"]) <= 1e-6 * scale for r in rep["routes"].values())
@@ -224,24 +418,18 @@ def _format_torus(rep: dict) -> str:
     return "\n".join(lines)
 
 
-def format_verdict(rep: dict) -> str:
-    """A report of `surface_verdict` or `torus_verdict` as text."""
-    if "torus" in rep:
-        return _format_torus(rep)
-    s = rep["system"]
-    c = rep["routes"]["chart"]
-    lines = [f"N = 3 surface: masses {s['masses']}, weights {s['weights']}, level {s['level']:g}",
-             f"Euler characteristic (Morse count): {c['euler_characteristic']}",
-             f"area A = {c['area']:.10f} (n_grid = {rep['n_grid']})"]
-    for route, r in rep["routes"].items():
-        lines.append(f"Gauss-Bonnet, {route} route: int K dA = {r['total_curvature']:.12f}, "
-                     f"2 pi chi = {2 * np.pi * r['euler_characteristic']:.12f}, "
-                     f"difference {r['gauss_bonnet_error']:.1e}")
-    lines.append(f"K > 0 on {100 * c['positive_area']:.2f} % of the area; largest K at the "
-                 f"nodes {c['max_curvature']:.3g}")
+def _gauss_bonnet_lines(rep: dict) -> list:
+    """The Gauss–Bonnet line of each curvature route of a surface report."""
+    return [f"Gauss-Bonnet, {route} route: int K dA = {r['total_curvature']:.12f}, "
+            f"2 pi chi = {2 * np.pi * r['euler_characteristic']:.12f}, "
+            f"difference {r['gauss_bonnet_error']:.1e}" for route, r in rep["routes"].items()]
+
+
+def _exponent_lines(rep: dict) -> list:
+    """The entropy bracket of a surface report and each λ₁ run against it."""
     lo, hi = rep["bracket"]
-    lines.append(f"entropy bracket at unit speed: mean sqrt(-K) = {_num(lo)} <= lambda1 <= "
-                 f"sqrt(2 pi |chi| / A) = {_num(hi)}")
+    lines = [f"entropy bracket at unit speed: mean sqrt(-K) = {_num(lo)} <= lambda1 <= "
+             f"sqrt(2 pi |chi| / A) = {_num(hi)}"]
     for e in rep["exponents"]:
         lines.append(f"  lambda1 (seed {e['seed']}, T = {e['t_final']:g}) = {e['lambda1']:.4f} "
                      f"± {e['stderr']:.4f}: "
@@ -249,6 +437,24 @@ def format_verdict(rep: dict) -> str:
                         "inside the bracket by 3 standard errors" if e["resolved_inside"] else
                         "consistent with the bracket (within 3 standard errors)"
                         if e["consistent"] else "VIOLATES the bracket by over 3 standard errors"))
+    return lines
+
+
+def format_verdict(rep: dict) -> str:
+    """A report of `surface_verdict`, `torus_verdict` or `linkage_verdict` as text."""
+    if "torus" in rep:
+        return _format_torus(rep)
+    if _is_linkage(rep):
+        return _format_linkage(rep)
+    s = rep["system"]
+    c = rep["routes"]["chart"]
+    lines = [f"N = 3 surface: masses {s['masses']}, weights {s['weights']}, level {s['level']:g}",
+             f"Euler characteristic (Morse count): {c['euler_characteristic']}",
+             f"area A = {c['area']:.10f} (n_grid = {rep['n_grid']})"]
+    lines += _gauss_bonnet_lines(rep)
+    lines.append(f"K > 0 on {100 * c['positive_area']:.2f} % of the area; largest K at the "
+                 f"nodes {c['max_curvature']:.3g}")
+    lines += _exponent_lines(rep)
     cert = rep["certificate"]
     lines.append(f"curvature certificate: {cert['verdict']} ({cert['seconds']:.1f} s of CPU)")
     lines.append(f"  cover: {cert['cover']}")
@@ -268,6 +474,52 @@ def format_verdict(rep: dict) -> str:
         lines.append(f"  {cert['open_boxes']} boxes left open")
     lines.append(verdict_line(rep))
     lines.append(f"({rep['seconds']:.1f} s)")
+    return "\n".join(lines)
+
+
+def _linkage_head(s: dict) -> str:
+    return (f"triple linkage r = {s['r']:g}, l = {s['l']:g}, R = {s['R']:g} (delta = "
+            f"{s['delta']:g}; inertia {s['inertia']:g}, joint mass {s['joint_mass']:g}, rod "
+            f"mass {s['rod_mass']:g})")
+
+
+def _format_linkage(rep: dict) -> str:
+    c, lim = rep["routes"]["chart"], rep["limit"]
+    morse = "a critical level" if lim["euler_characteristic"] is None else \
+        f"chi = {lim['euler_characteristic']} by the Morse count"
+    lines = [_linkage_head(rep["system"]),
+             f"limit r -> 0: the rotor surface sum cos theta = {lim['level']:g} ({morse}; "
+             f"its verdict: {lim['command']})",
+             f"Euler characteristic (nearest integer to int K dA / 2 pi; measured, not "
+             f"certified): {c['euler_characteristic']}",
+             f"area A = {c['area']:.10f} (n_grid = {rep['n_grid']})"]
+    lines += _gauss_bonnet_lines(rep)
+    for route, r in rep["routes"].items():
+        lines.append(f"K at the nodes ({route} route) in [{r['min_curvature']:.4g}, "
+                     f"{r['max_curvature']:.4g}]; K > 0 on {100 * r['positive_area']:.3f} % of "
+                     "the area")
+    lines += _exponent_lines(rep)
+    lines.append(verdict_line(rep))
+    lines.append(f"({rep['seconds']:.1f} s)")
+    return "\n".join(lines)
+
+
+def format_linkage_table(reports) -> str:
+    """The triple linkage's reports as one Markdown table: r, l, χ, area, K's range, the share
+    of K > 0, λ₁ (mean of the seeds ± the standard error of their mean, from the batch errors),
+    verdict and evidence."""
+    lines = ["| r | l | chi | area | K at the nodes | K > 0 | lambda1 | verdict | evidence |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for rep in reports:
+        s, c, ex = rep["system"], rep["routes"]["chart"], rep["exponents"]
+        lam = "—"
+        if ex:
+            se = np.sqrt(sum(e["stderr"] ** 2 for e in ex)) / len(ex)
+            lam = f"{np.mean([e['lambda1'] for e in ex]):.4f} ± {se:.4f}"
+        lines.append(f"| {s['r']:g} | {s['l']:g} | {c['euler_characteristic']} | "
+                     f"{c['area']:.4f} | [{c['min_curvature']:.3g}, {c['max_curvature']:.3g}] "
+                     f"| {100 * c['positive_area']:.3f} % | {lam} | {rep['verdict']} | "
+                     f"{rep['evidence']} |")
     return "\n".join(lines)
 
 
