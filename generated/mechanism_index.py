@@ -2,13 +2,13 @@
 """The shipped mechanism jets modules by the key of their symbolic model
 (charts.codegen.mechanism.model_key)."""
 MODULES = {
-    '6885cc5d38a42ea51c4938bfe96cb4c9932bb317ac26c3c187172322c6dc5eb0': 'mechanism_appendix_linkage',
-    '327a5763d7c3a809e9d192667233de9c1edcb6a2681f83343cfa0395d01a1e29': 'mechanism_rotors_n3',
-    'f5ff23e21e181432fda7c63237ad1cc102a5ce21bf8149ad7a3c50ab4c665f2e': 'mechanism_rotors_n4',
-    'ce0ae5be00a24fd82e97ca14096727b9539f7f41ebdf325a623f226e5e2ce67e': 'mechanism_rotors_n5',
-    'f14e8706b9eb5ea75f5286bcf5701134537b1fbcbeb0dea29c53760ae28fcd61': 'mechanism_rotors_n6',
-    '3c65fbb7e9f365d0454000729ba335b163c231ce840fd7ee93a13ed1341df493': 'mechanism_triple_linkage',
-    '1366bc089e3200ad66f57302c422a0b54e20fb7f0815db8e18120bd8ade2c5c0': 'mechanism_triple_linkage_rods',
+    '1a0e41663fa038776d93f2fb451e5e3c12f403c636409b5ad572b2dbad9ec1cd': 'mechanism_appendix_linkage',
+    '2c0a35395c2b0f5c41909401372aff8cc8b522af9581e31f4d393b3ccbf1e9a3': 'mechanism_rotors_n3',
+    '80166f6cc50188bee28bfed47ce64eeda8ec294b28b1ae8b8d44975f55e98a53': 'mechanism_rotors_n4',
+    '4f92ab05aa950107b1dbee6fc4cffd32687016cc8fa9949684de33e2a1310071': 'mechanism_rotors_n5',
+    '2813f5c6b1fc63156cc98f57c1adc458ddeca404796e9d828d4cc9098ffe5ace': 'mechanism_rotors_n6',
+    '9774081481a646cfa3be6818ead864bd62fb6ecbf6de9af3229cf8b6c81403c9': 'mechanism_triple_linkage',
+    '2a9c61e89f4d6b32680ce36d8b851389f8dc7c29398fedae1d0675d18e52242d': 'mechanism_triple_linkage_rods',
 }
 
 

@@ -1,11 +1,11 @@
 """Code generator for mechanisms: a symbolic model (coordinates q, parameters p, constraints
 F(q) = 0, kinetic metric M(q)) → one plain-Python module with its jets.
 
-Design note.  What the ambient flow of any holonomic mechanism and its linearisation read at a
-point are six jets (`JET_ORDER`): J = ∂F/∂q, ∂²F, ∂³F, M, ∂M, ∂²M, each derived here by
-`derivative` (one more index, the last, per derivative; index order of
+Design note.  What the ambient flow of any holonomic mechanism, its linearisation and its
+projections read at a point are seven jets (`JET_ORDER`): F, J = ∂F/∂q, ∂²F, ∂³F, M, ∂M, ∂²M,
+each derivative taken here by `derivative` (one more index, the last; index order of
 ``charts.mechanism.symbolic``).  `module_source` writes a module holding one function
-``jets(q, p, J, F2, F3, M, dM, d2M)`` that stores their non-zero entries (`jets_source`:
+``jets(q, p, F, J, F2, F3, M, dM, d2M)`` that stores their non-zero entries (`jets_source`:
 ``math`` only, so numba compiles it and CPython runs it; the common subexpressions of all six
 shared, ``sympy.cse(order='canonical')``, so the text is deterministic).
 
@@ -35,7 +35,7 @@ __all__ = ["JET_ORDER", "SHIPPED_MECHANISMS", "INDEX", "derivative", "jet_arrays
            "model_key", "module_source", "index_source", "jets_module", "write_shipped"]
 
 #: The jets the generated function writes, in its argument order (after q and p).
-JET_ORDER = ("J", "F2", "F3", "M", "dM", "d2M")
+JET_ORDER = ("F", "J", "F2", "F3", "M", "dM", "d2M")
 
 #: The shipped mechanism modules of ``generated/``: module name → ("module:function", keyword
 #: arguments) of the instance whose symbolic model it holds (imported by name when
@@ -53,10 +53,10 @@ INDEX = "mechanism_index"
 
 _COMMAND = "python scripts/generate.py"
 _DOC = ("the jets of a mechanism's constraints F(q) = 0 and kinetic metric M(q) (see\n"
-        "charts/codegen/mechanism.py).  jets(q, p, J, F2, F3, M, dM, d2M): q = the coordinates,\n"
-        "p = the parameters (values), in the orders below; the outputs, of shapes (k, n),\n"
-        "(k, n, n), (k, n, n, n), (n, n), (n, n, n), (n, n, n, n), get their non-zero entries\n"
-        "written (the caller zeroes them once).  J[a, i] = dF_a/dq_i, F2[a, i, j], F3[a, i, j, l];\n"
+        "charts/codegen/mechanism.py).  jets(q, p, F, J, F2, F3, M, dM, d2M): q = the\n"
+        "coordinates, p = the parameters (values), in the orders below; the outputs, of shapes\n"
+        "(k,), (k, n), (k, n, n), (k, n, n, n), (n, n), (n, n, n), (n, n, n, n), get their non-zero\n"
+        "entries written (the caller zeroes them once).  J[a, i] = dF_a/dq_i, F2[a, i, j], F3[a, i, j, l];\n"
         "dM[i, j, l] = d_l M_ij, d2M[i, j, l, m] = d_l d_m M_ij.\n")
 
 
@@ -73,7 +73,7 @@ def jet_arrays(q, F, M) -> list:
     J = sp.Matrix(F).jacobian(q)
     F2 = derivative(J, q)
     dM = derivative(M, q)
-    return [J, F2, derivative(F2, q), M, dM, derivative(dM, q)]
+    return [sp.Array(list(F)), J, F2, derivative(F2, q), M, dM, derivative(dM, q)]
 
 
 def _generator_digest() -> str:

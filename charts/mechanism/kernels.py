@@ -13,9 +13,11 @@ J[a, i], F2[a, i, j], F3[a, i, j, l], dM[i, j, l] = ∂_l M_ij, d2M[i, j, l, m] 
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..jit import njit
 
-__all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_rhs"]
+__all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_rhs", "lu_in_place", "lu_solve_columns"]
 
 
 @njit(cache=True)
@@ -97,3 +99,62 @@ def tangent_motion_rhs(dM, d2M, F2, F3, v, x, dq, dv, r):
             dkx += dj * x[i]
         r[n + c] = -d3 - 2.0 * d2 - dkx
 
+
+
+@njit(cache=True)
+def lu_in_place(A, piv):
+    """A = P·L·U in place by Gaussian elimination with partial pivoting (L unit lower, below
+    the diagonal; U on and above it); ``piv[c]`` the row exchanged with row c at step c.
+    Returns the smallest |pivot| over the largest (0.0 where a pivot is zero or not finite:
+    A singular, or NaN in it).  For the small KKT systems of the compiled flow: in place,
+    without the copies and checks of ``np.linalg.solve`` (LAPACK's ``gesv``), which took
+    most of a step's time at n + k = 4."""
+    m = A.shape[0]
+    small, large = np.inf, 0.0
+    for c in range(m):
+        r = c
+        best = abs(A[c, c])
+        for i in range(c + 1, m):
+            if abs(A[i, c]) > best:
+                r, best = i, abs(A[i, c])
+        piv[c] = r
+        if not (0.0 < best < np.inf):
+            return 0.0
+        if r != c:
+            for j in range(m):
+                t = A[c, j]
+                A[c, j] = A[r, j]
+                A[r, j] = t
+        small, large = min(small, best), max(large, best)
+        inv = 1.0 / A[c, c]
+        for i in range(c + 1, m):
+            f = A[i, c] * inv
+            A[i, c] = f
+            if f != 0.0:
+                for j in range(c + 1, m):
+                    A[i, j] -= f * A[c, j]
+    return small / large
+
+
+@njit(cache=True)
+def lu_solve_columns(A, piv, B, first, last):
+    """Columns ``first`` … ``last − 1`` of B, shape (m, r), overwritten by the solutions of
+    A x = B[:, col], with A's factors from `lu_in_place` (its pivots non-zero)."""
+    m = A.shape[0]
+    for col in range(first, last):
+        for c in range(m):                      # the row exchanges, then L y = P b
+            r = piv[c]
+            if r != c:
+                t = B[c, col]
+                B[c, col] = B[r, col]
+                B[r, col] = t
+        for i in range(1, m):
+            s = B[i, col]
+            for j in range(i):
+                s -= A[i, j] * B[j, col]
+            B[i, col] = s
+        for i in range(m - 1, -1, -1):          # U x = y
+            s = B[i, col]
+            for j in range(i + 1, m):
+                s -= A[i, j] * B[j, col]
+            B[i, col] = s / A[i, i]

@@ -117,8 +117,8 @@ class SymbolicJets:
                 "d2M": sparse_lambdify(args, self.d2M)}
 
     def compiled_jets(self):
-        """The jets of `JET_ORDER` as one numba-compiled function ``jets(q, p, J, F2, F3, M,
-        dM, d2M)``: the generated module of this symbolic model (``charts.codegen.mechanism``:
+        """The jets of `JET_ORDER` as one numba-compiled function ``jets(q, p, F, J, F2, F3,
+        M, dM, d2M)``: the generated module of this symbolic model (``charts.codegen.mechanism``:
         shipped in ``generated/`` for the named instances, else written on first use into the
         disk cache, found by the model's key), compiled with numba's disk cache, so that a
         second process neither derives nor compiles; shared by the copies of
@@ -133,8 +133,8 @@ class SymbolicJets:
 
     def _jet_array(self, key):
         """The SymPy array of the jet ``key`` (as ``_num``'s)."""
-        return {"J": self.J, "F2": self.F2, "F3": self.F3, "M": self.M, "dM": self.dM,
-                "d2M": self.d2M}[key]
+        return {"F": sp.Array(list(self.F)), "J": self.J, "F2": self.F2, "F3": self.F3,
+                "M": self.M, "dM": self.dM, "d2M": self.d2M}[key]
 
     def derive(self):
         """Derive and lambdify everything now (otherwise done on first use); returns self."""

@@ -9,9 +9,13 @@ and each tangent vector (δq, δv) by their exact linearisation (both from
 eq (18)'s Gram–Schmidt (``charts.geometry.gram_schmidt.orthonormalize``) in the kinetic
 metric: ⟨a, b⟩ = δq_aᵀ M(q) δq_b ("theta", the rotors' θ-only product with M = diag(m)) or
 that plus δv_aᵀ M(q) δv_b ("full"); the log-norms are summed in ``logsum``.  Every
-``project`` steps, between compiled segments, the state is projected back onto F = 0 and
-ker J and the vectors onto the tangent space of TC (``project_point``, ``project_velocity``,
-``project_phase_tangent``; NumPy, once per segment of many steps).
+``project`` steps the state is projected back onto F = 0 and ker J and the vectors onto the
+tangent space of TC, compiled (`_project`: ``project_point``, ``project_velocity`` and
+``project_phase_tangent`` of ``charts.mechanism.dynamics`` on the generated jets, F
+included); where it refuses (no convergence, a near rank-deficient J), NumPy's route
+(`MechanismTangentFlow.project_now`) projects or says why.  The KKT systems are solved by the
+flow's own small LU (``charts.mechanism.kernels.lu_in_place``), one factorisation per stage
+for the state and all the vectors.
 
 The metric enters Gram–Schmidt through a factor M = LᵀL (from its eigenvalues, so a
 semi-definite M, e.g. the triple linkage's massless joint, is fine: it is definite on ker J,
@@ -30,8 +34,9 @@ from ..jit import njit
 from ..jit.kernel_calls import CallsKernel
 from ..solvers.rk import rk4_combine, rk4_point, rk4_stages
 from ..solvers.tangent import StackedFlow
+from .dynamics import RANK_TOL
 from .errors import MechanismError
-from .kernels import kkt_matrix, motion_rhs, tangent_motion_rhs
+from .kernels import kkt_matrix, lu_in_place, lu_solve_columns, motion_rhs, tangent_motion_rhs
 from .symbolic import JET_ORDER
 
 __all__ = ["MechanismTangentFlow", "INNER_PRODUCTS"]
@@ -43,31 +48,145 @@ INNER_PRODUCTS = ("theta", "full")
 @njit(cache=True)
 def _rate(jets, p, Z, out, jq, jv, jt, work):
     """out = d/dt Z for Z = [y; X], shape (1 + kv, 2n): the ambient flow of the state (row 0)
-    and its linearisation for the vector rows.  ``jt``: the jets (J, F2, F3, M, dM, d2M),
-    ``jq``, ``jv``: the state's q and v, ``work``: (KKT matrix, rhs, tangent rhs)."""
-    J, F2, F3, M, dM, d2M = jt
-    K, b, R = work
+    and its linearisation for the vector rows.  ``jt``: the jets (F, J, F2, F3, M, dM, d2M),
+    ``jq``, ``jv``: the state's q and v, ``work``: (KKT matrix, its pivots, right-hand sides
+    (n + k, 1 + kv): the state's in column 0, the vectors' after it), the KKT matrix factored
+    once (`lu_in_place`) for all of them; a singular one makes the rates NaN."""
+    F, J, F2, F3, M, dM, d2M = jt
+    K, piv, B = work
     n = jq.shape[0]
     kv = Z.shape[0] - 1
     for i in range(n):
         jq[i] = Z[0, i]
         jv[i] = Z[0, n + i]
-    jets(jq, p, J, F2, F3, M, dM, d2M)
+    jets(jq, p, F, J, F2, F3, M, dM, d2M)
     kkt_matrix(M, J, -1.0, K)
-    motion_rhs(dM, F2, jv, b)
-    x = np.linalg.solve(K, b)
+    if lu_in_place(K, piv) == 0.0:
+        out[:] = np.nan
+        return
+    motion_rhs(dM, F2, jv, B[:, 0])
+    lu_solve_columns(K, piv, B, 0, 1)
+    x = B[:, 0]
     for i in range(n):
         out[0, i] = jv[i]
         out[0, n + i] = x[i]
     if kv == 0:
         return
     for r in range(kv):
-        tangent_motion_rhs(dM, d2M, F2, F3, jv, x, Z[1 + r, :n], Z[1 + r, n:], R[:, r])
-    D = np.linalg.solve(K, R)
+        tangent_motion_rhs(dM, d2M, F2, F3, jv, x, Z[1 + r, :n], Z[1 + r, n:], B[:, 1 + r])
+    lu_solve_columns(K, piv, B, 1, 1 + kv)
     for r in range(kv):
         for i in range(n):
             out[1 + r, i] = Z[1 + r, n + i]
-            out[1 + r, n + i] = D[i, r]
+            out[1 + r, n + i] = B[i, 1 + r]
+
+
+#: Newton's tolerance on max |F| and its iterations in `_project`, as ``project_point``'s
+#: defaults (``charts.mechanism.dynamics``).
+NEWTON_TOL, NEWTON_ITERATIONS = 1e-13, 50
+
+
+@njit(cache=True)
+def _jets_at(jets, p, jq, jt):
+    """The jets at jq into jt; returns max |F|."""
+    F, J, F2, F3, M, dM, d2M = jt
+    jets(jq, p, F, J, F2, F3, M, dM, d2M)
+    out = 0.0
+    for c in range(F.shape[0]):
+        out = max(out, abs(F[c]))
+    return out
+
+
+@njit(cache=True)
+def _project(jets, p, Z, periodic, eye, jq, jt, work):
+    """`MechanismTangentFlow.project_now` compiled, in place: the state's q onto F = 0 by
+    Newton's minimum-norm steps (the KKT system [[1, Jᵀ], [J, 0]], which gives J⁺F), its
+    periodic coordinates into (−π, π], v M-orthogonally onto ker J, each vector's δq likewise
+    and δv onto J δv + ∂²F(v, δq) = 0 (``charts.mechanism.dynamics``' projections, one KKT
+    matrix factored for all of them).  Returns False, Z untouched, where Newton does not
+    converge, Z is not finite, or J is near rank-deficient (its Gram matrix's pivots below
+    RANK_TOL² of the largest): the caller then takes NumPy's route, which says why."""
+    F, J, F2, F3, M, dM, d2M = jt
+    K, piv, B = work
+    n = jq.shape[0]
+    k = F.shape[0]
+    kv = Z.shape[0] - 1
+    for r in range(Z.shape[0]):
+        for i in range(2 * n):
+            if not np.isfinite(Z[r, i]):
+                return False
+    for i in range(n):
+        jq[i] = Z[0, i]
+    fmax = _jets_at(jets, p, jq, jt)
+    for _ in range(NEWTON_ITERATIONS):
+        if fmax <= NEWTON_TOL:
+            break
+        kkt_matrix(eye, J, 1.0, K)
+        if lu_in_place(K, piv) == 0.0:
+            return False
+        for i in range(n):
+            B[i, 0] = 0.0
+        for c in range(k):
+            B[n + c, 0] = F[c]
+        lu_solve_columns(K, piv, B, 0, 1)
+        for i in range(n):
+            jq[i] -= B[i, 0]
+        fmax = _jets_at(jets, p, jq, jt)
+    if not fmax <= 1e3 * NEWTON_TOL:
+        return False
+    for i in range(n):
+        if periodic[i]:
+            jq[i] = np.arctan2(np.sin(jq[i]), np.cos(jq[i]))
+    _jets_at(jets, p, jq, jt)
+    for a in range(k):                                  # the rank: J Jᵀ's pivots
+        for b in range(k):
+            s = 0.0
+            for i in range(n):
+                s += J[a, i] * J[b, i]
+            K[a, b] = s
+    if lu_in_place(K[:k, :k], piv) < RANK_TOL * RANK_TOL:
+        return False
+    kkt_matrix(M, J, 1.0, K)
+    if lu_in_place(K, piv) == 0.0:
+        return False
+    for r in range(1 + kv):                             # v, then the vectors' δq
+        col = 0 if r == 0 else r
+        off = n if r == 0 else 0
+        for i in range(n):
+            s = 0.0
+            for j in range(n):
+                s += M[i, j] * Z[r, off + j]
+            B[i, col] = s
+        for c in range(k):
+            B[n + c, col] = 0.0
+        if r == 0:
+            lu_solve_columns(K, piv, B, 0, 1)
+            for i in range(n):
+                Z[0, i] = jq[i]
+                Z[0, n + i] = B[i, 0]
+    if kv == 0:
+        return True
+    lu_solve_columns(K, piv, B, 1, 1 + kv)
+    for r in range(kv):
+        for i in range(n):
+            Z[1 + r, i] = B[i, 1 + r]
+    for r in range(kv):                                 # δv: J δv = −∂²F(v, δq)
+        for i in range(n):
+            s = 0.0
+            for j in range(n):
+                s += M[i, j] * Z[1 + r, n + j]
+            B[i, 1 + r] = s
+        for c in range(k):
+            s = 0.0
+            for i in range(n):
+                for j in range(n):
+                    s += F2[c, i, j] * Z[0, n + i] * Z[1 + r, j]
+            B[n + c, 1 + r] = -s
+    lu_solve_columns(K, piv, B, 1, 1 + kv)
+    for r in range(kv):
+        for i in range(n):
+            Z[1 + r, n + i] = B[i, 1 + r]
+    return True
 
 
 @njit(cache=True)
@@ -96,7 +215,7 @@ def _metric_rows(M, Z, full, A):
 #: the parameters p, Z = [y; X], shape (1 + k, 2n), and its stage point Zs, with their flat
 #: views Zf, Zsf (length L = (1 + k)·2n), the stage rates K, shape (4, 1 + k, 2n), and its flat
 #: view Kf (stage st at offset st·L), `_rate`'s arrays jq, jv, jt and lin (its ``work``: the
-#: KKT matrix and the right-hand sides), and L.
+#: KKT matrix, its pivots and the right-hand sides), and L.
 FlowStep = namedtuple("FlowStep", ["p", "Z", "Zf", "Zs", "Zsf", "K", "Kf", "jq", "jv", "jt",
                                    "lin", "L"])
 
@@ -127,10 +246,14 @@ def _flow_combine(w, h):
     rk4_combine(w.Zf, w.Kf, h, w.L, w.Zf)
 
 
-def _advance(jets, p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, K, Zs):
+def _advance(jets, p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, K, Zs,
+             project, periodic, eye):
     """``steps`` RK4 steps of Z = [y; X] (step numbers first + 1 …; `rk4_stages` with the
     `FlowStep` hooks, stage rates in K, shape (4, 1 + k, 2n)), the vectors re-orthonormalised
-    after every step number divisible by ``reorth`` (their log-norms added to ``logs``)."""
+    after every step number divisible by ``reorth`` (their log-norms added to ``logs``) and
+    everything projected (`_project`) after every one divisible by ``project`` (0: never).
+    Returns the steps taken, negated where a projection was refused (after that step, which
+    is taken but not projected)."""
     n = jq.shape[0]
     m = 2 * n if full else n
     w = FlowStep(p, Z, Z.reshape(-1), Zs, Zs.reshape(-1), K, K.reshape(-1), jq, jv, jt, work,
@@ -140,15 +263,20 @@ def _advance(jets, p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt
         if (first + s + 1) % reorth == 0 and Z.shape[0] > 1:
             for i in range(n):
                 jq[i] = Z[0, i]
-            jets(jq, p, jt[0], jt[1], jt[2], jt[3], jt[4], jt[5])
-            _metric_rows(jt[3], Z, full, A)
+            _jets_at(jets, p, jq, jt)
+            _metric_rows(jt[4], Z, full, A)
             orthonormalize(A, wts, logs)
             for r in range(Z.shape[0] - 1):
                 for i in range(2 * n):
                     Z[1 + r, i] = A[r, m + i]
+        if project and (first + s + 1) % project == 0:
+            if not _project(jets, p, Z, periodic, eye, jq, jt, work):
+                return -(s + 1)
+    return steps
 
 
-def _jets_types(p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, K, Zs):
+def _jets_types(p, Z, first, steps, reorth, h, full, logs, wts, A, jq, jv, jt, work, K, Zs,
+                *_):
     """The argument types the driver calls the jets function with (``CallsKernel``)."""
     return (jq, p) + tuple(jt.types)
 
@@ -204,9 +332,11 @@ class MechanismTangentFlow(StackedFlow):
         # the jets' arrays: zeroed once, the compiled function writes the non-zero entries
         self._jt = tuple(np.zeros(mech._eval(key, q0).shape) for key in JET_ORDER)
         nk = n + mech.k
-        self._work = (np.zeros((nk, nk)), np.zeros(nk), np.zeros((nk, max(self.k, 1))))
+        self._work = (np.zeros((nk, nk)), np.zeros(nk, dtype=np.int64), np.zeros((nk, 1 + self.k)))
         self._K = np.zeros((4,) + self.Z.shape)                # the RK4 stages' rates
         self._Zs = np.zeros_like(self.Z)
+        self._periodic = np.asarray(mech._periodic_mask, dtype=np.bool_)
+        self._eye = np.eye(n)
         self._driver = _driver_of(mech)
         if self.k:
             self._orthonormalize(np.zeros(self.k))
@@ -234,20 +364,22 @@ class MechanismTangentFlow(StackedFlow):
             self.Z[1 + r] = np.concatenate([dq, dv])
 
     def advance(self, steps):
-        """``steps`` RK4 steps (compiled segments, projected every ``project`` steps)."""
+        """``steps`` RK4 steps, compiled, projected every ``project`` steps (compiled; where
+        it refuses, by `project_now`, which raises a `MechanismError` saying why or projects)."""
         left = int(steps)
         while left > 0:
-            seg = left if not self.project else min(left, self.project - self.steps % self.project)
-            self._driver(self.mech.param_values, self.Z, self.steps, seg, self.reorth, self.dt,
-                         self.full, self.logsum, self._wts, self._A, self._jq, self._jv,
-                         self._jt, self._work, self._K, self._Zs)
-            self.counter[0] += seg
-            left -= seg
+            done = self._driver(self.mech.param_values, self.Z, self.steps, left, self.reorth,
+                                self.dt, self.full, self.logsum, self._wts, self._A, self._jq,
+                                self._jv, self._jt, self._work, self._K, self._Zs, self.project,
+                                self._periodic, self._eye)
+            refused, done = done < 0, abs(done)
+            self.counter[0] += done
+            left -= done
             if not np.all(np.isfinite(self.Z)):
                 raise MechanismError(f"{self.mech.name}: the tangent flow left the finite numbers "
                                      f"after {self.steps} steps of dt={self.dt:g} (a singular "
                                      "point, or dt too large)")
-            if self.project and self.steps % self.project == 0:
+            if refused:
                 self.project_now()
 
 
