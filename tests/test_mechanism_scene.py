@@ -59,3 +59,139 @@ def test_mechanism_lyapunov_plots_its_exponents_with_error_bars(triple):
     lo, hi = bar.lines[1][0].get_ydata(), bar.lines[1][1].get_ydata()
     assert lo[0] == pytest.approx(triple.exponents[0] - triple.stderr[0], rel=1e-12)
     assert hi[0] == pytest.approx(triple.exponents[0] + triple.stderr[0], rel=1e-12)
+
+
+# ------------------------------------------------------------------------------ scenes
+from charts.runs.runner import run_scene                      # noqa: E402
+from charts.runs.scene import SceneError, parse_scene, scene_to_dict   # noqa: E402
+
+TRIPLE = {"mechanism": {"name": "triple_linkage", "r": R}, "initial": {"seed": 2},
+          "run": {"t_final": 4.0, "t_transient": 1.0, "checkpoint_every": 0.7},
+          "effects": {"lyapunov": {"n_batches": 4}, "drift": {"sample_every": 0.5},
+                      "waveforms": {"t_window": 2.0}}}
+
+
+def test_triple_linkage_scene_runs_to_its_files_and_equals_the_api(tmp_path):
+    """A [mechanism] scene of the triple linkage runs end to end: its files, and exponents
+    and standard errors bit for bit those of `lyapunov_spectrum` from the same seeded state
+    (the scene runs in checkpointed chunks of 0.7 that do not line up with the batches of
+    1.0); the invariants at rounding after the last projection; the mechanism recorded."""
+    sc = parse_scene(TRIPLE)
+    assert sc.system == {"kind": "mechanism", "mechanism": "triple_linkage",
+                         "parameters": {"r": R, "l": 1.0, "R": 1.0, "inertia": 1.0,
+                                        "joint_mass": 0.0, "rod_mass": 0.0},
+                         "speed": 1.0, "coordinates": ["theta1", "theta2", "theta3", "x", "y"],
+                         "dimension": 2}
+    assert sc.effects["lyapunov"]["n_exponents"] == 1          # d − 1 on a surface
+    res = run_scene(sc, tmp_path / "out", quiet=True)
+    assert res["status"] == "complete"
+    for name in ("result.json", "checkpoint.npz", "arrays.npz", "lyapunov.png", "drift.png",
+                 "waveforms.png"):
+        assert (tmp_path / "out" / name).exists(), name
+    mech = charts.triple_linkage(R)
+    q, v = mech.random_state(seed=2)
+    api = lyapunov_spectrum(mech, q, v, 4.0, t_transient=1.0, n_batches=4, seed=2)
+    ly = res["results"]["lyapunov"]
+    assert ly["exponents"] == api.exponents.tolist() and ly["stderr"] == api.stderr.tolist()
+    assert ly["h_ks"] == ly["exponents"][0]        # Σλ⁺ of a surface: λ₁
+    assert res["initial_state"] == {"q": q.tolist(), "v": v.tolist()}
+    assert res["results"]["mechanism"]["label"] == mech.name
+    assert res["computation"]["state_dimension"] == 10
+    d = res["drift"]
+    # projected every t = 1 (the default): at t = 5 the state was just projected
+    assert max(abs(d["constraint"]), abs(d["tangency"])) < 1e-13
+    # RK4 between projections drifts in the energy: measured 6.7e-11 at most in this run
+    # (t = 5, dt = 0.01, 10 samples); the bound leaves 15× for other platforms' rounding
+    assert d["max_abs_energy_relative"] < 1e-9
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        assert a["waveforms_u"].shape == (200, 5)
+    if "results.nc" in res["files"]:
+        back = charts.load(tmp_path / "out" / "results.nc")
+        assert back.result["results"]["lyapunov"]["exponents"] == ly["exponents"]
+
+
+def test_triple_linkage_scene_resumed_equals_uninterrupted(tmp_path):
+    def stop(idx, total):
+        if idx == 2:
+            raise KeyboardInterrupt
+
+    sc = parse_scene(dict(TRIPLE, effects={"lyapunov": {"n_batches": 4}}))
+    ref = run_scene(sc, tmp_path / "ref", quiet=True)
+    with pytest.raises(KeyboardInterrupt):
+        run_scene(sc, tmp_path / "cut", quiet=True, on_chunk=stop)
+    res = run_scene(sc, tmp_path / "cut", quiet=True, resume=True)
+    assert res["results"] == ref["results"] and res["final_state"] == ref["final_state"]
+
+
+def test_users_factory_runs_as_a_scene(tmp_path):
+    """``"module:factory"`` with its keyword arguments: the sphere of tests/
+    scene_mechanism_factory.py, the scene's exponent that of `lyapunov_spectrum` on the
+    factory's mechanism."""
+    from scene_mechanism_factory import sphere
+
+    sc = parse_scene({"mechanism": {"name": "scene_mechanism_factory:sphere", "radius": 2.0},
+                      "run": {"t_final": 2.0, "t_transient": 0.5},
+                      "effects": {"lyapunov": {"n_batches": 2}}})
+    assert sc.system["parameters"] == {"radius": 2.0, "mass": 1.0}
+    res = run_scene(sc, tmp_path / "out", quiet=True)
+    mech = sphere(2.0)
+    api = lyapunov_spectrum(mech, *mech.random_state(seed=0), 2.0, t_transient=0.5,
+                            n_batches=2)
+    assert res["results"]["lyapunov"]["exponents"] == api.exponents.tolist()
+
+
+@pytest.mark.parametrize("mechanism,extra,parts", [
+    ({"name": "triple_linkage", "r": 0.3, "rr": 1.0}, {},
+     ["unknown key 'rr' in [mechanism] — did you mean 'r'?", "allowed: R, inertia, "
+      "joint_mass, l, name, r, rod_mass"]),
+    ({"name": "triple_linkage"}, {}, ["[mechanism] r is required"]),
+    ({"name": "triple_linkage", "r": -0.1}, {}, ["[mechanism] r = -0.1 is not allowed: r must "
+                                                  "be positive"]),
+    ({"name": "tripple_linkage", "r": 0.3}, {}, ["did you mean 'triple_linkage'?"]),
+    ({"r": 0.3}, {}, ["[mechanism] name is required"]),
+    ({"name": "scene_mechanism_factory:sphere", "radius": 1.0, "massive": 2.0}, {},
+     ["unknown key 'massive' in [mechanism] — did you mean 'mass'?"]),
+    ({"name": "scene_mechanism_factory:not_a_mechanism"}, {}, ["returned dict, not a "
+                                                                 "charts.Mechanism"]),
+    ({"name": "no_such_module_here:f"}, {}, ["the module 'no_such_module_here' cannot be "
+                                             "imported"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"system": {"n": 3}},
+     ["[system] n is not allowed with a [mechanism] table"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"effects": {"curvature": {}}},
+     ["[effects] curvature is not allowed with a [mechanism] table"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"integrator": {"formulation": "chart"}},
+     ["formulation = 'chart' is not allowed with a [mechanism] table"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"initial": {"theta": [0, 0, 0]}},
+     ["[initial] theta is not allowed with a [mechanism] table"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"effects": {"lyapunov": {"n_exponents": 3}}},
+     ["n_exponents = 3 is not allowed with inner_product = 'theta': expected 1..2 (use "
+      "inner_product = 'full' for up to 4)"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"run": {"t_final": 1.0, "t_transient": "scaled"}},
+     ["t_transient = 'scaled' is not allowed"]),
+    ({"name": "rotors", "n": 4}, {"system": {"n": 4}},
+     ["[system] n is not allowed beside [mechanism] n"]),
+    ({"name": "linkage", "eps": 0.1, "rhoo": 0.2}, {}, ["unknown key 'rhoo' in [mechanism] — "
+                                                        "did you mean 'rho'?"]),
+])
+def test_bad_mechanism_tables_are_refused_naming_the_key(mechanism, extra, parts):
+    data = {"mechanism": mechanism, "run": {"t_final": 1.0}, "effects": {"lyapunov": {}}}
+    data.update(extra)
+    with pytest.raises(SceneError) as e:
+        parse_scene(data)
+    msg = str(e.value)
+    assert "\n" not in msg
+    for p in parts:
+        assert p in msg, msg
+
+
+def test_rotors_and_linkage_tables_are_their_system_scenes():
+    """[mechanism] rotors and linkage are read as the [system] of their structured routes:
+    the same scene as run (same point ids), the same numbers."""
+    run = {"run": {"t_final": 10.0}, "effects": {"lyapunov": {}}}
+    pairs = [({"mechanism": {"name": "rotors", "n": 4, "masses": [1, 2, 1, 2]}},
+              {"system": {"n": 4, "masses": [1, 2, 1, 2]}}),
+             ({"mechanism": {"name": "linkage", "eps": 0.05}, "system": {"speed": 2.0}},
+              {"system": {"kind": "linkage", "eps": 0.05, "speed": 2.0}})]
+    for table, system in pairs:
+        a, b = parse_scene({**table, **run}), parse_scene({**system, **run})
+        assert scene_to_dict(a) == scene_to_dict(b)

@@ -113,12 +113,14 @@ def linkage_angles_plan(scene) -> dict:
 def plan_scene(scene: Scene) -> Plan:
     """The smallest computation serving ``scene.effects`` (no integration happens here)."""
     instance("scene", scene, Scene, "charts.Scene (load_scene, parse_scene)")
-    n = scene.system["n"]
+    n = scene.system.get("n")          # (none for a mechanism: its coordinates)
     integ, run, eff = scene.integrator, scene.run, scene.effects
     ambient_rk4 = integ["formulation"] == "ambient" and integ["method"] == "rk4"
     engine = "kernel" if ambient_rk4 else "integrate"
     linkage = scene.system.get("kind") == "linkage"   # q = (θ₀…θ₃, x, y, α): 14 variables
-    state_dim = 14 if linkage else 2 * n if integ["formulation"] == "ambient" else 2 * (n - 1)
+    state_dim = (2 * len(scene.system["coordinates"]) if "coordinates" in scene.system
+                 else 14 if linkage else 2 * n if integ["formulation"] == "ambient"
+                 else 2 * (n - 1))
     plan = Plan(engine, integ["formulation"], integ["method"], state_dim)
     # the recording grid: integrator steps for the kernel engine, samples otherwise
     unit = integ["dt"] if engine == "kernel" else run["sample_dt"]

@@ -13,6 +13,8 @@ Layout (all tables optional except ``[system]`` and ``[run]``)::
     name = "fig2-n5"                  # optional, defaults to the file name
     description = "..."
     [system]     n, masses, speed
+    [mechanism]  name + the mechanism's parameters (charts.runs.scene_mechanism), instead of
+                 [system] n, masses, ...
     [initial]    seed | theta + u
     [integrator] formulation, method, dt | rtol + atol, project
     [run]        t_final, t_transient, sample_dt, checkpoint_every
@@ -30,13 +32,14 @@ from ..geometry.checks import path as file_path
 from ..geometry.checks import shown
 from .scene_checks import (Problems, source_names, multiple_of, section_values, table_values, unknown_key,
                            where)
-from .scene_linkage import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
-                            linkage_defaults, system_kind_problems)
+from .scene_mechanism import (LINKAGE_KEYS, check_linkage_effects, check_linkage_system,
+                              check_mechanism_effects, check_mechanism_start, linkage_defaults,
+                              mechanism_system, system_kind_problems, translated)
 from .scene_schema import EFFECTS, SCHEMA, TANGENT_EFFECTS, TOP_KEYS, SceneError, api_default
 from .scene_transients import refuse_linkage_rules, scene_transients
 
 __all__ = ["Scene", "SceneError", "SCHEMA", "EFFECTS", "load_scene", "parse_scene",
-           "scene_to_dict"]
+           "scene_to_dict", "positive_exponents"]
 
 
 # ---------------------------------------------------------------------------------------
@@ -63,6 +66,13 @@ class Scene:
         return effect in self.effects
 
 
+def positive_exponents(scene: Scene) -> int:
+    """The number of positive Lyapunov exponents of the scene's system: d − 1 on its
+    d-dimensional configuration manifold (N − 2 for N rotors and for the linkage's N = 4)."""
+    s = scene.system
+    return s["dimension"] - 1 if s.get("kind") == "mechanism" else s["n"] - 2
+
+
 def scene_to_dict(scene: Scene) -> dict:
     """The scene as run (every default filled in), JSON/TOML-serialisable."""
     return {"name": scene.name, "description": scene.description, "system": dict(scene.system),
@@ -84,9 +94,10 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     source_names(source, default_name, SceneError)
     if not isinstance(data, dict):
         raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
+    data = translated(source, data)  # [mechanism] of the rotors or the linkage: their [system]
     problems = Problems(source)      # key-level problems of every section, reported together
     top = table_values(source, data, None, TOP_KEYS, problems,
-                       allowed=set(TOP_KEYS) | set(SCHEMA) | {"effects"})
+                       allowed=set(TOP_KEYS) | set(SCHEMA) | {"effects", "mechanism"})
     name = top["name"] or default_name
 
     system, _ = section_values(source, data, "system", SCHEMA["system"], problems)
@@ -114,15 +125,21 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         effects[ename] = section_values(source, {ename: eraw}, ename, EFFECTS[ename], problems,
                                   label=f"effects.{ename}")[0]
     raw_sys = data.get("system", {})
-    system_kind_problems(source, raw_sys, system["kind"], problems)
+    mechanical = "mechanism" in data      # a mechanism on the generic route
+    if mechanical:
+        mechanism_system(source, data, system, raw_sys, problems)
+    else:
+        system_kind_problems(source, raw_sys, system["kind"], problems)
     problems.raise_all()              # the checks below relate keys that must be valid first
     linkage = system["kind"] == "linkage"
     if linkage:                       # the exact linkage of the Appendix (docs/linkage.md)
         check_linkage_system(source, system, raw_sys, initial, raw_init, integ, raw_int)
         linkage_defaults(effects, raw_eff)
+    elif mechanical:
+        check_mechanism_start(source, raw_init, integ)
     else:
         _check_rotors(source, system, raw_sys, initial, raw_init)
-    n = system["n"]
+    n = system.get("n")
 
     # -- integrator --------------------------------------------------------------------------
     method = integ["method"]
@@ -134,7 +151,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
                                  "method = 'dop853')")
         integ["dt"] = integ["dt"] if integ["dt"] is not None else api_default("lyapunov", "dt")
         try:                # the API's step-size policy (status.check_step): the rotors' cap
-            if not linkage:
+            if not (linkage or mechanical):
                 check_step(integ["dt"], system["speed"], n)
         except ValueError as exc:
             raise SceneError(f"{where(source, 'integrator', 'dt')}: {exc}") from None
@@ -146,8 +163,8 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
         integ["rtol"] = integ["rtol"] if integ["rtol"] is not None else 1e-10
         # atol: None = integrate's default, rtol·min(1, speed)
 
-    _transients(linkage, run, "t_transient" in raw_run, effects)
-    if linkage:
+    _transients(system.get("kind", "rotors"), run, "t_transient" in raw_run, effects)
+    if linkage or mechanical:
         refuse_linkage_rules(source, run, effects)
     if method == "rk4":
         _follow_dt(linkage, run, integ, effects, integ["dt"])
@@ -161,7 +178,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     sdt = run["sample_dt"]
     n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
     # the transients a rule names, once t_final and the steps are known good ("auto" pilots)
-    rule = scene_transients(source, linkage, system, initial, integ, run, effects)
+    rule = scene_transients(source, linkage or mechanical, system, initial, integ, run, effects)
     if run["t_transient"] > 0:
         multiple_of(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
     if run["checkpoint_every"] is None:
@@ -174,7 +191,13 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     # -- effects -----------------------------------------------------------------------------------
     if linkage:
         check_linkage_effects(source, run, effects, raw_eff)
-    _check_effects(source, n, integ, run, effects)
+    if mechanical:
+        check_mechanism_effects(source, effects)
+        d = system["dimension"]
+        _check_effects(source, len(system["coordinates"]), integ, run, effects,
+                       exponents=(d - 1, d, 2 * d))
+    else:
+        _check_effects(source, n, integ, run, effects)
     if not effects:
         raise SceneError(f"{source}: the scene requests no effect: add at least one "
                          f"[effects.<name>] table (effects: {', '.join(EFFECTS)})")
@@ -233,9 +256,11 @@ def _follow_dt(linkage, run, integ, effects, dt):
                 table[key] = steps_of(key, value, dt, allow_zero=True, divides=divides) * dt
 
 
-def _transients(linkage, run, written, effects):
+def _transients(kind, run, written, effects):
     """Fill in the transients left out: each pass gets the default of the API call it
-    mirrors (``scene_schema.API``); a written ``[run] t_transient`` is every pass's."""
+    mirrors (``scene_schema.API``; ``kind``: the system's); a written ``[run] t_transient``
+    is every pass's."""
+    linkage = kind == "linkage"
     passes = {"angles": "linkage_angles" if linkage else "angles", "clv": "clv"}
     for name, api in passes.items():
         if name in effects and effects[name]["t_transient"] is None:
@@ -245,7 +270,8 @@ def _transients(linkage, run, written, effects):
         return
     main = [e for e in ("lyapunov", "curvature") if e in effects]
     if main:
-        run["t_transient"] = api_default("linkage" if linkage else main[0], "t_transient")
+        own = {"linkage": "linkage", "mechanism": "mechanism"}.get(kind, main[0])
+        run["t_transient"] = api_default(own, "t_transient")
     elif any(e not in passes for e in effects):    # waveforms, spectrum, drift, switches
         run["t_transient"] = api_default("waveforms", "t_transient")
     else:                                          # only the passes: the first one's
@@ -337,8 +363,13 @@ def _check_state(source, n, masses, theta, u, weights=None, level=0.0):
                          f"{exc}") from None
 
 
-def _check_effects(source, n, integ, run, effects):
+def _check_effects(source, n, integ, run, effects, exponents=None):
+    """The effects' settings against the system: ``n`` coordinates (the rotors' N) whose
+    velocities waveforms and spectrum may record; ``exponents``: (positive, most with the
+    θ product, most with the full product) of the Lyapunov exponents (default N − 2,
+    N − 1, 2N − 2: the rotors')."""
     sect = "effects.{}".format
+    positive, theta_max, full_max = exponents or (n - 2, n - 1, 2 * n - 2)
     tangent = [e for e in TANGENT_EFFECTS if e in effects]
     if tangent and (integ["formulation"] != "ambient" or integ["method"] != "rk4"):
         raise SceneError(
@@ -376,16 +407,17 @@ def _check_effects(source, n, integ, run, effects):
     if "lyapunov" in effects:
         ly = effects["lyapunov"]
         if ly["n_exponents"] is None:
-            ly["n_exponents"] = n - 2
+            ly["n_exponents"] = positive
         multiple_of(source, sect("lyapunov"), "reorth_every", ly["reorth_every"], integ["dt"],
                   "[integrator] dt")
         multiple_of(source, "run", "t_final", run["t_final"], ly["reorth_every"],
                   "[effects.lyapunov] reorth_every")
         # the vectors stay in the 2N−2-dim. constraint-preserving subspace; the θ-only
         # product sees only its N−1 θ-directions (more vectors would be degenerate)
-        kmax = n - 1 if ly["inner_product"] == "theta" else 2 * n - 2
+        kmax = theta_max if ly["inner_product"] == "theta" else full_max
         if ly["n_exponents"] > kmax:
-            more = " (use inner_product = 'full' for up to 2N−2)" if kmax == n - 1 else ""
+            more = (" (use inner_product = 'full' for up to "
+                    f"{'2N−2' if exponents is None else full_max})" if kmax == theta_max else "")
             raise SceneError(f"{where(source, sect('lyapunov'), 'n_exponents')} = "
                              f"{shown(ly['n_exponents'])} is not allowed with inner_product = "
                              f"{shown(ly['inner_product'])}: expected 1..{kmax}{more}")

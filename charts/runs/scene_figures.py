@@ -21,6 +21,9 @@ def _title(sc, what):
     s = sc.system
     if s.get("kind") == "linkage":
         return f"{sc.name}: {what}, linkage ε = {s['eps']:g}, ρ = {s['rho']:g}"
+    if s.get("kind") == "mechanism":
+        from ..plotting.mechanism import mechanism_label
+        return f"{sc.name}: {what},\n{mechanism_label(s)}"     # (a label too long for one line)
     return f"{sc.name}: {what}, N = {s['n']}"
 
 
@@ -46,6 +49,9 @@ def drift_png(sc, t, D) -> bytes:
     zeros, which a log axis cannot show, are left out and counted in the legend)."""
     names = ("|Σ cos θᵢ| (constraint)", f"|Σ uᵢ sin θᵢ| (tangency, {ANGULAR_VELOCITY})",
              "|E/E₀ − 1| (energy, relative)")
+    if sc.system.get("kind", "rotors") != "rotors":
+        names = ("max |Fᵢ(q)| (constraints)", "max |(J v)ᵢ| (tangency)",
+                 "|E/E₀ − 1| (energy, relative)")
     fig, _ = plot_drift(t, np.asarray(D).T, names, title=_title(sc, "drift of the invariants"))
     return png_bytes(fig)
 

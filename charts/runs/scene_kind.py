@@ -1,20 +1,20 @@
-"""What a scene's kind of system decides — the rotors (``charts.runs.rotor_run``) or the
-Appendix's linkage (``charts.runs.linkage_run``): one record of its pieces per kind, so that
-the runner, the recorders and the result writers ask the scene's kind instead of branching
-on it."""
+"""What a scene's kind of system decides — the rotors (``charts.runs.rotor_run``), the
+Appendix's linkage (``charts.runs.linkage_run``) or any other mechanism on the generic route
+(``charts.runs.mechanism_run``; the ``[mechanism]`` table, ``charts.runs.scene_mechanism``):
+one record of its pieces per kind, so that the runner, the recorders and the result writers
+ask the scene's kind instead of branching on it."""
 from __future__ import annotations
 
 from typing import Callable, NamedTuple
 
-from . import linkage_run, rotor_run
-from .scene_linkage import is_linkage
+from . import linkage_run, mechanism_run, rotor_run
 
-__all__ = ["SceneKind", "scene_kind", "ROTORS", "LINKAGE"]
+__all__ = ["SceneKind", "scene_kind", "ROTORS", "LINKAGE", "MECHANISM", "KINDS"]
 
 
 class SceneKind(NamedTuple):
     """The pieces of a scene run that depend on the kind of system."""
-    #: "rotors" or "linkage"
+    #: "rotors", "linkage" or "mechanism" (``[system] kind``)
     name: str
     #: the names of a state's positions and velocities in result.json
     state_keys: tuple
@@ -46,7 +46,14 @@ LINKAGE = SceneKind("linkage", ("q", "v"), linkage_run.linkage_system,
                     linkage_run.linkage_curvature, linkage_run.linkage_angles_pass,
                     linkage_run.linkage_paper_exponents, linkage_run.linkage_result, False)
 
+MECHANISM = SceneKind("mechanism", ("q", "v"), mechanism_run.mechanism_system,
+                      mechanism_run.mechanism_start,
+                      lambda st: mechanism_run.mechanism_invariants(st.system, st.y, st.speed),
+                      None, None, lambda st, k: None, mechanism_run.mechanism_result, False)
+#: The kinds by their name.
+KINDS = {kind.name: kind for kind in (ROTORS, LINKAGE, MECHANISM)}
+
 
 def scene_kind(scene) -> SceneKind:
-    """The `SceneKind` of a scene (``[system] kind``)."""
-    return LINKAGE if is_linkage(scene) else ROTORS
+    """The `SceneKind` of a scene (``[system] kind``, "rotors" where it has none)."""
+    return KINDS[scene.system.get("kind", "rotors")]

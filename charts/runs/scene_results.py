@@ -23,7 +23,7 @@ from . import scene_figures as figs
 from .netcdf_results import SCENE_NETCDF, SceneResult
 from .io import atomic_write, json_default, npz_bytes, versions
 from .run_state import CHECKPOINT, RunState, units_done
-from .scene import scene_to_dict
+from .scene import positive_exponents, scene_to_dict
 from .scene_kind import scene_kind
 
 __all__ = ["finalize", "progress_of", "result_header", "resume_command", "write_result", "waveforms_result", "spectrum_result", "drift_result",
@@ -227,11 +227,11 @@ def lyapunov_result(st, out, *, t_done, **_):
     if len(marks) >= 2:
         res["stderr"] = stderr.tolist()
         res["batches"] = len(batches)
-    n = st.scene.system["n"]
-    if ly["n_exponents"] >= n - 2:      # every positive exponent of the pairs ±λ computed
-        # Pesin's h_KS: the leading N − 2 positive in the run's estimate, summed in each
-        # batch alike for the batch-means error (charts.analyses.spectrum_quantities)
-        h, h_se = leading_entropy_with_error(exps, batches, n - 2)
+    positive = positive_exponents(st.scene)
+    if ly["n_exponents"] >= positive:   # every positive exponent of the pairs ±λ computed
+        # Pesin's h_KS: the leading N − 2 (d − 1) positive in the run's estimate, summed in
+        # each batch alike for the batch-means error (charts.analyses.spectrum_quantities)
+        h, h_se = leading_entropy_with_error(exps, batches, positive)
         res["h_ks"] = h
         if len(marks) >= 2:
             res["h_ks_stderr"] = h_se

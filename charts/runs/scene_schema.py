@@ -22,7 +22,8 @@ __all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECT
            "API", "FromAPI", "api_default"]
 
 #: The API call each effect mirrors (``module:function``); ``linkage`` and
-#: ``linkage_angles``: the main pass and the angles pass of a linkage scene.
+#: ``linkage_angles``: the main pass and the angles pass of a linkage scene; ``mechanism``:
+#: the main pass of a scene with a [mechanism] table on the generic route.
 API = {
     "lyapunov": "charts.analyses.lyapunov:lyapunov_spectrum",
     "curvature": "charts.analyses.curvature:curvature_along_trajectory",
@@ -30,6 +31,7 @@ API = {
     "clv": "charts.analyses.covariant:covariant_lyapunov_vectors",
     "waveforms": "charts.analyses.spectra:waveform",
     "linkage": "charts.analyses.linkage:linkage_run",
+    "mechanism": "charts.analyses.mechanism_lyapunov:lyapunov_spectrum",
     "linkage_angles": "charts.analyses.linkage_angles:linkage_angles",
 }
 
