@@ -17,7 +17,8 @@ import numpy as np
 
 from ..jit import njit
 
-__all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_rhs", "lu_in_place", "lu_solve_columns"]
+__all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_matrix", "apply_tangent_matrix",
+           "tangent_motion_rhs", "lu_in_place", "lu_solve_columns"]
 
 
 @njit(cache=True)
@@ -59,46 +60,71 @@ def motion_rhs(dM, F2, v, b):
 
 
 @njit(cache=True)
-def tangent_motion_rhs(dM, d2M, F2, F3, v, x, dq, dv, r):
-    """r = δb − δK x, shape (n + k,), in place: the KKT system differentiated along the phase
-    tangent vector (δq, δv) at its solution x = (q̈, λ), so that K δx = r gives δq̈ (exact,
-    with ∂²M and ∂³F)."""
+def tangent_motion_matrix(dM, d2M, F2, F3, v, x, T, flat):
+    """T, shape (n + k, 2n), in place: the linearisation of the KKT system at (q, v) with its
+    solution x = (q̈, λ) as a matrix, δb − δK x = T (δq, δv), so that K δx = T (δq, δv) gives
+    δq̈ for every phase tangent vector (δq, δv) (exact, with ∂²M and ∂³F; built once per
+    point for all the vectors).  Rows i < n (δC and δK x of the metric rows):
+
+        T[i, l]     = −Σ_jm (∂_l∂_j M_im − ½ ∂_l∂_i M_jm) v^j v^m − Σ_j ∂_l M_ij q̈_j + Σ_c ∂_l J_ci λ_c
+        T[i, n + a] = −Σ_m (∂_a M_im − ½ ∂_i M_am + ∂_m M_ia − ½ ∂_i M_ma) v^m
+
+    rows n + c (the constraint differentiated twice): T[n + c, l] = −∂³F_c(v, v, ∂_l) −
+    Σ_i ∂_l J_ci q̈_i and T[n + c, n + j] = −2 Σ_i ∂²F_c[i, j] v^i.  ``flat``: M is constant
+    (``Mechanism.constant_metric``), its ∂M and ∂²M terms skipped (zeros: no bit changes)."""
     n = v.shape[0]
     k = F2.shape[0]
     for i in range(n):
-        dc = 0.0                                    # δC_i
-        for j in range(n):
-            for m in range(n):
-                vv = v[j] * v[m]
-                for l in range(n):
-                    dc += (d2M[i, m, j, l] - 0.5 * d2M[j, m, i, l]) * vv * dq[l]
-                dc += (dM[i, m, j] - 0.5 * dM[j, m, i]) * (dv[j] * v[m] + v[j] * dv[m])
-        dkx = 0.0                                   # (δK x)_i = Σ_j δM_ij q̈_j − Σ_c δJ_ci λ_c
-        for j in range(n):
-            dm = 0.0
-            for l in range(n):
-                dm += dM[i, j, l] * dq[l]
-            dkx += dm * x[j]
-        for c in range(k):
-            dj = 0.0
-            for l in range(n):
-                dj += F2[c, i, l] * dq[l]
-            dkx -= dj * x[n + c]
-        r[i] = -dc - dkx
+        for l in range(n):
+            s = 0.0
+            for c in range(k):
+                s += F2[c, i, l] * x[n + c]
+            if not flat:
+                for j in range(n):
+                    s -= dM[i, j, l] * x[j]
+                    for m in range(n):
+                        s -= (d2M[i, m, j, l] - 0.5 * d2M[j, m, i, l]) * v[j] * v[m]
+            T[i, l] = s
+        for a in range(n):
+            s = 0.0
+            if not flat:
+                for m in range(n):
+                    s -= (dM[i, m, a] - 0.5 * dM[a, m, i] + dM[i, a, m] - 0.5 * dM[m, a, i]) * v[m]
+            T[i, n + a] = s
     for c in range(k):
-        d3 = 0.0                                    # ∂³F(v, v, δq)
-        d2 = 0.0                                    # ∂²F(v, δv)
-        dkx = 0.0                                   # (δK x)_{n+c} = Σ_i δJ_ci q̈_i
-        for i in range(n):
-            dj = 0.0
-            for j in range(n):
-                d2 += F2[c, i, j] * v[i] * dv[j]
-                dj += F2[c, i, j] * dq[j]
-                for l in range(n):
-                    d3 += F3[c, i, j, l] * v[i] * v[j] * dq[l]
-            dkx += dj * x[i]
-        r[n + c] = -d3 - 2.0 * d2 - dkx
+        for l in range(n):
+            s = 0.0
+            for i in range(n):
+                s -= F2[c, i, l] * x[i]
+                for j in range(n):
+                    s -= F3[c, i, j, l] * v[i] * v[j]
+            T[n + c, l] = s
+        for j in range(n):
+            s = 0.0
+            for i in range(n):
+                s -= 2.0 * F2[c, i, j] * v[i]
+            T[n + c, n + j] = s
 
+
+@njit(cache=True)
+def apply_tangent_matrix(T, dq, dv, r):
+    """r = T (δq, δv), shape (n + k,), in place (`tangent_motion_matrix`)."""
+    n = dq.shape[0]
+    for i in range(T.shape[0]):
+        s = 0.0
+        for l in range(n):
+            s += T[i, l] * dq[l] + T[i, n + l] * dv[l]
+        r[i] = s
+
+
+@njit(cache=True)
+def tangent_motion_rhs(dM, d2M, F2, F3, v, x, dq, dv, r):
+    """r = δb − δK x, shape (n + k,), in place: the KKT system differentiated along the phase
+    tangent vector (δq, δv) at its solution x = (q̈, λ), so that K δx = r gives δq̈ (exact,
+    with ∂²M and ∂³F; `tangent_motion_matrix` applied to one vector)."""
+    T = np.empty((r.shape[0], 2 * v.shape[0]))
+    tangent_motion_matrix(dM, d2M, F2, F3, v, x, T, False)
+    apply_tangent_matrix(T, dq, dv, r)
 
 
 @njit(cache=True)

@@ -36,7 +36,8 @@ from ..solvers.rk import rk4_combine, rk4_point, rk4_stages
 from ..solvers.tangent import StackedFlow
 from .dynamics import RANK_TOL
 from .errors import MechanismError
-from .kernels import kkt_matrix, lu_in_place, lu_solve_columns, motion_rhs, tangent_motion_rhs
+from .kernels import (apply_tangent_matrix, kkt_matrix, lu_in_place, lu_solve_columns,
+                      motion_rhs, tangent_motion_matrix)
 from .symbolic import JET_ORDER
 
 __all__ = ["MechanismTangentFlow", "INNER_PRODUCTS"]
@@ -50,10 +51,12 @@ def _rate(jets, p, Z, out, jq, jv, jt, work):
     """out = d/dt Z for Z = [y; X], shape (1 + kv, 2n): the ambient flow of the state (row 0)
     and its linearisation for the vector rows.  ``jt``: the jets (F, J, F2, F3, M, dM, d2M),
     ``jq``, ``jv``: the state's q and v, ``work``: (KKT matrix, its pivots, right-hand sides
-    (n + k, 1 + kv): the state's in column 0, the vectors' after it), the KKT matrix factored
-    once (`lu_in_place`) for all of them; a singular one makes the rates NaN."""
+    (n + k, 1 + kv): the state's in column 0, the vectors' after it, the linearisation's
+    matrix (n + k, 2n), whether M is constant), the KKT matrix factored once (`lu_in_place`)
+    and the linearisation built once (`tangent_motion_matrix`) for all of them; a singular K
+    makes the rates NaN."""
     F, J, F2, F3, M, dM, d2M = jt
-    K, piv, B = work
+    K, piv, B, T, flat = work
     n = jq.shape[0]
     kv = Z.shape[0] - 1
     for i in range(n):
@@ -72,8 +75,9 @@ def _rate(jets, p, Z, out, jq, jv, jt, work):
         out[0, n + i] = x[i]
     if kv == 0:
         return
+    tangent_motion_matrix(dM, d2M, F2, F3, jv, x, T, flat)
     for r in range(kv):
-        tangent_motion_rhs(dM, d2M, F2, F3, jv, x, Z[1 + r, :n], Z[1 + r, n:], B[:, 1 + r])
+        apply_tangent_matrix(T, Z[1 + r, :n], Z[1 + r, n:], B[:, 1 + r])
     lu_solve_columns(K, piv, B, 1, 1 + kv)
     for r in range(kv):
         for i in range(n):
@@ -107,7 +111,7 @@ def _project(jets, p, Z, periodic, eye, jq, jt, work):
     converge, Z is not finite, or J is near rank-deficient (its Gram matrix's pivots below
     RANK_TOL² of the largest): the caller then takes NumPy's route, which says why."""
     F, J, F2, F3, M, dM, d2M = jt
-    K, piv, B = work
+    K, piv, B = work[:3]
     n = jq.shape[0]
     k = F.shape[0]
     kv = Z.shape[0] - 1
@@ -332,7 +336,8 @@ class MechanismTangentFlow(StackedFlow):
         # the jets' arrays: zeroed once, the compiled function writes the non-zero entries
         self._jt = tuple(np.zeros(mech._eval(key, q0).shape) for key in JET_ORDER)
         nk = n + mech.k
-        self._work = (np.zeros((nk, nk)), np.zeros(nk, dtype=np.int64), np.zeros((nk, 1 + self.k)))
+        self._work = (np.zeros((nk, nk)), np.zeros(nk, dtype=np.int64), np.zeros((nk, 1 + self.k)),
+                      np.zeros((nk, 2 * n)), bool(mech.constant_metric))
         self._K = np.zeros((4,) + self.Z.shape)                # the RK4 stages' rates
         self._Zs = np.zeros_like(self.Z)
         self._periodic = np.asarray(mech._periodic_mask, dtype=np.bool_)
