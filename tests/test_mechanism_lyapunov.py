@@ -38,15 +38,16 @@ def rot3():
 
 
 def test_rotors3_exponent_meets_the_rotor_analysis(rot3):
-    """λ₁ of ``rotors(3)`` from the mechanism's generic route equals λ₁ of
-    ``charts.lyapunov_spectrum(RotorSystem(3))`` (eqs 17-18 by the rotors' own kernels) from
-    the same state, within TOL["sigmas"] combined standard errors.  Not bit for bit: the two
-    routes evaluate eq (8) by different formulas (a KKT solve against its closed form), so
+    """λ₁ of ``RotorSystem(3)`` by the generic route of a Mechanism (a RotorSystem is one: the
+    compiled tangent flow of its symbolic jets, projected by its own `project_point`) equals
+    λ₁ of ``charts.lyapunov_spectrum(RotorSystem(3))`` (eqs 17-18 by the rotors' own kernels)
+    from the same state, within TOL["sigmas"] combined standard errors.  Not bit for bit: the
+    two routes evaluate eq (8) by different formulas (a KKT solve against its closed form), so
     their trajectories separate at rounding level and decorrelate within the transient."""
     q, v = rot3.random_state(3)
-    mine = lyapunov_spectrum(rot3, q, v, 2000.0, n_batches=10)
-    ref = charts.lyapunov_spectrum(charts.RotorSystem(3), q, v, 2000.0, n_batches=10,
-                                   t_transient=50.0)
+    system = charts.RotorSystem(3)
+    mine = lyapunov_spectrum(system, q, v, 2000.0, n_batches=10)
+    ref = charts.lyapunov_spectrum(system, q, v, 2000.0, n_batches=10, t_transient=50.0)
     se = np.hypot(mine.stderr[0], ref.stderr[0])
     assert abs(mine.exponents[0] - ref.exponents[0]) < TOL["sigmas"] * se, (mine.summary(), ref)
     assert 0 < se < 0.02                             # a real error bar, not a vacuous one
@@ -115,7 +116,7 @@ def test_tangent_flow_is_the_derivative_of_the_flow():
 def test_bad_input_is_refused(rot3):
     q, v = rot3.random_state(0)
     cases = [
-        (dict(mech=charts.RotorSystem(3)), MechanismError, "Mechanism"),
+        (dict(mech="rotors(3)"), MechanismError, "Mechanism"),
         (dict(q0=q + 0.1), MechanismError, "off the constraint"),
         (dict(q0=q[:2]), MechanismError, "q0"),
         (dict(v0=np.ones(3)), MechanismError, "not tangent"),

@@ -14,10 +14,22 @@ ambient velocity vectors ``u``, shape (n,), with Σ aᵢ uᵢ sin θᵢ = 0 (eq 
 Chart ``k`` uses the local coordinates θ without θₖ (see ``charts.geometry.atlas``);
 its domain is sin θₖ ≠ 0, i.e. |Σ_{α≠k} a_α cos θ_α − c| < aₖ, and the sign of sin θₖ is the
 chart's branch.
+
+A RotorSystem is a ``charts.Mechanism`` (``isinstance`` holds: ``charts.mechanism.model``
+registers it; docs/mechanisms.md) on the ambient coordinates q = θ.  Its own methods are the
+rotors' structured O(N) routes; they also take a Mechanism's forms of their arguments (a chart
+as the sorted tuple of its independent indices, ``tol=``, ``near=``, ``energy(q, v)``).  Every
+other method of a Mechanism (the ambient KKT equations and their linearisation, the
+projections of velocities and phase tangent vectors, the atlas's lift and jets, the Gauss
+equation, the compiled tangent flow) is that of `RotorSystem.mechanism`: the generic rotor
+Mechanism of the same masses, weights and level (``charts.mechanism.instances.rotors``, whose
+symbolic model is derived on first use, once per N and process).  The mechanism layer sits
+above this one, so that the rotors do not import SymPy: it is reached by name, on first use.
 """
 from __future__ import annotations
 
 import warnings
+from importlib import import_module
 
 import numpy as np
 
@@ -51,6 +63,14 @@ def _label(what, name) -> str:
         raise TypeError(f"{what} must be a non-empty str (an argument's name in messages), "
                         f"got {shown(name)}")
     return name
+
+
+def _tolerance(tol) -> float:
+    """``tol`` (a Mechanism's absolute tolerance) as a positive float; ValueError naming it."""
+    tol = number("tol", tol)
+    if not tol > 0:
+        raise ValueError(f"tol must be positive, got {tol!r}")
+    return tol
 
 
 class CriticalLevelWarning(UserWarning):
@@ -101,7 +121,15 @@ def plane_area2(vv, ww, vw) -> float:
 
 class RotorSystem:
     """N rotors with moments of inertia ``masses`` (default all 1, the paper's case) on the
-    constraint Σ ``weights``ᵢ cos θᵢ = ``level`` (default weights all 1, level 0: eq 9)."""
+    constraint Σ ``weights``ᵢ cos θᵢ = ``level`` (default weights all 1, level 0: eq 9).
+
+    A ``charts.Mechanism`` with one constraint (module docstring): the methods written here
+    are the rotors' structured ones, the others a Mechanism's, through `mechanism`."""
+
+    #: A Mechanism's k, its number of constraints: Σ aᵢ cos θᵢ = c.
+    k = 1
+    #: The instance's own fields, all that a pickle carries (`mechanism` is rebuilt on use).
+    _FIELDS = ("n", "masses", "minv", "weights", "level", "dim", "_gen")
 
     def __init__(self, n: int, masses=None, weights=None, level=0.0):
         n = integer("n (the number of rotors)", n)      # 4.0 and np.int64(4) count; 3.5 no
@@ -132,6 +160,40 @@ class RotorSystem:
         return (f"RotorSystem(n={self.n}, masses={self.masses.tolist()}, "
                 f"weights={self.weights.tolist()}, level={self.level!r})")
 
+    # -- the Mechanism -------------------------------------------------------------------
+    @property
+    def name(self) -> str:
+        """The Mechanism's name: ``RotorSystem(n=N)``."""
+        return f"RotorSystem(n={self.n})"
+
+    @property
+    def mechanism(self):
+        """The generic rotor ``charts.Mechanism`` of these masses, weights and level
+        (``charts.mechanism.instances.rotors(n, masses, weights, level)``), made on first use
+        and kept: the home of every Mechanism method this class does not write itself (module
+        docstring).  Its symbolic model is shared by every system of this N; nothing is
+        derived before a method needs it."""
+        twin = self.__dict__.get("_mechanism")
+        if twin is None:
+            # the mechanism layer is above this one: by name, on first use
+            rotors = import_module("charts.mechanism.instances").rotors
+            twin = self.__dict__["_mechanism"] = rotors(self.n, self.masses, self.weights,
+                                                        self.level)
+        return twin
+
+    def __getattr__(self, name):
+        """A Mechanism's attribute that this class does not define: `mechanism`'s."""
+        if name.startswith("__") or "n" not in self.__dict__:    # (copy and pickle look up
+            raise AttributeError(name)                            #  dunders before __dict__)
+        twin = self.mechanism
+        if not hasattr(twin, name):
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        return getattr(twin, name)
+
+    def __getstate__(self):
+        """The fields of `_FIELDS` (`mechanism` holds compiled functions: made anew on use)."""
+        return {k: self.__dict__[k] for k in self._FIELDS}
+
     # -- validation --------------------------------------------------------------------
     def describe(self) -> dict:
         """The system as the settings of a result (``params``): N, masses, weights, level."""
@@ -145,31 +207,43 @@ class RotorSystem:
         that weights of 1e-10 or 1e9 are checked as strictly as weights of 1."""
         return max(float(np.max(np.abs(self.weights))), abs(self.level))
 
-    def check_point(self, theta, name="theta") -> np.ndarray:
+    def check_point(self, theta, name="theta", *, tol=None) -> np.ndarray:
         """theta (N,) as a float array after checking it is on the manifold:
         |Σ aᵢ cos θᵢ − level| within ``TOL['constraint']`` × `constraint_scale`; ValueError
-        naming ``name`` (the caller's name of the argument) otherwise."""
+        naming ``name`` (the caller's name of the argument) otherwise.  With ``tol`` (a
+        Mechanism's form, ``check_point(q, tol=...)``): within ``tol`` itself, and theta not a
+        singular point (every aᵢ sin θᵢ = 0: the Jacobian has rank 0), as a Mechanism's."""
         theta = finite_array(_label("name", name), theta, shape=(self.n,))
         F = float(self.weights @ np.cos(theta)) - self.level
-        tol = TOL["constraint"] * self.constraint_scale
+        given = tol is not None
+        tol = _tolerance(tol) if given else TOL["constraint"] * self.constraint_scale
         if abs(F) > tol:
             what = "sum(cos theta)" if self.is_paper_family else "sum(a cos theta) - level"
             raise ValueError(f"{name} is off the manifold: {what} = {F:.3e} "
-                             f"(tolerance {tol:g}); use RotorSystem.project_point")
+                             f"(tolerance {'tol=' * given}{tol:g}); use RotorSystem.project_point")
+        if given and not np.any(self.weights * np.sin(theta)):
+            raise ValueError(f"{name} = {theta.tolist()} is a singular point of the manifold "
+                             "(every sin theta_i = 0: the constraint's Jacobian vanishes)")
         return theta
 
-    def check_tangent(self, theta, u, name="u") -> np.ndarray:
+    def check_tangent(self, theta, u, name="u", *, tol=None) -> np.ndarray:
         """u (N,) as a float array after checking it is tangent at theta:
-        |Σ uᵢ aᵢ sin θᵢ| within ``TOL['tangency']`` × `constraint_scale` × max(1, |u|)."""
+        |Σ uᵢ aᵢ sin θᵢ| within ``TOL['tangency']`` × `constraint_scale` × max(1, |u|).  With
+        ``tol`` (a Mechanism's form): within ``tol`` × max(1, maxᵢ |uᵢ|), as a Mechanism's."""
         name = _label("name", name)
         theta = finite_array("theta", theta, shape=(self.n,))
         u = finite_array(name, u, shape=(self.n,))
         G = float(u @ (self.weights * np.sin(theta)))
-        tol = TOL["tangency"] * self.constraint_scale * max(1.0, float(np.linalg.norm(u)))
+        given = tol is not None
+        if given:
+            tol = _tolerance(tol) * max(1.0, float(np.max(np.abs(u))))
+        else:
+            tol = TOL["tangency"] * self.constraint_scale * max(1.0, float(np.linalg.norm(u)))
         if abs(G) > tol:
             what = f"sum({name} sin theta)" if self.is_paper_family else f"sum({name} a sin theta)"
             raise ValueError(f"{name} is not tangent to the manifold: {what} = {G:.3e} "
-                             f"(tolerance {tol:g}); use RotorSystem.project_tangent")
+                             f"(tolerance {'from tol ' * given}{tol:g}); use "
+                             "RotorSystem.project_tangent")
         return u
 
     def check_state(self, theta, u, names=("theta", "u")):
@@ -188,9 +262,14 @@ class RotorSystem:
         return theta, u
 
     # -- invariants and projections ----------------------------------------------------
-    def energy(self, u):
+    def energy(self, u, v=None):
         """Kinetic energy ½ Σ mᵢuᵢ² of the velocities u (..., N); ValueError naming u
-        unless u is finite with last axis N and its energy is within a float's range."""
+        unless u is finite with last axis N and its energy is within a float's range.
+        ``energy(q, v)``, a Mechanism's form: T = ½ Σ mᵢvᵢ² of the velocity v (N,) at the point
+        q (N,) (the metric is constant: q is only checked), a float."""
+        if v is not None:
+            finite_array("q", u, shape=(self.n,))
+            return float(self.energy(finite_array("v", v, shape=(self.n,))))
         u = finite_array("u", u)
         if u.ndim == 0 or u.shape[-1] != self.n:
             raise ValueError(f"u must have shape (..., {self.n}), got {u.shape}")
@@ -262,20 +341,72 @@ class RotorSystem:
         k = best_charts(np.ascontiguousarray(s.reshape(-1, self.n))).reshape(s.shape[:-1])
         return int(k) if k.ndim == 0 else k
 
-    def _chart(self, theta, chart):
-        """(k, local indices, q, local masses, local weights) of ``chart`` at theta."""
-        theta = self.check_point(theta)
-        k = self.best_chart(theta) if chart is None else chart
+    def _chart_index(self, chart) -> tuple:
+        """``chart`` as a Mechanism's chart, the sorted tuple of its N − 1 independent indices:
+        given as the eliminated angle k (every index but k) or as such a tuple (any order)."""
+        if not isinstance(chart, (tuple, list, np.ndarray)):
+            if isinstance(chart, bool) or not isinstance(chart, (int, np.integer)) \
+                    or not 0 <= chart < self.n:
+                raise self._chart_error(chart)
+            return tuple(i for i in range(self.n) if i != chart)
+        try:
+            ind = sorted(integer("chart", i, 0, self.n - 1) for i in chart)
+        except (TypeError, ValueError):
+            ind = None
+        if ind is None or len(ind) != self.dim or len(set(ind)) != self.dim:
+            raise self._chart_error(chart)
+        return tuple(ind)
+
+    def _chart_error(self, chart) -> ValueError:
+        """The refusal of ``chart``, neither form of a chart (`_chart_index`)."""
+        return ValueError(f"chart must be an integer in 0..{self.n - 1} (the eliminated angle) "
+                          f"or the {self.dim} other indices (a Mechanism's chart), got "
+                          f"{shown(chart)}")
+
+    def _eliminated(self, chart):
+        """k, the eliminated angle, of a chart given as a Mechanism's tuple of the independent
+        indices; ``chart`` itself otherwise (the callers check an int)."""
+        if not isinstance(chart, (tuple, list, np.ndarray)):
+            return chart
+        ind = set(self._chart_index(chart))
+        return next(i for i in range(self.n) if i not in ind)
+
+    def _chart_of(self, theta, chart) -> tuple:
+        """A Mechanism's chart (tuple) of ``chart`` (either form), or of `best_chart` at theta."""
+        return self._chart_index(self.best_chart(theta) if chart is None else chart)
+
+    def _ambient(self, theta, chart, near):
+        """theta; or with ``near`` (a Mechanism's form) the point whose coordinates in
+        ``chart`` are theta (N − 1,), on the branch of the ambient point ``near`` (lifted by
+        `mechanism`)."""
+        if near is None:
+            return theta
+        if chart is None:
+            raise ValueError("near= needs chart=: the chart whose coordinates theta are")
+        return self.mechanism._resolve(theta, self._chart_index(chart), near)[0]
+
+    def _resolve(self, theta, chart, near, name="theta"):
+        """(point, chart), as a Mechanism's: the checked ambient point (`_ambient`) and its
+        chart (the tuple form; `best_chart` for None), theta in its domain (`_chart`)."""
+        theta = self.check_point(self._ambient(theta, chart, near), name)
+        return theta, self._chart_index(self._chart(theta, chart, name)[0])
+
+    def _chart(self, theta, chart, name="theta"):
+        """(k, local indices, q, local masses, local weights) of ``chart`` (the eliminated
+        angle k, or a Mechanism's tuple of the independent indices) at theta (checked, on the
+        manifold and in the chart's domain; ``name`` its name in messages)."""
+        theta = self.check_point(theta, name)
+        k = self.best_chart(theta) if chart is None else self._eliminated(chart)
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= k < self.n:
-            raise ValueError(f"chart must be an integer in 0..{self.n - 1}, got {chart!r}")
+            raise self._chart_error(chart)
         if not self._in_chart(theta, k):
             best = self.best_chart(theta)
             if not self._in_chart(theta, best):
-                raise ValueError(f"theta = {theta.tolist()} is a singular point of the manifold "
+                raise ValueError(f"{name} = {theta.tolist()} is a singular point of the manifold "
                                  "(every sin theta_i = 0: the gradient of sum(a cos theta) "
                                  "vanishes); the metric and curvature are not defined there in "
                                  "any chart")
-            raise ValueError(f"theta is outside the domain of chart {k}: sin(theta_{k}) = "
+            raise ValueError(f"{name} is outside the domain of chart {k}: sin(theta_{k}) = "
                              f"{np.sin(theta[k]):.2e}; use chart={best} (the best conditioned) "
                              "or chart=None")
         idx = chart_coordinates(self.n, k)
@@ -298,8 +429,9 @@ class RotorSystem:
         return q, finite_array("u", u, shape=(self.n,))[idx]
 
     def from_chart(self, q, v, chart, branch):
-        """Ambient (theta, u) from local (q, v) of ``chart`` on sign branch ``branch`` = ±1."""
-        chart = integer("chart", chart, 0, self.n - 1)
+        """Ambient (theta, u) from local (q, v) of ``chart`` (k or a Mechanism's tuple) on sign
+        branch ``branch`` = ±1."""
+        chart = integer("chart", self._eliminated(chart), 0, self.n - 1)
         if isinstance(branch, bool) or np.ndim(branch) != 0 or branch not in (1, -1):
             raise ValueError(f"branch must be +1 or -1 (the sign of sin theta_{chart}), "
                              f"got {shown(branch)}")
@@ -317,15 +449,17 @@ class RotorSystem:
         u = np.insert(v, chart, self._gen.eliminated_component(q, v, a, sk))
         return theta, u
 
-    def metric(self, theta, chart=None):
-        """g_ab (eq 13) in ``chart`` (default: best conditioned), shape (n−1, n−1)."""
-        _, _, q, m, a = self._chart(theta, chart)
+    def metric(self, theta, chart=None, near=None):
+        """g_ab (eq 13) in ``chart`` (default: best conditioned), shape (n−1, n−1).  ``chart``:
+        the eliminated angle k or a Mechanism's tuple of the independent indices; with
+        ``near``, theta may be the chart's coordinates (a Mechanism's form, `_ambient`)."""
+        _, _, q, m, a = self._chart(self._ambient(theta, chart, near), chart)
         return self._gen.metric(q, m, a, self.level, np.empty((self.dim, self.dim)))
 
-    def metric_inverse(self, theta, chart=None):
+    def metric_inverse(self, theta, chart=None, near=None):
         """The inverse metric g^{ij}, (N − 1, N − 1), of chart ``chart`` (default: the best
-        chart at theta) at the point theta (eq 12)."""
-        _, _, q, m, a = self._chart(theta, chart)
+        chart at theta) at the point theta (eq 12); ``chart`` and ``near`` as `metric`'s."""
+        _, _, q, m, a = self._chart(self._ambient(theta, chart, near), chart)
         return self._gen.metric_inverse(q, m, a, self.level, np.empty((self.dim, self.dim)))
 
     def _array(self, name, rank):
@@ -335,9 +469,10 @@ class RotorSystem:
                              f"curvature_operator, sectional_curvature) instead")
         return np.empty((self.dim,) * rank)
 
-    def christoffel(self, theta, chart=None):
-        """Γ^a_bc (eq 15), upper index first, shape (n−1,)*3."""
-        _, _, q, m, a = self._chart(theta, chart)
+    def christoffel(self, theta, chart=None, near=None):
+        """Γ^a_bc (eq 15), upper index first, shape (n−1,)*3; ``chart`` and ``near`` as
+        `metric`'s."""
+        _, _, q, m, a = self._chart(self._ambient(theta, chart, near), chart)
         return self._gen.christoffel(q, m, a, self.level, self._array("Christoffel", 3))
 
     def christoffel_contract(self, theta, v, w, chart=None):
@@ -348,11 +483,12 @@ class RotorSystem:
         w = self.check_tangent(theta, w, "w")
         return -self._gen.transport_rate(q, v[idx], w[idx], m, a, self.level, np.empty(self.dim))
 
-    def riemann(self, theta, chart=None):
-        """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩, all indices down, shape (n−1,)*4.
+    def riemann(self, theta, chart=None, near=None):
+        """R_abcd = ⟨R(∂_c, ∂_d)∂_b, ∂_a⟩, all indices down, shape (n−1,)*4; ``chart`` and
+        ``near`` as `metric`'s.
 
         Sectional curvature: K(X, Y) = R_abcd X^a Y^b X^c Y^d / (|X|²|Y|² − ⟨X,Y⟩²)."""
-        _, _, q, m, a = self._chart(theta, chart)
+        _, _, q, m, a = self._chart(self._ambient(theta, chart, near), chart)
         return self._gen.riemann(q, m, a, self.level, self._array("Riemann", 4))
 
     def curvature_operator(self, theta, x, y, chart=None):
@@ -388,3 +524,47 @@ class RotorSystem:
         plane_area2(self.inner(theta, v, v), self.inner(theta, w, w), self.inner(theta, v, w))
         K, _ = gauss_sectional(theta, v, w, self.masses, self.weights)
         return float(K)
+
+    # -- a Mechanism's atlas, with a chart in either form --------------------------------
+    def lift(self, s, chart, near, iterations=50, tol=1e-13):
+        """The point with the coordinates s (N − 1,) in ``chart`` (k or a Mechanism's tuple),
+        the eliminated angle solved by Newton from the ambient point ``near`` (its branch):
+        `mechanism`'s ``lift``, within ``tol`` in at most ``iterations`` steps."""
+        s = finite_array("s", s, shape=(self.dim,))
+        chart = self._chart_index(chart)
+        near = finite_array("near", near, shape=(self.n,))
+        iterations = integer("iterations", iterations, 1, MAX_ITERATIONS)
+        tol = _tolerance(tol)
+        try:
+            return self.mechanism.lift(s, chart, near, iterations, tol)
+        except ValueError:
+            raise ValueError(f"cannot lift s = {s.tolist()} in chart {chart} from near = "
+                             f"{near.tolist()} to within tol = {tol:g} in iterations = "
+                             f"{iterations} Newton steps (no such point on that branch?)") from None
+
+    def embedding_jets(self, q, chart, order=3):
+        """∂q/∂s, ∂²q/∂s², ∂³q/∂s³ of ``chart`` (k or a Mechanism's tuple) at q, the first
+        ``order`` (1 to 3) of them: `mechanism`'s ``embedding_jets`` (the implicit function
+        theorem on the symbolic jets)."""
+        q, chart = self._resolve(q, chart, None, "q")
+        return self.mechanism.embedding_jets(q, chart, integer("order", order, 1, 3))
+
+    def chart_names(self, chart):
+        """The names of the independent coordinates of ``chart`` (k or a Mechanism's tuple)."""
+        return self.mechanism.chart_names(self._chart_index(chart))
+
+    def gaussian_curvature(self, theta, chart=None, near=None):
+        """K of the configuration surface (N = 3) at theta in ``chart`` (either form; default:
+        `best_chart`), by a Mechanism's intrinsic route (`mechanism`'s
+        ``gaussian_curvatures`` at the checked point); ``near`` as `metric`'s."""
+        theta, chart = self._resolve(theta, chart, near)
+        return float(self.mechanism.gaussian_curvatures(theta[None], chart)[0])
+
+    def gaussian_curvatures(self, q, chart):
+        """K at a batch of points q (S, 3) of the surface (unchecked), all in ``chart`` (either
+        form): `mechanism`'s ``gaussian_curvatures``."""
+        return self.mechanism.gaussian_curvatures(q, self._chart_index(chart))
+
+    def _gamma(self, q, chart):
+        """Γ^a_bc in ``chart`` (either form) from the symbolic jets (`mechanism`'s, unchecked)."""
+        return self.mechanism._gamma(q, self._chart_index(chart))

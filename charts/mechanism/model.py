@@ -19,6 +19,7 @@ concept, each a base class whose docstring says what it needs from this one:
 from __future__ import annotations
 
 import keyword
+from abc import ABCMeta
 
 import numpy as np
 import sympy as sp
@@ -27,6 +28,7 @@ from .atlas import Atlas
 from .dynamics import RANK_TOL, AmbientDynamics
 from .embedding import EmbeddingGeometry
 from ..geometry.checks import number, shown
+from ..geometry.system import RotorSystem
 from .errors import MechanismError
 from .geometry import ChartGeometry
 from .symbolic import SymbolicJets
@@ -65,7 +67,7 @@ def _check_containers(coordinates, constraints, masses, parameters, periodic, bo
 
 
 class Mechanism(SymbolicJets, AmbientDynamics,
-                Atlas, ChartGeometry, EmbeddingGeometry):
+                Atlas, ChartGeometry, EmbeddingGeometry, metaclass=ABCMeta):
     """A holonomic mechanism.
 
     Parameters
@@ -219,3 +221,8 @@ class Mechanism(SymbolicJets, AmbientDynamics,
     def __repr__(self):
         return (f"Mechanism({self.name!r}: q = ({', '.join(s.name for s in self.q)}), "
                 f"{self.k} constraint(s), dim {self.dim})")
+
+
+# The rotors' RotorSystem (a layer below) is a Mechanism: its structured methods, and the
+# others of its generic twin ``RotorSystem.mechanism`` (``charts.geometry.system``).
+Mechanism.register(RotorSystem)
