@@ -21,8 +21,11 @@
     ``charts.lyapunov_spectrum(RotorSystem(3), n_exponents=2, t_transient=0)`` with its
     defaults (RK4, dt = 0.01, eq (18) every 10 steps, projection every 100: the task of
     ``charts bench compare``, timed as it times it); the ratio of the medians and the range of
-    the paired ratios.  Where the generic route's time goes: its compiled steps alone
-    (``project=0``) and one projection (``project_now``: NumPy).
+    the paired ratios.  Where the generic route's time goes: its compiled steps without the
+    projection (``project=0``), NumPy's ``project_now`` (the fallback), and each piece of one
+    RK4 stage timed alone in a compiled loop (the jets, the KKT matrix and its LU, the
+    motion's right-hand side and solve, the linearisation's matrix, and per tangent vector
+    its right-hand side and solve).
 """
 from __future__ import annotations
 
@@ -151,9 +154,82 @@ def speed(steps: int, repeat: int) -> None:
           f"{min(paired):.1f}-{max(paired):.1f})")
     compiled = 1e6 / med["generic, no projection"]
     per_step = 1e6 / med["generic"]
-    print(f"  generic, per step: {per_step:.2f} us = {compiled:.2f} us compiled RK4 step + "
-          f"{projection * 1e6 / 100:.2f} us of projection (one project_now: "
-          f"{projection * 1e3:.3f} ms, every 100 steps)")
+    print(f"  generic, per step: {per_step:.2f} us, of which the compiled projection every 100 "
+          f"steps {per_step - compiled:+.2f} us (NumPy's project_now, the fallback: "
+          f"{projection * 1e3:.3f} ms a call, {projection * 1e6 / 100:.2f} us a step)")
+    parts(mech, q0, v0)
+
+
+#: The pieces of one stage of the generic route, each timed alone in a compiled loop.
+PARTS = r"""
+from numba import njit
+from charts.mechanism.kernels import (apply_tangent_matrix, kkt_matrix, lu_in_place,
+                                      lu_solve_columns, motion_rhs, tangent_motion_matrix)
+
+@njit
+def jets_part(jets, q, p, jt, N):
+    F, J, F2, F3, M, dM, d2M = jt
+    for i in range(N):
+        q[0] += 1e-15
+        jets(q, p, F, J, F2, F3, M, dM, d2M)
+
+@njit
+def kkt_part(jt, K, piv, B, v, N):
+    F, J, F2, F3, M, dM, d2M = jt
+    for i in range(N):
+        kkt_matrix(M, J, -1.0, K)
+        lu_in_place(K, piv)
+
+@njit
+def motion_part(jt, K, piv, B, v, N):
+    F, J, F2, F3, M, dM, d2M = jt
+    for i in range(N):
+        motion_rhs(dM, F2, v, B[:, 0])
+        lu_solve_columns(K, piv, B, 0, 1)
+
+@njit
+def matrix_part(jt, K, piv, B, v, N):
+    F, J, F2, F3, M, dM, d2M = jt
+    T = np.zeros((K.shape[0], 2 * v.shape[0]))
+    for i in range(N):
+        tangent_motion_matrix(dM, d2M, F2, F3, v, B[:, 0], T, True)
+
+@njit
+def vector_part(jt, K, piv, B, v, N):
+    T = np.ones((K.shape[0], 2 * v.shape[0]))
+    for i in range(N):
+        apply_tangent_matrix(T, v, v, B[:, 1])
+        lu_solve_columns(K, piv, B, 1, 2)
+"""
+
+
+def parts(mech, q0, v0, count=1_000_000) -> None:
+    """ns per call of each piece of a stage (``PARTS``), on rotors(3) at its random state."""
+    import time
+
+    import numpy as np
+
+    from charts.mechanism.symbolic import JET_ORDER
+
+    ns = {"np": np}
+    exec(PARTS, ns)
+    jets = mech.compiled_jets()
+    jt = tuple(np.zeros(mech._eval(k, q0).shape) for k in JET_ORDER)
+    jets(q0.copy(), mech.param_values, *jt)
+    m = mech.n + mech.k
+    K, piv, B = np.zeros((m, m)), np.zeros(m, dtype=np.int64), np.zeros((m, 3))
+    calls = {"the jets (generated)": ("jets_part", (jets, q0.copy(), mech.param_values, jt)),
+             "KKT matrix + LU": ("kkt_part", (jt, K, piv, B, v0)),
+             "motion rhs + solve": ("motion_part", (jt, K, piv, B, v0)),
+             "linearisation matrix": ("matrix_part", (jt, K, piv, B, v0)),
+             "per vector: apply + solve": ("vector_part", (jt, K, piv, B, v0))}
+    print("  one RK4 stage of the generic route, by piece (4 stages a step; ns per call, CPU):")
+    for label, (name, args) in calls.items():
+        fn = ns[name]
+        fn(*args, 10)                                   # compile
+        c = time.process_time()
+        fn(*args, count)
+        print(f"    {label:28s} {(time.process_time() - c) / count * 1e9:7.0f}")
 
 
 def main(argv=None) -> int:
