@@ -63,7 +63,7 @@ _HOMES = {
     "MechanismError": ".mechanism.model",
     "triple_linkage": ".mechanism.instances",
     "LinkageSystem": ".mechanism.linkage",
-    "DegenerateMetricError": ".solvers.linkage",
+    "DegenerateMetricError": ".mechanism.linkage",
     "LinkageResult": ".analyses.linkage",
     "linkage_run": ".analyses.linkage",
     "linkage_ensemble": ".analyses.linkage",

@@ -7,7 +7,7 @@ rotor angles of a linkage trajectory started at `LinkageSystem.from_rotor_state`
 state differ from the rotor system's trajectory by O(ε).  The table prints that difference
 at t = 5 and its ratio to ε: constant while the computation holds its digits, then a jump
 where the kinetic projection's KKT matrix (entries of order ε²) drops under its pivot
-threshold.  `charts.geometry.linkage.LENGTH_MIN` keeps a factor four above the jump; ε
+threshold.  `charts.mechanism.linkage.LENGTH_MIN` keeps a factor four above the jump; ε
 below it is refused, so the last rows are computed by building the system past the check.
 """
 from __future__ import annotations
@@ -17,14 +17,14 @@ import argparse
 import numpy as np
 
 import charts
-from charts.geometry import linkage as geometry
+from charts.mechanism import linkage as geometry
 
 
 def unchecked(eps):
     """A `LinkageSystem` at ε below the floor (the measurement's own business only)."""
     L = charts.LinkageSystem(0.01)
     L.eps, L.rho = eps, 2.0 * eps
-    L.par = np.array([eps, 2.0 * eps, 1.0, L.disk_mass, L.disk_inertia])
+    L.par = L.param_values = np.array([eps, 2.0 * eps, 1.0, L.disk_mass, L.disk_inertia])
     return L
 
 

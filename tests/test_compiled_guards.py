@@ -4,7 +4,9 @@ The linkage's compiled LU factorisation once left its pivot rows uninitialised p
 pivot, and the solve then swapped entries at those garbage indices: a singular Gram matrix
 J Jᵀ (``LinkageSystem(0.1).project(np.zeros(7), np.zeros(7))``) ended the interpreter with a
 segmentation fault.  Every case here runs in a child process, so a crash is a failed test
-(the child's exit status and stderr), never a dead pytest."""
+(the child's exit status and stderr), never a dead pytest.  (The linkage is now a
+``charts.Mechanism``: its projections and flow are the mechanism's, on LAPACK's
+factorisations, and its compiled LU and projections are gone with their test.)"""
 from __future__ import annotations
 
 import json
@@ -64,46 +66,6 @@ for name, expr in json.loads(sys.argv[1]).items():
 print("RESULT " + json.dumps(out))
 """
 
-KERNELS = """
-import json
-import numpy as np
-from charts.geometry import linkage as lk
-par = np.array([0.1, 0.2, 1.0, 0.0, 0.0])
-out = {}
-
-# a singular matrix: lu_factor says 0 and fills piv in range; lu_solve refuses, b untouched
-A = np.zeros((4, 4)); piv = np.full(4, 10**12, dtype=np.int64); b = np.arange(4.0)
-out["singular pmin"] = lk.lu_factor(A, piv)
-out["singular piv in range"] = bool(np.all((piv >= 0) & (piv < 4)))
-out["singular solve"] = bool(lk.lu_solve(A, piv, b))
-out["singular b untouched"] = b.tolist() == [0.0, 1.0, 2.0, 3.0]
-A = np.array([[1.0, 2.0], [np.nan, 1.0]]); piv = np.empty(2, dtype=np.int64)
-out["nan pmin"] = lk.lu_factor(A, piv)
-# shapes that do not fit: refused, nothing written out of bounds
-out["non-square"] = lk.lu_factor(np.ones((4, 3)), np.empty(4, dtype=np.int64))
-out["short piv"] = lk.lu_factor(np.eye(4), np.empty(2, dtype=np.int64))
-piv = np.empty(4, dtype=np.int64); A = np.eye(4); lk.lu_factor(A, piv)
-out["short b"] = bool(lk.lu_solve(A, piv, np.ones(2)))
-out["garbage piv"] = bool(lk.lu_solve(np.eye(4), np.array([99, -5, 2, 3]), np.ones(4)))
-out["good solve"] = bool(lk.lu_solve(A, piv, np.ones(4)))
-# the projections: a status, never a write past the arrays
-X = np.ones((3, 14))
-out["tangent at q = 0"] = lk.project_tangent_linkage(np.zeros(14), X, par)
-out["tangent X untouched"] = bool(np.all(X == 1.0))
-out["tangent, rows of 5"] = lk.project_tangent_linkage(np.ones(14), np.ones((3, 5)), par)
-out["tangent, short y"] = lk.project_tangent_linkage(np.ones(3), np.ones((3, 14)), par)
-out["tangent, short par"] = lk.project_tangent_linkage(np.ones(14), np.ones((3, 14)), par[:2])
-out["state at q = 0"] = lk.project_state_linkage(np.zeros(14), par, np.ones(7), 1.0)
-out["state, short y"] = lk.project_state_linkage(np.zeros(5), par, np.ones(7), 1.0)
-out["state, short mass"] = lk.project_state_linkage(np.ones(14), par, np.ones(2), 1.0)
-out["configuration at q = 0"] = lk.project_configuration(np.zeros(7), par, 5)
-out["configuration, short q"] = lk.project_configuration(np.zeros(2), par, 5)
-out["velocity at q = 0"] = lk.project_velocity_linkage(np.zeros(7), np.ones(7), par)
-out["velocity, short v"] = lk.project_velocity_linkage(np.ones(7), np.ones(3), par)
-print("RESULT " + json.dumps(out))
-"""
-
-
 def _child(code, *args):
     env = dict(os.environ, PYTHONFAULTHANDLER="1")
     p = subprocess.run([sys.executable, "-c", textwrap.dedent(code), *args], env=env,
@@ -125,27 +87,6 @@ def test_degenerate_linkage_input_is_a_value_error_naming_the_argument():
         if kind != "ValueError" or not all(w in msg for w in words):
             bad.append(f"{name}: {expr} gave {kind}: {msg!r}, expected a ValueError with {words}")
     assert not bad, "\n".join(bad)
-
-
-def test_compiled_linear_algebra_and_projections_refuse_instead_of_writing_out_of_bounds():
-    from charts.geometry.linkage import PROJ_OK, PROJ_SHAPE, PROJ_SINGULAR
-
-    out = _child(KERNELS)
-    assert out["singular pmin"] == 0.0 and out["singular piv in range"]
-    assert out["singular solve"] is False and out["singular b untouched"]
-    assert out["nan pmin"] == 0.0
-    assert out["non-square"] == 0.0 and out["short piv"] == 0.0
-    assert out["short b"] is False and out["garbage piv"] is False
-    assert out["good solve"] is True
-    assert out["tangent at q = 0"] == PROJ_SINGULAR and out["tangent X untouched"]
-    for case in ("tangent, rows of 5", "tangent, short y", "tangent, short par",
-                 "state, short y", "state, short mass", "velocity, short v"):
-        assert out[case] == PROJ_SHAPE, case
-    assert out["state at q = 0"] == PROJ_SINGULAR
-    assert out["velocity at q = 0"] == PROJ_SINGULAR
-    assert out["configuration at q = 0"] == float("inf")
-    assert out["configuration, short q"] == float("inf")
-    assert PROJ_OK == 0
 
 
 def test_valid_states_still_project_and_keep_their_numbers():

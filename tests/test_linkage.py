@@ -11,12 +11,11 @@ import numpy as np
 import pytest
 
 import charts
-from charts.analyses.linkage import (CONE_POINTS, cone_distance, gauss_curvature, linkage_run,
+from charts import DegenerateMetricError
+from charts.analyses.linkage import (CONE_POINTS, advance_linkage, cone_distance,
+                                     gauss_curvature, linkage_flow, linkage_run,
                                      linkage_trajectory)
-from charts.flows.linkage import acceleration
-from charts.solvers.linkage import linkage_rhs
 from charts.mechanism.linkage import LinkageSystem
-from charts.solvers.linkage import DegenerateMetricError, LinkageFlow
 
 
 def appendix_constraints(q, eps, rho, R=1.0):
@@ -36,7 +35,9 @@ def L01():
     return LinkageSystem(0.1)
 
 
-def test_generated_constraints_and_derivatives_against_appendix_and_differences(L01):
+def test_constraints_and_derivatives_against_appendix_and_differences(L01):
+    """The symbolic model's F, J, ∂²F and ∂³F (``Mechanism``'s jets) against the Appendix's
+    equations transcribed here and their central differences."""
     rng = np.random.default_rng(1)
     h = 1e-5
     for _ in range(5):
@@ -47,36 +48,32 @@ def test_generated_constraints_and_derivatives_against_appendix_and_differences(
         fd = np.array([(appendix_constraints(q + h * e, 0.1, 0.2)
                         - appendix_constraints(q - h * e, 0.1, 0.2)) / (2 * h) for e in E]).T
         assert np.max(np.abs(J - fd)) < 1e-9  # O(h²) ≈ 1e-10 · third derivatives ≤ 4
-        from charts.geometry.linkage import gen_hessian_vector, gen_third_form
         v, w = rng.normal(size=7), rng.normal(size=7)
-        H = gen_hessian_vector(q, w, L01.par, np.empty((4, 7)))
+        H = np.einsum("cij,j->ci", L01._eval("F2", q), w)
         fdH = (L01.jacobian(q + h * w) - L01.jacobian(q - h * w)) / (2 * h)
         assert np.max(np.abs(H - fdH)) < 1e-8
-        T = gen_third_form(q, v, w, L01.par, np.empty(4))
-        quad = lambda z: gen_hessian_vector(z, v, L01.par, np.empty((4, 7))) @ v
+        T = np.einsum("cijl,i,j,l->c", L01._eval("F3", q), v, v, w)
+        quad = lambda z: np.einsum("cij,i,j->c", L01._eval("F2", z), v, v)
         assert np.max(np.abs(T - (quad(q + h * w) - quad(q - h * w)) / (2 * h))) < 1e-8
 
 
-def test_the_linkage_is_a_mechanism_whose_generic_jets_are_the_generated_kernels(L01):
-    """LinkageSystem is a charts.Mechanism; its symbolic model's constraint and Jacobian
-    (SymPy, lambdified) equal the generated kernels to rounding (measured ≤ 6.7e-16 over
-    200 points, entries of order 1), and its equations of motion, derived generically, keep the
-    constraints (d²F/dt² = J q̈ + ∂²F(v, v) = 0)."""
-    from charts.geometry.linkage import gen_constraints, gen_jacobian
-
+def test_the_linkage_is_a_mechanism(L01):
+    """LinkageSystem is a charts.Mechanism with the Appendix's parameters, and its equations
+    of motion, derived generically, keep the constraints (d²F/dt² = J q̈ + ∂²F(v, v) = 0).
+    (Its symbolic constraint and Jacobian equalled the generated kernels they replace to
+    6.7e-16 over 200 points: the numbers of docs/linkage.md.)"""
     assert isinstance(L01, charts.Mechanism) and (L01.n, L01.k, L01.dim) == (7, 4, 3)
-    assert np.array_equal(L01.param_values, L01.par)
-    rng = np.random.default_rng(5)
-    for _ in range(5):
-        q = rng.uniform(-3, 3, 7) * np.array([1, 1, 1, 1, 0.05, 0.05, 1])
-        F = gen_constraints(q, L01.par, np.empty(4))
-        J = gen_jacobian(q, L01.par, np.empty((4, 7)))
-        assert np.max(np.abs(L01.constraint(q) - F)) < 4e-15    # rounding of order-1 sums
-        assert np.max(np.abs(L01.jacobian(q) - J)) < 4e-15
+    assert L01.parameter_values == {"eps": 0.1, "rho": 0.2, "R": 1.0, "m_d": 0.0, "I_d": 0.0}
     q, v = L01.random_state(seed=1)
     a = L01.acceleration(q, v)
     rhs = np.einsum("cij,i,j->c", L01._eval("F2", q), v, v)
     assert np.max(np.abs(L01.jacobian(q) @ a + rhs)) < 1e-13
+    import pickle
+    again = pickle.loads(pickle.dumps(L01))
+    assert repr(again) == repr(L01) and np.array_equal(again.par, L01.par)
+    with pytest.raises(charts.MechanismError, match="R = 1"):
+        L01.with_parameters(R=2.0)
+    assert repr(L01.with_parameters(eps=0.05)) == repr(LinkageSystem(0.05, rho=0.2))
 
 
 def test_first_order_constraints_are_the_appendix_and_sum_to_sum_cos():
@@ -98,28 +95,24 @@ def test_first_order_constraints_are_the_appendix_and_sum_to_sum_cos():
 
 
 def test_variational_equations_match_finite_differences(L01):
+    """The linearised flow (``Mechanism.tangent_acceleration``, the KKT system
+    differentiated) against central differences of the acceleration, massless disk."""
     q, v = L01.random_state(seed=1)
-    y = np.concatenate([q, v])
     xi = np.random.default_rng(0).normal(size=14)
-    par = L01.par
-    dZ = np.empty(28)
-    rhs = linkage_rhs()
-    rhs(np.concatenate([y, xi]), par, dZ)
+    dq, dv = L01.project_phase_tangent(q, v, xi[:7], xi[7:])
+    got = L01.tangent_acceleration(q, v, dq, dv)
     h = 1e-6
-    dp, dm = np.empty(14), np.empty(14)
-    rhs(y + h * xi, par, dp)
-    rhs(y - h * xi, par, dm)
-    fd = (dp - dm) / (2 * h)
-    # measured 6.6e-11 against |fd| ≈ 3.8: central differences' O(h²) and rounding/h
-    assert np.max(np.abs(dZ[14:] - fd)) < 1e-8 * max(1.0, np.max(np.abs(fd)))
+    acc = lambda s: L01.acceleration(L01.project_point(q + s * dq), v + s * dv)
+    fd = (acc(h) - acc(-h)) / (2 * h)
+    # central differences' O(h²) and rounding/h (the projection moves q by O(h²) only)
+    assert np.max(np.abs(got - fd)) < 1e-7 * max(1.0, np.max(np.abs(fd)))
 
 
 @pytest.mark.parametrize("disk", [(0.0, 0.0), (0.3, 0.02)])
 def test_acceleration_keeps_the_constraints_and_is_normal(disk):
     L = LinkageSystem(0.1, disk_mass=disk[0], disk_inertia=disk[1])
     q, v = L.random_state(seed=2)
-    a = np.empty(7)
-    acceleration(q, v, L.par, a)
+    a = L.acceleration(q, v)
     # d²F/dt² = J a + vᵀ∇²F v = 0, by central differences of F along the curve q + tv + t²a/2
     h = 1e-4
     F = lambda t: L.constraints(q + t * v + 0.5 * t * t * a)
@@ -130,15 +123,17 @@ def test_acceleration_keeps_the_constraints_and_is_normal(disk):
 
 def test_invariants_held_to_rounding_and_drift_without_projection(L01):
     q, v = L01.random_state(seed=3)
-    for every, tol in ((1, 1e-14), (0, 1e-6)):   # projected at every step / never
-        f = LinkageFlow(L01, q, v, 0, dt=0.01, project_every=every)
+    for every, tol_f, tol_jv, tol_speed in ((1, 1e-14, 1e-15, 5e-11), (0, 1e-6, 1e-6, 1e-7)):
+        f = linkage_flow(L01, q, v, 0, dt=0.01, project_every=every)   # every step / never
         f.advance(10000)                           # t = 100
         qq, vv = f.Z[0, :7], f.Z[0, 7:]
-        # measured: projected ≤ 2e-16; never projected |F| = 5e-8 (RK4 truncation, which the
-        # index-1 form of the constraints lets grow: hence the projection every t = 1.0)
-        assert np.max(np.abs(L01.constraints(qq))) < tol
-        assert np.max(np.abs(L01.jacobian(qq) @ vv)) < tol
-        assert abs(L01.speed(vv) - 1.0) < tol
+        # projected at every step: |F| 2e-16, |J v| 1e-17; never projected |F| = 1.4e-8
+        # (RK4's truncation, which the index-1 form of the constraints lets grow: hence the
+        # projection every t = 1.0).  The speed is not rescaled (the projections keep F = 0
+        # and J v = 0 only): RK4's energy error, |speed − 1| = 4.6e-12 and 7.4e-10 measured
+        assert np.max(np.abs(L01.constraints(qq))) < tol_f
+        assert np.max(np.abs(L01.jacobian(qq) @ vv)) < tol_jv
+        assert abs(L01.speed(vv) - 1.0) < tol_speed
 
 
 def test_trajectories_approach_rotor_system_at_rate_eps():
@@ -265,16 +260,20 @@ def test_manifold_smooth_at_the_cone_points_on_it():
 def test_massless_disk_refused_where_the_metric_degenerates_and_inertia_passes():
     L = LinkageSystem(0.1, rho=0.05)            # ρ < ε: the fold sin α = 0 is reachable
     q, v = L.random_state(seed=1)
-    f = LinkageFlow(L, q, v, 0, dt=0.001)
+    f = linkage_flow(L, q, v, 0, dt=0.001)
     with pytest.raises(DegenerateMetricError, match="disk_mass"):
-        f.advance(50000)
+        advance_linkage(L, f, 50000, "test")
+    with pytest.raises(charts.IntegrationError):              # either except catches it
+        advance_linkage(L, linkage_flow(L, q, v, 0, dt=0.001), 50000, "test")
     Lm = LinkageSystem(0.1, rho=0.05, disk_mass=1e-2, disk_inertia=1e-3)
     q, v = Lm.random_state(seed=1)
-    f = LinkageFlow(Lm, q, v, 0, dt=0.001, project_every=1000)
-    f.advance(50000)
+    f = linkage_flow(Lm, q, v, 0, dt=0.001, project_every=1000)
+    advance_linkage(Lm, f, 50000, "test")
     qq, vv = f.Z[0, :7], f.Z[0, 7:]
     assert np.max(np.abs(Lm.constraints(qq))) < 1e-12
-    assert abs(Lm.speed(vv) - 1) < 1e-12
+    # the speed is not rescaled by the projections: RK4's and the velocity projection's
+    # energy error with the light disk's fast modes, measured |speed − 1| = 2.2e-5
+    assert abs(Lm.speed(vv) - 1) < 1e-4
 
 
 def test_exponents_tend_to_rotor_system():
@@ -316,27 +315,24 @@ def test_bad_arguments_are_refused(L01):
 
 
 def test_angle_of_subspaces_inside_and_orthogonal(L01):
-    from charts.analyses.linkage_angles import sin_angle
-    from charts.flows.linkage import acceleration as acc
-    from charts.geometry.linkage import project_tangent_linkage
+    """The generic angle (``mechanism_angles.sin_angle``) on the linkage's massless disk, in
+    Σ Mⱼⱼ (δqⱼ² + δvⱼ²): 0 for E_u inside E_cs, 1 for its orthogonal complement."""
+    from charts.analyses.mechanism_angles import sin_angle
+    from charts.solvers.tangent import orthonormalize
     q, v = L01.random_state(seed=8)
-    y = np.concatenate([q, v])
-    a = np.empty(7)
-    acc(q, v, L01.par, a)
+    a = L01.acceleration(q, v)
     w = np.concatenate([L01.mass, L01.mass])
     E0 = np.array([np.concatenate([v, a]), np.concatenate([np.zeros(7), v])])
     X = np.random.default_rng(0).normal(size=(6, 14))
-    project_tangent_linkage(y, X, L01.par)
-    # E_0 is in T_r: its projection changes it only by rounding
-    P = E0.copy()
-    project_tangent_linkage(y, P, L01.par)
+    X = np.array([np.concatenate(L01.project_phase_tangent(q, v, x[:7], x[7:])) for x in X])
+    # E_0 is in the tangent space of TC: its projection changes it only by rounding
+    P = np.array([np.concatenate(L01.project_phase_tangent(q, v, e[:7], e[7:])) for e in E0])
     assert np.max(np.abs(P - E0)) < 1e-12
-    assert sin_angle(y, np.vstack([E0[0] + X[0], X[1]]), X[:2], L01, w) < 1e-12
-    # the M-orthogonal complement of E_cs = span(X[:2], E_0) in T_r (dimension 6): sin φ = 1
-    from charts.solvers.tangent import orthonormalize
+    assert sin_angle(L01, q, v, np.vstack([E0[0] + X[0], X[1]]), X[:2]) < 1e-12   # 3e-16
+    # the M-orthogonal complement of E_cs = span(X[:2], E_0) in it (dimension 6): sin φ = 1
     B = np.vstack([X[:2], E0, X[2:4]])
     orthonormalize(B, w, np.zeros(6))
-    assert sin_angle(y, B[4:6], X[:2], L01, w) == pytest.approx(1.0, abs=1e-10)
+    assert sin_angle(L01, q, v, B[4:6], X[:2]) == pytest.approx(1.0, abs=1e-10)
 
 
 def test_angle_passes_converge_to_the_same_exponents():
@@ -539,7 +535,7 @@ def test_the_smallest_eps_still_tracks_the_rotor_limit():
     t = 5: |Δθ|/ε = 3.23 for ε = 1e-3 … 3e-7 and 10⁵–10⁶ once the projection loses its
     digits (scripts/linkage_eps_floor.py), so [1, 10] separates the two."""
     from charts import RotorSystem, integrate, linkage_trajectory
-    from charts.geometry.linkage import LENGTH_MIN
+    from charts.mechanism.linkage import LENGTH_MIN
     S = RotorSystem(4)
     theta, u = S.random_state(seed=3)
     rotor = integrate(S, theta, u, 5.0, dt=1e-3, method="rk4", formulation="ambient")

@@ -141,10 +141,13 @@ def test_linkage_waveforms_and_drift_are_the_api_trajectory(tmp_path):
     assert np.array_equal(U, states[1:, [7, 10]])
     d = res["drift"]
     # between the projections (every t = 1) RK4 drifts: measured max 9.0e-12 (energy) over
-    # the samples every 0.5; at t = 4, just projected, the invariants are at rounding
+    # the samples every 0.5; at t = 4, just projected, F and J v are at rounding (2e-16,
+    # 7e-18), the energy keeps RK4's error (6.0e-12: the mechanism's projections do not
+    # rescale the speed)
     assert max(d["max_abs_constraint"], d["max_abs_tangency"],
                d["max_abs_energy_relative"]) < 1e-10
-    assert max(abs(d["constraint"]), abs(d["tangency"]), abs(d["energy_relative"])) < 1e-14
+    assert max(abs(d["constraint"]), abs(d["tangency"])) < 1e-14
+    assert abs(d["energy_relative"]) < 1e-10
 
 
 BAD = [

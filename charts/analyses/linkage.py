@@ -2,17 +2,20 @@
 flow), sectional curvature along the trajectory (Gauss equation), the distance of the manifold
 from the cone points of Σ cos θ = 0, and the state of the ε → 0 comparison.
 
-Curvature.  M ⊂ (R⁷, M) is a submanifold whose geodesics have the normal acceleration
-a(X) = q̈ (``charts.flows.linkage.acceleration``, a quadratic form in the velocity X), which is
-its second fundamental form: II(X, X) = a(X), II(X, Y) = (a(X + Y) − a(X − Y))/4.  The Gauss
-equation gives, for M-orthonormal X, Y,
+The linkage is a `charts.Mechanism` (``charts.mechanism.linkage.LinkageSystem``), so its runs
+take the generic route: the mechanism's compiled tangent flow
+(``charts.mechanism.tangent_flow.MechanismTangentFlow``: the KKT equations of motion and their
+exact linearisation, RK4, projected back onto F = 0 and ker J every ``project_every``), eq
+(18)'s Gram–Schmidt in the kinetic metric on positions, Σ Mⱼⱼ δqⱼ² (for a massless disk
+Σ δθᵢ², the pulled-back metric).  What is the linkage's own here: its settings and result, the
+health of its disk and the error that says what to do where it degenerates.
 
-    K(X, Y) = ⟨a(X), a(Y)⟩_M − |II(X, Y)|²_M .
-
-For a massless disk the inner product counts θ only: the θ-projection of M is an isometrically
-immersed hypersurface of R⁴ and a_θ is its normal acceleration.  Along a run, as in
-``charts.analyses.curvature``, the planes are (unit velocity, eᵢ) with eᵢ the Lyapunov vectors
-orthonormalised against it; ``fraction_positive`` counts K > 0.
+Curvature.  M ⊂ (R⁷, M) is a submanifold of the flat (R⁷, M); the Gauss equation of that
+embedding (``Mechanism.gauss_equation_curvature``: the second fundamental form, no chart)
+gives K(X, Y).  For a massless disk the metric counts θ only: the θ-projection of M is an
+isometrically immersed hypersurface of R⁴.  Along a run, as in ``charts.analyses.curvature``,
+the planes are (unit velocity, eᵢ) with eᵢ the Lyapunov vectors orthonormalised against it;
+``fraction_positive`` counts K > 0.
 """
 from __future__ import annotations
 
@@ -25,11 +28,11 @@ from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
 from ..io.file_settings import MEMBER_DIMS
 from ..io.result_words import ANGULAR_VELOCITY, RATE, exponent_words
 from ..jit.compilation import announces_compilation
-from ..flows.linkage import NY, acceleration
 from ..geometry.checks import finite_array, integer
-from ..geometry.linkage import NQ
-from ..solvers.linkage import LinkageFlow
-from ..solvers.status import check_step
+from ..mechanism.errors import MechanismError
+from ..mechanism.linkage import NQ, DegenerateMetricError
+from ..mechanism.tangent_flow import MechanismTangentFlow
+from ..solvers.status import IntegrationError, check_step
 from ..solvers.tangent import check_memory
 from .arguments import (MAX_MEMBERS, Documented, flag, linkage_system, positive_int,
                         positive_time, progress_reporter, inner_steps, project_steps, steps_of)
@@ -38,7 +41,11 @@ from .lyapunov import exponents_from_marks
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends
 
-__all__ = ["LinkageResult", "linkage_run", "run_steps", "linkage_ensemble", "linkage_trajectory", "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
+__all__ = ["LinkageResult", "linkage_run", "run_steps", "linkage_ensemble", "linkage_trajectory",
+           "gauss_curvature", "frame_curvatures", "cone_distance", "CONE_POINTS"]
+
+#: Length of the linkage's state (q, v).
+NY = 2 * NQ
 
 #: The 14 components of the linkage's state (q, v): the rotors' angles, the disk's centre and
 #: angle, then their velocities, with their units.
@@ -58,22 +65,51 @@ CONE_POINTS = tuple(np.array(p, dtype=float) * np.pi for p in
 
 def gauss_curvature(system, q, X, Y):
     """Sectional curvature of the plane (X, Y) ⊂ T_q M (tangent vectors, shape (7,)) by the
-    Gauss equation (module doc); X, Y need not be orthonormal.  q, X and Y are checked
-    (shape (7,), finite) before the compiled acceleration reads them."""
+    Gauss equation (module doc; ``Mechanism.gauss_equation_curvature``); X, Y need not be
+    orthonormal.  q, X and Y are checked (shape (7,), finite; ValueError naming them)
+    first."""
     q, X, Y = (finite_array(name, a, (NQ,)) for name, a in (("q", q), ("X", X), ("Y", Y)))
-    par = system.par
-    w = system.mass
+    return system.gauss_equation_curvature(q, X, Y)
 
-    def acc(z):
-        a = np.empty(NQ)
-        acceleration(q, z, par, a)
-        return a
 
-    aX, aY = acc(X), acc(Y)
-    IIxy = (acc(X + Y) - acc(X - Y)) / 4.0
-    ip = lambda a, b: float(np.sum(w * a * b))
-    area = ip(X, X) * ip(Y, Y) - ip(X, Y) ** 2
-    return (ip(aX, aY) - ip(IIxy, IIxy)) / area
+def linkage_flow(system, q, v, k, *, dt, reorth_every=1, project_every=100, seed=0):
+    """The linkage's state (q, v) and ``k`` tangent vectors on the generic route: the
+    mechanism's `MechanismTangentFlow` re-orthonormalised every ``reorth_every`` steps in eq
+    (18)'s product on positions (``inner="theta"``: Σ Mⱼⱼ δqⱼ²), projected onto F = 0 and
+    ker J every ``project_every`` steps (0: never), the vectors ``seed``-random."""
+    return MechanismTangentFlow(system, q, v, k, dt=dt, reorth=reorth_every,
+                                project=project_every, inner="theta", seed=seed)
+
+
+def advance_linkage(system, flow, steps, where):
+    """``steps`` steps of `linkage_flow`'s flow (`MechanismTangentFlow.advance`, also for a
+    subclass that calls this from its own ``advance``), its failure said in the linkage's words:
+    `DegenerateMetricError` for a massless disk (the KKT matrix singular or the state
+    non-finite: where the pulled-back metric degenerates, module doc of
+    ``charts.mechanism.linkage``), ``IntegrationError`` otherwise; ``where`` names the run."""
+    try:
+        MechanismTangentFlow.advance(flow, steps)
+    except (MechanismError, np.linalg.LinAlgError) as exc:
+        t = flow.steps * flow.dt
+        if system.massless_disk:
+            raise DegenerateMetricError(
+                f"{where}: the flow stopped after t = {t:.17g} ({exc}): with a massless disk "
+                "the kinetic metric degenerates where the disk can move while the rotors "
+                "stand still (∂F/∂(x, y, α) loses rank). Give the disk inertia: "
+                "LinkageSystem(..., disk_mass=1e-2, disk_inertia=1e-3), or use rho > eps "
+                "(docs/linkage.md), or reduce dt.") from None
+        raise IntegrationError(f"{where}: the flow stopped after t = {t:.17g} ({exc}); "
+                               "reduce dt.") from None
+
+
+def disk_health(system, Q):
+    """det(C̃ᵀC̃) at each configuration of Q (S, ≥ 7), C̃ = ∂F/∂(x, y, ρα) (the α column of
+    ∂F/∂(x, y, α) divided by ρ): the squared product of its singular values, dimensionless,
+    0 exactly where the massless disk's metric degenerates; shape (S,)."""
+    Q = np.asarray(Q, dtype=float)[:, :NQ]
+    C = system._eval("J", Q)[..., 4:].copy()
+    C[..., 2] /= system.rho
+    return np.linalg.det(np.swapaxes(C, -1, -2) @ C)
 
 
 @dataclass(eq=False, repr=False)
@@ -85,7 +121,7 @@ class LinkageResult(SpectrumQuantities, Archivable):
     t : (S,)  sample times after the transient; states : (S, 14) the sampled (q, v).
     K : (S, k)  sectional curvatures K(v̂, eᵢ) (module doc).
     min_sin2 : float  smallest Σ sin²θᵢ at the samples (0 at a cone point of Σ cos θ = 0).
-    min_health : float  smallest det(C̃ᵀC̃) seen (``charts.flows.linkage.disk_gram``).
+    min_health : float  smallest det(C̃ᵀC̃) at the samples (`disk_health`; NaN without any).
 
     The relevant spectrum (`spectrum`), the Kolmogorov–Sinai entropy and the Kaplan–Yorke
     dimension are those of the rotors' N = 4 (the same pairs ±λ and two zeros), from the two
@@ -179,7 +215,7 @@ def q_component_coordinates() -> dict:
 
 def frame_curvatures(system, row, k):
     """K(v̂, eᵢ), i = 1…k, shape (k,), at a recorded row [y; ξ¹…ξᵏ] (shape ≥ (14 (1 + k),),
-    e.g. ``LinkageFlow.Z.ravel()``): the planes of the module doc (Gauss equation)."""
+    e.g. ``flow.Z.ravel()`` of `linkage_flow`): the planes of the module doc (Gauss equation)."""
     fr = _frame(system, row, k)
     return np.array([gauss_curvature(system, row[:NQ], fr[0], e) for e in fr[1:]])
 
@@ -253,22 +289,27 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     seed = positive_int("seed", seed, 0)
     project = project_steps(project_every, dt)
-    flow = LinkageFlow(system, q0, v0, k, dt=dt, reorth_every=reorth, project_every=project,
-                       seed=seed)
+    flow = linkage_flow(system, q0, v0, k, dt=dt, reorth_every=reorth, project_every=project,
+                        seed=seed)
     rep = progress_reporter(progress, (transient + total) * dt, f"linkage eps={system.eps:g}")
     where = "linkage_run (RK4)"
-    flow.advance(transient, where=where)
+    advance_linkage(system, flow, transient, where)
     rep.update(transient * dt)
     flow.logsum[:] = 0.0
     ends = batch_ends(total, n_batches, reorth)
-    at = np.array(ends, dtype=np.int64) + flow.steps
     logs = np.zeros((len(ends), k))
     S = total // sample
     rows = np.zeros((S, NY * (1 + k)))
-    for i in range(S):
-        flow.advance(sample, events=at, event_logs=logs, where=where)
-        rows[i] = flow.Z.ravel()
-        rep.update(sample * dt)
+    pos = 0
+    for stop in sorted(set(ends) | set(range(sample, total + 1, sample))):
+        advance_linkage(system, flow, stop - pos, where)
+        rep.update((stop - pos) * dt)
+        pos = stop
+        for i, end in enumerate(ends):
+            if end == stop:
+                logs[i] = flow.logsum
+        if stop % sample == 0:
+            rows[stop // sample - 1] = flow.Z.ravel()
     rep.close()
     exps, batches, stderr = exponents_from_marks(logs, ends, dt)
     K = np.full((S, k), np.nan)
@@ -281,11 +322,11 @@ def linkage_run(system, q0, v0, t_final, *, dt=0.01, n_exponents=2,
     params = dict(**system.describe(), t_final=total * dt, dt=dt,
                   t_transient=transient * dt, n_batches=n_batches, reorth_every=reorth * dt,
                   sample_every=sample * dt, project_every=project * dt if project else None,
-                  n_exponents=k, curvature=bool(curvature), speed=flow.speed,
+                  n_exponents=k, curvature=bool(curvature), speed=system.speed(v0),
                   vectors_seed=seed, state_seed="given",
                   q0=q0.tolist(), v0=v0.tolist())
     return LinkageResult(exps, stderr, batches, np.arange(1, S + 1) * sample * dt, states, K,
-                         min_sin2, float(flow.health[0]), params)
+                         min_sin2, float(np.min(disk_health(system, states))), params)
 
 
 def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
@@ -344,8 +385,8 @@ def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=Documen
                        project_every=Documented(1.0)):
     """The trajectory from (q0, v0) sampled every ``sample_every`` (default 0.1, dividing
     t_final), projected onto the invariants every ``project_every`` (default 1.0, None:
-    never): (t (S + 1,), states (S + 1, 14)), row 0 the initial state (RK4 of
-    ``charts.flows.linkage``).  Times written must be whole numbers of steps dt; a default
+    never): (t (S + 1,), states (S + 1, 14)), row 0 the initial state (RK4 of the
+    mechanism's flow, `linkage_flow`).  Times written must be whole numbers of steps dt; a default
     left is the nearest whole number of steps at other dt (README, "Conventions")."""
     linkage_system(system)
     q0, v0 = system.check_state(q0, v0, ("q0", "v0"))
@@ -354,10 +395,10 @@ def linkage_trajectory(system, q0, v0, t_final, *, dt=0.01, sample_every=Documen
     sample = steps_of("sample_every", sample_every, dt, divides=total)
     if total % sample:
         raise ValueError(f"t_final={t_final:g} must be a multiple of sample_every={sample_every:g}")
-    flow = LinkageFlow(system, q0, v0, 0, dt=dt, project_every=project_steps(project_every, dt))
+    flow = linkage_flow(system, q0, v0, 0, dt=dt, project_every=project_steps(project_every, dt))
     out = [flow.Z[0].copy()]
     for _ in range(total // sample):
-        flow.advance(sample, where="linkage_trajectory (RK4)")
+        advance_linkage(system, flow, sample, "linkage_trajectory (RK4)")
         out.append(flow.Z[0].copy())
     return np.arange(len(out)) * sample * dt, np.array(out)
 

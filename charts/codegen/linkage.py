@@ -16,8 +16,9 @@ the configuration q = (θ₀, θ₁, θ₂, θ₃, x, y, α) obeys the four cons
 Everything the numerics need is a derivative of F: the Jacobian J = ∂F/∂q (4 × 7), the
 Hessian contracted with one vector, Hᵢⱼ(w) = Σₖ ∂²Fᵢ/∂qⱼ∂qₖ wₖ (4 × 7), and the third
 derivative contracted with three vectors, Tᵢ(v, v, w) = Σ ∂³Fᵢ/∂qⱼ∂qₖ∂qₗ vⱼ vₖ wₗ (4,), which
-the variational equations need (``charts.flows.linkage``).  ε, ρ, R are symbols, so one
-generated module serves every linkage.
+the variational equations need.  ε, ρ, R are symbols, so one generated module serves every
+linkage.  The linkage is a ``charts.Mechanism``: ``charts.mechanism.instances.
+appendix_linkage_model`` takes its constraints from here.
 """
 from __future__ import annotations
 

@@ -28,18 +28,33 @@ import math
 import numpy as np
 
 from ..geometry.checks import finite_array, integer, number, shown
-from ..geometry.linkage import (LENGTH_MAX, LENGTH_MIN, PROJ_OK, PROJ_SINGULAR,
-                                PROJ_ZERO_SPEED, RANK_TOL, TOL, project_configuration,
-                                project_state_linkage)
 from ..geometry.system import RotorSystem
+from ..solvers.status import IntegrationError
 from .instances import appendix_linkage_model
 from .model import Mechanism, MechanismError
 
-__all__ = ["LinkageSystem", "NQ", "NC", "LENGTH_MIN", "LENGTH_MAX"]
+__all__ = ["LinkageSystem", "DegenerateMetricError", "NQ", "NC", "LENGTH_MIN", "LENGTH_MAX"]
 
 #: Coordinates q and constraints F of the linkage.
 NQ = 7
 NC = 4
+#: The range of the crank ε and the disk radius ρ: [LENGTH_MIN, LENGTH_MAX).  Above, the
+#: Appendix's small-linkage picture fails (rods R = 1, axes at distance 1).  Below, the
+#: kinetic projection's KKT matrix (entries of order ε²) loses its digits
+#: (``python scripts/linkage_eps_floor.py``, docs/linkage.md).
+LENGTH_MIN = 1e-6
+LENGTH_MAX = 0.5
+#: |F| and |J v| above which a state is refused as off the manifold.
+TOL = 1e-8
+#: J Jᵀ is taken as singular (the four constraints dependent, M not a manifold there) where
+#: the smallest singular value of J is below this fraction of the largest.
+RANK_TOL = 1e-12
+
+
+class DegenerateMetricError(MechanismError, IntegrationError):
+    """The pulled-back metric degenerated (the disk could move with the rotors at rest): a
+    `MechanismError` (a point where the flow is undefined) and an ``IntegrationError`` (a
+    run that stopped), so that either ``except`` catches it."""
 
 
 class LinkageSystem(Mechanism):
@@ -170,31 +185,40 @@ class LinkageSystem(Mechanism):
     # ------------------------------------------------------------------ states
     def project(self, q, v, speed=None):
         """(q, v) moved onto F = 0 and J v = 0 (and to kinetic ``speed`` if given): new
-        arrays.  ValueError naming the argument for q or v not of shape (7,) or not finite,
-        ``speed`` not a finite number >= 0, a singular configuration q (J Jᵀ singular: the
-        Newton step is undefined), a q the Newton steps do not bring onto M, and a speed asked
-        of a velocity without a tangent component."""
-        y = np.concatenate([finite_array("q", q, (NQ,)), finite_array("v", v, (NQ,))])
+        arrays, by the mechanism's projections (`Mechanism.project_point`: minimum-norm Newton
+        steps until max|F| < 1e-15; `Mechanism.project_velocity`: M-orthogonal, a KKT solve,
+        Euclidean where the massless disk's metric degenerates).  ValueError naming the
+        argument for q or v not of shape (7,) or not finite, ``speed`` not a finite number
+        >= 0, a singular configuration q (J Jᵀ singular: the Newton step is undefined), a q the
+        Newton steps do not bring onto M, and a speed asked of a velocity without a tangent
+        component."""
+        q = finite_array("q", q, (NQ,))
+        v = finite_array("v", v, (NQ,))
         if speed is not None:
             speed = _nonnegative("speed", speed)
-        self._check_rank("q", y[:NQ], "the Newton step onto the manifold is undefined")
-        res = project_configuration(y[:NQ], self.par, 50)
-        if not res < 1e-13:
-            raise ValueError(f"could not put q on the manifold (max|F| = {res:.1e} after 50 "
-                             "Newton steps); start nearer, e.g. from_rotor_state")
-        status = project_state_linkage(y, self.par, self.mass, 0.0 if speed is None else speed)
-        if status == PROJ_SINGULAR:
-            self._check_rank("q", y[:NQ], "the tangent space is undefined")
-            raise ValueError("q was projected onto a point where J Jᵀ is numerically singular; "
-                             "start from another point, e.g. LinkageSystem.random_state")
-        if status == PROJ_ZERO_SPEED:
-            raise ValueError(f"v has no component tangent to the manifold at q, so it cannot be "
-                             f"given the speed {speed:g}; pass a velocity with a tangent part "
-                             "(e.g. from random_state) or speed=None")
-        if status != PROJ_OK:
-            raise ValueError(f"the projection of (q, v) failed (status {status}); check that q "
-                             "and v have shape (7,)")
-        return y[:NQ].copy(), y[NQ:].copy()
+        self._check_rank("q", q, "the Newton step onto the manifold is undefined")
+        try:
+            q = self.project_point(q, iterations=50, tol=1e-15)
+        except MechanismError as exc:
+            raise ValueError(f"could not put q on the manifold ({exc}); start nearer, e.g. "
+                             "from_rotor_state") from None
+        self._check_rank("q", q, "the tangent space is undefined")
+        with np.errstate(all="ignore"):
+            try:
+                v = self.project_velocity(q, v)
+            except np.linalg.LinAlgError:
+                v = v + np.nan                          # the Euclidean projection below
+        if not np.all(np.isfinite(v)):
+            J = self.jacobian(q)
+            v = finite_array("v", v - np.linalg.lstsq(J, J @ v, rcond=None)[0], (NQ,))
+        if speed:
+            E = float(np.sum(self.mass * v * v))
+            if not E > 0.0:
+                raise ValueError(f"v has no component tangent to the manifold at q, so it "
+                                 f"cannot be given the speed {speed:g}; pass a velocity with a "
+                                 "tangent part (e.g. from random_state) or speed=None")
+            v = v * (speed / math.sqrt(E))
+        return q, v
 
     def first_order_disk(self, theta, branch=1):
         """(x, y, α) of the Appendix's first-order solution for the angles theta: x = ε(c₂ −

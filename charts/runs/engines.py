@@ -1,7 +1,8 @@
 """The engines of the chunked main pass of a scene run.
 
 :class:`KernelEngine` — ambient RK4 with tangent vectors (the fused kernel; for a linkage
-scene the linkage's `LinkageFlow`, which has the same interface);
+scene the mechanism's flow, ``charts.runs.mechanism_run.SceneFlow``, which has the same
+interface);
 :class:`IntegrateEngine` — ``charts.integrate`` (chart formulation or adaptive method).
 Both advance a :class:`~charts.runs.run_state.RunState` in place chunk by chunk and call the
 recorders at every recording position.  :func:`chunk_bounds` cuts the run into its
@@ -93,7 +94,7 @@ class KernelEngine:
         self.step_unit = record_interval(st.plan) or None
 
     def advance(self, nsteps: int):
-        from ..solvers.linkage import DegenerateMetricError
+        from ..mechanism.linkage import DegenerateMetricError
         from ..solvers.status import IntegrationError
 
         st = self.st

@@ -15,7 +15,7 @@ from functools import cache
 from typing import Any, Callable
 
 from ..analyses.arguments import GRID_RTOL
-from ..geometry.linkage import LENGTH_MAX, LENGTH_MIN
+from ..mechanism.linkage import LENGTH_MAX, LENGTH_MIN
 from ..geometry.system import MAX_N
 
 __all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECTS", "GRID_RTOL",
