@@ -25,7 +25,8 @@
     projection (``project=0``), NumPy's ``project_now`` (the fallback), and each piece of one
     RK4 stage timed alone in a compiled loop (the jets, the KKT matrix and its LU, the
     motion's right-hand side and solve, the linearisation's matrix, and per tangent vector
-    its right-hand side and solve).
+    its right-hand side and solve); and µs per step on the triple linkage and with all 2d
+    vectors.
 """
 from __future__ import annotations
 
@@ -158,6 +159,31 @@ def speed(steps: int, repeat: int) -> None:
           f"steps {per_step - compiled:+.2f} us (NumPy's project_now, the fallback: "
           f"{projection * 1e3:.3f} ms a call, {projection * 1e6 / 100:.2f} us a step)")
     parts(mech, q0, v0)
+    others(steps // 5)
+
+
+def others(steps: int) -> None:
+    """µs per step of the generic route on the triple linkage (r = 0.1: n = 5, k = 3) and on
+    rotors(3) with all four vectors, as docs/mechanisms.md's table (median of 3)."""
+    import time
+
+    from charts.mechanism import rotors, triple_linkage
+    from charts.mechanism.tangent_flow import MechanismTangentFlow
+
+    print(f"  other settings (eq (18) every 10 steps, projection every 100; {steps} steps, median of 3):")
+    for label, mech in (("rotors(3)", rotors(3)), ("triple_linkage(0.1)", triple_linkage(0.1))):
+        q0, v0 = mech.random_state(seed=1)
+        row = []
+        for k, inner in ((1, "theta"), (2 * mech.dim, "full")):
+            times = []
+            for _ in range(4):
+                flow = MechanismTangentFlow(mech, q0, v0, k, dt=0.01, reorth=10, project=100,
+                                            inner=inner)
+                c = time.process_time()
+                flow.advance(steps)
+                times.append((time.process_time() - c) / steps * 1e6)
+            row.append(f"k = {k} ({inner}): {statistics.median(times[1:]):.2f} us/step")
+        print(f"    {label:22s}" + ";  ".join(row))
 
 
 #: The pieces of one stage of the generic route, each timed alone in a compiled loop.
