@@ -42,7 +42,8 @@ def add_parser(sub) -> None:
     """Register ``charts verdict`` on the ``charts`` subparsers (called by charts.cli)."""
     p = sub.add_parser(
         "verdict", help="the hyperbolicity verdicts from exact invariants and certificates "
-        "(N = 3: Gauss-Bonnet, entropy bracket, curvature sign; N >= 4: a flat torus)",
+        "(N = 3: Gauss-Bonnet, entropy bracket, curvature sign; N >= 4: a flat torus; the "
+        "triple linkage at each rim radius)",
         description="For N = 3 (the paper's surface, or a member of the family with masses, "
         "weights, level): the Euler characteristic by a Morse count, the area and the integral "
         "of K by both curvature routes against 2 pi chi (Gauss-Bonnet), the leading exponent "
@@ -126,8 +127,10 @@ def add_parser(sub) -> None:
 
 
 def cmd_verdict(args) -> int:
-    """Print the reports, each ending in its verdict line (`charts.runs.verdict.case_verdict`:
-    verdict, evidence, reason, also in the JSON); 0 when every check holds
+    """Print the reports (the rotors' of ``--n``, then the triple linkage's of
+    ``--triple-linkage`` and their table), each ending in its verdict line
+    (`charts.runs.verdict.case_verdict`: verdict, evidence, reason, also in the JSON); 0 when
+    every check holds
     (`charts.runs.verdict.verdict_passed`), 1 otherwise, 2 for bad input."""
     from ..geometry.system import RotorSystem
     from ..runs.verdict import format_verdict, surface_verdict, torus_verdict, verdict_passed

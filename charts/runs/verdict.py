@@ -29,9 +29,10 @@ __all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed
            "linkage_verdict", "linkage_plan", "format_linkage_table", "CHI_TOLERANCE"]
 
 #: The largest distance of ∫K dA / 2π from the integer χ it is read as, for a surface whose χ
-#: the quadrature reads (the triple linkage): Gauss–Bonnet makes it an integer, and the default
-#: grid meets it by 3·10⁻⁶ or better up to r = 0.4 (docs/triple-linkage.md); a larger one
-#: means the grid does not resolve the curvature, or the surface is singular.
+#: the quadrature reads (the triple linkage): Gauss–Bonnet makes it an integer; the default
+#: grid (96²) meets it by 3·10⁻⁵ or better up to r = 0.3, r = 0.4 needs 192²
+#: (docs/triple-linkage.md); a larger distance means the grid does not resolve the
+#: curvature, or the surface is singular.
 CHI_TOLERANCE = 1e-3
 #: Hopf's and Klingenberg's argument on a closed surface with χ > 0 (the end of a sentence).
 _HOPF = ("a closed surface without conjugate points has int K dA <= 0 (Hopf 1948): there are "
