@@ -12,7 +12,8 @@ import pytest
 
 import charts
 from charts.flows.ambient import flow_rhs, flow_tangent_rhs
-from charts.mechanism import Mechanism, rotors
+from charts.analyses.mechanism_curvature import mechanism_curvature
+from charts.mechanism import Mechanism, integrate_chart, rotors
 from charts.mechanism.instances import _MODELS
 from charts.mechanism.surface import surface_integrals
 
@@ -97,6 +98,24 @@ def test_gaussian_curvature_and_surface_of_three_rotors():
     ref = surface_integrals(rotors(3), n_grid=16)
     assert (mine.area, mine.total_curvature) == (ref.area, ref.total_curvature)
     assert mine.euler_characteristic == -4
+
+
+def test_functions_written_for_a_mechanism_run_on_a_rotor_system():
+    """The chart integrator and the sectional curvatures along a trajectory (both take the
+    best chart as a Mechanism's tuple) on a RotorSystem: the chart route gives the generic
+    rotor Mechanism's bits (the same lift, jets and charts), the curvature its numbers (the
+    same trajectory; the exact curvatures from the Riemann tensor of the rotors' kernels
+    against the jets': TOL["routes"])."""
+    system = charts.RotorSystem(3)
+    theta, u = system.random_state(seed=2)
+    mine = integrate_chart(system, theta, u, 1.0, samples=2)
+    ref = integrate_chart(rotors(3), theta, u, 1.0, samples=2)
+    assert np.array_equal(mine[1], ref[1]) and mine[3] == ref[3]
+    system = charts.RotorSystem(4)
+    theta, u = system.random_state(seed=2)
+    mine = mechanism_curvature(system, theta, u, 0.5, t_transient=0.0)
+    ref = mechanism_curvature(rotors(4), theta, u, 0.5, t_transient=0.0)
+    assert _close(mine.K_exact, ref.K_exact, TOL["routes"])
 
 
 def test_chart_forms_and_mechanism_forms_of_the_arguments():

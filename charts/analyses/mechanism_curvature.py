@@ -98,7 +98,7 @@ def jacobi_curvature(mech, q, v, J, P, h):
 def riemann_curvature(mech, q, P):
     """Route (b): K_ij = R_abcd p_i^a p_0^b p_j^c p_0^d (i, j ≥ 1) of the M-orthonormal frame
     P (k + 1, n) at q, the Riemann tensor in the best-conditioned chart."""
-    chart = mech.best_chart(q)
+    chart = mech._chart_of(q, None)           # best_chart's, as a tuple (a RotorSystem's: k)
     x = P[:, list(chart)]
     return np.einsum("abcd,ia,b,jc,d->ij", mech.riemann(q, chart), x[1:], x[0], x[1:], x[0])
 

@@ -83,7 +83,7 @@ def integrate_chart(mech, q0, v0, t_final, *, samples=100, dt=0.01):
     Q = np.empty((t.size, mech.n))
     V = np.empty((t.size, mech.n))
     Q[0], V[0] = q, v
-    chart = mech.best_chart(q)
+    chart = mech._chart_of(q, None)        # the tuple form (a RotorSystem: int)
     used = [chart]
     for i in range(1, t.size):
         steps = max(1, int(np.ceil((t[i] - t[i - 1]) / dt)))
@@ -99,7 +99,7 @@ def integrate_chart(mech, q0, v0, t_final, *, samples=100, dt=0.01):
             z = _rk4(f, np.concatenate([q[ind], v[ind]]), h)
             q = mech.lift(z[:d], chart, ref)
             v = mech.embedding_jets(q, chart)[0] @ z[d:]
-            chart = mech.best_chart(q)
+            chart = mech._chart_of(q, None)
         Q[i], V[i] = q, v
         used.append(chart)
     return t, Q, V, used
