@@ -10,6 +10,7 @@ import pytest
 import charts
 from charts.analyses.curvature import gaussian_curvature_eq22
 from charts.analyses.mechanism_angles import mechanism_angles
+from charts.analyses.mechanism_covariant import mechanism_clvs
 from charts.analyses.mechanism_curvature import mechanism_curvature
 from charts.mechanism import MechanismError, rotors, triple_linkage
 
@@ -30,6 +31,14 @@ TOL = {
     # route (a) against route (b): the central difference's O(Δt²) truncation at Δt =
     # 0.01 (measured 3.3e-5 on rotors(3), 7e-6 on rotors(5), for |K| ≤ 0.4)
     "jacobi": 2e-4,
+    # CLVs by Ginelli's method on the same trajectory (t ≤ 65, separated by ~1e-9 by its
+    # end), both bases converged (forward and backward transients of 30): measured 3e-9
+    # (angles), 3e-9 (growth rates) on rotors(3) and rotors(5)
+    "clv": 1e-7,
+    # the growth along the two neutral CLVs (the flow direction and the energy shift, a
+    # Jordan block: the shift grows linearly) is fixed within E_0 only algebraically, as
+    # 1/t of the transients, not exponentially: measured 1.2e-6 on rotors(3)
+    "clv_neutral": 1e-5,
 }
 
 
@@ -217,6 +226,8 @@ def test_public_analyses_route_a_mechanism_to_the_generic_ones(rot3, start):
     angles = charts.hyperbolicity_angles(rot3, q, v, 0.5, t_transient=0.5)
     np.testing.assert_array_equal(
         angles.phi_restricted, mechanism_angles(rot3, q, v, 0.5, t_transient=0.5).phi_restricted)
+    clv = charts.covariant_lyapunov_vectors(rot3, q, v, 0.5, t_transient=0.5)
+    np.testing.assert_array_equal(clv.phi, mechanism_clvs(rot3, q, v, 0.5, t_transient=0.5).phi)
     curv = charts.curvature_along_trajectory(rot3, q, v, 0.3, t_transient=0.0)
     np.testing.assert_array_equal(
         curv.K_exact, mechanism_curvature(rot3, q, v, 0.3, t_transient=0.0).K_exact)
@@ -250,3 +261,45 @@ def test_rotors_keep_their_route_and_other_systems_are_routed_by_type():
     np.testing.assert_array_equal(a.exponents, b.exponents)
     with pytest.raises(TypeError, match="system"):
         charts.lyapunov_spectrum("rotors", th, u, 2.0)
+
+
+@pytest.mark.parametrize("n", [3, 5])
+def test_clvs_meet_the_rotors_clvs(n):
+    """Ginelli's CLVs of ``rotors(n)`` by the generic route (the mechanism's tangent flow,
+    Gram–Schmidt in the kinetic product) equal ``charts.covariant_lyapunov_vectors`` of
+    ``RotorSystem(n)`` (restricted variant) sample by sample: the angle between E_u and E_cs,
+    the angle between the leading unstable and stable CLVs, the growth rates along the CLVs
+    and of the Gram–Schmidt vectors; the growth rates pair as (λ, …, 0, 0, …, −λ)."""
+    mech = rotors(n)
+    q, v = mech.random_state(3)
+    mine = mechanism_clvs(mech, q, v, 5.0, t_transient=30.0)
+    ref = charts.covariant_lyapunov_vectors(charts.RotorSystem(n), q, v, 5.0, t_transient=30.0)
+    np.testing.assert_array_equal(mine.t, ref.t)
+    for field in ("phi", "phi_vectors", "growth", "gs_rates"):
+        diff = np.max(np.abs(getattr(mine, field) - getattr(ref, field)), axis=0)
+        if field == "growth":                       # the neutral pair: columns n − 2, n − 1
+            assert np.all(diff[n - 2:n] < TOL["clv_neutral"]), diff
+            diff = np.delete(diff, [n - 2, n - 1])
+        assert np.all(diff < TOL["clv"]), (field, diff)
+    assert mine.phi.min() > 0.01 and mine.growth.shape == (50, 2 * (n - 1))
+
+
+def test_clvs_bad_input_is_refused(rot3, start):
+    q, v = start
+    cases = [
+        (dict(mech=0), MechanismError, "mech"),
+        (dict(q0=q + 0.1), MechanismError, "q0"),
+        (dict(variant="full"), ValueError, "variant"),
+        (dict(variant="x"), ValueError, "variant"),
+        (dict(keep_vectors=2), ValueError, "keep_vectors"),
+        (dict(n_unstable=2), ValueError, "n_unstable"),
+        (dict(t_final=0.05, sample_every=0.1), ValueError, "t_final"),
+    ]
+    for kw, err, word in cases:
+        args = dict(mech=rot3, q0=q, v0=v, t_final=1.0, t_transient=0.0)
+        args.update(kw)
+        with pytest.raises(err, match=word):
+            mechanism_clvs(args.pop("mech"), args.pop("q0"), args.pop("v0"), args.pop("t_final"),
+                           **args)
+    res = mechanism_clvs(rot3, q, v, 0.5, t_transient=0.0, keep_vectors=True)
+    assert res.vectors.shape == (5, 4, 6)

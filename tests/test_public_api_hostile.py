@@ -403,6 +403,10 @@ ANALYSES = {
         _analyses("mechanism_curvature", "mechanism_curvature"),
         {"mech": Fresh(lambda: rotor_mechanism()), "q0": Fresh(lambda: rotor_state()[0]),
          "v0": Fresh(lambda: rotor_state()[1]), **SHORT}),
+    "mechanism_covariant.mechanism_clvs": Entry(
+        _analyses("mechanism_covariant", "mechanism_clvs"),
+        {"mech": Fresh(lambda: rotor_mechanism()), "q0": Fresh(lambda: rotor_state()[0]),
+         "v0": Fresh(lambda: rotor_state()[1]), **SHORT}),
     "linkage_angles.linkage_angles": Entry(_analyses("linkage_angles", "linkage_angles"),
                                            {**LINKAGE, "t_final": 0.5, "t_transient": 0.5}),
 }
@@ -445,10 +449,11 @@ INTERNAL = {
     "hyperbolicity": {"angle_result", "angle_members", "angle_params", "tally_on_device"},
     "linkage": {"run_steps", "gauss_curvature", "frame_curvatures", "cone_distance"},
     "linkage_angles": {"angle_steps", "sin_angle"},
-    "mechanism_angles": {"sin_angle"},
     "mechanism_arguments": {"mechanism_of", "mechanism_state"},
     "mechanism_curvature": {"jacobi_frame", "jacobi_curvature", "riemann_curvature"},
     "mechanism_route": {"generic_mechanism", "mechanism_route"},
+    "mechanism_covariant": {"gram_schmidt_factor"},
+    "mechanism_angles": {"sin_angle", "root_metric"},
     "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
                  "chunk_sizes", "averaging_logs", "end_transient", "reconstruct_spectrum",
                  "auto_transient", "transient_rule", "identify_nonphysical",

@@ -59,6 +59,7 @@ from .finite_time import domination, finite_time_statistics
 from .hyperbolicity import angle_statistics
 from .singular_values import smallest_singular_values
 from .arguments import flag, rotor_system
+from .mechanism_route import mechanism_route
 
 __all__ = ["CovariantResult", "covariant_lyapunov_vectors", "clv_dimension", "sample_bytes",
            "MAX_MEMORY", "CLVSettings", "clv_settings", "clv_flow", "ginelli_start",
@@ -396,6 +397,7 @@ class CovariantResult(Archivable):
         return plot_angles({self.variant: self.phi}, axes=axes, **kw)
 
 
+@mechanism_route("mechanism_covariant", "mechanism_clvs")
 @announces_compilation
 def covariant_lyapunov_vectors(system, theta0, u0, t_final, *, variant="restricted", dt=0.01,
                                n_unstable=None, t_transient=Documented(100.0),

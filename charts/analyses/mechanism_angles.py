@@ -43,7 +43,7 @@ from .hyperbolicity import angle_statistics
 from .mechanism_arguments import mechanism_of, mechanism_state
 from .singular_values import sin_to_angle
 
-__all__ = ["MechanismAngles", "mechanism_angles", "sin_angle"]
+__all__ = ["MechanismAngles", "mechanism_angles", "sin_angle", "root_metric"]
 
 
 @dataclass(frozen=True)
@@ -80,7 +80,7 @@ class MechanismAngles:
                 f"{np.round(self.adjoint_exponents, 4).tolist()}")
 
 
-def _root(M):
+def root_metric(M):
     """The symmetric square root of the positive semi-definite M (negative rounding
     clipped): ⟨a, b⟩_M = (√M a)·(√M b)."""
     lam, U = np.linalg.eigh(M)
@@ -93,7 +93,7 @@ def sin_angle(mech, q, v, U, S):
     n = mech.n
     a = mech.acceleration(q, v)
     C = np.vstack([S, np.concatenate([v, a]), np.concatenate([np.zeros(n), v])])
-    L = _root(mech.mass_matrix(q))
+    L = root_metric(mech.mass_matrix(q))
 
     def basis(X):                   # orthonormal columns spanning the rows of X, isometric
         return np.linalg.qr(np.hstack([X[:, :n] @ L, X[:, n:] @ L]).T)[0]
@@ -185,8 +185,10 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
             Us[j] = fw.X
         if j == S:
             fexp = fw.logsum / (fw.steps * dt)
-    bw = MechanismTangentFlow(mech, ys[-1, :n], ys[-1, n:], m, dt=-dt, reorth=reorth,
-                              project=project, inner="full", seed=seed)
+    qb = mech.project_point(ys[-1, :n])        # (its state is put on ys at every sample;
+    vb = mech.project_velocity(qb, ys[-1, n:])  # projected for the start of its vectors)
+    bw = MechanismTangentFlow(mech, qb, vb, m, dt=-dt, reorth=reorth, project=project,
+                              inner="full", seed=seed)
     sines = np.empty(S)
     for j in range(S + Sb, 0, -1):
         bw.Z[0] = ys[j]
