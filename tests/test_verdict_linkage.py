@@ -61,7 +61,15 @@ def test_a_finite_r_is_never_hyperbolic(kmax, exponents):
     else:
         assert "nodes prove no sign" in v["reason"]
     if exponents:
-        assert v["evidence"] == "statistics" and "does not prove" in v["reason"]
+        assert v["evidence"] == "statistics" and "do not prove" in v["reason"]
+
+
+def test_sampled_angles_alone_are_statistics():
+    rep = _report(exponents=())
+    rep["angles"] = [dict(min=0.535, n=10000), dict(min=0.61, n=10000)]
+    v = verdict.case_verdict(rep)
+    assert (v["verdict"], v["evidence"]) == ("open", "statistics")
+    assert "the smallest restricted angle is 0.535 rad in 20000 samples" in v["reason"]
 
 
 def test_the_rotors_positive_curvature_with_a_resolved_exponent_is_statistics():
@@ -78,12 +86,13 @@ def test_the_rotors_positive_curvature_with_a_resolved_exponent_is_statistics():
 
 def test_the_linkage_report_on_the_console_and_in_the_json(tmp_path, capsys):
     out = tmp_path / "v.json"
-    assert main(["verdict", "--triple-linkage", "0.2", *FAST, "--json", str(out)]) == 0
+    assert main(["verdict", "--triple-linkage", "0.2", *FAST, "--angles", "20",
+                 "--json", str(out)]) == 0
     captured = capsys.readouterr()
     assert "charts: triple linkage r = 0.2 (1 of 1): surface integrals" in captured.err
     [line] = [x for x in captured.out.splitlines() if x.startswith("verdict: ")]
     assert line.startswith("verdict: open; evidence: statistics; why: chi = -4")
-    assert "| 0.2 | 1 | -4 |" in captured.out and "| open | statistics |" in captured.out
+    assert "| 0.2 | 1 | -4 |" in captured.out and "rad | open | statistics |" in captured.out
     [rep] = json.loads(out.read_text())
     assert rep["system"] == dict(kind="triple_linkage", name="triple_linkage(r=0.2, l=1, R=1)",
                                  r=0.2, l=1.0, R=1.0, inertia=1.0, joint_mass=0.0,
@@ -105,6 +114,10 @@ def test_the_linkage_report_on_the_console_and_in_the_json(tmp_path, capsys):
     [e] = rep["exponents"]
     # λ₁ > 0 and below Katok's bound √(2π|χ|/A) (a theorem for χ < 0), by 3 s.e. each
     assert e["lambda1"] - 3 * e["stderr"] > 0 and e["consistent"]
+    [a] = rep["angles"]
+    # 20 time units sampled every 0.1; an angle between subspaces lies in (0, π/2]
+    assert a["n"] == 200 and 0 < a["min"] <= a["median"] <= np.pi / 2 and a["seed"] == 1
+    assert "smallest restricted angle" in rep["reason"]
     assert rep["bracket"][0] is None                 # no lower bound where K > 0 somewhere
     assert rep["bracket"][1] == pytest.approx(np.sqrt(8 * np.pi / rep["routes"]["chart"]["area"]))
 
@@ -132,6 +145,8 @@ def test_a_sphere_is_not_hyperbolic():
     (["--triple-linkage", "0.1", "--t-final", "0.015"], "not a whole number of steps"),
     (["--triple-linkage", "0.1", "--grid", "5"], "--grid must be an integer in 8..4096"),
     (["--rod-length", "1.1"], "give --triple-linkage"),
+    (["--n", "3", "--angles", "100"], "give --triple-linkage"),
+    (["--triple-linkage", "0.1", "--angles", "-5"], "--angles must be positive"),
     (["--triple-linkage", "0.1", "--statistics"], "leave out --triple-linkage"),
 ])
 def test_bad_input_is_refused_before_any_work(argv, message, capsys):

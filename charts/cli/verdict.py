@@ -83,6 +83,10 @@ def add_parser(sub) -> None:
                    const=list(DEFAULT_RADII),
                    help="rim radii r > 0 (default, without a list: "
                    + ",".join(f"{r:g}" for r in DEFAULT_RADII) + ")")
+    t.add_argument("--angles", type=float, default=None, metavar="T",
+                   help="also the restricted-angle test (section 4) over a window T from each "
+                   "seed's state: the smallest angle and the share below 0.05 rad, statistics "
+                   "like lambda1 (about 20 s per seed for T = 1000; default: not run)")
     t.add_argument("--rod-length", type=float, default=1.0, metavar="L",
                    help="the rods' length l (default 1 = R; the limit r -> 0 is then "
                    "sum cos theta = 3 (l - R) / r)")
@@ -142,9 +146,10 @@ def cmd_verdict(args) -> int:
         if len(args.n) != 1:
             raise ValueError("--masses, --weights and --level describe one system of rotors: "
                              "give one --n")
-    if not linkage and (args.rod_length != 1.0 or args.joint_mass or args.rod_mass):
-        raise ValueError("--rod-length, --joint-mass and --rod-mass describe the triple "
-                         "linkage: give --triple-linkage")
+    if not linkage and (args.rod_length != 1.0 or args.joint_mass or args.rod_mass
+                        or args.angles is not None):
+        raise ValueError("--rod-length, --joint-mass, --rod-mass and --angles are the triple "
+                         "linkage's: give --triple-linkage")
     _check_outputs(args)
     if args.statistics:
         if linkage:
@@ -223,6 +228,8 @@ def _plan_linkage(args, grid) -> None:
     from ..runs.verdict import linkage_plan
     integer("--grid", grid, 8, 1 << 12)
     steps_of("--t-final", args.t_final, 0.01)            # the exponent's RK4 step
+    if args.angles is not None:
+        steps_of("--angles", args.angles, 0.01)
     for seed in args.seeds:
         integer("--seeds", seed, 0)
     for name, value in (("--rod-length", args.rod_length), ("--joint-mass", args.joint_mass),
@@ -247,7 +254,7 @@ def _linkage_reports(args, grid) -> list:
             print(f"charts: triple linkage r = {r:g} ({i + 1} of {len(args.triple_linkage)}): "
                   f"{line}", file=sys.stderr, flush=True)
         rep = linkage_verdict(r, **_linkage_settings(args), n_grid=grid, t_final=args.t_final,
-                              seeds=args.seeds, progress=progress)
+                              seeds=args.seeds, angles_window=args.angles, progress=progress)
         print(format_verdict(rep) + "\n", flush=True)
         reports.append(rep)
     print(format_linkage_table(reports) + "\n", flush=True)

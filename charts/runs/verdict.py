@@ -130,7 +130,7 @@ def linkage_plan(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0):
 
 
 def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_final=3000.0,
-                    seeds=(1, 2), progress=None) -> dict:
+                    seeds=(1, 2), angles_window=None, progress=None) -> dict:
     """Every piece of the triple linkage's verdict at rim radius ``r`` (`linkage_plan`'s
     linkage) as one JSON-ready dict, with the keys of `surface_verdict`'s and without a
     certificate: the surface integrals on ``n_grid``² nodes per angle chart
@@ -138,8 +138,10 @@ def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_fina
     with χ read as the integer nearest ∫K dA / 2π and the smallest K at the nodes; the
     limit r → 0 (the rotor surface Σ cos θ = 3δ, δ = (l − R)/r, its χ by the Morse count);
     λ₁ at unit speed over ``t_final`` from each seed's random state
-    (``charts.analyses.mechanism_lyapunov``) against the entropy bracket.  ``progress``: a
-    callable given a line before each step."""
+    (``charts.analyses.mechanism_lyapunov``) against the entropy bracket; with
+    ``angles_window``, the restricted-angle test of section 4 over that window from each
+    seed's state (``charts.analyses.mechanism_angles``: the smallest angle, the share below
+    0.05 rad, the samples).  ``progress``: a callable given a line before each step."""
     from dataclasses import replace
 
     from ..analyses.mechanism_lyapunov import lyapunov_spectrum as mechanism_lyapunov
@@ -178,7 +180,18 @@ def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_fina
         exponents.append(_exponent(mechanism_lyapunov(mech, *mech.random_state(seed), t_final,
                                                       seed=seed), seed, t_final, bracket))
     rep = dict(system=system, n_grid=int(n_grid), routes=routes, bracket=bracket, limit=limit,
-               exponents=exponents, seconds=time.perf_counter() - t0)
+               exponents=exponents)
+    if angles_window is not None:
+        from ..analyses.mechanism_angles import mechanism_angles
+        rep["angles"] = []
+        for seed in seeds:
+            say(f"restricted angles, seed {seed}, T = {angles_window:g}")
+            a = mechanism_angles(mech, *mech.random_state(seed), angles_window, seed=seed)
+            st = a.statistics()
+            rep["angles"].append(dict(seed=int(seed), t_final=float(angles_window),
+                                      **{k: st[k] for k in ("min", "median", "frac_small",
+                                                            "small", "n")}))
+    rep["seconds"] = time.perf_counter() - t0
     return dict(rep, **case_verdict(rep))
 
 
@@ -272,16 +285,22 @@ def _statistics_case(rep: dict) -> tuple:
 
 def _exponent_evidence(rep: dict) -> tuple:
     """(evidence, clause) for a surface where no theorem applies: "statistics" when every λ₁
-    run of the report lies above 0 by 3 standard errors, "no proof" otherwise; the clause
-    ends the reason."""
-    runs = rep.get("exponents") or []
+    run of the report lies above 0 by 3 standard errors or the report holds sampled angles,
+    "no proof" otherwise; the clause ends the reason."""
+    runs, angles = rep.get("exponents") or [], rep.get("angles") or []
+    said = []
     if runs and all(e["lambda1"] - 3 * e["stderr"] > 0 for e in runs):
         lams = ", ".join(f"{e['lambda1']:.3f} +- {e['stderr']:.3f}" for e in runs)
+        said.append(f"lambda1 = {lams} at unit speed (T = {runs[0]['t_final']:g})")
+    if angles:
+        said.append(f"the smallest restricted angle is {min(a['min'] for a in angles):.3g} rad "
+                    f"in {sum(a['n'] for a in angles)} samples")
+    if said:
+        k = max(len(runs), len(angles))
         return ("statistics",
-                f"lambda1 = {lams} at unit speed (T = {runs[0]['t_final']:g}, {len(runs)} "
-                f"sampled trajector{'y' if len(runs) == 1 else 'ies'}) is statistics: a "
-                "positive exponent on typical orbits is consistent with the Anosov property but "
-                "does not prove a uniform splitting on the whole unit tangent bundle")
+                " and ".join(said) + f" on {k} sampled trajector{'y' if k == 1 else 'ies'} "
+                "are statistics: they can be consistent with the Anosov property but do not "
+                "prove a uniform splitting on the whole unit tangent bundle")
     return ("no proof", "no exponent run here is resolved above 0, and none would decide: "
             "nothing run here decides")
 
@@ -500,6 +519,10 @@ def _format_linkage(rep: dict) -> str:
                      f"{r['max_curvature']:.4g}]; K > 0 on {100 * r['positive_area']:.3f} % of "
                      "the area")
     lines += _exponent_lines(rep)
+    for a in rep.get("angles", []):
+        lines.append(f"  restricted angles (seed {a['seed']}, T = {a['t_final']:g}): min "
+                     f"{a['min']:.4g} rad, median {a['median']:.4g}, "
+                     f"{100 * a['frac_small']:.3g} % below {a['small']:g} rad, {a['n']} samples")
     lines.append(verdict_line(rep))
     lines.append(f"({rep['seconds']:.1f} s)")
     return "\n".join(lines)
@@ -508,19 +531,22 @@ def _format_linkage(rep: dict) -> str:
 def format_linkage_table(reports) -> str:
     """The triple linkage's reports as one Markdown table: r, l, χ, area, K's range, the share
     of K > 0, λ₁ (mean of the seeds ± the standard error of their mean, from the batch errors),
-    verdict and evidence."""
-    lines = ["| r | l | chi | area | K at the nodes | K > 0 | lambda1 | verdict | evidence |",
-             "|---|---|---|---|---|---|---|---|---|"]
+    the smallest restricted angle (— where the angle test did not run), verdict and
+    evidence."""
+    lines = ["| r | l | chi | area | K at the nodes | K > 0 | lambda1 | min angle | verdict "
+             "| evidence |", "|---|---|---|---|---|---|---|---|---|---|"]
     for rep in reports:
         s, c, ex = rep["system"], rep["routes"]["chart"], rep["exponents"]
         lam = "—"
         if ex:
             se = np.sqrt(sum(e["stderr"] ** 2 for e in ex)) / len(ex)
             lam = f"{np.mean([e['lambda1'] for e in ex]):.4f} ± {se:.4f}"
+        angle = "—" if not rep.get("angles") else \
+            f"{min(a['min'] for a in rep['angles']):.3g} rad"
         lines.append(f"| {s['r']:g} | {s['l']:g} | {c['euler_characteristic']} | "
                      f"{c['area']:.4f} | [{c['min_curvature']:.3g}, {c['max_curvature']:.3g}] "
-                     f"| {100 * c['positive_area']:.3f} % | {lam} | {rep['verdict']} | "
-                     f"{rep['evidence']} |")
+                     f"| {100 * c['positive_area']:.3f} % | {lam} | {angle} | "
+                     f"{rep['verdict']} | {rep['evidence']} |")
     return "\n".join(lines)
 
 
