@@ -76,6 +76,21 @@ def test_the_linkage_is_a_mechanism(L01):
     assert repr(L01.with_parameters(eps=0.05)) == repr(LinkageSystem(0.05, rho=0.2))
 
 
+def test_eq18_inner_products_are_the_mechanisms(L01):
+    """The linkage's eq (18) products, Σ Mⱼⱼ δqⱼ² (linkage_run) and Σ Mⱼⱼ (δqⱼ² + δvⱼ²)
+    (linkage_angles; for the massless disk the rotors' (θ, u) product), are the mechanism
+    flow's "theta" and "full" products: its vectors, re-orthonormalised at every step, are
+    orthonormal in them (to rounding, measured 2.2e-16)."""
+    from charts.mechanism.tangent_flow import MechanismTangentFlow
+    q, v = L01.random_state(seed=2)
+    for inner, weights, k in (("theta", np.concatenate([L01.mass, np.zeros(7)]), 3),
+                              ("full", np.concatenate([L01.mass, L01.mass]), 6)):
+        f = MechanismTangentFlow(L01, q, v, k, dt=0.01, reorth=1, project=0, inner=inner,
+                                 seed=1)
+        f.advance(5)
+        assert np.allclose((f.X * weights) @ f.X.T, np.eye(k), rtol=0, atol=1e-13)
+
+
 def test_first_order_constraints_are_the_appendix_and_sum_to_sum_cos():
     import sympy as sp
 
@@ -220,6 +235,13 @@ def test_gauss_curvature_against_shape_operator_differences(L01):
         K2 = II[i, i] * II[j, j] - II[i, j] * II[j, i]
         # measured agreement ~1e-7 relative (O(h²) differences)
         assert gauss_curvature(L01, q, B[i], B[j]) == pytest.approx(K2, rel=1e-5, abs=1e-6)
+    # a run's samples (frame_curvatures: the planes (v̂, eᵢ) as one batch) are the same
+    # Gauss equation plane by plane, to rounding
+    from charts.analyses.linkage import frame_curvatures
+    row = np.concatenate([q, B[0], B[1], np.zeros(7), B[2], np.zeros(7)])
+    K = frame_curvatures(L01, row, 2)
+    assert np.allclose(K, [gauss_curvature(L01, q, B[0], B[1]),
+                           gauss_curvature(L01, q, B[0], B[2])], rtol=1e-12, atol=1e-14)
 
 
 def test_curvature_tends_to_rotor_system_curvature():

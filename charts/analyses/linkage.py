@@ -215,9 +215,12 @@ def q_component_coordinates() -> dict:
 
 def frame_curvatures(system, row, k):
     """K(v̂, eᵢ), i = 1…k, shape (k,), at a recorded row [y; ξ¹…ξᵏ] (shape ≥ (14 (1 + k),),
-    e.g. ``flow.Z.ravel()`` of `linkage_flow`): the planes of the module doc (Gauss equation)."""
+    e.g. ``flow.Z.ravel()`` of `linkage_flow`): the planes of the module doc (the Gauss
+    equation of ``charts.mechanism.embedding``, the k planes as one batch at the row's q)."""
     fr = _frame(system, row, k)
-    return np.array([gauss_curvature(system, row[:NQ], fr[0], e) for e in fr[1:]])
+    q = np.broadcast_to(row[:NQ], (k, NQ))
+    return system._gauss(q, system._isometry(q), np.broadcast_to(fr[0], (k, NQ)),
+                         np.array(fr[1:]))
 
 
 def _frame(system, row, k):
