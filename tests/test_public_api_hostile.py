@@ -346,6 +346,12 @@ TABLE["AngleTally.statistics"] = Entry(method(angle_tally, "statistics"), {},
                                        signature_of=charts.AngleTally.statistics)
 TABLE["RotorSystem.sectional_curvature"] = Entry(
     S4.sectional_curvature, {"theta": THETA, "v": U, "w": W})
+#: A Mechanism's atlas on a RotorSystem, with a chart in either form (its other Mechanism
+#: methods are its generic twin's, ``RotorSystem.mechanism``: the sphere's entries above).
+TABLE["RotorSystem.lift"] = Entry(S4.lift, {"s": THETA[1:], "chart": 0, "near": THETA})
+TABLE["RotorSystem.embedding_jets"] = Entry(S4.embedding_jets, {"q": THETA, "chart": 0})
+TABLE["RotorSystem.chart_names"] = Entry(S4.chart_names, {"chart": 0})
+TABLE["RotorSystem.gaussian_curvature"] = Entry(S3.gaussian_curvature, {"theta": THETA3})
 
 
 @functools.cache
