@@ -52,6 +52,18 @@ def start(rot3):
     return rot3.random_state(3)
 
 
+def _refused(analysis, cases, mech, start):
+    """Each case (keywords, error, word) replaces the base call's arguments (mech, the
+    start, t_final = 1, no transient) and is refused with ``error`` naming ``word``."""
+    q, v = start
+    for kw, err, word in cases:
+        args = dict(mech=mech, q0=q, v0=v, t_final=1.0, t_transient=0.0)
+        args.update(kw)
+        with pytest.raises(err, match=word):
+            analysis(args.pop("mech"), args.pop("q0"), args.pop("v0"), args.pop("t_final"),
+                     **args)
+
+
 def test_angles_meet_the_rotors_restricted_angles_pointwise(rot3, start):
     """Over a window that ends before the two routes' trajectories separate (t ≤ 45), the
     angles of ``rotors(3)`` by the generic test (backward tangent vectors, kinetic product =
@@ -116,12 +128,7 @@ def test_angles_bad_input_is_refused(rot3, start):
         (dict(project_every=0.0), ValueError, "project_every"),
         (dict(seed=-1), ValueError, "seed"),
     ]
-    for kw, err, word in cases:
-        args = dict(mech=rot3, q0=q, v0=v, t_final=1.0, t_transient=0.0)
-        args.update(kw)
-        with pytest.raises(err, match=word):
-            mechanism_angles(args.pop("mech"), args.pop("q0"), args.pop("v0"),
-                             args.pop("t_final"), **args)
+    _refused(mechanism_angles, cases, rot3, start)
     res = mechanism_angles(rot3, q, v, 1.0, t_transient=0.0)
     with pytest.raises(ValueError, match="full"):
         res.statistics("full")
@@ -218,12 +225,7 @@ def test_curvature_bad_input_is_refused(rot3, start):
         (dict(t_transient=-1.0), ValueError, "t_transient"),
         (dict(seed=1.5), ValueError, "seed"),
     ]
-    for kw, err, word in cases:
-        args = dict(mech=rot3, q0=q, v0=v, t_final=1.0, t_transient=0.0)
-        args.update(kw)
-        with pytest.raises(err, match=word):
-            mechanism_curvature(args.pop("mech"), args.pop("q0"), args.pop("v0"),
-                                args.pop("t_final"), **args)
+    _refused(mechanism_curvature, cases, rot3, start)
 
 
 def test_public_analyses_route_a_mechanism_to_the_generic_ones(rot3, start):
@@ -311,11 +313,6 @@ def test_clvs_bad_input_is_refused(rot3, start):
         (dict(n_unstable=2), ValueError, "n_unstable"),
         (dict(t_final=0.05, sample_every=0.1), ValueError, "t_final"),
     ]
-    for kw, err, word in cases:
-        args = dict(mech=rot3, q0=q, v0=v, t_final=1.0, t_transient=0.0)
-        args.update(kw)
-        with pytest.raises(err, match=word):
-            mechanism_clvs(args.pop("mech"), args.pop("q0"), args.pop("v0"), args.pop("t_final"),
-                           **args)
+    _refused(mechanism_clvs, cases, rot3, start)
     res = mechanism_clvs(rot3, q, v, 0.5, t_transient=0.0, keep_vectors=True)
     assert res.vectors.shape == (5, 4, 6)

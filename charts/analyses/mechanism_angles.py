@@ -140,11 +140,8 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
 
     Raises
     ------
-    MechanismError
-        ``mech`` is not a Mechanism, (q0, v0) is not a state of it, or the flow met a
-        singular point.
-    ValueError
-        Another bad argument (named in the message).
+    MechanismError, ValueError
+        As ``charts.analyses.mechanism_arguments`` says, naming the argument.
     """
     mechanism_of(mech)
     dt = positive_time("dt", dt)

@@ -1,6 +1,9 @@
 """Argument checks of the analyses on a Mechanism (``charts.analyses.mechanism_angles``,
-``mechanism_curvature``, ``mechanism_covariant``): the mechanism and its start state, each
-refusal a `MechanismError` naming the argument."""
+``mechanism_curvature``, ``mechanism_covariant``): the mechanism and its start state.
+
+What those analyses raise: `MechanismError` where ``mech`` is not a Mechanism, (q0, v0) is not
+a state of it, or the flow met a singular point (or left the finite numbers); ValueError for
+another bad argument; each message names the argument."""
 from __future__ import annotations
 
 from ..geometry.checks import shown

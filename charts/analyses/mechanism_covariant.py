@@ -89,11 +89,8 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
 
     Raises
     ------
-    MechanismError
-        ``mech`` is not a Mechanism, (q0, v0) is not a state of it, or the flow met a
-        singular point.
-    ValueError
-        Another bad argument (named in the message).
+    MechanismError, ValueError
+        As ``charts.analyses.mechanism_arguments`` says, naming the argument.
     """
     mechanism_of(mech)
     if option("variant", variant, ("restricted", "full")) == "full":
