@@ -116,6 +116,8 @@ def test_angles_bad_input_is_refused(rot3, start):
     q, v = start
     cases = [
         (dict(mech="rotors(3)"), MechanismError, "Mechanism"),
+        (dict(mech=charts.Mechanism(["x", "y"], ["x**2 + y**2 - 1"], masses=[1, 1])),
+         MechanismError, "1-dimensional"),
         (dict(q0=q + 0.1), MechanismError, "off the constraint"),
         (dict(q0=q[:2]), MechanismError, "q0"),
         (dict(v0=np.ones(3)), MechanismError, "not tangent"),

@@ -455,7 +455,7 @@ INTERNAL = {
     "hyperbolicity": {"angle_result", "angle_members", "angle_params", "tally_on_device"},
     "linkage": {"run_steps", "gauss_curvature", "frame_curvatures", "cone_distance"},
     "linkage_angles": {"angle_steps", "sin_angle"},
-    "mechanism_arguments": {"mechanism_of", "mechanism_state"},
+    "mechanism_arguments": {"mechanism_of", "mechanism_state", "unstable_of"},
     "mechanism_curvature": {"jacobi_frame", "jacobi_curvature", "riemann_curvature"},
     "mechanism_route": {"generic_mechanism", "mechanism_route"},
     "mechanism_covariant": {"gram_schmidt_factor"},

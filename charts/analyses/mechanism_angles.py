@@ -34,13 +34,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geometry.checks import option
-from ..mechanism.errors import MechanismError
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.tangent import reorth_steps
 from .angle_tally import SMALL_ANGLE
-from .arguments import Documented, positive_int, positive_time, project_steps, seed_of, steps_of
+from .arguments import Documented, positive_time, project_steps, seed_of, steps_of
 from .hyperbolicity import angle_statistics
-from .mechanism_arguments import mechanism_of, mechanism_state
+from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
 from .singular_values import sin_to_angle
 
 __all__ = ["MechanismAngles", "mechanism_angles", "sin_angle", "root_metric"]
@@ -145,14 +144,7 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
     """
     mechanism_of(mech)
     dt = positive_time("dt", dt)
-    d = mech.dim
-    if d < 2:
-        raise MechanismError(f"{mech.name}: a {d}-dimensional configuration space has no "
-                             "expanding subspace to test")
-    m = d - 1 if n_unstable is None else positive_int("n_unstable", n_unstable)
-    if m > d - 1:
-        raise ValueError(f"n_unstable={m} is out of range 1..{d - 1} for a {d}-dimensional "
-                         "configuration space (E_u ⊕ E_0 ⊕ E_s has dimension 2d)")
+    m = unstable_of(mech, n_unstable)
     total = steps_of("t_final", t_final, dt)
     transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     sample = steps_of("sample_every", sample_every, dt, divides=total if isinstance(

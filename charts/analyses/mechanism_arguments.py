@@ -6,11 +6,11 @@ a state of it, or the flow met a singular point (or left the finite numbers); Va
 another bad argument; each message names the argument."""
 from __future__ import annotations
 
-from ..geometry.checks import shown
+from ..geometry.checks import integer, shown
 from ..mechanism.errors import MechanismError
 from ..mechanism.model import Mechanism
 
-__all__ = ["mechanism_of", "mechanism_state", "STATE_TOL"]
+__all__ = ["mechanism_of", "mechanism_state", "unstable_of", "STATE_TOL"]
 
 #: |F(q0)| accepted for a start point: the tolerance of the tangent flow that runs from it
 #: (``charts.mechanism.tangent_flow.MechanismTangentFlow``).
@@ -18,10 +18,28 @@ STATE_TOL = 1e-10
 
 
 def mechanism_of(mech, name="mech"):
-    """``mech`` if it is a ``charts.Mechanism``; `MechanismError` naming ``name`` otherwise."""
+    """``mech`` if it is a ``charts.Mechanism`` of dimension d ≥ 2 (a geodesic flow with an
+    expanding direction and a plane for a curvature); `MechanismError` naming ``name``
+    otherwise."""
     if not isinstance(mech, Mechanism):
         raise MechanismError(f"{name} must be a charts.Mechanism, got {shown(mech)}")
+    if mech.dim < 2:
+        raise MechanismError(f"{name}: {mech.name} has a {mech.dim}-dimensional configuration "
+                             "space: no expanding direction, no sectional curvature")
     return mech
+
+
+def unstable_of(mech, n_unstable) -> int:
+    """m, the dimension of E_u: d − 1 for None (the positive exponents of a d-dimensional
+    configuration space), else 1 … d − 1; ValueError naming n_unstable otherwise."""
+    d = mech.dim
+    if n_unstable is None:
+        return d - 1
+    try:
+        return integer("n_unstable", n_unstable, 1, d - 1)
+    except ValueError as exc:
+        raise ValueError(f"{exc} (E_u of a {d}-dimensional configuration space has at most "
+                         f"{d - 1} dimensions)") from None
 
 
 def mechanism_state(mech, q0, v0, names=("q0", "v0")):

@@ -26,14 +26,13 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry.checks import option
-from ..mechanism.errors import MechanismError
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.tangent import check_memory
-from .arguments import (Documented, flag, positive_int, positive_time, project_steps,
+from .arguments import (Documented, flag, positive_time, project_steps,
                         samples_of, seed_of, steps_of)
 from .covariant import CovariantResult, backward_coefficients, clv_samples, ginelli_start
 from .mechanism_angles import root_metric
-from .mechanism_arguments import mechanism_of, mechanism_state
+from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
 
 __all__ = ["mechanism_clvs", "gram_schmidt_factor"]
 
@@ -99,14 +98,8 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
     keep_vectors = flag("keep_vectors", keep_vectors)
     dt = positive_time("dt", dt)
     d, n = mech.dim, mech.n
-    if d < 2:
-        raise MechanismError(f"{mech.name}: a {d}-dimensional configuration space has no "
-                             "expanding subspace")
     D = 2 * d
-    m = d - 1 if n_unstable is None else positive_int("n_unstable", n_unstable)
-    if m > d - 1:
-        raise ValueError(f"n_unstable={m} is out of range 1..{d - 1} for a {d}-dimensional "
-                         "configuration space")
+    m = unstable_of(mech, n_unstable)
     n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=n_win)

@@ -153,9 +153,6 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
     seed = seed_of(seed)
     q0, v0 = mechanism_state(mech, q0, v0)
     d, n = mech.dim, mech.n
-    if d < 2:
-        raise MechanismError(f"{mech.name}: a {d}-dimensional configuration space has no "
-                             "sectional curvature")
     k = d - 1
     flow = MechanismTangentFlow(mech, q0, v0, k, dt=dt, project=project, inner="theta",
                                 reorth=reorth_steps(dt, sample, transient), seed=seed)
