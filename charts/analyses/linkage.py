@@ -121,7 +121,7 @@ class LinkageResult(SpectrumQuantities, Archivable):
     t : (S,)  sample times after the transient; states : (S, 14) the sampled (q, v).
     K : (S, k)  sectional curvatures K(v̂, eᵢ) (module doc).
     min_sin2 : float  smallest Σ sin²θᵢ at the samples (0 at a cone point of Σ cos θ = 0).
-    min_health : float  smallest det(C̃ᵀC̃) at the samples (`disk_health`; NaN without any).
+    min_health : float  smallest det(C̃ᵀC̃) at the samples (`disk_health`).
 
     The relevant spectrum (`spectrum`), the Kolmogorov–Sinai entropy and the Kaplan–Yorke
     dimension are those of the rotors' N = 4 (the same pairs ±λ and two zeros), from the two
