@@ -275,6 +275,9 @@ def test_rotors_keep_their_route_and_other_systems_are_routed_by_type():
     assert generic_mechanism(rotors(3))
     L = charts.LinkageSystem(0.1)
     assert generic_mechanism(L) == isinstance(L, charts.Mechanism)
+    if isinstance(L, charts.Mechanism):         # the Appendix linkage runs the generic test
+        res = charts.hyperbolicity_angles(L, *L.random_state(seed=1), 1.0, t_transient=1.0)
+        assert type(res).__name__ == "MechanismAngles" and res.forward_exponents.shape == (2,)
     assert not generic_mechanism("rotors") and not generic_mechanism(None)
     a = charts.lyapunov_spectrum(S, th, u, 2.0, n_batches=2, t_transient=1.0)
     b = lyapunov.lyapunov_spectrum.__wrapped__(S, th, u, 2.0, n_batches=2, t_transient=1.0)
