@@ -209,7 +209,7 @@ def test_sweep_over_eps_parses_and_runs(tmp_path):
     """The ε axis (``eps`` or the dotted ``system.eps``) sets [system] eps, ρ follows as 2ε;
     every point runs (evaluate_point, what a Dask worker does), and the summary carries the
     paper's limit row and the ε-study figure."""
-    from charts.runs.sweep.linkage import plot_linkage_sweep
+    from charts.runs.sweep.limits import plot_limit_sweep
     from charts.runs.sweep.table import csv_line, point_columns, point_row, read_table
 
     pts = sweep_points(parse_sweep(TINY))
@@ -231,7 +231,7 @@ def test_sweep_over_eps_parses_and_runs(tmp_path):
     assert [e["eps"] for e in summary["rows"]] == [0.2, 0.05]
     md = summary_markdown(summary)
     assert md.splitlines()[-1].startswith("| → 0: paper") and "| 0.385 | 0.230 |" in md
-    files = plot_linkage_sweep(summary, tmp_path / "fig", "tiny")
+    files = plot_limit_sweep(summary, tmp_path / "fig", "tiny")
     assert [Path(f).name for f in files] == ["linkage_eps.png"]
 
 

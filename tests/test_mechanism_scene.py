@@ -1,5 +1,7 @@
 """A mechanism's results saved, loaded and plotted; scenes with a [mechanism] table; sweeps
 over a mechanism's parameters."""
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -195,3 +197,56 @@ def test_rotors_and_linkage_tables_are_their_system_scenes():
     for table, system in pairs:
         a, b = parse_scene({**table, **run}), parse_scene({**system, **run})
         assert scene_to_dict(a) == scene_to_dict(b)
+
+
+# ------------------------------------------------------------------------------ sweeps
+from charts.runs.sweep import (evaluate_point, parse_sweep, summarize,   # noqa: E402
+                               summary_markdown, sweep_points)
+
+
+def test_sweep_over_r_writes_the_table_with_the_entropy(tmp_path):
+    """Two values of the triple linkage's r (a plain axis ``r`` of the base's [mechanism]
+    table, or the dotted ``mechanism.r``): each point is the scene with that r; the table
+    has λ₁ ± s.e. and Σλ⁺ (h_ks, its s.e.) per point, the summary their means over seeds
+    with the limit row r → 0 (the paper's N = 3 λ₁ = 0.500) and the limit study's figure."""
+    from charts.runs.sweep.limits import plot_limit_sweep
+    from charts.runs.sweep.report import plot_sweep
+    from charts.runs.sweep.table import csv_line, point_columns, point_row, read_table
+
+    base = {"mechanism": {"name": "triple_linkage", "r": 0.3},
+            "run": {"t_final": 2.0, "t_transient": 0.5},
+            "effects": {"lyapunov": {"n_batches": 2}}}
+    sweep = {"name": "tiny-r", "scene": base,
+             "sweep": {"seeds": [0, 1], "parameters": {"r": [0.1, 0.3]}}}
+    pts = sweep_points(parse_sweep(sweep))
+    dotted = dict(sweep, sweep={"seeds": [0, 1], "parameters": {"mechanism.r": [0.1, 0.3]}})
+    assert [p.scene.system for p in sweep_points(parse_sweep(dotted))] == \
+        [p.scene.system for p in pts]
+    assert [p.scene.system["parameters"]["r"] for p in pts] == [0.1, 0.1, 0.3, 0.3]
+    cols = point_columns(pts)
+    assert {"lambda_1", "lambda_1_se", "h_ks", "h_ks_se"} <= set(cols)
+    table = tmp_path / "sweep.csv"
+    table.write_text(csv_line(cols) + "".join(
+        csv_line(point_row(p, evaluate_point(p.raw), cols)) for p in pts))
+    header, rows = read_table(table)
+    assert all(r["status"] == "complete" for r in rows)
+    for p, r in zip(pts, rows):                  # each row is the API call at its r and seed
+        mech = charts.triple_linkage(p.params["r"])
+        api = lyapunov_spectrum(mech, *mech.random_state(seed=p.params["seed"]), 2.0,
+                                t_transient=0.5, n_batches=2, seed=p.params["seed"])
+        assert float(r["lambda_1"]) == pytest.approx(api.exponents[0], rel=1e-12)
+        assert float(r["h_ks"]) == float(r["lambda_1"])    # a surface: Σλ⁺ = λ₁
+        assert float(r["h_ks_se"]) == float(r["lambda_1_se"])
+    summary = summarize(header, rows, pts)
+    assert summary["limit"] == "triple_linkage"
+    assert [e["r"] for e in summary["rows"]] == [0.1, 0.3]
+    for e in summary["rows"]:
+        lam = [float(r["lambda_1"]) for r in rows if float(r["r"]) == e["r"]]
+        assert e["h_ks"] == pytest.approx(np.mean(lam), rel=1e-12) and e["h_ks_se"] > 0
+    md = summary_markdown(summary)
+    assert "| r | seeds | lambda_1 | h_ks |" in md
+    assert md.splitlines()[-1].startswith("| → 0 (l = R): paper N = 3") and "| 0.500 | 0.500 |" in md
+    files = plot_limit_sweep(summary, tmp_path / "fig", "tiny-r")
+    assert [Path(f).name for f in files] == ["triple_linkage_r.png"]
+    names = {Path(f).name for f in plot_sweep(summary, tmp_path / "all", "tiny-r")}
+    assert {"lambda_1.png", "h_ks.png", "triple_linkage_r.png"} <= names

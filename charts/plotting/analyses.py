@@ -99,10 +99,12 @@ def plot_lyapunov_spectrum(exponents, stderr, n, *, ax=None, label=None, title=N
     return fig, ax
 
 
-def plot_ensemble_exponents(members, exponents, stderr, *, ax=None, title=None):
+def plot_ensemble_exponents(members, exponents, stderr, *, ax=None, title=None,
+                            dots="members", bars="mean ± standard error"):
     """Each member's exponents (``members`` (m, k), one dot per member and exponent, spread
     sideways so that equal values stay visible) beside the ensemble's mean ± its standard
-    error (the members' spread), exponent i = 1…k on the horizontal axis."""
+    error (the members' spread), exponent i = 1…k on the horizontal axis; ``dots`` and
+    ``bars`` name them in the legend (a run's batch estimates and its exponents, too)."""
     members = np.asarray(members, dtype=float)
     m, k = members.shape
     fig, ax = figure_axes(ax, figsize=(max(4.0, 1.1 * k + 2.5), 4.2))
@@ -110,10 +112,9 @@ def plot_ensemble_exponents(members, exponents, stderr, *, ax=None, title=None):
     spread = np.linspace(-0.18, 0.18, m) if m > 1 else np.zeros(1)
     for i in range(k):
         ax.plot(i + 1 + spread, members[:, i], "o", ms=3, alpha=0.55, color=colors[i],
-                label="members" if i == 0 else None)
+                label=dots if i == 0 else None)
         ax.errorbar([i + 1.32], [exponents[i]], yerr=None if stderr is None else [stderr[i]],
-                    fmt="s", ms=5, capsize=4, color="k",
-                    label="mean ± standard error" if i == 0 else None)
+                    fmt="s", ms=5, capsize=4, color="k", label=bars if i == 0 else None)
     ax.set_xticks(np.arange(1, k + 1), [f"λ{i + 1}" for i in range(k)])
     ax.set_xlim(0.5, k + 0.7)
     ax.set_xlabel("exponent")

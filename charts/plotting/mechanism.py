@@ -5,9 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..io.result_words import RATE
-from .analyses import value_error
-from .style import figure_axes, line_colors
+from .analyses import plot_ensemble_exponents, value_error
 
 __all__ = ["plot_mechanism_exponents", "mechanism_label"]
 
@@ -30,25 +28,15 @@ def plot_mechanism_exponents(exponents, stderr, batches, params, *, ax=None, tit
     se = np.asarray(stderr, dtype=float)
     B = np.asarray(batches, dtype=float).reshape(-1, lam.size)
     k, m = lam.size, B.shape[0]
-    fig, ax = figure_axes(ax, figsize=(max(4.6, 1.2 * k + 3.0), 4.2))
-    colors = line_colors(k)
-    spread = np.linspace(-0.18, 0.18, m) if m > 1 else np.zeros(1)
-    for i in range(k):
-        ax.plot(i + 1 + spread, B[:, i], "o", ms=3, alpha=0.5, color=colors[i],
-                label="batch estimates" if i == 0 else None)
-        ax.errorbar([i + 1.32], [lam[i]], yerr=[se[i]], fmt="s", ms=5, capsize=4, color="k",
-                    label="λ ± standard error" if i == 0 else None)
-        ax.annotate(value_error(lam[i], se[i]), (i + 1.42, lam[i]), fontsize=8, va="center")
-    ax.axhline(0.0, color="0.6", lw=0.8)
-    ax.set_xticks(np.arange(1, k + 1), [f"λ{i + 1}" for i in range(k)])
-    ax.set_xlim(0.5, k + 1.1)
-    ax.set_xlabel("exponent")
-    ax.set_ylabel(f"λ ({RATE})")
     T, speed = params.get("t_final"), params.get("speed")
     run = ", ".join(x for x in (f"T = {T:g}" if T is not None else "",
                                 f"speed {speed:.4g}" if speed is not None else "",
                                 f"{m} batches") if x)
-    ax.set_title(title or f"Lyapunov exponents, {mechanism_label(params)}\n({run})",
-                 fontsize=10)
-    ax.legend(fontsize=8, frameon=False)
+    fig, ax = plot_ensemble_exponents(
+        B, lam, se, ax=ax, dots="batch estimates", bars="λ ± standard error",
+        title=title or f"Lyapunov exponents, {mechanism_label(params)}\n({run})")
+    for i in range(k):
+        ax.annotate(value_error(lam[i], se[i]), (i + 1.42, lam[i]), fontsize=8, va="center")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlim(0.5, k + 1.1)
     return fig, ax

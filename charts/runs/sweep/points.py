@@ -12,7 +12,7 @@ import numpy as np
 
 from ..scene import Scene, SceneError, parse_scene, scene_to_dict
 from .expressions import ExpressionError, evaluate_expression
-from .spec import PATTERNS, SYSTEM_AXES, Sweep, SweepError
+from .spec import PATTERNS, SYSTEM_AXES, Sweep, SweepError, mechanism_keys
 
 __all__ = ["SweepPoint", "sweep_points", "point_scene", "digest"]
 
@@ -61,15 +61,19 @@ def sweep_points(sweep: Sweep) -> list[SweepPoint]:
 
 
 def point_scene(sweep: Sweep, params: dict) -> dict:
-    """The base scene (a deep copy) with the parameters of one point applied: ``n``,
-    ``speed`` and ``level`` to [system] (a string speed is an expression in n), dotted keys
-    to their table, the mass and weight patterns evaluated, the seed to [initial]."""
+    """The base scene (a deep copy) with the parameters of one point applied: a parameter
+    of the base's [mechanism] table to that table (``r``), ``n``, ``speed`` and ``level`` to
+    [system] (a string speed is an expression in n), dotted keys to their table, the mass
+    and weight patterns evaluated, the seed to [initial]."""
     raw = json.loads(json.dumps(sweep.base))          # deep copy, TOML types only
     system = raw.setdefault("system", {})
+    own = mechanism_keys(raw)
     for key, val in params.items():
         if key == "speed" and isinstance(val, str):  # a normalisation in n, e.g. "n ** 0.5"
             val = float(evaluate_expression(val, {"n": params.get("n", system.get("n"))}))
-        if key in SYSTEM_AXES:
+        if key in own:
+            raw["mechanism"][key] = val
+        elif key in SYSTEM_AXES:
             system[SYSTEM_AXES[key]] = val
         elif "." in key:
             *path, leaf = key.split(".")

@@ -16,8 +16,9 @@ from ...io.result_words import RATE
 from ...analyses.spectrum_quantities import leading_entropy_with_error
 from ...analyses.statistics import standard_error
 from ..io import atomic_text
+from ..scene import positive_exponents
 from ...plotting.style import new_figure, save_png
-from .linkage import paper_limit_row, plot_linkage_sweep
+from .limits import limit_of, limit_row, plot_limit_sweep
 from .points import SweepPoint
 from .statistics import KS_ENTROPY
 from .table import HEAD, TAIL, WEIGHT_VECTOR, csv_text, format_cell
@@ -77,19 +78,19 @@ def summarize(header: list[str], rows: list[dict], points: list[SweepPoint]) -> 
             if ses:                                 # two seeds alone underestimate often
                 entry[c + "_se"] = float(max(ses))
         if KS_ENTROPY[0] in stats:
-            _entropy_over_seeds(entry, rs, by_id[rs[0]["point_id"]].scene.system["n"])
+            _entropy_over_seeds(entry, rs, positive_exponents(by_id[rs[0]["point_id"]].scene))
         out.append(entry)
-    return {"params": params, "stats": stats, "rows": out}
+    return {"params": params, "stats": stats, "rows": out, "limit": limit_of(params, points)}
 
 
-def _entropy_over_seeds(entry: dict, rs: list, n: int) -> None:
+def _entropy_over_seeds(entry: dict, rs: list, k: int) -> None:
     """``h_ks`` and ``h_ks_se`` of one parameter combination from its seeds' rows ``rs``:
-    each seed's h_KS summed over the leading N − 2 exponents positive in the mean over the
+    each seed's h_KS summed over the leading k (N − 2; d − 1 of a d-dimensional mechanism)
+    exponents positive in the mean over the
     seeds (``leading_entropy_with_error``: an exponent consistent with zero counts for every
     seed or for none), their mean, and as the error the larger of the standard error of the
     seeds' sums and the one propagated from their own (batch-means) ``h_ks_se``."""
     h, se = KS_ENTROPY
-    k = n - 2
     lam = [f"lambda_{i}" for i in range(1, k + 1)]
     rs = [r for r in rs if r.get(h, "") != "" and all(r.get(c, "") != "" for c in lam)]
     entry.pop(h, None)
@@ -143,7 +144,7 @@ def summary_markdown(summary: dict) -> str:
             else:
                 cells.append(f"{v:.3f}")
         lines.append("| " + " | ".join(cells) + " |")
-    lines += paper_limit_row(summary, stats)     # a linkage sweep over ε: the limit ε → 0
+    lines += limit_row(summary, stats)     # a sweep toward a limit (ε → 0, r → 0): the paper's
     return "\n".join(lines) + "\n"
 
 
@@ -264,7 +265,7 @@ def plot_sweep(summary: dict, folder, title="") -> list[str]:
         files.append(str(path))
     if len(numeric) == 1:
         files.append(_overview(summary, folder, title, numeric[0], groups, gkey, glabel))
-    files += plot_linkage_sweep(summary, folder, title)
+    files += plot_limit_sweep(summary, folder, title)
     return files
 
 

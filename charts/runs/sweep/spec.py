@@ -19,11 +19,13 @@ from ..scene_checks import is_finite_number, source_names, unknown_key
 from .expressions import ExpressionError, expression_symbols
 
 __all__ = ["Sweep", "SweepError", "load_sweep", "parse_sweep", "bundled_sweeps",
-           "resolve_sweep", "MODES", "SYSTEM_AXES", "PATTERNS"]
+           "resolve_sweep", "MODES", "SYSTEM_AXES", "PATTERNS", "mechanism_keys"]
 
 MODES = ("grid", "random")
-#: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns.
-#: (``eps``: the linkage's crank length, [system] kind = "linkage".)
+#: Parameter names with a fixed meaning; any other plain name is a symbol of the patterns,
+#: or, where the base scene has a [mechanism] table holding it, that mechanism's parameter
+#: (``r`` of the triple linkage; `mechanism_keys`).  (``eps``: the linkage's crank length,
+#: [system] kind = "linkage" or [mechanism] name = "linkage".)
 SYSTEM_AXES = {"n": "n", "speed": "speed", "level": "level", "eps": "eps"}
 #: Tables of named patterns, ``[sweep.<name>]``: each is one more axis (the pattern name) and
 #: fills the [system] key of the same name with the evaluated vector.
@@ -55,6 +57,13 @@ class Sweep:
     sample_seed: int = 0
     source: str = "<sweep>"
     data: dict = field(default_factory=dict)     # the file as read
+
+
+def mechanism_keys(base: dict) -> set:
+    """The parameters written in the base scene's [mechanism] table (without its ``name``):
+    a plain axis of that name sets it there (``r = [0.1, 0.2]``), as ``mechanism.r`` does."""
+    mech = base.get("mechanism") if isinstance(base, dict) else None
+    return set(mech) - {"name"} if isinstance(mech, dict) else set()
 
 
 def bundled_sweeps() -> dict[str, Path]:
@@ -124,7 +133,8 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
             raise SweepError(f"{source}: [sweep.parameters] speed = {shown(v)}: a speed given as a "
                              "string must be an arithmetic expression in n (e.g. \"n ** 0.5\": "
                              "kinetic energy ½ per rotor of unit mass)")
-    symbols = {k for k in axes if "." not in k and k not in SYSTEM_AXES}
+    symbols = {k for k in axes if "." not in k and k not in SYSTEM_AXES
+               and k not in mechanism_keys(base)}
     used = set()
     for kind, table in patterns.items():
         used |= _pattern_symbols(source, kind, table, symbols)
@@ -133,7 +143,8 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     if unused:
         raise SweepError(f"{source}: [sweep.parameters] {', '.join(sorted(unused))} is not used: "
                          "reference it in a [sweep.masses] or [sweep.weights] pattern, or use n, "
-                         "speed, level or a dotted scene key such as \"run.t_final\"")
+                         "speed, level, a parameter of the [scene.mechanism] table or a dotted "
+                         "scene key such as \"run.t_final\" or \"mechanism.r\"")
     return Sweep(name=data.get("name", default_name), description=data.get("description", ""),
                  base=base, mode=mode, seeds=tuple(seeds), axes=dict(axes),
                  masses=dict(patterns["masses"]), weights=dict(patterns["weights"]),
@@ -231,9 +242,10 @@ def _check_axis(where: str, name: str, vals, mode: str) -> None:
         raise SweepError(f"{where} = {shown(vals)} repeats a value")
     if "." in name:
         section = name.split(".")[0]
-        if section not in ("system", "initial", "integrator", "run", "effects"):
-            raise SweepError(f"{where}: a dotted key must start with system., integrator., "
-                             "run. or effects. (e.g. \"run.t_final\")")
+        if section not in ("system", "mechanism", "initial", "integrator", "run", "effects"):
+            raise SweepError(f"{where}: a dotted key must start with system., mechanism., "
+                             "integrator., run. or effects. (e.g. \"run.t_final\", "
+                             "\"mechanism.r\")")
         if name in ("system.masses", "system.n", "system.speed", "initial.seed"):
             raise SweepError(f"{where}: use the parameter name "
                              f"{shown(name.split('.')[-1])} (or seeds / [sweep.masses])")

@@ -2,7 +2,7 @@
 read from a run's ``result.json`` (and the curvature samples of ``arrays.npz``)."""
 from __future__ import annotations
 
-from ..scene import Scene
+from ..scene import Scene, positive_exponents
 
 __all__ = ["stat_columns", "result_statistics", "KS_ENTROPY"]
 
@@ -34,7 +34,7 @@ def stat_columns(scene: Scene) -> list[str]:
         k = eff["lyapunov"]["n_exponents"]
         cols += [f"lambda_{i}" for i in range(1, k + 1)]
         cols += [f"lambda_{i}_se" for i in range(1, k + 1)]
-        if k >= scene.system["n"] - 2:      # every positive exponent: Pesin's h_KS
+        if k >= positive_exponents(scene):    # every positive exponent: Pesin's h_KS
             cols += list(KS_ENTROPY)
     if "curvature" in eff:
         c = eff["curvature"]

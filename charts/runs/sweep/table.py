@@ -54,7 +54,8 @@ def point_row(point: SweepPoint, out: dict, columns: list[str]) -> list[str]:
     """The cells of one point given the worker's output ``out`` (see evaluate_point)."""
     vals = {"index": point.index, "point_id": point.point_id, "status": out["status"],
             **point.params, **out["stats"],
-            "mass_vector": json.dumps(point.scene.system["masses"]),
+            "mass_vector": json.dumps(point.scene.system.get("masses")),   # (a mechanism's:
+            # null; its parameters are in its columns and its scene)
             WEIGHT_VECTOR: json.dumps(point.scene.system.get("weights")),
             "t_final": out.get("t_final"), "error": out.get("error", ""),
             "scene": json.dumps(scene_to_dict(point.scene), sort_keys=True)}
