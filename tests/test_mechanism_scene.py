@@ -159,8 +159,13 @@ def test_users_factory_runs_as_a_scene(tmp_path):
                                              "imported"]),
     ({"name": "triple_linkage", "r": 0.3}, {"system": {"n": 3}},
      ["[system] n is not allowed with a [mechanism] table"]),
-    ({"name": "triple_linkage", "r": 0.3}, {"effects": {"curvature": {}}},
-     ["[effects] curvature is not allowed with a [mechanism] table"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"effects": {"clv": {}}},
+     ["[effects] clv is not allowed with a [mechanism] table"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"effects": {"angles": {"variant": "both"}}},
+     ["[effects.angles] variant = 'both' is not allowed with a [mechanism] table: only "
+      "'restricted'"]),
+    ({"name": "triple_linkage", "r": 0.3}, {"effects": {"curvature": {"n_directions": 2}}},
+     ["n_directions = 2 is not allowed: expected 1..1"]),
     ({"name": "triple_linkage", "r": 0.3}, {"integrator": {"formulation": "chart"}},
      ["formulation = 'chart' is not allowed with a [mechanism] table"]),
     ({"name": "triple_linkage", "r": 0.3}, {"initial": {"theta": [0, 0, 0]}},
@@ -250,3 +255,37 @@ def test_sweep_over_r_writes_the_table_with_the_entropy(tmp_path):
     assert [Path(f).name for f in files] == ["triple_linkage_r.png"]
     names = {Path(f).name for f in plot_sweep(summary, tmp_path / "all", "tiny-r")}
     assert {"lambda_1.png", "h_ks.png", "triple_linkage_r.png"} <= names
+
+
+def test_triple_linkage_curvature_and_angles_in_a_scene(tmp_path):
+    """Curvature (both routes) and the angle test on the generic route.  On a surface the
+    plane of v̂ and its one normal direction is the tangent plane: K(v̂, e₁) is the Gaussian
+    curvature at the sample, an independent route (``Mechanism.gaussian_curvature``, the
+    intrinsic formula in a chart); route (b) meets it to rounding, route (a), a central
+    difference in dt, to its O(dt²) (measured 1.6e-5 here at dt = 0.01 and |K| < 0.83; the
+    bound 1e-4 leaves 6×).  The angles are those of
+    `mechanism_angles` from the same state, bit for bit."""
+    from charts.analyses.mechanism_angles import mechanism_angles
+
+    sc = parse_scene({"mechanism": {"name": "triple_linkage", "r": R}, "initial": {"seed": 2},
+                      "run": {"t_final": 2.0, "t_transient": 1.0},
+                      "effects": {"curvature": {"sample_every": 0.5},
+                                  "angles": {"sample_every": 0.5}}})
+    assert sc.effects["angles"]["variant"] == "restricted"
+    assert sc.effects["curvature"]["n_directions"] == 1
+    res = run_scene(sc, tmp_path / "out", quiet=True)
+    mech = charts.triple_linkage(R)
+    with np.load(tmp_path / "out" / "arrays.npz") as a:
+        Kn, Ke, phi, t_phi = (a[k] for k in ("curvature_numerical", "curvature_exact",
+                                            "angles_restricted", "angles_t"))
+    assert Ke.shape == Kn.shape == (4, 1)
+    Y = np.array(res["final_state"]["q"])                   # (the last sample's state)
+    K = mech.gaussian_curvature(mech.project_point(Y))
+    assert Ke[-1, 0] == pytest.approx(K, abs=1e-10)
+    assert np.max(np.abs(Kn - Ke)) < 1e-4
+    q, v = mech.random_state(seed=2)
+    api = mechanism_angles(mech, q, v, 2.0, t_transient=1.0, sample_every=0.5, seed=2)
+    assert np.array_equal(phi, api.phi_restricted)
+    assert np.array_equal(t_phi, api.t - 1.0)
+    assert res["results"]["angles"]["forward_exponents"] == api.forward_exponents.tolist()
+    assert "restricted" in res["results"]["angles"] and "full" not in res["results"]["angles"]

@@ -11,7 +11,7 @@ from ..mechanism.tangent_flow import MechanismTangentFlow
 from .plan import ticks
 
 __all__ = ["mechanism_system", "mechanism_start", "SceneFlow", "mechanism_invariants",
-           "mechanism_result"]
+           "mechanism_curvature_sample", "mechanism_angles_pass", "mechanism_result"]
 
 
 def mechanism_system(scene):
@@ -76,6 +76,49 @@ def mechanism_invariants(system, y, speed) -> list:
     Jv = system.jacobian(q) @ v
     return [float(F[np.argmax(np.abs(F))]), float(Jv[np.argmax(np.abs(Jv))]),
             float(2 * system.energy(q, v) / speed ** 2 - 1.0)]
+
+
+def mechanism_curvature_sample(st, kdir: int, routes: str):
+    """(K(v̂, eᵢ) by route (a), the Jacobi fields moved by ±dt; by route (b), the Riemann
+    tensor in a chart), i = 1…kdir, each None where ``routes`` leaves it out: the frame of
+    ``charts.analyses.mechanism_curvature`` (the velocity and the position parts of the first
+    ``kdir`` vectors, M-orthonormal) at the current state put on TC, as that analysis
+    evaluates its samples."""
+    from ..analyses.mechanism_curvature import (jacobi_curvature, jacobi_frame,
+                                                riemann_curvature)
+
+    mech, n = st.system, st.nq
+    q = mech.project_point(st.y[:n])
+    v = mech.project_velocity(q, st.y[n:])
+    X = np.array([np.concatenate(mech.project_phase_tangent(q, v, x[:n], x[n:]))
+                  for x in st.X[:kdir]])
+    J, P = jacobi_frame(mech, q, v, X)
+    Kn = Ke = None
+    if routes in ("numerical", "both"):
+        Kn = np.diagonal(jacobi_curvature(mech, q, v, J, P, st.scene.integrator["dt"])).copy()
+    if routes in ("exact", "both"):
+        Ke = np.diagonal(riemann_curvature(mech, q, P)).copy()
+    return Kn, Ke
+
+
+def mechanism_angles_pass(st) -> None:
+    """The restricted angle test (section 4, ``charts.analyses.mechanism_angles``) from the
+    initial state with the scene's settings, recorded as the linkage's pass is: rows [t from
+    the window's start, nan (no full variant), φ]."""
+    from ..analyses.mechanism_angles import mechanism_angles
+
+    sc, n = st.scene, st.nq
+    a, dt = sc.effects["angles"], sc.integrator["dt"]
+    res = mechanism_angles(st.system, st.y0[:n], st.y0[n:], sc.run["t_final"], dt=dt,
+                           n_unstable=a["n_vectors"], t_transient=a["t_transient"],
+                           sample_every=a["sample_every"],
+                           project_every=st.flow.project * dt or None,
+                           seed=sc.initial["seed"] or 0)
+    t = res.t - res.params["t_transient"]
+    st.rec["angles"] = [[ti, np.nan, p] for ti, p in zip(t, res.phi_restricted)]
+    st.rec["angles_exponents"] = [list(res.forward_exponents), list(res.adjoint_exponents)]
+    st.rhs += st.plan.angles["rhs_evaluations"]
+    st.steps += st.plan.angles["steps"]
 
 
 def mechanism_result(st, out) -> None:

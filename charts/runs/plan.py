@@ -98,13 +98,15 @@ def ticks(t, unit):
 
 
 def linkage_angles_plan(scene) -> dict:
-    """The angles pass of `linkage_angles`: forward t_transient + t_final + t_transient,
-    backward t_final + t_transient, two vectors each, re-orthonormalised every step."""
+    """The angles pass of `linkage_angles` or a mechanism's `mechanism_angles`: forward
+    t_transient + t_final + t_transient, backward t_final + t_transient, ``n_vectors`` vectors
+    each (the linkage's 2)."""
     dt = scene.integrator["dt"]
     n_tr = ticks(scene.effects["angles"]["t_transient"], dt)
     total = ticks(scene.run["t_final"], dt)
     steps = (2 * n_tr + total) + (n_tr + total)
-    return {"forward_vectors": 2, "adjoint_vectors": 2, "steps": steps,
+    m = scene.effects["angles"]["n_vectors"]
+    return {"forward_vectors": m, "adjoint_vectors": m, "steps": steps,
             "rhs_evaluations": 4 * steps, "stored_trajectory_checkpoints": 0,
             "stored_samples": ticks(scene.run["t_final"],
                                     scene.effects["angles"]["sample_every"]) + 1}
@@ -146,8 +148,8 @@ def plan_scene(scene: Scene) -> Plan:
         plan.stored["curvature"] = ticks(run["t_final"], c["sample_every"])
         if c["route"] in ("numerical", "both"):   # (the linkage's route is "exact")
             plan.transport_vectors = c["n_directions"] + 1
-    if "angles" in eff and linkage:
-        plan.adjoint_vectors = 2
+    if "angles" in eff and (linkage or "coordinates" in scene.system):   # (a mechanism's)
+        plan.adjoint_vectors = eff["angles"]["n_vectors"]
         plan.angles = linkage_angles_plan(scene)
     elif "angles" in eff:
         a = eff["angles"]

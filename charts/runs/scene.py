@@ -167,7 +167,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     if linkage or mechanical:
         refuse_linkage_rules(source, run, effects)
     if method == "rk4":
-        _follow_dt(linkage, run, integ, effects, integ["dt"])
+        _follow_dt(system.get("kind", "rotors"), run, integ, effects, integ["dt"])
 
     # -- run: times on the grids ---------------------------------------------------------------
     grid = integ["dt"] if method == "rk4" else None
@@ -192,7 +192,7 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     if linkage:
         check_linkage_effects(source, run, effects, raw_eff)
     if mechanical:
-        check_mechanism_effects(source, effects)
+        check_mechanism_effects(source, run, effects, raw_eff)
         d = system["dimension"]
         _check_effects(source, len(system["coordinates"]), integ, run, effects,
                        exponents=(d - 1, d, 2 * d))
@@ -211,7 +211,7 @@ _DIVIDE_T_FINAL = {"lyapunov": ("reorth_every",), "curvature": ("sample_every",)
                    "clv": ("sample_every",), "angles": ("sample_every",)}
 
 
-def _follow_dt(linkage, run, integ, effects, dt):
+def _follow_dt(kind, run, integ, effects, dt):
     """Each duration the scene leaves to the API's default (a `Documented` value of its
     signature: ``[integrator] project_every``, the transients, reorth_every, the
     sample_every of the effects) put on the step grid as the API puts it
@@ -221,7 +221,9 @@ def _follow_dt(linkage, run, integ, effects, dt):
     below).  A linkage places its defaults as its calls do: reorth_every and the curvature's
     sample_every as `linkage_run` (`run_steps`: the samples a multiple of reorth_every, with
     linkage_run's reorth_every where the scene has no Lyapunov effect), the angle pass as
-    `linkage_angles` (its t_transient a multiple of its sample_every: `angle_steps`)."""
+    `linkage_angles` (its t_transient a multiple of its sample_every: `angle_steps`), and so
+    does a mechanism's (``kind`` "mechanism": `mechanism_angles`, whose transient is too)."""
+    linkage = kind == "linkage"
     total = int(round(run["t_final"] / dt)) if run["t_final"] else 0   # checked below
     if linkage and ("lyapunov" in effects or "curvature" in effects):
         from ..analyses.linkage import run_steps
@@ -236,7 +238,7 @@ def _follow_dt(linkage, run, integ, effects, dt):
             for table, key, steps in ((ly, "reorth_every", reorth), (c, "sample_every", sample)):
                 if isinstance(table.get(key), Documented):
                     table[key] = steps * dt
-    if linkage and "angles" in effects:
+    if kind in ("linkage", "mechanism") and "angles" in effects:
         from ..analyses.linkage_angles import angle_steps
         a = effects["angles"]
         try:
@@ -261,7 +263,8 @@ def _transients(kind, run, written, effects):
     mirrors (``scene_schema.API``; ``kind``: the system's); a written ``[run] t_transient``
     is every pass's."""
     linkage = kind == "linkage"
-    passes = {"angles": "linkage_angles" if linkage else "angles", "clv": "clv"}
+    passes = {"angles": {"linkage": "linkage_angles", "mechanism": "mechanism_angles"}.get(
+        kind, "angles"), "clv": "clv"}
     for name, api in passes.items():
         if name in effects and effects[name]["t_transient"] is None:
             effects[name]["t_transient"] = (run["t_transient"] if written
@@ -424,11 +427,11 @@ def _check_effects(source, n, integ, run, effects, exponents=None):
     if "curvature" in effects:
         c = effects["curvature"]
         if c["n_directions"] is None:
-            c["n_directions"] = n - 2
-        if c["n_directions"] > n - 2:
+            c["n_directions"] = positive
+        if c["n_directions"] > positive:
             raise SceneError(f"{where(source, sect('curvature'), 'n_directions')} = "
-                             f"{shown(c['n_directions'])} is not allowed: expected 1..{n - 2} (N−2 "
-                             "directions orthogonal to the velocity in the N−1-dim. manifold)")
+                             f"{shown(c['n_directions'])} is not allowed: expected 1..{positive} "
+                             "(the directions orthogonal to the velocity in the manifold)")
         multiple_of(source, sect("curvature"), "sample_every", c["sample_every"], integ["dt"],
                   "[integrator] dt")
     for name in ("angles", "clv"):        # the two routes to the angles of section 4
@@ -436,10 +439,10 @@ def _check_effects(source, n, integ, run, effects, exponents=None):
             continue
         a = effects[name]
         if a["n_vectors"] is None:
-            a["n_vectors"] = n - 2
-        if a["n_vectors"] > n - 2:
+            a["n_vectors"] = positive
+        if a["n_vectors"] > positive:
             raise SceneError(f"{where(source, sect(name), 'n_vectors')} = {shown(a['n_vectors'])} "
-                             f"is not allowed: expected 1..{n - 2} (at most the number of "
+                             f"is not allowed: expected 1..{positive} (at most the number of "
                              "positive exponents)")
         multiple_of(source, sect(name), "sample_every", a["sample_every"], integ["dt"],
                   "[integrator] dt")

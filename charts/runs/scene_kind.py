@@ -49,7 +49,9 @@ LINKAGE = SceneKind("linkage", ("q", "v"), linkage_run.linkage_system,
 MECHANISM = SceneKind("mechanism", ("q", "v"), mechanism_run.mechanism_system,
                       mechanism_run.mechanism_start,
                       lambda st: mechanism_run.mechanism_invariants(st.system, st.y, st.speed),
-                      None, None, lambda st, k: None, mechanism_run.mechanism_result, False)
+                      mechanism_run.mechanism_curvature_sample,
+                      mechanism_run.mechanism_angles_pass, lambda st, k: None,
+                      mechanism_run.mechanism_result, False)
 #: The kinds by their name.
 KINDS = {kind.name: kind for kind in (ROTORS, LINKAGE, MECHANISM)}
 

@@ -28,7 +28,9 @@ How each runs:
 What a scene of the generic route can do (`MECHANISM_EFFECTS`, `check_mechanism_start`):
 ambient RK4 from a seeded state (``Mechanism.random_state``), the effects lyapunov,
 waveforms and spectrum (of the coordinates' velocities), drift (the constraints, the
-tangency J v and the energy).
+tangency J v and the energy), curvature (both routes of
+``charts.analyses.mechanism_curvature`` at the samples of the scene's flow) and angles (the
+restricted test of ``charts.analyses.mechanism_angles``).
 
 The linkage's route (``[system] kind = "linkage"``; its run's pieces in
 ``charts.runs.linkage_run``) has the same rules and a few of its own, at the end of this
@@ -49,7 +51,8 @@ from .scene_schema import SceneError
 
 __all__ = ["INSTANCES", "STRUCTURED", "MECHANISM_EFFECTS", "MECHANISM_SYSTEM_KEYS",
            "factory_of", "factory_keys", "translated", "mechanism_system", "mechanism_of",
-           "check_mechanism_start", "check_mechanism_effects", "LINKAGE_KEYS", "ROTOR_KEYS",
+           "check_mechanism_start", "check_mechanism_effects", "check_own_effects",
+           "LINKAGE_KEYS", "ROTOR_KEYS",
            "LINKAGE_EFFECTS", "system_kind_problems", "check_linkage_system",
            "check_linkage_effects", "linkage_defaults"]
 
@@ -63,7 +66,7 @@ INSTANCES = {
 #: kind (`translated`).
 STRUCTURED = {"rotors": "rotors", "linkage": "linkage"}
 #: The effects a scene of the generic route can request.
-MECHANISM_EFFECTS = ("waveforms", "spectrum", "drift", "lyapunov")
+MECHANISM_EFFECTS = ("waveforms", "spectrum", "drift", "lyapunov", "curvature", "angles")
 #: The keys of ``[system]`` a scene of the generic route may write.
 MECHANISM_SYSTEM_KEYS = ("speed",)
 
@@ -239,12 +242,41 @@ def check_mechanism_start(source, raw_init, integ, context="a [mechanism] table"
                              f"({key} = {shown(only)}; {doc})")
 
 
-def check_mechanism_effects(source, effects) -> None:
-    """The effects the generic route can do (`MECHANISM_EFFECTS`)."""
-    bad = [e for e in effects if e not in MECHANISM_EFFECTS]
+def check_mechanism_effects(source, run, effects, raw_eff) -> None:
+    """The effects the generic route can do (`MECHANISM_EFFECTS`), with their settings:
+    the angle test's variant "restricted" (the mechanism's TC), its t_final and
+    t_transient multiples of its sample_every."""
+    check_own_effects(source, run, effects, raw_eff, MECHANISM_EFFECTS,
+                      (("angles", "variant", "restricted", "the tangent bundle TC of the "
+                        "mechanism: charts.analyses.mechanism_angles"),),
+                      "a [mechanism] table")
+
+
+def check_own_effects(source, run, effects, raw_eff, allowed, fixed, context) -> None:
+    """The effects a mechanism's route can do (``allowed``), the settings it takes one value
+    of (``fixed``: (effect, key, the value, why)), filled in; the angle test's t_final and
+    t_transient multiples of its sample_every.  ``context`` names the route in messages."""
+    sect = "effects.{}".format
+    bad = [e for e in effects if e not in allowed]
     if bad:
-        raise SceneError(f"{source}: [effects] {', '.join(bad)} is not allowed with a "
-                         f"[mechanism] table (its effects: {', '.join(MECHANISM_EFFECTS)})")
+        raise SceneError(f"{source}: [effects] {', '.join(bad)} is not allowed with "
+                         f"{context} (its effects: {', '.join(allowed)})")
+    for eff, key, only, why in fixed:
+        if eff not in effects:
+            continue
+        given = raw_eff[eff].get(key, only) if isinstance(raw_eff[eff], dict) else only
+        if given != only:
+            raise SceneError(f"{where(source, sect(eff), key)} = {shown(given)} is not allowed "
+                             f"with {context}: only {shown(only)} ({why})")
+        effects[eff][key] = only
+    if "angles" in effects:
+        from .scene_checks import multiple_of
+        a = effects["angles"]
+        for sec, key, value in (("run", "t_final", run["t_final"]),
+                                ("effects.angles", "t_transient", a["t_transient"])):
+            if value > 0:
+                multiple_of(source, sec, key, value, a["sample_every"],
+                            "[effects.angles] sample_every")
 
 
 # ------------------------------------------------------------------ the linkage's route
@@ -310,32 +342,14 @@ def linkage_defaults(effects, raw_eff) -> None:
 def check_linkage_effects(source, run, effects, raw_eff) -> None:
     """The effects a linkage can do, with its settings; fills its defaults (curvature
     route "exact", angles variant "restricted")."""
-    sect = "effects.{}".format
-    bad = [e for e in effects if e not in LINKAGE_EFFECTS]
-    if bad:
-        raise SceneError(f"{source}: [effects] {', '.join(bad)} is not allowed with kind = "
-                         f"'linkage' (its effects: {', '.join(LINKAGE_EFFECTS)})")
     fixed = (("lyapunov", "inner_product", "theta",
               "the product of the kinetic metric on positions, Σ δθᵢ² for a massless disk"),
              ("curvature", "route", "exact", "the Gauss equation of the linkage's manifold"),
              ("angles", "variant", "restricted", "the invariant subspace T_r of the linkage"))
-    for eff, key, only, why in fixed:
-        if eff not in effects:
-            continue
-        given = raw_eff[eff].get(key, only) if isinstance(raw_eff[eff], dict) else only
-        if given != only:
-            raise SceneError(f"{where(source, sect(eff), key)} = {shown(given)} is not allowed with "
-                             f"kind = 'linkage': only {shown(only)} ({why})")
-        effects[eff][key] = only
-    if "angles" in effects:
-        a = effects["angles"]
-        if a["n_vectors"] not in (None, 2):
-            raise SceneError(f"{where(source, sect('angles'), 'n_vectors')} = "
-                             f"{shown(a['n_vectors'])} is not allowed with kind = 'linkage': the "
-                             "linkage's test follows 2 vectors (its 2 positive exponents)")
-        from .scene_checks import multiple_of
-        for sec, key, value in (("run", "t_final", run["t_final"]),
-                                ("effects.angles", "t_transient", a["t_transient"])):
-            if value > 0:
-                multiple_of(source, sec, key, value, a["sample_every"],
-                            "[effects.angles] sample_every")
+    if "angles" in effects and effects["angles"]["n_vectors"] not in (None, 2):
+        raise SceneError(f"{where(source, 'effects.angles', 'n_vectors')} = "
+                         f"{shown(effects['angles']['n_vectors'])} is not allowed with kind = "
+                         "'linkage': the linkage's test follows 2 vectors (its 2 positive "
+                         "exponents)")
+    check_own_effects(source, run, effects, raw_eff, LINKAGE_EFFECTS, fixed,
+                      "kind = 'linkage'")

@@ -23,7 +23,8 @@ __all__ = ["Key", "SceneError", "SCHEMA", "EFFECTS", "TOP_KEYS", "TANGENT_EFFECT
 
 #: The API call each effect mirrors (``module:function``); ``linkage`` and
 #: ``linkage_angles``: the main pass and the angles pass of a linkage scene; ``mechanism``:
-#: the main pass of a scene with a [mechanism] table on the generic route.
+#: the main pass of a scene with a [mechanism] table on the generic route, and
+#: ``mechanism_angles`` its angles pass.
 API = {
     "lyapunov": "charts.analyses.lyapunov:lyapunov_spectrum",
     "curvature": "charts.analyses.curvature:curvature_along_trajectory",
@@ -32,6 +33,7 @@ API = {
     "waveforms": "charts.analyses.spectra:waveform",
     "linkage": "charts.analyses.linkage:linkage_run",
     "mechanism": "charts.analyses.mechanism_lyapunov:lyapunov_spectrum",
+    "mechanism_angles": "charts.analyses.mechanism_angles:mechanism_angles",
     "linkage_angles": "charts.analyses.linkage_angles:linkage_angles",
 }
 
