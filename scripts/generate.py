@@ -2,9 +2,9 @@
 """Write the generated chart kernels into ``generated/`` (the only writer of it).
 
     python scripts/generate.py            # regenerate N = 3..6 (the family Σ aᵢ cos θᵢ = c and its
-                                          # paper member a = 1, c = 0), the linkage of the Appendix
-                                          # and the mechanisms' jets (charts/codegen/mechanism.py:
-                                          # rotors(3..6), the triple linkage with and without rods)
+                                          # paper member a = 1, c = 0) and the mechanisms' jets
+                                          # (charts/codegen/mechanism.py: rotors(3..6), the triple
+                                          # linkage with and without rods, the Appendix linkage)
     python scripts/generate.py --check    # regenerate into a temp folder, diff, exit 1 if stale
 """
 from __future__ import annotations

@@ -305,7 +305,7 @@ def test_generated_folder_is_fresh_and_edits_are_caught(tmp_path):
     shutil.copytree(ROOT / "generated", edited)
     path = edited / "rotor_n4.py"
     path.write_text(path.read_text().replace("math.sin(q[0])", "math.sin(q[0] + 1e-9)", 1))
-    (edited / "linkage.py").write_bytes(b"\xff\xfe not python")
+    (edited / "mechanism_appendix_linkage.py").write_bytes(b"\xff\xfe not python")
     diff = compare(fresh, edited)
     assert any(line.startswith("-") and "1e-9" in line for line in diff)
     assert any(line.startswith("-<unreadable") for line in diff)

@@ -33,10 +33,10 @@ class DamagedModuleError(ImportError):
 
 def write_all(outdir: Path, ns=None, verbose=True) -> dict:
     """Write every shipped module into ``outdir``: ``__init__.py``, ``rotor_nN.py`` and
-    ``rotor_nN_paper.py`` for N in ``ns`` (default `SHIPPED_N`), ``linkage.py`` and the
-    mechanisms' jets (``charts.codegen.mechanism.write_shipped``); returns the seconds each N
-    (the linkage, each mechanism) took."""
-    from .emit import SHIPPED_N, init_source, linkage_source, module_name, module_source
+    ``rotor_nN_paper.py`` for N in ``ns`` (default `SHIPPED_N`) and the mechanisms' jets
+    (``charts.codegen.mechanism.write_shipped``: the rotors, the triple linkage, the Appendix
+    linkage); returns the seconds each N (each mechanism) took."""
+    from .emit import SHIPPED_N, init_source, module_name, module_source
     from .symbolic import ChartGeometry
 
     outdir = Path(outdir)
@@ -52,11 +52,6 @@ def write_all(outdir: Path, ns=None, verbose=True) -> dict:
         timings[f"N={n}"] = time.perf_counter() - t0
         if verbose:
             print(f"  N={n}: {timings[f'N={n}']:.1f} s", flush=True)
-    t0 = time.perf_counter()
-    atomic_write(outdir / "linkage.py", linkage_source().encode("utf-8"))  # the Appendix's linkage
-    timings["linkage"] = time.perf_counter() - t0
-    if verbose:
-        print(f"  linkage: {timings['linkage']:.1f} s", flush=True)
     from .mechanism import write_shipped
 
     timings.update(write_shipped(outdir, verbose))

@@ -161,22 +161,39 @@ def _linkage_model(rods):
     return _MODELS[key]
 
 
+def _appendix_hinges(q, eps, rho):
+    """The hinges of the Appendix linkage (Fig. 1b), the one home of that formula: four
+    rotors turn about axes at (1, 0), (0, 1), (−1, 0), (0, −1); a rod of length R joins the
+    hinge at distance ε on rotor i to the hinge at distance ρ from the centre (x, y) of a
+    disk turned by α.  For SymPy q = (θ₀, θ₁, θ₂, θ₃, x, y, α), ε and ρ:
+    (rotor hinges Pᵢ, disk hinges Dᵢ), each a list of four (x, y) pairs,
+
+        P₀ = (1 − ε cos θ₀, ε sin θ₀),   P₁ = (ε sin θ₁, 1 + ε cos θ₁),
+        P₂ = (−1 + ε cos θ₂, −ε sin θ₂), P₃ = (−ε sin θ₃, −1 − ε cos θ₃),
+        D₀ = (x + ρ cos α, y + ρ sin α), D₁ = (x − ρ sin α, y + ρ cos α),
+        D₂ = (x − ρ cos α, y − ρ sin α), D₃ = (x + ρ sin α, y − ρ cos α)."""
+    t0, t1, t2, t3, x, y, a = q
+    e, r = eps, rho
+    P = [(1 - e * sp.cos(t0), e * sp.sin(t0)), (e * sp.sin(t1), 1 + e * sp.cos(t1)),
+         (-1 + e * sp.cos(t2), -e * sp.sin(t2)), (-e * sp.sin(t3), -1 - e * sp.cos(t3))]
+    D = [(x + r * sp.cos(a), y + r * sp.sin(a)), (x - r * sp.sin(a), y + r * sp.cos(a)),
+         (x - r * sp.cos(a), y - r * sp.sin(a)), (x + r * sp.sin(a), y - r * sp.cos(a))]
+    return P, D
+
+
 def appendix_linkage_model():
     """The Appendix linkage's symbolic Mechanism (Fig. 1b), derived once per process:
     q = (θ₀, θ₁, θ₂, θ₃, x, y, α), the four constraints Fᵢ = |Pᵢ − Dᵢ|² − R² of the hinges
-    written in ``charts.codegen.linkage.LinkageSymbols`` (the one home of that formula),
-    M = diag(1, 1, 1, 1, m_d, m_d, I_d), parameters (eps, rho, R, m_d, I_d) with the values
-    of ``LinkageSystem(0.05)``; the angles periodic.  ``LinkageSystem`` carries it."""
+    of `_appendix_hinges`, M = diag(1, 1, 1, 1, m_d, m_d, I_d), parameters (eps, rho, R, m_d,
+    I_d) with the values of ``LinkageSystem(0.05)``; the angles periodic.  ``LinkageSystem``
+    carries it."""
     key = ("appendix_linkage",)
     if key in _MODELS:
         return _MODELS[key]
-    from ..codegen.linkage import LinkageSymbols
-
-    S = LinkageSymbols()
     q = sp.symbols("theta0:4 x y alpha", real=True)
     eps, rho, R, md, Id = sp.symbols("eps rho R m_d I_d", real=True)
-    names = dict(zip(S.q, q)) | {S.eps: eps, S.rho: rho, S.R: R}
-    F = [f.xreplace(names) for f in S.constraints]
+    P, D = _appendix_hinges(q, eps, rho)
+    F = [(p[0] - d[0]) ** 2 + (p[1] - d[1]) ** 2 - R ** 2 for p, d in zip(P, D)]
     _MODELS[key] = Mechanism(q, F, masses=[1, 1, 1, 1, md, md, Id],
                              parameters={eps: 0.05, rho: 0.1, R: 1.0, md: 0.0, Id: 0.0},
                              periodic=(*q[:4], q[6]), name="appendix_linkage")
