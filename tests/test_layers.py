@@ -3,7 +3,7 @@
 Every module of ``charts/`` and ``generated/`` is parsed (``ast``, nothing is imported) and
 each of its imports, at the top or inside a function (the lazy ones count), is checked
 against `LAYERS`.  Imports by name (``importlib.import_module``) are not seen: the loaders of
-generated code (``charts.geometry.kernels``, ``charts.geometry.linkage``) and of result
+generated code (``charts.codegen.shipped``, ``charts.codegen.mechanism``) and of result
 types (``charts.io.archive.KINDS``) use them.  The generated modules import nothing written by
 hand (`GENERATED_MAY_IMPORT`), as the code generator's output for an unshipped N (the
 on-demand cache) does.

@@ -1,9 +1,10 @@
-"""The one time loop of every fixed-step flow: the rotors' stacked flow (state and tangent or
-adjoint vectors, ``charts.solvers.tangent``), its lanes (``charts.solvers.lanes``) and the
-linkage (``charts.solvers.linkage``).  The loop owns the step count and the phases of what
-happens after a step — projection of the state, re-orthonormalisation of the vectors
-(eq 18), the log-norm sums at event steps, records — and nothing else: the formulation's
-named state ``flow`` (a named tuple) and its hooks do the work.
+"""The one time loop of the rotors' fixed-step flows: the stacked flow (state and tangent or
+adjoint vectors, ``charts.solvers.tangent``) and its lanes (``charts.solvers.lanes``).  A
+mechanism without the rotors' structured kernels (the linkages) runs on the generic route,
+``charts.mechanism.tangent_flow.MechanismTangentFlow``.  The loop owns the step count and
+the phases of what happens after a step — projection of the state, re-orthonormalisation of
+the vectors (eq 18), the log-norm sums at event steps, records — and nothing else: the
+formulation's named state ``flow`` (a named tuple) and its hooks do the work.
 
 Phases follow the global step counter (`countdowns`), so a run advanced in one call or in
 any number of chunks takes the same steps in the same order: bit-identical numbers.
@@ -12,8 +13,7 @@ Hooks, all compile-time arguments, inlined into the caller's kernel (so each ker
 one loop with its own hooks, and no call or reference count per step is added):
 
 * ``step(flow, rate) -> status``: one step of the flow (its sub-steps near a singular point
-  included); ``rate`` is passed through untouched (the rotors' vectors hook, the linkage's
-  right-hand side);
+  included); ``rate`` is passed through untouched (the rotors' vectors hook);
 * ``project(flow) -> status``: the state back onto its invariants;
 * ``reorth(flow) -> status``: the vectors re-orthonormalised, their logs added to the flow's
   sums (and what else the formulation samples then);

@@ -504,10 +504,10 @@ def check_memory(need, what, remedy) -> None:
 
 class StackedFlow:
     """What every flow of a state and its tangent vectors stacked as ``Z`` = [y; ξ¹; …; ξᵏ]
-    with a global step ``counter`` provides (`TangentFlow`, ``charts.solvers.linkage.LinkageFlow``,
-    ``charts.mechanism.tangent_flow.MechanismTangentFlow``):
-    views of the state ``y`` and the vectors ``X``, the steps done, and ``shares``, the
-    histogram of energy shares (empty here: a flow that records them has its own)."""
+    with a global step ``counter`` provides (`TangentFlow`,
+    ``charts.mechanism.tangent_flow.MechanismTangentFlow``): views of the state ``y`` and the
+    vectors ``X``, the steps done, and ``shares``, the histogram of energy shares (empty
+    here: a flow that records them has its own)."""
 
     shares = np.zeros(0, dtype=np.int64)
 
