@@ -1,7 +1,7 @@
 """The rotors' pieces of a scene run (``[system] kind = "rotors"``, the default): its
 `RotorSystem`, its tangent flow with the API's settings, its invariants, its curvature
 samples, its angle pass and its reference exponents; the linkage's counterparts are in
-``charts.runs.linkage_run``, and ``charts.runs.scene_kind`` hands the runner, the recorders
+``charts.runs.mechanism_run``, and ``charts.runs.scene_kind`` hands the runner, the recorders
 and the result writers the ones of a scene's kind."""
 from __future__ import annotations
 

@@ -1,13 +1,13 @@
 """What a scene's kind of system decides — the rotors (``charts.runs.rotor_run``), the
-Appendix's linkage (``charts.runs.linkage_run``) or any other mechanism on the generic route
-(``charts.runs.mechanism_run``; the ``[mechanism]`` table, ``charts.runs.scene_mechanism``):
+Appendix's linkage or any other mechanism (``charts.runs.mechanism_run``; the
+``[mechanism]`` table, ``charts.runs.scene_mechanism``):
 one record of its pieces per kind, so that the runner, the recorders and the result writers
 ask the scene's kind instead of branching on it."""
 from __future__ import annotations
 
 from typing import Callable, NamedTuple
 
-from . import linkage_run, mechanism_run, rotor_run
+from . import mechanism_run, rotor_run
 
 __all__ = ["SceneKind", "scene_kind", "ROTORS", "LINKAGE", "MECHANISM", "KINDS"]
 
@@ -40,15 +40,14 @@ ROTORS = SceneKind("rotors", ("theta", "u"), rotor_run.rotor_system, rotor_run.r
                    rotor_run.rotor_invariants, rotor_run.rotor_curvature,
                    rotor_run.rotor_angles_pass, rotor_run.rotor_paper_exponents,
                    lambda st, out: None, True)
-LINKAGE = SceneKind("linkage", ("q", "v"), linkage_run.linkage_system,
-                    linkage_run.linkage_start,
-                    lambda st: linkage_run.linkage_invariants(st.system, st.y, st.speed),
-                    linkage_run.linkage_curvature, linkage_run.linkage_angles_pass,
-                    linkage_run.linkage_paper_exponents, linkage_run.linkage_result, False)
+_invariants = lambda st: mechanism_run.mechanism_invariants(st.system, st.y, st.speed)  # noqa: E731
+LINKAGE = SceneKind("linkage", ("q", "v"), mechanism_run.linkage_system,
+                    mechanism_run.linkage_start, _invariants, mechanism_run.linkage_curvature,
+                    mechanism_run.mechanism_angles_pass, mechanism_run.linkage_paper_exponents,
+                    mechanism_run.linkage_result, False)
 
 MECHANISM = SceneKind("mechanism", ("q", "v"), mechanism_run.mechanism_system,
-                      mechanism_run.mechanism_start,
-                      lambda st: mechanism_run.mechanism_invariants(st.system, st.y, st.speed),
+                      mechanism_run.mechanism_start, _invariants,
                       mechanism_run.mechanism_curvature_sample,
                       mechanism_run.mechanism_angles_pass, lambda st, k: None,
                       mechanism_run.mechanism_result, False)

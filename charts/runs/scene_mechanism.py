@@ -33,7 +33,7 @@ tangency J v and the energy), curvature (both routes of
 restricted test of ``charts.analyses.mechanism_angles``).
 
 The linkage's route (``[system] kind = "linkage"``; its run's pieces in
-``charts.runs.linkage_run``) has the same rules and a few of its own, at the end of this
+``charts.runs.mechanism_run``) has the same rules and a few of its own, at the end of this
 module: its keys ``eps``, ``rho``, ``disk_mass``, ``disk_inertia`` (`LINKAGE_KEYS`); its
 effects (`LINKAGE_EFFECTS`: lyapunov, curvature by the Gauss equation (route "exact"),
 angles (the restricted variant, ``charts.analyses.linkage_angles``), waveforms, spectrum,

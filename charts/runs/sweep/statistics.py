@@ -18,7 +18,7 @@ ANGLE_STATS = ("min", "p001", "median", "frac_small", "n", "law_count", "law_exp
 #: every batch; ``charts.analyses.spectrum_quantities.leading_entropy_with_error``); in
 #: sweeps that compute every positive exponent (``n_exponents`` ≥ N − 2).
 KS_ENTROPY = ("h_ks", "h_ks_se")
-#: The linkage's own columns (``charts.runs.linkage_run.linkage_result``): the smallest
+#: The linkage's own columns (``charts.runs.mechanism_run.linkage_result``): the smallest
 #: Σ sin²θᵢ at the curvature samples (0 at a cone point of Σ cos θ = 0; with curvature
 #: only), the smallest KKT health, the distance of M from the four avoided cone points and
 #: the number of cone points on M.
