@@ -413,6 +413,12 @@ ANALYSES = {
         _analyses("mechanism_covariant", "mechanism_clvs"),
         {"mech": Fresh(lambda: rotor_mechanism()), "q0": Fresh(lambda: rotor_state()[0]),
          "v0": Fresh(lambda: rotor_state()[1]), **SHORT}),
+    **{f"mechanism_ensemble.{name}": Entry(
+        _analyses("mechanism_ensemble", name),
+        {"mech": Fresh(lambda: rotor_mechanism()), "n_batches": 2, **ENSEMBLE}
+        if name == "lyapunov_ensemble" else {"mech": Fresh(lambda: rotor_mechanism()), **ENSEMBLE},
+        takes=PROGRESS)
+       for name in ("lyapunov_ensemble", "hyperbolicity_ensemble", "covariant_ensemble")},
     "linkage_angles.linkage_angles": Entry(_analyses("linkage_angles", "linkage_angles"),
                                            {**LINKAGE, "t_final": 0.5, "t_transient": 0.5}),
 }
@@ -447,7 +453,7 @@ INTERNAL = {
     "curvature_certificate": {"sign_polynomials"},
     "ensemble": {"run_ensemble", "ensemble_arguments", "map_jobs", "stream_jobs",
                  "ensemble_result", "error_ratio_of", "warn_understated", "member_states_of",
-                 "resolved_settings"},
+                 "resolved_settings", "system_settings"},
     "exact_curvature": {"exact_curvatures", "exact_curvature_matrix"},
     "finite_time": {"window_means"},
     "flat_tori": {"antipodal_torus", "torus_plan"},
@@ -458,6 +464,7 @@ INTERNAL = {
     "mechanism_arguments": {"mechanism_of", "mechanism_state", "unstable_of"},
     "mechanism_curvature": {"jacobi_frame", "jacobi_curvature", "riemann_curvature"},
     "mechanism_route": {"generic_mechanism", "mechanism_route"},
+    "mechanism_ensemble": {"mechanism_ensemble", "member_settings"},
     "mechanism_covariant": {"gram_schmidt_factor"},
     "mechanism_angles": {"sin_angle", "root_metric"},
     "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",

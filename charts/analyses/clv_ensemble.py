@@ -39,11 +39,13 @@ from .cluster import cluster_device
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, member_states_of,
                        run_ensemble)
 from .arguments import rotor_system
+from .mechanism_route import mechanism_route
 
 __all__ = ["covariant_ensemble", "clv_ensemble_settings", "clvs_on_device",
            "clv_block_plan", "clv_block_bytes", "clv_states", "kernel_function"]
 
 
+@mechanism_route("mechanism_ensemble", "covariant_ensemble")
 def covariant_ensemble(system, n_trajectories, t_final, *, variant="restricted", speed=1.0,
                        seed=0, workers=None, progress=False, device="cpu", client=None,
                        **kwargs) -> EnsembleResult:

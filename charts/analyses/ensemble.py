@@ -26,7 +26,7 @@ from .spectrum_quantities import SpectrumQuantities
 from .statistics import standard_error
 
 __all__ = ["EnsembleResult", "run_ensemble", "ensemble_arguments", "map_jobs", "stream_jobs",
-           "ensemble_result",
+           "ensemble_result", "system_settings",
            "error_ratio_of", "warn_understated", "member_states_of", "resolved_settings",
            "OWN_SETTINGS", "ErrorBarWarning", "UNDERSTATED_RATIO",
            "MIN_MEMBERS_TO_JUDGE"]
@@ -207,7 +207,7 @@ def _member(job):
 
 def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
                  progress=False, desc="ensemble", prime=None, pool=None, client=None,
-                 **kwargs) -> EnsembleResult:
+                 notice=None, **kwargs) -> EnsembleResult:
     """``fn(system, theta0, u0, t_final, seed=s, **kwargs)`` on ``n_trajectories`` random
     states of speed ``speed`` (seeds seed, seed+1, …), in ``workers`` processes (default:
     all cores; 1: in this process), in the process pool ``pool`` (a caller's, kept across
@@ -215,7 +215,8 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     a scheduler's address or "local", a LocalCluster of ``workers`` processes).  Members
     whose results have ``exponents`` give the ensemble's mean and standard error.
     ``prime``: (t_final, settings overriding kwargs) of a short call that compiles the
-    kernels in this process before the workers start (`map_jobs`)."""
+    kernels in this process before the workers start (`map_jobs`); ``notice``: (name, n) of
+    its compile notices (default: ``fn``'s name and ``system.n``, the rotors' N)."""
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
     if pool is not None and client is not None:
@@ -225,9 +226,10 @@ def run_ensemble(fn, system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     first = None
     if prime is not None:
         first = (_member, (fn, system, seed, speed, prime[0], {**kwargs, **prime[1]}))
+    name, n = notice or (fn.__name__, system.n)
     with cluster_pool(client, workers) as (cluster, slots):
         members = map_jobs(_member, jobs, [1] * len(jobs), slots, t_final, progress, desc,
-                           prime=first, name=fn.__name__, n=system.n,
+                           prime=first, name=name, n=n,
                            pool=pool if pool is not None else cluster)
     return ensemble_result(members, system, seed, speed, t_final, kwargs)
 
@@ -345,7 +347,8 @@ def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleRe
         if getattr(m, "params", None) is not None:
             m.params["state_seed"] = seed + i
     res = EnsembleResult(members, params={**resolved_settings(members, kwargs),
-                                          **system.describe(), "n_trajectories": len(members),
+                                          **system_settings(system),
+                                          "n_trajectories": len(members),
                                           "members_seed": seed, "speed": float(speed),
                                           "t_final": float(t_final)})
     if all(hasattr(m, "exponents") for m in members):
@@ -355,6 +358,16 @@ def ensemble_result(members, system, seed, speed, t_final, kwargs) -> EnsembleRe
             res.error_ratio = error_ratio_of(E, np.array([m.stderr for m in members]))
             warn_understated(res.error_ratio, len(members))
     return res
+
+
+def system_settings(system) -> dict:
+    """The system as an ensemble's settings: ``system.describe()`` (the rotors, the
+    Appendix's linkage), else a Mechanism's name and parameter values (as its members'
+    results record them, ``charts.analyses.mechanism_lyapunov``)."""
+    describe = getattr(system, "describe", None)
+    if describe is not None:
+        return describe()
+    return dict(mechanism=system.name, parameters=system.parameter_values)
 
 
 class ErrorBarWarning(UserWarning):

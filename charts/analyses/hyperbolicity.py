@@ -301,6 +301,7 @@ def angle_params(system, cfg: AngleSettings, speed) -> dict:
                 vectors_seed=cfg.seed, state_seed="given")
 
 
+@mechanism_route("mechanism_ensemble", "hyperbolicity_ensemble")
 def hyperbolicity_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
                            progress=False, device="cpu", client=None,
                            **kwargs) -> EnsembleResult:

@@ -23,11 +23,13 @@ from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, map_
 from .lyapunov import (averaging_logs, end_transient, lyapunov_flow, lyapunov_result,
                        lyapunov_schedule, lyapunov_settings, resolve_transient)
 from .transients import transient_rule
+from .mechanism_route import mechanism_route
 
 __all__ = ["lyapunov_ensemble", "lyapunov_lanes", "lyapunov_device", "member_states", "members_pay",
            "plan_memory", "result_bytes", "LANE_BLOCK", "MIN_LANES"]
 
 
+@mechanism_route("mechanism_ensemble", "lyapunov_ensemble")
 def lyapunov_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
                       progress=False, device="cpu", lanes=None, client=None,
                       **kwargs) -> EnsembleResult:

@@ -47,6 +47,8 @@ def _generic_arguments(target, args, kw):
                 raise TypeError(f"give {generic} or {rotor} (the same argument), not both")
             kw[generic] = kw.pop(rotor)
     takes = inspect.signature(target).parameters
+    if any(p.kind is p.VAR_KEYWORD for p in takes.values()):
+        return args, kw                 # an ensemble: it checks its members' settings itself
     for key in kw:
         if key not in takes:
             raise TypeError(f"{key} is a setting of the rotors' route: {target.__name__} of a "

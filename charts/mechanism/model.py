@@ -222,6 +222,37 @@ class Mechanism(SymbolicJets, AmbientDynamics,
         return (f"Mechanism({self.name!r}: q = ({', '.join(s.name for s in self.q)}), "
                 f"{self.k} constraint(s), dim {self.dim})")
 
+    def __copy__(self):
+        """A shallow copy that shares the lambdified and compiled functions (``_num``), as
+        `with_parameters` needs (a pickle leaves them out: `__getstate__`)."""
+        out = object.__new__(type(self))
+        out.__dict__.update(self.__dict__)
+        return out
+
+    def __getstate__(self):
+        """Pickled as its SymPy description, parameter values and what SymPy derived (SymPy
+        expressions pickle), without the lambdified and compiled functions (``_num``): an
+        ensemble sends a mechanism to its worker processes."""
+        state = dict(self.__dict__)
+        state.pop("_num", None)
+        return state
+
+    def __setstate__(self, state):
+        """The pickled state; the functions of ``_num`` are those of the first copy of this
+        symbolic model loaded in this process (found by its ``model_key``), so that the many
+        copies a worker receives lambdify it once."""
+        from ..codegen.mechanism import model_key
+        self.__dict__.update(state)
+        key = model_key(self.q, self.params, self.F, self.M)
+        if key not in _LOADED:
+            _LOADED[key] = SymbolicJets._num.func(self)
+        self.__dict__["_num"] = _LOADED[key]
+
+
+#: model_key → the lambdified functions (``_num``) of the symbolic models loaded from pickles
+#: in this process.
+_LOADED = {}
+
 
 # The rotors' RotorSystem (a layer below) is a Mechanism: its structured methods, and the
 # others of its generic twin ``RotorSystem.mechanism`` (``charts.geometry.system``).
