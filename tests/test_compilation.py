@@ -140,6 +140,42 @@ def test_the_notice_names_the_variant_that_compiled(monkeypatch, capsys):
         "charts: run (chart, rk4) compiled its kernels for N = 4 in "), err
 
 
+def test_the_notice_names_a_mechanism_by_its_name_and_the_rotors_by_n(monkeypatch, capsys):
+    """A mechanism whose kernels are compiled per symbolic model is named by its name (the
+    Appendix linkage has 7 ambient coordinates, not N = 7 rotors); the rotors keep "N = n",
+    also as an ensemble's int; the rotors as a generic Mechanism are that mechanism."""
+    import numba
+
+    import charts
+    from charts.jit import compilation
+    from charts.mechanism.instances import rotors
+
+    monkeypatch.setattr(compilation, "NOTE_SECONDS", 0.0)
+    count = iter(range(100))
+
+    @compilation.announces_compilation
+    def entry(system):
+        k = next(count)
+        return numba.njit(lambda x: x + k)(1)      # a fresh function: numba compiles it
+
+    linkage, triple = charts.LinkageSystem(0.05), charts.triple_linkage(0.1)
+    cases = [(linkage, f"for {linkage.name} in "),
+             (triple, "for triple_linkage(r=0.1, l=1, R=1) in "),
+             (charts.RotorSystem(4), "for N = 4 in "), (rotors(3), "for rotors(n=3) in ")]
+    for system, words in cases:
+        entry(system)
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1, err
+        assert err[0].startswith(f"charts: entry compiled its kernels {words}"), err
+        assert "N = 7" not in err[0] and "N = 5" not in err[0]
+    assert linkage.name.startswith("LinkageSystem(eps=0.05")
+    compilation.announce("pool", 2.0, 3, where=" in a worker process")
+    assert capsys.readouterr().err.startswith("charts: pool compiled its kernels for N = 3 in a "
+                                              "worker process in 2.0 s")
+    compilation.announce("pool", 2.0, None)
+    assert capsys.readouterr().err.startswith("charts: pool compiled its kernels in 2.0 s")
+
+
 def test_a_pool_that_compiles_says_so_while_it_does(capsys):
     """`compiling_line`: one line once the block has run ``after`` seconds, none for a block
     that ends before (the line is printed by a timer thread: the test waits for the block's

@@ -15,7 +15,7 @@ import threading
 from contextlib import contextmanager
 
 __all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation", "announce", "timed_call",
-           "compiling_line"]
+           "compiling_line", "compiled_for"]
 
 #: compilations shorter than this pass without a word.
 NOTE_SECONDS = 1.0
@@ -38,12 +38,24 @@ def compile_timer(add):
         _depth.n = outer
 
 
+def compiled_for(system) -> str:
+    """What a notice says the kernels were compiled for: a mechanism whose kernels are
+    compiled per symbolic model (its class defines ``compiled_jets``: the linkages, a user's
+    own) by its name (" for triple_linkage(r=0.1, l=1, R=1)"); the rotors (``RotorSystem``,
+    whose structured kernels are compiled per N and which only lends a mechanism's methods)
+    by N (" for N = 3"), an int as N; nothing for anything else."""
+    if callable(getattr(type(system), "compiled_jets", None)):
+        return f" for {getattr(system, 'name', None) or type(system).__name__}"
+    n = getattr(system, "n", system)
+    return f" for N = {n}" if isinstance(n, int) and not isinstance(n, bool) else ""
+
+
 def announce(name, seconds, n=None, where="") -> None:
     """The one-line notice on stderr, when ``seconds`` of compiling (wall time, numba's
-    compile events) exceed `NOTE_SECONDS`."""
+    compile events) exceed `NOTE_SECONDS`; ``n``: N or the system the kernels were compiled
+    for (`compiled_for`)."""
     if seconds > NOTE_SECONDS:
-        what = f" for N = {n}" if isinstance(n, int) else ""
-        print(f"charts: {name} compiled its kernels{what}{where} in {seconds:.1f} s "
+        print(f"charts: {name} compiled its kernels{compiled_for(n)}{where} in {seconds:.1f} s "
               "(once: they are cached on disk for the next calls and processes; "
               "`charts warmup` compiles them all after an install)",
               file=sys.stderr, flush=True)
@@ -102,7 +114,6 @@ def announces_compilation(fn=None, *, variant=()):
                 return fn(*args, **kwargs)
         finally:
             if spent[0] > NOTE_SECONDS:
-                announce(label(args, kwargs), spent[0],
-                         getattr(args[0], "n", None) if args else None)
+                announce(label(args, kwargs), spent[0], args[0] if args else None)
 
     return wrapper
