@@ -112,3 +112,21 @@ def test_an_ensembles_bad_arguments_are_refused_by_name(linkage):
                        masses=[1, 1], name="circle")
     with pytest.raises(MechanismError, match="1-dimensional"):
         charts.lyapunov_ensemble(circle, 2, 1.0)
+
+
+def test_the_linkage_ensemble_is_the_generic_ensemble_with_linkage_run_members():
+    """linkage_ensemble runs on mechanism_ensemble with linkage_run as its member; its
+    exponents are those of charts.lyapunov_ensemble on the same LinkageSystem, bit for bit
+    (both members advance the same MechanismTangentFlow from the same states and seeds)."""
+    from charts.mechanism.linkage import LinkageSystem
+    system = LinkageSystem(0.1)
+    kw = dict(t_transient=1.0, n_batches=2, n_exponents=2)
+    link = charts.linkage_ensemble(system, 2, 2.0, workers=1, seed=4, sample_every=1.0, **kw)
+    generic = charts.lyapunov_ensemble(system, 2, 2.0, workers=1, seed=4, **kw)
+    assert type(link[0]).__name__ == "LinkageResult"
+    assert type(generic[0]).__name__ == "MechanismLyapunov"
+    for a, b in zip(link, generic):
+        assert np.array_equal(a.exponents, b.exponents)
+        assert np.array_equal(a.batches, b.batches)
+        assert a.params["state_seed"] == b.params["state_seed"]
+    assert np.array_equal(link.exponents, generic.exponents)

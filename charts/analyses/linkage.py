@@ -33,11 +33,11 @@ from ..mechanism.errors import MechanismError
 from ..mechanism.linkage import NQ, DegenerateMetricError
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.status import IntegrationError, check_step
-from ..solvers.tangent import check_memory
 from .arguments import (MAX_MEMBERS, Documented, flag, linkage_system, positive_int,
                         positive_time, progress_reporter, inner_steps, project_steps, steps_of)
-from .ensemble import EnsembleResult, run_ensemble
+from .ensemble import EnsembleResult
 from .lyapunov import exponents_from_marks
+from .mechanism_ensemble import mechanism_ensemble
 from .spectrum_quantities import SpectrumQuantities, reconstructed_spectra
 from .statistics import batch_ends
 
@@ -337,25 +337,24 @@ def linkage_ensemble(system, n_trajectories, t_final, *, speed=1.0, seed=0, work
     """`linkage_run` from ``n_trajectories`` random states of kinetic speed ``speed``
     (``system.random_state(seed=s, speed=speed)``, seeds seed, seed+1, …; also the seeds of
     the tangent vectors), in ``workers`` processes (default: all cores); ``kwargs``: the
-    settings of `linkage_run`.  Returns an `EnsembleResult` (mean exponents, their standard
+    settings of `linkage_run`: the ensemble of any mechanism
+    (``charts.analyses.mechanism_ensemble.mechanism_ensemble``) with `linkage_run` as its
+    member.  Returns an `EnsembleResult` (mean exponents, their standard
     error across the members, the members' error ratio), saved and loaded like every other.
 
     With several workers the kernels are compiled once, here, before the workers start (and
     announced here): a `linkage_run` of the first seed over two re-orthonormalisations, no
     transient, with the members' dt, exponents, projection and curvature setting, so the
-    workers load what it compiled from numba's disk cache (`run_ensemble`'s ``prime``).
+    workers load what it compiled from numba's disk cache (``prime``).
     ``client``: the members run as tasks of a Dask cluster instead (a ``Client``, a
     scheduler's address, or "local": a LocalCluster of ``workers`` processes;
     ``charts.analyses.cluster``, docs/cluster.md)."""
     linkage_system(system)
     n_trajectories = integer("n_trajectories", n_trajectories, 2, MAX_MEMBERS)
-    check_memory(n_trajectories * _member_bytes(t_final, kwargs),
-                 f"the results of {n_trajectories} members",
-                 "run fewer members, or sample less often (sample_every)")
-    return run_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed, seed=seed,
-                        workers=workers, progress=progress, client=client,
-                        desc=f"linkage eps={system.eps:g} ensemble", prime=_prime(kwargs),
-                        **kwargs)
+    return mechanism_ensemble(linkage_run, system, n_trajectories, t_final, speed=speed,
+                              seed=seed, workers=workers, progress=progress, client=client,
+                              member_bytes=_member_bytes(t_final, kwargs), prime=_prime(kwargs),
+                              desc=f"linkage eps={system.eps:g} ensemble", **kwargs)
 
 
 def _member_bytes(t_final, kwargs) -> int:
