@@ -16,7 +16,7 @@ import time
 
 from charts import RotorSystem
 from charts.analyses.hyperbolicity import hyperbolicity_tally
-from charts.runs.verdict import members_window
+from charts.runs.verdict_statistics import members_window
 
 
 def main(argv=None):

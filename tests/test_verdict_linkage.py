@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import charts.runs.verdict as verdict
+import charts.runs.verdict_linkage as verdict_linkage
 from charts.cli.main import main
 from charts.geometry.topology import euler_characteristic
 
@@ -125,7 +126,7 @@ def test_the_linkage_report_on_the_console_and_in_the_json(tmp_path, capsys):
 def test_a_sphere_is_not_hyperbolic():
     """l = R + rδ with δ = 0.5: the surface is a sphere, as the limit Σ cos θ = 1.5 (Morse
     count 2); ∫K dA / 2π read as 2 by both routes."""
-    rep = verdict.linkage_verdict(0.1, l=1.05, n_grid=48, seeds=())
+    rep = verdict_linkage.linkage_verdict(0.1, l=1.05, n_grid=48, seeds=())
     assert (rep["verdict"], rep["evidence"]) == ("not hyperbolic", "theorem")
     assert rep["limit"]["euler_characteristic"] == euler_characteristic((1, 1, 1), 1.5) == 2
     assert all(r["euler_characteristic"] == 2 for r in rep["routes"].values())

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-import charts.runs.verdict as verdict
+import charts.runs.verdict_statistics as verdict
 from charts.analyses.angle_tally import AngleTally
 from charts.cli.main import main
 

@@ -220,12 +220,12 @@ def _linkage_settings(args) -> dict:
 
 def _plan_linkage(args, grid) -> None:
     """Every r of ``--triple-linkage`` and the settings of its reports checked before the
-    first report starts (`charts.runs.verdict.linkage_plan`: the linkage's parameters, that it
+    first report starts (`charts.runs.verdict_linkage.linkage_plan`: the linkage's parameters, that it
     assembles and is regular; ``--grid``, ``--t-final``, ``--seeds``); ValueError naming the
     flag and the r."""
     from ..analyses.arguments import steps_of
     from ..geometry.checks import integer
-    from ..runs.verdict import linkage_plan
+    from ..runs.verdict_linkage import linkage_plan
     integer("--grid", grid, 8, 1 << 12)
     steps_of("--t-final", args.t_final, 0.01)            # the exponent's RK4 step
     if args.angles is not None:
@@ -247,7 +247,8 @@ def _plan_linkage(args, grid) -> None:
 def _linkage_reports(args, grid) -> list:
     """``--triple-linkage``: `linkage_verdict` at each r, each printed when done (progress on
     stderr before each step), then the table of all of them."""
-    from ..runs.verdict import format_linkage_table, format_verdict, linkage_verdict
+    from ..runs.verdict import format_verdict
+    from ..runs.verdict_linkage import format_linkage_table, linkage_verdict
     reports = []
     for i, r in enumerate(args.triple_linkage):
         def progress(line, r=r, i=i):
@@ -299,8 +300,9 @@ def _statistics(args) -> int:
     from ..analyses.transients import scaled_transient
     from ..io.archive import load
     from ..geometry.system import RotorSystem
-    from ..runs.verdict import (case_verdict, family_systems, format_statistics,
-                                members_window, statistics_verdict, tally_report)
+    from ..runs.verdict import case_verdict
+    from ..runs.verdict_statistics import (family_systems, format_statistics, members_window,
+                                           statistics_verdict, tally_report)
     from ..solvers.device import resolve_device
 
     with warnings.catch_warnings():

@@ -3,18 +3,18 @@
 exponent against the bracket of Katok's and Osserman–Sarnak's inequalities and the certified
 sign of the curvature; for N ≥ 4 the flat totally geodesic torus that rules out the Anosov
 property, with the monodromy of its closed geodesic.  Where neither applies, the statistics
-of the angle test at scale (`statistics_verdict`, ``charts verdict --statistics``).  For the
-triple linkage (`linkage_verdict`, ``charts verdict --triple-linkage``) the surface integrals
-and λ₁ at each r, where no theorem is certified at a given r.  Each
+of the angle test at scale (``charts.runs.verdict_statistics``, ``charts verdict
+--statistics``).  For the triple linkage (``charts.runs.verdict_linkage``, ``charts verdict
+--triple-linkage``) the surface integrals and λ₁ at each r, where no theorem is certified at
+a given r.  This module holds the reports of the rotors' exact verdicts and the rule that
+turns any report into its verdict.  Each
 report carries its verdict (`case_verdict`: "hyperbolic (Anosov)", "not hyperbolic" or
 "open", the class of its evidence and one sentence why), derived from the certificates'
 outcomes, never from N alone.
 """
 from __future__ import annotations
 
-import json
 import time
-import warnings
 
 import numpy as np
 
@@ -24,9 +24,7 @@ from ..analyses.lyapunov import lyapunov_spectrum
 from ..analyses.surface_integrals import surface_integrals
 
 __all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed",
-           "statistics_verdict", "tally_report", "family_systems", "format_statistics",
-           "members_window", "case_verdict", "verdict_line", "VERDICTS", "EVIDENCE",
-           "linkage_verdict", "linkage_plan", "format_linkage_table", "CHI_TOLERANCE"]
+           "case_verdict", "verdict_line", "VERDICTS", "EVIDENCE", "CHI_TOLERANCE"]
 
 #: The largest distance of ∫K dA / 2π from the integer χ it is read as, for a surface whose χ
 #: the quadrature reads (the triple linkage): Gauss–Bonnet makes it an integer; the default
@@ -89,109 +87,6 @@ def torus_verdict(system) -> dict:
     cert = certify_flat_torus(system).to_dict()
     rep = dict(system=system.describe(),
                torus=cert, seconds=time.perf_counter() - t0)
-    return dict(rep, **case_verdict(rep))
-
-
-#: Nodes per axis of each angle chart in `linkage_plan`'s check that the linkage assembles.
-PLAN_GRID = 16
-
-
-def linkage_plan(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0):
-    """The triple linkage (R = 1, inertia 1) of rim radius ``r``, rod length ``l``, masses of
-    the joint and of each rod, checked before any long work: its parameters
-    (``charts.mechanism.triple_linkage``), that it assembles (points of its configuration
-    surface above a `PLAN_GRID`² grid of each angle chart) and that the surface is regular
-    there (finite area elements and curvatures: r = R = l is not, two hinges meet at the
-    centre); MechanismError (a ValueError) naming what fails otherwise."""
-    from ..mechanism import MechanismError, triple_linkage
-    from ..mechanism.surface import curvatures, surface_nodes
-    mech = triple_linkage(r, l=l, joint_mass=joint_mass, rod_mass=rod_mass)
-    where = f"r = {mech.parameter_values['r']:g}, l = {mech.parameter_values['l']:g}, R = 1"
-    with warnings.catch_warnings(), np.errstate(all="ignore"):
-        warnings.simplefilter("ignore")       # NaN at singular nodes: refused below
-        try:
-            q, dA = surface_nodes(mech, PLAN_GRID)
-        except MechanismError as exc:
-            if "no point of the surface" not in str(exc):
-                raise
-            raise MechanismError(
-                f"the triple linkage does not assemble at {where}: no configuration above a "
-                f"{PLAN_GRID}^2 grid of each pair of disc angles (the three rods must reach "
-                "one joint: it needs at least r + l >= R)") from None
-        K = curvatures(mech, q, "chart")
-    if not (np.all(np.isfinite(dA)) and np.all(np.isfinite(K))):
-        raise MechanismError(
-            f"the triple linkage is singular at {where}: area elements or curvatures are not "
-            f"finite at points above the {PLAN_GRID}^2 grid (the constraints lose rank there, "
-            "or the kinetic metric degenerates: with a massless joint, the joint moving while "
-            "the discs stand still), so it is not a closed smooth Riemannian surface and no "
-            "verdict applies")
-    return mech
-
-
-def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_final=3000.0,
-                    seeds=(1, 2), angles_window=None, progress=None) -> dict:
-    """Every piece of the triple linkage's verdict at rim radius ``r`` (`linkage_plan`'s
-    linkage) as one JSON-ready dict, with the keys of `surface_verdict`'s and without a
-    certificate: the surface integrals on ``n_grid``² nodes per angle chart
-    (``charts.mechanism.surface``) by the chart and, for a constant metric, the Gauss route,
-    with χ read as the integer nearest ∫K dA / 2π and the smallest K at the nodes; the
-    limit r → 0 (the rotor surface Σ cos θ = 3δ, δ = (l − R)/r, its χ by the Morse count);
-    λ₁ at unit speed over ``t_final`` from each seed's random state
-    (``charts.analyses.mechanism_lyapunov``) against the entropy bracket; with
-    ``angles_window``, the restricted-angle test of section 4 over that window from each
-    seed's state (``charts.analyses.mechanism_angles``: the smallest angle, the share below
-    0.05 rad, the samples).  ``progress``: a callable given a line before each step."""
-    from dataclasses import replace
-
-    from ..analyses.mechanism_lyapunov import lyapunov_spectrum as mechanism_lyapunov
-    from ..geometry.surface_quadrature import integrals_from_nodes
-    from ..geometry.topology import euler_characteristic
-    from ..mechanism.surface import curvatures, surface_nodes
-    say = progress or (lambda line: None)
-    t0 = time.perf_counter()
-    mech = linkage_plan(r, l=l, joint_mass=joint_mass, rod_mass=rod_mass)
-    p = mech.parameter_values
-    system = dict(kind="triple_linkage", name=mech.name, r=p["r"], l=p["l"], R=p["R"],
-                  inertia=p["I"], joint_mass=p["m"], rod_mass=p["mu"],
-                  delta=(p["l"] - p["R"]) / p["r"])
-    route_names = ("chart", "gauss") if mech.constant_metric else ("chart",)
-    say(f"surface integrals on {n_grid}^2 nodes per angle chart (the "
-        f"{' and '.join(route_names)} route{'s' if len(route_names) > 1 else ''})")
-    q, dA = surface_nodes(mech, n_grid)
-    routes = {}
-    for route in route_names:
-        K = curvatures(mech, q, route)
-        s = integrals_from_nodes(K, dA, 0, n_grid, route, dict(p, mechanism=mech.name))
-        s = replace(s, euler_characteristic=int(round(s.total_curvature / (2 * np.pi))))
-        routes[route] = dict(s.to_dict(), min_curvature=float(K.min()),
-                             euler_characteristic_from="nearest integer to int K dA / 2 pi")
-    level = 3.0 * system["delta"]
-    try:
-        limit_chi = euler_characteristic((1.0, 1.0, 1.0), level)
-    except ValueError:                        # a critical level: cone points, no χ
-        limit_chi = None
-    limit = dict(level=level, euler_characteristic=limit_chi,
-                 command=f"charts verdict --n 3 --level {level:g}")
-    bracket = routes["chart"]["entropy_bracket"]
-    exponents = []
-    for seed in seeds:
-        say(f"lambda1 at unit speed, seed {seed}, T = {t_final:g}")
-        exponents.append(_exponent(mechanism_lyapunov(mech, *mech.random_state(seed), t_final,
-                                                      seed=seed), seed, t_final, bracket))
-    rep = dict(system=system, n_grid=int(n_grid), routes=routes, bracket=bracket, limit=limit,
-               exponents=exponents)
-    if angles_window is not None:
-        from ..analyses.mechanism_angles import mechanism_angles
-        rep["angles"] = []
-        for seed in seeds:
-            say(f"restricted angles, seed {seed}, T = {angles_window:g}")
-            a = mechanism_angles(mech, *mech.random_state(seed), angles_window, seed=seed)
-            st = a.statistics()
-            rep["angles"].append(dict(seed=int(seed), t_final=float(angles_window),
-                                      **{k: st[k] for k in ("min", "median", "frac_small",
-                                                            "small", "n")}))
-    rep["seconds"] = time.perf_counter() - t0
     return dict(rep, **case_verdict(rep))
 
 
@@ -525,126 +420,4 @@ def _format_linkage(rep: dict) -> str:
                      f"{100 * a['frac_small']:.3g} % below {a['small']:g} rad, {a['n']} samples")
     lines.append(verdict_line(rep))
     lines.append(f"({rep['seconds']:.1f} s)")
-    return "\n".join(lines)
-
-
-def format_linkage_table(reports) -> str:
-    """The triple linkage's reports as one Markdown table: r, l, χ, area, K's range, the share
-    of K > 0, λ₁ (mean of the seeds ± the standard error of their mean, from the batch errors),
-    the smallest restricted angle (— where the angle test did not run), verdict and
-    evidence."""
-    lines = ["| r | l | chi | area | K at the nodes | K > 0 | lambda1 | min angle | verdict "
-             "| evidence |", "|---|---|---|---|---|---|---|---|---|---|"]
-    for rep in reports:
-        s, c, ex = rep["system"], rep["routes"]["chart"], rep["exponents"]
-        lam = "—"
-        if ex:
-            se = np.sqrt(sum(e["stderr"] ** 2 for e in ex)) / len(ex)
-            lam = f"{np.mean([e['lambda1'] for e in ex]):.4f} ± {se:.4f}"
-        angle = "—" if not rep.get("angles") else \
-            f"{min(a['min'] for a in rep['angles']):.3g} rad"
-        lines.append(f"| {s['r']:g} | {s['l']:g} | {c['euler_characteristic']} | "
-                     f"{c['area']:.4f} | [{c['min_curvature']:.3g}, {c['max_curvature']:.3g}] "
-                     f"| {100 * c['positive_area']:.3f} % | {lam} | {angle} | "
-                     f"{rep['verdict']} | {rep['evidence']} |")
-    return "\n".join(lines)
-
-
-def members_window(samples, members, sample_every=0.1, unit=1.0) -> float:
-    """The window T per member for at least ``samples`` angles over ``members`` members
-    sampled every ``sample_every``: a whole number of ``unit`` (the checkpoint segment)."""
-    return float(unit * np.ceil(samples / members * sample_every / unit))
-
-
-def statistics_verdict(system, samples, *, members, device="auto", t_transient=100.0,
-                       sample_every=0.1, workers=None, out=None, label="",
-                       progress=False, checkpoint=None, client=None) -> dict:
-    """The angle test at scale: ``members`` trajectories (seeds 0, 1, …) with at least
-    ``samples`` angles together, tallied (``charts.analyses.angle_tally``), as one JSON-ready
-    dict: the run (members, window, device, seconds) and `AngleTally.statistics` of both
-    variants; the tally saved as ``out`` (a path) when given; ``checkpoint``: the path of
-    the partial tally of a run on the CPU (`hyperbolicity_tally`); ``client``: its chunks on
-    a Dask cluster (`hyperbolicity_tally`'s; the device is then the workers' CPUs)."""
-    from ..analyses.hyperbolicity import hyperbolicity_tally
-    t_final = members_window(samples, members, sample_every)
-    t0 = time.perf_counter()
-    tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,
-                                t_transient=t_transient, sample_every=sample_every,
-                                progress=progress, checkpoint=checkpoint, client=client)
-    rep = tally_report(tally, label, time.perf_counter() - t0)
-    if out is not None:
-        rep["file"] = str(tally.save(out))
-    return rep
-
-
-def tally_report(tally, label="", seconds=None) -> dict:
-    """The report of an `AngleTally` as `statistics_verdict` writes it: the run (system,
-    members, window, transient, sample step, device, ``seconds`` or None for a tally read
-    from a file) and `AngleTally.statistics` of both variants."""
-    from ..analyses.angle_tally import VARIANTS
-    p = tally.params
-    system = {k: p[k] for k in ("n", "masses", "weights", "level") if k in p}
-    rep = dict(label=label, system=system, members=tally.n_members, t_final=p["t_final"],
-               t_transient=p["t_transient"], sample_every=p["sample_every"],
-               device=p["device"], seconds=seconds,
-               statistics={v: tally.statistics(v) for v in VARIANTS})
-    return dict(rep, **case_verdict(rep))
-
-
-def family_systems(name) -> list:
-    """[(label, RotorSystem)] of the distinct systems (N, masses, weights, level) of the
-    bundled sweep ``name``, in the sweep's order; the test runs them at unit speed.
-    ValueError for a sweep of the linkage."""
-    from ..geometry.system import RotorSystem
-    from .sweep.points import sweep_points
-    from .sweep.spec import bundled_sweeps, load_sweep
-    sweeps = bundled_sweeps()
-    if name not in sweeps:
-        raise ValueError(f"unknown sweep {name!r}; bundled: {', '.join(sorted(sweeps))}")
-    out, seen = [], set()
-    for point in sweep_points(load_sweep(sweeps[name])):
-        sysd = point.scene.system
-        if sysd.get("kind", "rotors") != "rotors":
-            raise ValueError(f"the sweep {name!r} runs the {sysd['kind']}: the angle test at "
-                             "scale is the rotors' (charts.linkage_angles for the linkage)")
-        key = json.dumps([sysd["n"], sysd.get("masses"), sysd.get("weights"),
-                          sysd.get("level", 0.0)])
-        if key in seen:                     # points that differ only in seed, speed, …
-            continue
-        seen.add(key)
-        params = {k: v for k, v in point.params.items() if k not in ("seed", "speed")}
-        with warnings.catch_warnings():       # critical levels: a stopped member is reported
-            warnings.simplefilter("ignore")
-            system = RotorSystem(sysd["n"], masses=sysd.get("masses"),
-                                 weights=sysd.get("weights"), level=sysd.get("level", 0.0))
-        out.append((", ".join(f"{k} {v}" for k, v in params.items()), system))
-    return out
-
-
-def format_statistics(rep: dict) -> str:
-    """A report of `statistics_verdict` as text: the restricted angles first ("?" for a
-    number the report leaves undefined)."""
-    def f(x, fmt):
-        return "?" if x is None else format(x, fmt)
-    s = rep["system"]
-    took = "read from its saved tally" if rep.get("seconds") is None else f"{rep['seconds']:.0f} s"
-    head = (f"{rep['label'] or 'N = ' + str(s['n'])}: masses {s['masses']}, weights "
-            f"{s['weights']}, level {s['level']:g}; {rep['members']} members x T = "
-            f"{rep['t_final']:g} (transient {rep['t_transient']:g}) on the {rep['device']}, "
-            f"{took}")
-    lines = [head]
-    for variant in ("restricted", "full"):
-        st = rep["statistics"][variant]
-        lines.append(f"  {variant}: {st['n']:.3g} angles, min {st['min']:.3g} rad (seed "
-                     f"{st['min_seed']}, t = {f(st['min_t'], 'g')}); {st['episodes']} episodes "
-                     f"below {st['small']:g} rad ({f(st['episode_rate'], '.3g')} per time unit)")
-        laws = [f"x0 {d['x0']:g}: beta {f(d['exponent'], '.3f')} ± "
-                f"{f(d['exponent_se'], '.3f')} (n {d['count']})" for d in st["law"] if d["count"]]
-        if laws:
-            lines.append("    law P(phi < x) = A x^beta: " + "; ".join(laws))
-        lines.append("    mean block minima: " + ", ".join(
-            f"{size:g}: {f(m, '.3g')} ± {f(se, '.1g')}" for size, m, se in st["block_minima"]))
-        lines.append("    slopes d ln min / d ln size: " + ", ".join(
-            f"{a:g}-{b:g}: {f(x, '.3f')} ± {f(se, '.3f')}" for a, b, x, se in st["slopes"]))
-    lines.append(verdict_line(rep))
     return "\n".join(lines)
