@@ -19,3 +19,8 @@ def sphere(radius=1.0, mass=1.0):
 def not_a_mechanism(size=1.0):
     """A factory that returns something else (refused by the scene)."""
     return {"size": size}
+
+
+def broken(size=1.0):
+    """A factory that fails (refused by the scene, naming it)."""
+    return 1.0 / (size - size)

@@ -157,6 +157,14 @@ def test_users_factory_runs_as_a_scene(tmp_path):
                                                                  "charts.Mechanism"]),
     ({"name": "no_such_module_here:f"}, {}, ["the module 'no_such_module_here' cannot be "
                                              "imported"]),
+    ({"name": "scene_mechanism_factory:broken"}, {},
+     ["[mechanism] name = 'scene_mechanism_factory:broken': the factory failed "
+      "(ZeroDivisionError: float division by zero)"]),
+    ({"name": "rotors", "n": 2}, {}, ["[mechanism] n = 2 is not allowed: expected an integer "
+                                      "in 3.."]),
+    ({"name": "rotors"}, {}, ["[mechanism] n is required"]),
+    ({"name": "linkage", "eps": 0.7}, {}, ["[mechanism] eps = 0.7 is not allowed: expected a "
+                                           "number in [1e-06, 0.5)"]),
     ({"name": "triple_linkage", "r": 0.3}, {"system": {"n": 3}},
      ["[system] n is not allowed with a [mechanism] table"]),
     ({"name": "triple_linkage", "r": 0.3}, {"effects": {"clv": {}}},

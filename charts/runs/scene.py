@@ -94,7 +94,21 @@ def parse_scene(data: dict, *, source: str = "<scene>", default_name: str = "sce
     source_names(source, default_name, SceneError)
     if not isinstance(data, dict):
         raise SceneError(f"{source}: a scene is a TOML table, got {type(data).__name__}")
-    data = translated(source, data)  # [mechanism] of the rotors or the linkage: their [system]
+    read = translated(source, data)  # [mechanism] of the rotors or the linkage: their [system]
+    if read is data:
+        return _parse_scene(data, source, default_name)
+    moved = [k for k in data["mechanism"] if k != "name"]
+    try:
+        return _parse_scene(read, source, default_name)
+    except SceneError as exc:         # a problem of a key the [mechanism] table gave
+        text = str(exc)
+        for key in moved:
+            text = text.replace(f"[system] {key} ", f"[mechanism] {key} ")
+        raise SceneError(text) from None
+
+
+def _parse_scene(data, source, default_name) -> Scene:
+    """`parse_scene` of a scene whose [mechanism] table, if any, is of the generic route."""
     problems = Problems(source)      # key-level problems of every section, reported together
     top = table_values(source, data, None, TOP_KEYS, problems,
                        allowed=set(TOP_KEYS) | set(SCHEMA) | {"effects", "mechanism"})

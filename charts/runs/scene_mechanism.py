@@ -218,6 +218,10 @@ def mechanism_system(source, data, system, raw_sys, problems) -> None:
         val = f" = {shown(kwargs[key])}" if key else ""
         problems.messages.append(f"{loc}{val} is not allowed: {exc}")
         return
+    except Exception as exc:      # noqa: BLE001 - a user's factory may raise anything
+        problems.messages.append(f"{where(source, _SECTION, 'name')} = {shown(name)}: the "
+                                 f"factory failed ({type(exc).__name__}: {exc})")
+        return
     if not isinstance(mech, Mechanism):
         problems.messages.append(f"{where(source, _SECTION, 'name')} = {shown(name)}: the factory "
                                  f"returned {type(mech).__name__}, not a charts.Mechanism")
