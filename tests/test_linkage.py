@@ -60,8 +60,8 @@ def test_constraints_and_derivatives_against_appendix_and_differences(L01):
 def test_the_linkage_is_a_mechanism(L01):
     """LinkageSystem is a charts.Mechanism with the Appendix's parameters, and its equations
     of motion, derived generically, keep the constraints (d²F/dt² = J q̈ + ∂²F(v, v) = 0).
-    (Its symbolic constraint and Jacobian equalled the generated kernels they replace to
-    6.7e-16 over 200 points: the numbers of docs/linkage.md.)"""
+    (Its symbolic constraint and Jacobian equalled the generated kernels they replaced to
+    6.7e-16 over 200 points: docs/changelog.md.)"""
     assert isinstance(L01, charts.Mechanism) and (L01.n, L01.k, L01.dim) == (7, 4, 3)
     assert L01.parameter_values == {"eps": 0.1, "rho": 0.2, "R": 1.0, "m_d": 0.0, "I_d": 0.0}
     q, v = L01.random_state(seed=1)
