@@ -130,3 +130,35 @@ def test_the_linkage_ensemble_is_the_generic_ensemble_with_linkage_run_members()
         assert np.array_equal(a.batches, b.batches)
         assert a.params["state_seed"] == b.params["state_seed"]
     assert np.array_equal(link.exponents, generic.exponents)
+
+
+def test_a_mechanisms_curvature_is_saved_by_its_coordinates_and_loads_back(linkage, tmp_path):
+    q, v = linkage.random_state(seed=1)
+    res = charts.curvature_along_trajectory(linkage, q, v, 0.3, t_transient=0.0)
+    ds = res.to_xarray()
+    assert ds.attrs["charts_kind"] == "mechanism_curvature"
+    assert "rotor" not in ds.dims and ds["q"].dims == ("t", "coordinate")
+    assert ds["frames"].dims == ("t", "frame", "coordinate")
+    assert ds["coordinate"].values.tolist() == ["theta1", "theta2", "theta3", "x", "y"]
+    assert ds["coordinate_units"].values.tolist() == ["rad"] * 3 + ["length"] * 2
+    res.save(tmp_path / "c.nc")
+    back = charts.load(tmp_path / "c.nc")
+    assert type(back) is type(res) and back.params == res.params
+    for f in ("t", "theta", "u", "frames", "K_numeric", "K_exact"):
+        assert np.array_equal(getattr(back, f), getattr(res, f)), f
+    # the rotors' files keep their names
+    rotors = charts.RotorSystem(3)
+    ds = charts.curvature_along_trajectory(rotors, *rotors.random_state(seed=1), 0.2,
+                                           t_transient=0.0, exact=False).to_xarray()
+    assert ds.attrs["charts_kind"] == "curvature" and ds["theta"].dims == ("t", "rotor")
+    assert ds["frames"].dims == ("t", "frame", "rotor") and "coordinate" not in ds.dims
+
+
+def test_a_mechanisms_lyapunov_ensemble_saves_and_loads_back(linkage, tmp_path):
+    ens = charts.lyapunov_ensemble(linkage, 2, 1.0, workers=1, t_transient=0.0, n_batches=2)
+    ens.save(tmp_path / "e.nc")
+    back = charts.load(tmp_path / "e.nc")
+    assert np.array_equal(back.exponents, ens.exponents)
+    assert np.array_equal(back.stderr, ens.stderr)
+    assert [m.params["state_seed"] for m in back] == [0, 1]
+    assert back.params["mechanism"] == linkage.name

@@ -399,25 +399,54 @@ class CurvatureResult(Archivable):
 
     def to_xarray(self):
         """Dataset: theta, u (t, rotor); frames (t, frame, rotor); K_numeric[, K_exact]
-        (t, direction, direction2); the settings as attributes."""
+        (t, direction, direction2); the settings as attributes.  A Mechanism's result
+        (``params["mechanism"]``, ``charts.analyses.mechanism_curvature``): kind
+        ``mechanism_curvature``, q, v (t, coordinate) and frames (t, frame, coordinate)
+        instead, the coordinate named by the mechanism's coordinates with the unit of each
+        (`_coordinates`)."""
         dims = ("t", "direction", "direction2")
-        data = {"theta": (("t", "rotor"), self.theta, "rad"),
-                "u": (("t", "rotor"), self.u, ANGULAR_VELOCITY),
-                "frames": (("t", "frame", "rotor"), self.frames, "rad", "M-orthonormal frame"),
-                "K_numeric": (dims, self.K_numeric, "1 / rad²", "route (a), eqs (19)–(21)")}
-        if self.K_exact is not None:
-            data["K_exact"] = (dims, self.K_exact, "1 / rad²", "route (b), Riemann tensor")
         k = self.K_numeric.shape[1]
-        return dataset(self.KIND, data, attrs={"params": self.params},
-                       coords={"t": (("t",), self.t, "time"),
-                               "direction": index_coordinate("direction", k,
-                                                             "i of K_ij, from 1 as in the paper"),
-                               "direction2": index_coordinate("direction2", k,
-                                                              "j of K_ij, from 1 as in the paper")})
+        coords = {"t": (("t",), self.t, "time"),
+                  "direction": index_coordinate("direction", k,
+                                                "i of K_ij, from 1 as in the paper"),
+                  "direction2": index_coordinate("direction2", k,
+                                                 "j of K_ij, from 1 as in the paper")}
+        if "mechanism" in self.params:
+            data, unit_K = self._coordinates(coords)
+        else:
+            data, unit_K = {"theta": (("t", "rotor"), self.theta, "rad"),
+                            "u": (("t", "rotor"), self.u, ANGULAR_VELOCITY),
+                            "frames": (("t", "frame", "rotor"), self.frames, "rad",
+                                       "M-orthonormal frame")}, "1 / rad²"
+        data["K_numeric"] = (dims, self.K_numeric, unit_K, "route (a), eqs (19)–(21)")
+        if self.K_exact is not None:
+            data["K_exact"] = (dims, self.K_exact, unit_K, "route (b), Riemann tensor")
+        kind = "mechanism_curvature" if "mechanism" in self.params else self.KIND
+        return dataset(kind, data, attrs={"params": self.params}, coords=coords)
+
+    def _coordinates(self, coords):
+        """(q, v and frames along ``coordinate``, the unit of K) of a Mechanism's result; the
+        ``coordinate`` and ``coordinate_units`` coordinates added to ``coords``: rad for the
+        periodic coordinates (angles), length for the others."""
+        names = self.params.get("coordinates") or [f"q{i}" for i in range(self.theta.shape[1])]
+        periodic = set(self.params.get("periodic", names))
+        units = ["rad" if c in periodic else "length" for c in names]
+        coords["coordinate"] = (("coordinate",), np.array(names), "1",
+                                "the mechanism's coordinate q_i (v holds their rates)")
+        coords["coordinate_units"] = (("coordinate",), np.array(units), "1",
+                                      "the unit of each coordinate (of v: the same per time)")
+        unit_K = "1 / rad²" if periodic >= set(names) else "1 / length²"
+        return {"q": (("t", "coordinate"), self.theta, "see coordinate_units",
+                      "the sampled configuration q"),
+                "v": (("t", "coordinate"), self.u, "see coordinate_units per time",
+                      "the sampled velocity v"),
+                "frames": (("t", "frame", "coordinate"), self.frames, "see coordinate_units",
+                           "frame orthonormal in the kinetic metric")}, unit_K
 
     @classmethod
     def from_xarray(cls, ds):
-        return cls(t=ds["t"].values, theta=ds["theta"].values, u=ds["u"].values,
+        q, v = ("q", "v") if "q" in ds else ("theta", "u")     # a Mechanism's, a rotors'
+        return cls(t=ds["t"].values, theta=ds[q].values, u=ds[v].values,
                    frames=ds["frames"].values, K_numeric=ds["K_numeric"].values,
                    K_exact=ds["K_exact"].values if "K_exact" in ds else None,
                    params=attributes(ds)["params"])

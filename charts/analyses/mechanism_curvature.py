@@ -24,7 +24,9 @@ third, chart-free route to the same numbers (tests/test_mechanism_analyses.py).
 
 The result is the rotors' ``CurvatureResult``: its fields ``theta`` and ``u`` hold the
 ambient coordinates q and velocities v of the samples (shape (S, n)), ``frames`` the frames
-(S, d, n), ``K_numeric`` and ``K_exact`` the two routes (S, d − 1, d − 1).
+(S, d, n), ``K_numeric`` and ``K_exact`` the two routes (S, d − 1, d − 1); saved, they are
+``q``, ``v`` and ``frames`` along the dimension ``coordinate`` named by the mechanism's
+coordinates (``params["coordinates"]``), not the rotors' ``rotor``.
 """
 from __future__ import annotations
 
@@ -173,7 +175,8 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
         if exact:
             Kb[s] = riemann_curvature(mech, q, Ps[s])
     t = np.arange(1, S + 1) * sample * dt
-    params = dict(mechanism=mech.name, parameters=mech.parameter_values, dt=dt,
+    params = dict(mechanism=mech.name, parameters=mech.parameter_values,
+                  coordinates=[c.name for c in mech.q], periodic=list(mech.periodic), dt=dt,
                   sample_every=sample * dt, t_transient=transient * dt,
                   project_every=project * dt or None,
                   speed=float(np.sqrt(2 * mech.energy(q0, v0))), t_final=float(t[-1]),

@@ -55,6 +55,7 @@ KINDS = {
     "ensemble": "charts.analyses.ensemble:EnsembleResult",
     "linkage": "charts.analyses.linkage:LinkageResult",
     "mechanism_lyapunov": "charts.analyses.mechanism_lyapunov:MechanismLyapunov",
+    "mechanism_curvature": "charts.analyses.curvature:CurvatureResult",
     "scene": "charts.runs.netcdf_results:SceneResult",
     "sweep": "charts.runs.netcdf_results:SweepTable",
 }
@@ -90,6 +91,8 @@ TITLES = {
     "linkage": "Lyapunov exponents and curvature of the Appendix's linkage (charts.linkage_run)",
     "mechanism_lyapunov": "Lyapunov spectrum of a mechanism "
                           "(charts.analyses.mechanism_lyapunov.lyapunov_spectrum)",
+    "mechanism_curvature": "sectional curvatures along a trajectory of a mechanism "
+                           "(charts.curvature_along_trajectory of a charts.Mechanism)",
     "scene": "scene results (charts run)",
     "sweep": "sweep table (charts sweep)",
 }

@@ -54,6 +54,10 @@ SCHEMAS = {
     "mechanism_lyapunov": ({"exponents": "exponent", "stderr": "exponent",
                             "batches": "batch exponent", "batch_t": "batch"},
                            {"energy_error": "number"}),
+    "mechanism_curvature": ({"t": "t", "q": "t coordinate", "v": "t coordinate",
+                             "frames": "t frame coordinate",
+                             "K_numeric": "t direction direction2",
+                             "?K_exact": "t direction direction2"}, {}),
     "scene": ({}, {"result": "json", "scene_text": "text"}),
     "sweep": ({}, {"column_order": "any"}),
 }
