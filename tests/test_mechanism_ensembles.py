@@ -162,3 +162,32 @@ def test_a_mechanisms_lyapunov_ensemble_saves_and_loads_back(linkage, tmp_path):
     assert np.array_equal(back.stderr, ens.stderr)
     assert [m.params["state_seed"] for m in back] == [0, 1]
     assert back.params["mechanism"] == linkage.name
+
+
+def test_a_mechanisms_tally_is_the_tally_of_its_ensembles_angles(linkage, tmp_path):
+    """hyperbolicity_tally on a mechanism: the same sums in one process and in two with a
+    chunk per member; they equal a tally fed the angles of hyperbolicity_ensemble's members
+    (the same states and seeds), and it saves and loads with its one variant."""
+    from charts.analyses.angle_tally import SUMS, AngleTally
+    kw = dict(t_transient=0.5, seed=2)
+    one = charts.hyperbolicity_tally(linkage, 3, 1.0, workers=1, **kw)
+    two = charts.hyperbolicity_tally(linkage, 3, 1.0, workers=2, chunk=1, **kw)
+    ens = charts.hyperbolicity_ensemble(linkage, 3, 1.0, workers=1, **kw)
+    fed = AngleTally.empty(3, {"members_seed": 2}, ("restricted",))
+    for i, m in enumerate(ens):
+        fed.add(m.phi_restricted[None, :], i)
+    assert one.variants == ("restricted",)
+    for k in SUMS:
+        assert np.array_equal(getattr(one, k), getattr(two, k)), k
+        assert np.array_equal(getattr(one, k), getattr(fed, k)), k
+    s = one.statistics()
+    assert s["min"] == ens.concatenate("phi_restricted").min() and s["n"] == 30
+    lowest = ens[s["min_seed"] - 2]                 # the member and time of the minimum
+    assert s["min_t"] == pytest.approx(lowest.t[np.argmin(lowest.phi_restricted)], abs=1e-12)
+    with pytest.raises(ValueError, match="variant"):
+        one.statistics("full")
+    one.save(tmp_path / "t.nc")
+    back = charts.load(tmp_path / "t.nc")
+    assert back.variants == ("restricted",) and back.statistics() == s
+    with pytest.raises(TypeError, match="device"):
+        charts.hyperbolicity_tally(linkage, 2, 1.0, device="cuda")

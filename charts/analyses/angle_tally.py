@@ -107,17 +107,27 @@ class AngleTally(Archivable):
     #: (members,) each member's seed (its initial state and vectors)
     seeds: np.ndarray | None = None
     _open: dict = field(default_factory=dict)       # carried between blocks: not saved
+    #: the variants of the first axis, in the order a block adds them: `VARIANTS`, or
+    #: ("restricted",) for a mechanism's angles (its only variant)
+    variants: tuple = VARIANTS
 
     KIND = "angle_tally"
 
     @classmethod
-    def empty(cls, members, params=None) -> "AngleTally":
-        """A tally of ``members`` members with nothing added yet."""
+    def empty(cls, members, params=None, variants=VARIANTS) -> "AngleTally":
+        """A tally of ``members`` members with nothing added yet, of the angles ``variants``
+        (a tuple of `VARIANTS`' names, in that order)."""
         members = integer("members", members, 1)
+        if not isinstance(variants, tuple) or not variants or any(
+                v not in VARIANTS for v in variants) or list(variants) != sorted(
+                variants, key=VARIANTS.index) or len(set(variants)) != len(variants):
+            raise ValueError(f"variants must be a tuple of {VARIANTS} in this order, got "
+                             f"{shown(variants)}")
         params = dict(params or {})
         seeds = int(params.get("members_seed", 0)) + np.arange(int(members), dtype=np.int64)
-        tally = cls(**_sums(len(VARIANTS), int(members)), params=params, seeds=seeds)
-        tally._open.update(carries(len(VARIANTS), int(members)))
+        tally = cls(**_sums(len(variants), int(members)), params=params, seeds=seeds,
+                    variants=variants)
+        tally._open.update(carries(len(variants), int(members)))
         return tally
 
     @classmethod
@@ -133,7 +143,8 @@ class AngleTally(Archivable):
 
         def settings(t):
             return {k: v for k, v in t.params.items() if k not in own}
-        if any(settings(t) != settings(tallies[0]) for t in tallies):
+        if any(settings(t) != settings(tallies[0]) or t.variants != tallies[0].variants
+               for t in tallies):
             raise ValueError("the tallies are of different tests (system or settings differ)")
         if any(np.any(t._open.get("pending", np.zeros(1))) for t in tallies):
             raise ValueError("a tally has a block whose restricted angles are missing")
@@ -148,7 +159,7 @@ class AngleTally(Archivable):
         params.pop("stopped", None)
         if stopped:
             params["stopped"] = stopped
-        return cls(**arrays, params=params, seeds=seeds)
+        return cls(**arrays, params=params, seeds=seeds, variants=tallies[0].variants)
 
     @classmethod
     def resumed(cls, path, members, params) -> tuple:
@@ -171,9 +182,9 @@ class AngleTally(Archivable):
                 or np.shape(saved.n) != (members,):
             raise ValueError(f"{path} holds the tally of another run; remove it or name "
                              "another checkpoint")
-        done = check_resumed(path, saved, saved.params.pop("members_done"),
-                             _sums(len(VARIANTS), members))
-        saved._open.update(carries(len(VARIANTS), members))     # whole members: no carry
+        V = len(saved.variants)
+        done = check_resumed(path, saved, saved.params.pop("members_done"), _sums(V, members))
+        saved._open.update(carries(V, members))     # whole members: no carry
         return saved, done
 
     @property
@@ -214,7 +225,7 @@ class AngleTally(Archivable):
             list(pool.map(part, parts))
 
     def _add(self, x, first, v, kind, angle):
-        v = _variant(v)
+        v = _variant(v, self.variants)
         if ("last", v) not in self._open:
             raise ValueError("this tally was loaded from a file: it is complete, and what "
                              "it carried between blocks was not saved")
@@ -236,7 +247,7 @@ class AngleTally(Archivable):
         if v == 0 and np.any(pending[rows]):
             raise ValueError("the restricted angles of the last block are missing: add each "
                              "block's full angles, then its restricted ones")
-        if v == 1 and np.any(pending[rows] != s):
+        if v > 0 and np.any(pending[rows] != s):
             raise ValueError("add each block's full angles first, then its restricted ones, "
                              "of the same members and samples")
         n0 = int(before[0])
@@ -252,9 +263,9 @@ class AngleTally(Archivable):
         self.argmin[v, rows] = np.where(better, n0 + j, self.argmin[v, rows])
         self._small(v, rows, x, angle)
         self._ladder(v, rows, x, n0, angle)
-        if v == 0:
+        if v < len(self.variants) - 1:
             pending[rows] = s
-        else:
+        else:                           # the block's last variant: its samples count
             pending[rows] = 0
             self.n[rows] += s
 
@@ -327,7 +338,7 @@ class AngleTally(Archivable):
 
         Every number is finite or None (an error bar from fewer than two members, a time
         without ``sample_every`` in ``params``)."""
-        v = _variant(variant)
+        v = _variant(variant, self.variants)
         has = self.n > 0                # a member that stopped in its first block has none
         n = self.n[has].astype(float)
         N = int(self.n.sum())
@@ -335,7 +346,7 @@ class AngleTally(Archivable):
             raise ValueError("the tally holds no angles yet")
         dt = float(self.params.get("sample_every", np.nan))
         l = int(np.argmin(self.min[v]))
-        out = dict(variant=VARIANTS[v], n=N, members=self.n_members,
+        out = dict(variant=self.variants[v], n=N, members=self.n_members,
                    min=float(self.min[v, l]), min_seed=int(self.seeds[l]),
                    min_t=float(self.params.get("t_transient", 0.0) + self.argmin[v, l] * dt),
                    zeros=int(self.zeros[v].sum()), small=SMALL_ANGLE)
@@ -402,7 +413,7 @@ class AngleTally(Archivable):
             "state_seed": (("member",), self.seeds, "1",
                            "the seed of the member's initial state (RotorSystem.random_state) "
                            "and of its tangent vectors")},
-            coords={"variant": (("variant",), np.array(VARIANTS), "1"),
+            coords={"variant": (("variant",), np.array(self.variants), "1"),
                     "edge": (("edge",), EDGES, "rad"),
                     "x0": (("x0",), np.array(LAW_X0), "rad"),
                     "size": (("size",), 10 ** np.arange(1, LADDER + 1), "1",
@@ -414,7 +425,7 @@ class AngleTally(Archivable):
         # "seed": the name of the members' state seeds in files written before the rename
         seeds = ds["state_seed"] if "state_seed" in ds else ds["seed"]
         return cls(**{k: ds[k].values for k in SUMS}, params=attributes(ds)["params"],
-                   seeds=seeds.values)
+                   seeds=seeds.values, variants=tuple(str(v) for v in ds["variant"].values))
 
 
 def _finite_or_none(x):
@@ -432,7 +443,7 @@ def _same(x):
     return x
 
 
-def _variant(variant) -> int:
-    if not isinstance(variant, str) or variant not in VARIANTS:
-        raise ValueError(f"variant must be one of {VARIANTS}, got {shown(variant)}")
-    return VARIANTS.index(variant)
+def _variant(variant, variants=VARIANTS) -> int:
+    if not isinstance(variant, str) or variant not in variants:
+        raise ValueError(f"variant must be one of {variants}, got {shown(variant)}")
+    return variants.index(variant)

@@ -52,7 +52,7 @@ from ..solvers.tangent import check_memory
 from .worker_pool import worker_pool
 from .adjoint_pass import adjoint_step, backward_kernel
 from .angle_blocks import angles_on_device
-from .angle_tally import SMALL_ANGLE, SUMS, AngleTally, member_bytes
+from .angle_tally import SMALL_ANGLE, SUMS, VARIANTS, AngleTally, member_bytes
 from .arguments import positive_int, positive_time, progress_reporter, start_state, Documented
 from .cluster import cluster_device, cluster_pool
 from .ensemble import (EnsembleResult, ensemble_arguments, ensemble_result, run_ensemble,
@@ -64,7 +64,8 @@ from .arguments import rotor_system
 from .mechanism_route import mechanism_route
 
 __all__ = ["AngleResult", "angle_result", "angle_members", "hyperbolicity_angles",
-           "hyperbolicity_ensemble", "angle_params", "hyperbolicity_tally", "tally_on_device", "StoppedMember",
+           "hyperbolicity_ensemble", "angle_params", "hyperbolicity_tally", "tally_on_device",
+           "tally_on_cpu", "StoppedMember",
            "angle_statistics",
            "LAW_KEYS", "adjoint_step", "smallest_singular_values"]
 
@@ -357,6 +358,7 @@ def angle_members(system, cfg: AngleSettings, seeds, speed, **kw):
             for l, s in enumerate(seeds)]
 
 
+@mechanism_route("mechanism_ensemble", "hyperbolicity_tally")
 def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
                         progress=False, device="cpu", budget=None, chunk=None, checkpoint=None,
                         client=None, **kwargs) -> AngleTally:
@@ -400,8 +402,9 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
             tally_on_device(system, cfg, tally, speed, workers=workers or os.cpu_count() or 1,
                             budget=budget, update=rep.update)
         else:
-            tally = _tally_on_cpu(system, cfg, n_trajectories, t_final, params, speed, seed,
-                                  workers, chunk, checkpoint, rep, kwargs, client)
+            check_cpu_store(cfg, t_final)
+            tally = tally_on_cpu(system, _short(cfg), n_trajectories, t_final, params, speed,
+                                 seed, workers, chunk, checkpoint, rep, kwargs, client)
     finally:
         rep.close()
     tally._open.clear()                     # the run is whole: nothing left to carry
@@ -413,15 +416,17 @@ def hyperbolicity_tally(system, n_trajectories, t_final, *, speed=1.0, seed=0, w
 TALLY_CHUNK = 64
 
 
-def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, checkpoint,
-                  rep, kwargs, client) -> AngleTally:
+def tally_on_cpu(system, short, L, t_final, params, speed, seed, workers, chunk, checkpoint,
+                 rep, kwargs, client, variants=VARIANTS, n=None) -> AngleTally:
     """`hyperbolicity_tally` on the CPU: chunks of members as jobs (`_tally_chunk`) in one
     process pool or on ``client``'s cluster, each chunk's tally merged here in seed order
-    (`_merge_chunk`) and saved to ``checkpoint`` (``members_done``), resumed from it."""
-    check_cpu_store(cfg, t_final)
+    (`_merge_chunk`) and saved to ``checkpoint`` (``members_done``), resumed from it;
+    ``short``: (t_final, settings) of the call that compiles the kernels here first;
+    ``variants``: the angles of each member the tally keeps (a Mechanism's: "restricted"),
+    ``n``: the N of the compile notice (default ``system.n``)."""
     if chunk is not None:
         chunk = positive_int("chunk", chunk)
-    tally, done = AngleTally.empty(L, params), 0
+    tally, done = AngleTally.empty(L, params, variants), 0
     if checkpoint is not None and os.path.exists(checkpoint):
         tally, done = AngleTally.resumed(checkpoint, L, tally.params)
         rep.update(done * t_final)
@@ -432,14 +437,17 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
         cuts = np.linspace(0, L, max(1, L // size) + 1).round().astype(int)
         # a checkpoint of another chunk size goes on from its members done
         spans = [(max(int(a), done), int(b)) for a, b in zip(cuts[:-1], cuts[1:]) if b > done]
-        jobs = [(system, seed + a, b - a, speed, t_final, params, kwargs) for a, b in spans]
+        jobs = [(system, seed + a, b - a, speed, t_final, params, kwargs, variants)
+                for a, b in spans]
         if pool is None and slots > 1 and len(jobs) > 1:   # one pool; an interrupt cancels
             pool = worker_pool(min(slots, len(jobs)))   # what is queued
             stack.callback(pool.shutdown, cancel_futures=True)
-        t_short, short = _short(cfg)            # compiles the kernels here first
-        prime = (_tally_chunk, (system, seed, 1, speed, t_short, params, {**kwargs, **short}))
+        t_short, short = short                  # compiles the kernels here first
+        prime = (_tally_chunk, (system, seed, 1, speed, t_short, params, {**kwargs, **short},
+                                variants))
         parts = stream_jobs(_tally_chunk, jobs, 1 if pool is None else slots, prime=prime,
-                            name="hyperbolicity_tally", n=system.n, pool=pool)
+                            name="hyperbolicity_tally", n=system.n if n is None else n,
+                            pool=pool)
         stack.callback(parts.close)             # an error or a Ctrl-C: nothing more started
         for (a, b), (part,) in zip(spans, parts):
             _merge_chunk(tally, part, a)
@@ -455,17 +463,18 @@ def _tally_on_cpu(system, cfg, L, t_final, params, speed, seed, workers, chunk, 
 
 def _tally_chunk(job):
     """In a worker: [the `AngleTally` of the members of ``job`` = (system, first seed,
-    members, speed, t_final, the tally's params, settings)], each member's angles by
-    `hyperbolicity_angles` from ``system.random_state(seed=s, speed=speed)`` (as
-    `hyperbolicity_ensemble`'s members), tallied and dropped."""
-    system, first, count, speed, t_final, params, kwargs = job
-    part = AngleTally.empty(count, dict(params, members_seed=first))
+    members, speed, t_final, the tally's params, settings, variants)], each member's angles
+    by `hyperbolicity_angles` (a Mechanism's by its route) from ``system.random_state(seed=s,
+    speed=speed)`` (as `hyperbolicity_ensemble`'s members), its ``phi_<variant>`` tallied and
+    dropped."""
+    system, first, count, speed, t_final, params, kwargs, variants = job
+    part = AngleTally.empty(count, dict(params, members_seed=first), variants)
     for i in range(count):
         s = first + i
         theta0, u0 = system.random_state(seed=s, speed=speed)
         m = hyperbolicity_angles(system, theta0, u0, t_final, seed=s, **kwargs)
-        part.add(m.phi_full[None, :], i, variant="full")
-        part.add(m.phi_restricted[None, :], i, variant="restricted")
+        for v in variants:
+            part.add(getattr(m, f"phi_{v}")[None, :], i, variant=v)
     part._open.clear()                      # whole members: nothing carried, nothing sent
     return [part]
 

@@ -42,7 +42,7 @@ from .hyperbolicity import angle_statistics
 from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
 from .singular_values import sin_to_angle
 
-__all__ = ["MechanismAngles", "mechanism_angles", "sin_angle", "root_metric"]
+__all__ = ["MechanismAngles", "mechanism_angles", "angle_grid", "sin_angle", "root_metric"]
 
 
 @dataclass(frozen=True)
@@ -101,6 +101,22 @@ def sin_angle(mech, q, v, U, S):
     return float(np.linalg.svd(R, compute_uv=False)[-1])
 
 
+def angle_grid(dt, t_final, t_transient, sample_every) -> tuple:
+    """(t_final, t_transient, sample_every) of `mechanism_angles` in steps of ``dt``, the
+    defaults placed as its docstring says; ValueError naming a time that is not on the
+    grid."""
+    total = steps_of("t_final", t_final, dt)
+    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    sample = steps_of("sample_every", sample_every, dt, divides=total if isinstance(
+        t_transient, Documented) or not transient else np.gcd(total, transient))
+    if isinstance(t_transient, Documented):
+        transient = sample * round(transient / sample)
+    if total % sample or transient % sample:
+        raise ValueError(f"t_final={t_final:g} and t_transient={t_transient:g} must be "
+                         f"multiples of sample_every={sample_every:g}")
+    return total, transient, sample
+
+
 def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
                      t_transient=Documented(100.0), sample_every=Documented(0.1),
                      project_every=Documented(1.0), seed=0) -> MechanismAngles:
@@ -145,15 +161,7 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
     mechanism_of(mech)
     dt = positive_time("dt", dt)
     m = unstable_of(mech, n_unstable)
-    total = steps_of("t_final", t_final, dt)
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
-    sample = steps_of("sample_every", sample_every, dt, divides=total if isinstance(
-        t_transient, Documented) or not transient else np.gcd(total, transient))
-    if isinstance(t_transient, Documented):
-        transient = sample * round(transient / sample)
-    if total % sample or transient % sample:
-        raise ValueError(f"t_final={t_final:g} and t_transient={t_transient:g} must be "
-                         f"multiples of sample_every={sample_every:g}")
+    total, transient, sample = angle_grid(dt, t_final, t_transient, sample_every)
     project = project_steps(project_every, dt)
     seed = seed_of(seed)
     q0, v0 = mechanism_state(mech, q0, v0)

@@ -1,6 +1,6 @@
 """Ensembles of the analyses on any Mechanism: ``charts.lyapunov_ensemble``,
-``hyperbolicity_ensemble`` and ``covariant_ensemble`` hand a Mechanism that is not a
-RotorSystem to `lyapunov_ensemble`, `hyperbolicity_ensemble` and `covariant_ensemble` here
+``hyperbolicity_ensemble``, ``hyperbolicity_tally`` and ``covariant_ensemble`` hand a
+Mechanism that is not a RotorSystem to the functions of the same names here
 (``charts.analyses.mechanism_route``), whose members are the single-trajectory analyses of
 ``charts.analyses.mechanism_lyapunov``, ``mechanism_angles`` and ``mechanism_covariant``.
 
@@ -17,7 +17,9 @@ the members.  Every member equals its analysis run alone from its state, bit for
 any number of processes.
 
 `mechanism_ensemble` runs any such member function (the Appendix linkage's ``linkage_run``,
-``charts.analyses.linkage.linkage_ensemble``, is one).
+``charts.analyses.linkage.linkage_ensemble``, is one).  `hyperbolicity_tally` keeps of the
+angles only the sums of an ``AngleTally`` of one variant, "restricted" (the only angle a
+mechanism has), run by the rotors' tally on the CPU; there is no GPU route for a mechanism.
 """
 from __future__ import annotations
 
@@ -25,15 +27,18 @@ import inspect
 
 from ..solvers.status import MAX_STEP_LENGTH
 from ..solvers.tangent import check_memory
-from .arguments import positive_int, positive_time
+from ..geometry.checks import path as file_path
+from .angle_tally import AngleTally, member_bytes
+from .arguments import positive_int, positive_time, progress_reporter, project_steps
 from .ensemble import EnsembleResult, ensemble_arguments, run_ensemble
-from .mechanism_angles import mechanism_angles
+from .hyperbolicity import tally_on_cpu
+from .mechanism_angles import angle_grid, mechanism_angles
 from .mechanism_arguments import mechanism_of, unstable_of
 from .mechanism_covariant import mechanism_clvs
 from .mechanism_lyapunov import lyapunov_spectrum
 
 __all__ = ["mechanism_ensemble", "lyapunov_ensemble", "hyperbolicity_ensemble",
-           "covariant_ensemble", "member_settings"]
+           "hyperbolicity_tally", "covariant_ensemble", "member_settings", "step_of"]
 
 #: The arguments of a member function the ensemble sets itself (the others: ``kwargs``).
 OWN = ("q0", "v0", "t_final", "seed")
@@ -67,12 +72,7 @@ def mechanism_ensemble(member, mech, n_trajectories, t_final, *, speed=1.0, seed
     member_settings(member, kwargs)
     n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
                                                        workers, progress)
-    dt = positive_time("dt", kwargs.get("dt", inspect.signature(member).parameters["dt"].default))
-    if dt * speed > MAX_STEP_LENGTH:
-        raise ValueError(f"speed={speed:g} is too large for dt={dt:g}: dt·speed = "
-                         f"{dt * speed:g} > {MAX_STEP_LENGTH:g} per step, so the samples alias "
-                         f"the motion; use speed <= {MAX_STEP_LENGTH / dt:.3g} (the exponents "
-                         "are proportional to the speed)")
+    step_of(member, kwargs, speed)
     check_memory(n_trajectories * int(member_bytes),
                  f"the results of {n_trajectories} members over t_final={float(t_final):g}",
                  "run fewer members, shorten t_final, or sample less often (sample_every)")
@@ -80,6 +80,19 @@ def mechanism_ensemble(member, mech, n_trajectories, t_final, *, speed=1.0, seed
                         workers=workers, progress=progress, client=client,
                         desc=desc or f"{member.__name__} {mech.name} ensemble", prime=prime,
                         notice=(f"{member.__name__} of {mech.name}", None), **kwargs)
+
+
+def step_of(member, kwargs, speed) -> float:
+    """The members' dt (``kwargs``' or ``member``'s default), checked, and refused
+    (ValueError naming the speed) where a step at ``speed`` is longer than
+    ``charts.solvers.status.MAX_STEP_LENGTH``, as the rotors' ``check_step`` refuses it."""
+    dt = positive_time("dt", kwargs.get("dt", inspect.signature(member).parameters["dt"].default))
+    if dt * speed > MAX_STEP_LENGTH:
+        raise ValueError(f"speed={speed:g} is too large for dt={dt:g}: dt·speed = "
+                         f"{dt * speed:g} > {MAX_STEP_LENGTH:g} per step, so the samples alias "
+                         f"the motion; use speed <= {MAX_STEP_LENGTH / dt:.3g} (the exponents "
+                         "are proportional to the speed)")
+    return dt
 
 
 def _samples(t_final, kwargs, every, default):
@@ -129,6 +142,46 @@ def hyperbolicity_ensemble(mech, n_trajectories, t_final, *, speed=1.0, seed=0, 
                               member_bytes=8 * (2 * S + 2 * m + 2 * mech.n),
                               prime=_prime(kwargs, sample_every=None),
                               desc=f"angles {mech.name} ensemble", **kwargs)
+
+
+def hyperbolicity_tally(mech, n_trajectories, t_final, *, speed=1.0, seed=0, workers=None,
+                        progress=False, chunk=None, checkpoint=None, client=None,
+                        **kwargs) -> AngleTally:
+    """The angle test of `hyperbolicity_ensemble` (``kwargs``: the settings of
+    ``mechanism_angles``) tallied as it runs into an `AngleTally` of the one variant a
+    mechanism has, ``"restricted"``, instead of kept: the rotors' tally on the CPU
+    (``charts.analyses.hyperbolicity.tally_on_cpu``: chunks of ``chunk`` consecutive seeds
+    in ``workers`` processes or on ``client``'s cluster, each member's angles tallied in its
+    worker and dropped, ``checkpoint`` saved after each chunk and resumed from), its
+    ``statistics("restricted")`` the verdict's numbers.  The same tally, bit for bit, in any
+    number of processes and chunks."""
+    mechanism_of(mech)
+    member_settings(mechanism_angles, kwargs)
+    n_trajectories, seed, workers = ensemble_arguments(n_trajectories, t_final, speed, seed,
+                                                       workers, progress)
+    if checkpoint is not None:
+        checkpoint = file_path("checkpoint", checkpoint)
+    check_memory(n_trajectories * member_bytes(1), f"the sums of a tally of {n_trajectories} "
+                 "members", "run fewer members (several tallies combine with AngleTally.merged)")
+    default = inspect.signature(mechanism_angles).parameters
+    get = lambda key: kwargs.get(key, default[key].default)       # noqa: E731
+    dt = step_of(mechanism_angles, kwargs, speed)
+    total, transient, sample = angle_grid(dt, t_final, get("t_transient"), get("sample_every"))
+    project = project_steps(get("project_every"), dt)
+    params = dict(mechanism=mech.name, parameters=mech.parameter_values, dt=dt,
+                  n_unstable=unstable_of(mech, get("n_unstable")), t_final=total * dt,
+                  t_transient=transient * dt, sample_every=sample * dt,
+                  project_every=project * dt or None, speed=float(speed), device="cpu",
+                  members_seed=seed)
+    rep = progress_reporter(progress, n_trajectories * t_final, f"angles {mech.name} tally (CPU)")
+    try:
+        tally = tally_on_cpu(mech, _prime(kwargs, sample_every=None), n_trajectories, t_final,
+                             params, speed, seed, workers, chunk, checkpoint, rep, kwargs,
+                             client, variants=("restricted",), n=mech.name)
+    finally:
+        rep.close()
+    tally._open.clear()                     # the run is whole: nothing left to carry
+    return tally
 
 
 def covariant_ensemble(mech, n_trajectories, t_final, *, variant="restricted", speed=1.0,

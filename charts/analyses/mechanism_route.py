@@ -1,11 +1,14 @@
 """The route of the public analyses to a Mechanism: ``charts.lyapunov_spectrum``,
-``hyperbolicity_angles``, ``curvature_along_trajectory`` and ``covariant_lyapunov_vectors``
-take a ``charts.Mechanism`` that is not a ``RotorSystem`` (the rotors keep their own route,
-bit for bit) and hand it to the generic analysis of ``charts.analyses`` named by
-`mechanism_route`, with the caller's arguments: positional (system, state, velocity, t_final)
-as for the rotors, keywords by the generic analysis's names (q0, v0, …) or the rotors'
-spelling of the state (theta0, u0).  A rotors' setting the generic analysis does not take is
-refused naming it (TypeError), never dropped.
+``hyperbolicity_angles``, ``curvature_along_trajectory`` and ``covariant_lyapunov_vectors``,
+and the ensembles ``lyapunov_ensemble``, ``hyperbolicity_ensemble``, ``hyperbolicity_tally``
+and ``covariant_ensemble``, take a ``charts.Mechanism`` that is not a ``RotorSystem`` (the
+rotors keep their own route, bit for bit) and hand it to the generic analysis of
+``charts.analyses`` named by `mechanism_route`, with the caller's arguments: positional
+(system, state, velocity, t_final) as for the rotors, keywords by the generic analysis's names
+(q0, v0, …) or the rotors' spelling of the state (theta0, u0).  A rotors' setting the generic
+analysis does not take is refused naming it (TypeError), never dropped: here, or for an
+ensemble (whose ``**kwargs`` are its members' settings) by the ensemble
+(``charts.analyses.mechanism_ensemble.member_settings``).
 
 Nothing here imports the mechanism layer (SymPy): a process that never made a Mechanism
 cannot hold one, so the test is `generic_mechanism`'s look into ``sys.modules``.
