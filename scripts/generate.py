@@ -20,7 +20,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def main(argv=None) -> int:
     from charts.codegen.emit import SHIPPED_N
-    from charts.codegen.shipped import compare, write_all
+    from charts.codegen.regenerate import compare, write_all
 
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true",

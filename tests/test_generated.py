@@ -296,7 +296,7 @@ def test_bad_points_vectors_and_charts():
 
 # -- generated/ is fresh ----------------------------------------------------------------
 def test_generated_folder_is_fresh_and_edits_are_caught(tmp_path):
-    from charts.codegen.shipped import compare, write_all
+    from charts.codegen.regenerate import compare, write_all
     fresh = tmp_path / "fresh"
     write_all(fresh, verbose=False)
     assert compare(fresh, ROOT / "generated") == [], \

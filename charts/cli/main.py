@@ -200,7 +200,7 @@ def _generate_installed(check: bool) -> int:
     """Without a checkout: compare (or rewrite) the installed ``charts.generated``."""
     from importlib.util import find_spec
 
-    from ..codegen.shipped import stale_files, write_all
+    from ..codegen.regenerate import stale_files, write_all
 
     folder = Path(find_spec("charts.generated").origin).resolve().parent
     if not check:

@@ -24,7 +24,8 @@ from ..analyses.lyapunov import lyapunov_spectrum
 from ..analyses.surface_integrals import surface_integrals
 
 __all__ = ["surface_verdict", "torus_verdict", "format_verdict", "verdict_passed",
-           "case_verdict", "verdict_line", "VERDICTS", "EVIDENCE", "CHI_TOLERANCE"]
+           "case_verdict", "verdict_line", "exponent_report", "VERDICTS", "EVIDENCE",
+           "CHI_TOLERANCE"]
 
 #: The largest distance of ∫K dA / 2π from the integer χ it is read as, for a surface whose χ
 #: the quadrature reads (the triple linkage): Gauss–Bonnet makes it an integer; the default
@@ -54,8 +55,9 @@ def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict
     routes = {route: surface_integrals(system, n_grid, route).to_dict()
               for route in ("chart", "gauss")}
     lower, upper = routes["chart"]["entropy_bracket"]
-    exponents = [_exponent(lyapunov_spectrum(system, *system.random_state(seed=seed, speed=1.0),
-                                             t_final), seed, t_final, (lower, upper))
+    exponents = [exponent_report(lyapunov_spectrum(system, *system.random_state(seed=seed,
+                                                                                speed=1.0),
+                                                   t_final), seed, t_final, (lower, upper))
                  for seed in seeds]
     cert = certify_curvature_sign(system).to_dict()
     rep = dict(system=system.describe(),
@@ -65,7 +67,7 @@ def surface_verdict(system, *, n_grid=256, t_final=3000.0, seeds=(1, 2)) -> dict
     return dict(rep, **case_verdict(rep))
 
 
-def _exponent(result, seed, t_final, bracket) -> dict:
+def exponent_report(result, seed, t_final, bracket) -> dict:
     """The JSON entry of one λ₁ run (a result with ``exponents`` and ``stderr``) against the
     entropy bracket (lower, upper; None where a bound does not apply): consistent when no
     bound is violated by more than 3 standard errors, resolved inside when the whole ±3 s.e.

@@ -10,7 +10,7 @@ import warnings
 
 import numpy as np
 
-from .verdict import _exponent, case_verdict
+from .verdict import case_verdict, exponent_report
 
 __all__ = ["linkage_plan", "linkage_verdict", "format_linkage_table", "PLAN_GRID"]
 
@@ -100,7 +100,7 @@ def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_fina
     exponents = []
     for seed in seeds:
         say(f"lambda1 at unit speed, seed {seed}, T = {t_final:g}")
-        exponents.append(_exponent(mechanism_lyapunov(mech, *mech.random_state(seed), t_final,
+        exponents.append(exponent_report(mechanism_lyapunov(mech, *mech.random_state(seed), t_final,
                                                       seed=seed), seed, t_final, bracket))
     rep = dict(system=system, n_grid=int(n_grid), routes=routes, bracket=bracket, limit=limit,
                exponents=exponents)
