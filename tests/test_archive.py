@@ -103,6 +103,9 @@ def test_every_result_type_prints_as_one_short_line(results):
                  mechanism_lyapunov=mechanism_lyapunov(charts.triple_linkage(0.3),
                                                        *charts.triple_linkage(0.3).random_state(1),
                                                        2.0, t_transient=0.0, n_batches=2),
+                 mechanism_angles=charts.hyperbolicity_angles(
+                     charts.triple_linkage(0.3), *charts.triple_linkage(0.3).random_state(1),
+                     1.0, t_transient=0.0),
                  scene=SceneResult({"scene": {"name": "tiny"}, "status": "complete"},
                                    {f"array_{i}": np.zeros(3) for i in range(40)}, "name = 'tiny'"),
                  sweep=SweepTable({f"column_{i}": np.arange(5) for i in range(40)}))

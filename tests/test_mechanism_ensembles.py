@@ -154,7 +154,7 @@ def test_a_mechanisms_curvature_is_saved_by_its_coordinates_and_loads_back(linka
     assert ds["frames"].dims == ("t", "frame", "rotor") and "coordinate" not in ds.dims
 
 
-def test_a_mechanisms_lyapunov_ensemble_saves_and_loads_back(linkage, tmp_path):
+def test_a_mechanisms_ensembles_save_and_load_back(linkage, tmp_path):
     ens = charts.lyapunov_ensemble(linkage, 2, 1.0, workers=1, t_transient=0.0, n_batches=2)
     ens.save(tmp_path / "e.nc")
     back = charts.load(tmp_path / "e.nc")
@@ -162,6 +162,11 @@ def test_a_mechanisms_lyapunov_ensemble_saves_and_loads_back(linkage, tmp_path):
     assert np.array_equal(back.stderr, ens.stderr)
     assert [m.params["state_seed"] for m in back] == [0, 1]
     assert back.params["mechanism"] == linkage.name
+    angles = charts.hyperbolicity_ensemble(linkage, 2, 0.5, workers=1, t_transient=0.0)
+    angles.save(tmp_path / "a.nc")
+    back = charts.load(tmp_path / "a.nc")
+    assert type(back[0]).__name__ == "MechanismAngles" and back == angles
+    assert back[1].params == angles[1].params and back[1].statistics() == angles[1].statistics()
 
 
 def test_a_mechanisms_tally_is_the_tally_of_its_ensembles_angles(linkage, tmp_path):

@@ -174,12 +174,13 @@ class EnsembleResult(SpectrumQuantities, Archivable):
                 return plot_ensemble_exponents(rows, self.exponents, self.stderr, ax=ax, **kw)
             raise ValueError(f"kind must be 'members' or 'spectrum' for an ensemble of "
                              f"exponents, got {kind!r}")
-        if self.members and hasattr(self.members[0], "phi_full"):
+        if self.members and hasattr(self.members[0], "phi_restricted"):
             kind = kind or "histogram"
             if kind != "histogram":
                 raise ValueError(f"kind must be 'histogram' for an ensemble of angles, got {kind!r}")
             from ..plotting import plot_angles, system_label
-            phis = {v: self.concatenate(f"phi_{v}") for v in ("full", "restricted")}
+            phis = {v: self.concatenate(f"phi_{v}") for v in ("full", "restricted")
+                    if hasattr(self.members[0], f"phi_{v}")}   # a mechanism's: restricted
             kw.setdefault("title", f"angles between $E_u$ and $E_{{cs}}$, "
                                    f"{system_label(self.params)}: {len(self)} members pooled")
             return plot_angles(phis, axes=ax, **kw)

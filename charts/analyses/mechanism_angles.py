@@ -34,6 +34,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geometry.checks import option
+from ..io.archive import Archivable, attributes, dataset, index_coordinate
+from ..io.result_words import RATE, smallest_words
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.tangent import reorth_steps
 from .angle_tally import SMALL_ANGLE
@@ -45,9 +47,11 @@ from .singular_values import sin_to_angle
 __all__ = ["MechanismAngles", "mechanism_angles", "angle_grid", "sin_angle", "root_metric"]
 
 
-@dataclass(frozen=True)
-class MechanismAngles:
-    """Result of `mechanism_angles` (``AngleResult``'s names for what a mechanism has).
+@dataclass(frozen=True, eq=False, repr=False)
+class MechanismAngles(Archivable):
+    """Result of `mechanism_angles` (``AngleResult``'s names for what a mechanism has);
+    saved by ``save(path)`` (NetCDF, kind ``"mechanism_angles"``), read back by
+    ``charts.load``.
 
     t : (S,) sample times; phi_restricted : (S,) the angles φ between E_u and E_cs (rad);
     forward_exponents : (m,) growth rates of the forward vectors over [0, t_transient +
@@ -69,6 +73,43 @@ class MechanismAngles:
                              "vectors stay in the tangent space of TC (use 'restricted')")
         option("variant", variant, ("restricted",))
         return angle_statistics(self.phi_restricted, small)
+
+    KIND = "mechanism_angles"
+
+    def summary_parts(self):
+        """The smallest angle (a lost, non-finite sample left out)."""
+        return [f"min φ restricted {smallest_words(self.phi_restricted)}"]
+
+    def to_xarray(self):
+        """Dataset: phi_restricted (t); forward_exponents, adjoint_exponents (vector); the
+        settings as attributes (``AngleResult``'s names, without ``phi_full``)."""
+        return dataset(self.KIND, {
+            "phi_restricted": (("t",), self.phi_restricted, "rad",
+                               "angle in the tangent space of TC (kinetic product)"),
+            "forward_exponents": (("vector",), self.forward_exponents, RATE),
+            "adjoint_exponents": (("vector",), self.adjoint_exponents, RATE)},
+            coords={"t": (("t",), self.t, "time"),
+                    "vector": index_coordinate("vector", len(self.forward_exponents),
+                                               "i of the i-th forward / backward vector, from 1")},
+            attrs={"params": self.params})
+
+    @classmethod
+    def from_xarray(cls, ds):
+        return cls(t=ds["t"].values, phi_restricted=ds["phi_restricted"].values,
+                   forward_exponents=ds["forward_exponents"].values,
+                   adjoint_exponents=ds["adjoint_exponents"].values,
+                   params=attributes(ds)["params"])
+
+    def plot(self, ax=None, kind="histogram", **kw):
+        """``kind="histogram"``: the histogram of the angles, ``(fig, axes)``
+        (``charts.plotting.plot_angles``); ``"time"``: φ(t) on a log axis, ``(fig, ax)``
+        (``charts.plotting.plot_angles_series``), as ``AngleResult.plot``."""
+        phis = {"restricted": self.phi_restricted}
+        if option("kind", kind, ("histogram", "time")) == "time":
+            from ..plotting import plot_angles_series
+            return plot_angles_series(self.t, phis, ax=ax, **kw)
+        from ..plotting import plot_angles
+        return plot_angles(phis, axes=ax, **kw)
 
     def summary(self) -> str:
         """One line: the smallest angle, the share below `SMALL_ANGLE`, the growth rates."""

@@ -56,6 +56,7 @@ KINDS = {
     "linkage": "charts.analyses.linkage:LinkageResult",
     "mechanism_lyapunov": "charts.analyses.mechanism_lyapunov:MechanismLyapunov",
     "mechanism_curvature": "charts.analyses.curvature:CurvatureResult",
+    "mechanism_angles": "charts.analyses.mechanism_angles:MechanismAngles",
     "scene": "charts.runs.netcdf_results:SceneResult",
     "sweep": "charts.runs.netcdf_results:SweepTable",
 }
@@ -93,6 +94,8 @@ TITLES = {
                           "(charts.analyses.mechanism_lyapunov.lyapunov_spectrum)",
     "mechanism_curvature": "sectional curvatures along a trajectory of a mechanism "
                            "(charts.curvature_along_trajectory of a charts.Mechanism)",
+    "mechanism_angles": "angles between the expanding and the zero-and-contracting subspaces "
+                        "of a mechanism (charts.hyperbolicity_angles of a charts.Mechanism)",
     "scene": "scene results (charts run)",
     "sweep": "sweep table (charts sweep)",
 }

@@ -58,6 +58,8 @@ SCHEMAS = {
                              "frames": "t frame coordinate",
                              "K_numeric": "t direction direction2",
                              "?K_exact": "t direction direction2"}, {}),
+    "mechanism_angles": ({"t": "t", "phi_restricted": "t", "forward_exponents": "vector",
+                          "adjoint_exponents": "vector"}, {}),
     "scene": ({}, {"result": "json", "scene_text": "text"}),
     "sweep": ({}, {"column_order": "any"}),
 }
