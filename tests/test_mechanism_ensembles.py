@@ -46,6 +46,10 @@ def test_a_users_mechanism_pickles_with_its_description_and_parameters():
     # with_parameters still shares the functions (a copy, not a pickle)
     other = copy.with_parameters(l1=1.1)
     assert other._num is copy._num and other.parameter_values["l1"] == 1.1
+    # and it travels to worker processes: an ensemble there gives the bits of one here
+    kw = dict(t_transient=0.0, n_batches=2)
+    assert charts.lyapunov_ensemble(mech, 2, 0.5, workers=2, **kw) == \
+        charts.lyapunov_ensemble(mech, 2, 0.5, workers=1, **kw)
 
 
 def _same_bits(e1, e2, fields):
