@@ -50,7 +50,7 @@ _HOMES = {
     "hyperbolicity_angles": ".analyses.hyperbolicity",
     "hyperbolicity_ensemble": ".analyses.hyperbolicity",
     "AngleTally": ".analyses.angle_tally",
-    "hyperbolicity_tally": ".analyses.hyperbolicity",
+    "hyperbolicity_tally": ".analyses.tally_run",
     "CovariantResult": ".analyses.covariant",
     "covariant_lyapunov_vectors": ".analyses.covariant",
     "covariant_ensemble": ".analyses.clv_ensemble",

@@ -15,7 +15,7 @@ import argparse
 import time
 
 from charts import RotorSystem
-from charts.analyses.hyperbolicity import hyperbolicity_tally
+from charts.analyses.tally_run import hyperbolicity_tally
 from charts.runs.verdict_statistics import members_window
 
 

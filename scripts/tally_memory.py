@@ -22,7 +22,8 @@ import sys
 CHILD = r"""
 import json, resource, sys, time, tracemalloc
 from charts import RotorSystem
-from charts.analyses.hyperbolicity import hyperbolicity_ensemble, hyperbolicity_tally
+from charts.analyses.hyperbolicity import hyperbolicity_ensemble
+from charts.analyses.tally_run import hyperbolicity_tally
 route, n, members, T, workers = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5])
 S = RotorSystem(n)
 kw = dict(t_transient=10.0)

@@ -7,8 +7,8 @@ import pytest
 from charts.analyses.angle_blocks import angles_on_device
 from charts.analyses.angle_tally import EDGES, LAW_X0, VARIANTS, AngleTally
 from charts.analyses.forward_pass import angle_settings
-from charts.analyses.hyperbolicity import (StoppedMember, hyperbolicity_ensemble,
-                                           hyperbolicity_tally, tally_on_device)
+from charts.analyses.hyperbolicity import hyperbolicity_ensemble
+from charts.analyses.tally_run import StoppedMember, hyperbolicity_tally, tally_on_device
 from charts.analyses.singular_values import sin_to_angle
 from charts.analyses.statistics import block_minima, small_value_law
 from charts.geometry.system import RotorSystem
@@ -154,7 +154,7 @@ def test_the_cpu_tally_runs_all_its_chunks_in_one_pool(monkeypatch):
     chunk), and the tally of the run in one process."""
     assert np.diff(np.linspace(0, 6, 6 // 2 + 1).round()).tolist() == [2, 2, 2]
     import charts.analyses.ensemble as ens_mod
-    import charts.analyses.hyperbolicity as hyp
+    import charts.analyses.tally_run as hyp
     S = RotorSystem(3)
     kw = dict(t_transient=1.0, seed=4, chunk=2)
     ref = hyperbolicity_tally(S, 6, 2.0, workers=1, **kw)
@@ -210,7 +210,7 @@ def test_bad_blocks_are_refused():
 def test_a_member_that_stops_keeps_its_earlier_blocks(monkeypatch):
     """A member that stops (at a singular point) on the GPU route is frozen, not raised: the
     tally keeps its blocks before the stop, records it and warns; the others go on."""
-    import charts.analyses.hyperbolicity as hyp
+    import charts.analyses.tally_run as hyp
     phi = _angles(3, 300, 11)
 
     def fake(system, cfg, seeds, speed, consume, **kw):
@@ -237,7 +237,7 @@ def test_an_interrupted_cpu_tally_goes_on_from_its_checkpoint(tmp_path, monkeypa
     tally of a run never interrupted, and removes it; a checkpoint of another run is
     refused.  In this process and in a pool of two; resumed with another chunk size too."""
     pytest.importorskip("xarray")
-    import charts.analyses.hyperbolicity as hyp
+    import charts.analyses.tally_run as hyp
     S = RotorSystem(3)
     kw = dict(t_transient=1.0, workers=workers)
     whole = hyperbolicity_tally(S, 5, 3.0, chunk=2, **kw)

@@ -279,7 +279,7 @@ def partial_tally(tmp_path_factory):
     """The checkpoint of a CPU angle tally of 5 members (chunks of 2) interrupted while it
     merged its second chunk: 2 members done; and the uninterrupted tally."""
     pytest.importorskip("xarray")
-    import charts.analyses.hyperbolicity as hyp
+    import charts.analyses.tally_run as hyp
     from charts import RotorSystem
     S = RotorSystem(3)
     kw = dict(t_transient=1.0, workers=1, chunk=2)
@@ -335,7 +335,7 @@ def test_a_tally_checkpoint_from_outside_is_refused_naming_the_file(tmp_path, pa
     sums are not a tally's: ValueError naming the file and the field, before any member
     runs.  Before, a members_done below the members summed counted them twice (the route
     that added each chunk's angles) and one above left members out without a word."""
-    from charts.analyses.hyperbolicity import hyperbolicity_tally
+    from charts.analyses.tally_run import hyperbolicity_tally
     S, kw, path, _ = partial_tally
     change, said = TALLIES[case]
     bad = _tally_changed(path, tmp_path / "partial.nc", change)
@@ -347,7 +347,7 @@ def test_a_tally_checkpoint_from_outside_is_refused_naming_the_file(tmp_path, pa
 
 def test_a_tally_checkpoint_missing_a_field_is_refused_naming_it(tmp_path, partial_tally):
     import xarray as xr
-    from charts.analyses.hyperbolicity import hyperbolicity_tally
+    from charts.analyses.tally_run import hyperbolicity_tally
     S, kw, path, _ = partial_tally
     bad = tmp_path / "partial.nc"
     with xr.load_dataset(path) as ds:
@@ -362,7 +362,7 @@ def test_a_tally_checkpoint_missing_a_field_is_refused_naming_it(tmp_path, parti
 def test_the_tallys_own_checkpoint_resumes_to_the_whole_tally(tmp_path, partial_tally):
     import shutil
     from charts.analyses.angle_tally import SUMS
-    from charts.analyses.hyperbolicity import hyperbolicity_tally
+    from charts.analyses.tally_run import hyperbolicity_tally
     S, kw, path, whole = partial_tally
     mine = shutil.copy(path, tmp_path / "partial.nc")
     resumed = hyperbolicity_tally(S, 5, 3.0, checkpoint=mine, **kw)

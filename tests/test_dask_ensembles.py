@@ -21,7 +21,8 @@ import pytest
 from charts import RotorSystem
 from charts.analyses.angle_tally import SUMS
 from charts.analyses.cluster import ClusterError, cluster_pool
-from charts.analyses.hyperbolicity import hyperbolicity_ensemble, hyperbolicity_tally
+from charts.analyses.hyperbolicity import hyperbolicity_ensemble
+from charts.analyses.tally_run import hyperbolicity_tally
 from charts.analyses.lyapunov_members import lyapunov_ensemble
 
 distributed = pytest.importorskip("distributed")

@@ -165,7 +165,8 @@ def test_the_clv_rows_run_on_the_twin():
 def test_ensembles_too_large_for_memory_are_refused_before_they_start():
     """10⁹ members (the most an ensemble takes): refused at once with the bytes and the
     remedy, on every route that keeps per-member results; more members are refused by count."""
-    from charts.analyses.hyperbolicity import hyperbolicity_ensemble, hyperbolicity_tally
+    from charts.analyses.hyperbolicity import hyperbolicity_ensemble
+    from charts.analyses.tally_run import hyperbolicity_tally
     S = RotorSystem(4)
     with pytest.raises(ValueError, match=r"results of 1000000000 members .* GiB.*fewer members"):
         lyapunov_ensemble(S, 10**9, 100.0)

@@ -31,7 +31,7 @@ from ..geometry.checks import path as file_path
 from .angle_tally import AngleTally, member_bytes
 from .arguments import positive_int, positive_time, progress_reporter, project_steps
 from .ensemble import EnsembleResult, ensemble_arguments, run_ensemble
-from .hyperbolicity import tally_on_cpu
+from .tally_run import tally_on_cpu
 from .mechanism_angles import angle_grid, mechanism_angles
 from .mechanism_arguments import mechanism_of, unstable_of
 from .mechanism_covariant import mechanism_clvs
@@ -150,7 +150,7 @@ def hyperbolicity_tally(mech, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     """The angle test of `hyperbolicity_ensemble` (``kwargs``: the settings of
     ``mechanism_angles``) tallied as it runs into an `AngleTally` of the one variant a
     mechanism has, ``"restricted"``, instead of kept: the rotors' tally on the CPU
-    (``charts.analyses.hyperbolicity.tally_on_cpu``: chunks of ``chunk`` consecutive seeds
+    (``charts.analyses.tally_run.tally_on_cpu``: chunks of ``chunk`` consecutive seeds
     in ``workers`` processes or on ``client``'s cluster, each member's angles tallied in its
     worker and dropped, ``checkpoint`` saved after each chunk and resumed from), its
     ``statistics("restricted")`` the verdict's numbers.  The same tally, bit for bit, in any

@@ -31,7 +31,7 @@ def statistics_verdict(system, samples, *, members, device="auto", t_transient=1
     variants; the tally saved as ``out`` (a path) when given; ``checkpoint``: the path of
     the partial tally of a run on the CPU (`hyperbolicity_tally`); ``client``: its chunks on
     a Dask cluster (`hyperbolicity_tally`'s; the device is then the workers' CPUs)."""
-    from ..analyses.hyperbolicity import hyperbolicity_tally
+    from ..analyses.tally_run import hyperbolicity_tally
     t_final = members_window(samples, members, sample_every)
     t0 = time.perf_counter()
     tally = hyperbolicity_tally(system, members, t_final, device=device, workers=workers,
