@@ -36,7 +36,7 @@ _HOMES = {
     "DeviceUnavailable": ".solvers.device",
     "EnsembleResult": ".analyses.ensemble",
     "ErrorBarWarning": ".analyses.ensemble",
-    "LyapunovResult": ".analyses.lyapunov",
+    "LyapunovResult": ".analyses.lyapunov_result",
     "lyapunov_ensemble": ".analyses.lyapunov_members",
     "lyapunov_spectrum": ".analyses.lyapunov",
     "CurvatureResult": ".analyses.curvature",

@@ -144,7 +144,8 @@ def waveform(system, theta0, u0, t_final, *, dt=0.01, sample_every=Documented(0.
     S = samples_of(total, sample, t_final, sample_every)
     if S < 2:
         raise ValueError(f"t_final={t_final:g} gives fewer than 2 samples of sample_every="
-                         f"{sample_every:g}; increase t_final")
+                         f"{sample * dt:g} ({sample} step(s) of dt={dt:g}); increase t_final "
+                         "or decrease dt")
     theta0, u0 = start_state(system, theta0, u0, dt)
     flow = TangentFlow(system, theta0, u0, 0, dt=dt, project_every=project)
     out = np.empty((S, 2 * system.n))

@@ -45,7 +45,7 @@ __all__ = ["Archivable", "KINDS", "dataset", "exponent_coordinate", "index_coord
 #: kind → "module:Class" of every result type ``load`` knows (imported when a file needs it).
 KINDS = {
     "trajectory": "charts.solvers.integrate:IntegrationResult",
-    "lyapunov": "charts.analyses.lyapunov:LyapunovResult",
+    "lyapunov": "charts.analyses.lyapunov_result:LyapunovResult",
     "curvature": "charts.analyses.curvature:CurvatureResult",
     "angles": "charts.analyses.hyperbolicity:AngleResult",
     "angle_tally": "charts.analyses.angle_tally:AngleTally",
