@@ -209,3 +209,15 @@ def test_the_report_states_the_rule_once_and_each_claim_in_a_row(results):
     assert "N = 4: 0.15 (relative 2.0e-03) at |K| = 74, above 99.9 % of the run (the run's " \
            "largest)" in text
     assert "100, 101, 102, 103 (each N)" in text and "200 forward and 200 backward" in text
+
+
+def test_the_report_says_how_much_of_its_wall_time_was_compiling(results):
+    """The wall time names the compiling share recorded in results.json (compile_wall_s),
+    says that none was compiled when the kernels came from the cache, and nothing for a
+    results.json written before the share was recorded."""
+    head = lambda r: report_text(r, "| N | k |", [], "c").splitlines()[2]   # noqa: E731
+    assert "wall time 12 s on 2 worker" in head(results)
+    assert "wall time 12 s (9 s of it compiling the kernels, once: a run on the filled " \
+           "cache does without) on 2 worker" in head(dict(results, compile_wall_s=9.2))
+    assert "wall time 12 s (the kernels loaded from numba's cache, none compiled) on 2" \
+           in head(dict(results, compile_wall_s=0.0))

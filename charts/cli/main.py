@@ -120,8 +120,11 @@ def _status(outdir) -> str | None:
 
 def _summary(result: dict, outdir) -> None:
     comp, res = result["computation"], result["results"]
-    print(f"{result['scene']['name']}: done in {result['timings']['integration_wall_s']:.2f} s "
-          f"-> {outdir}")
+    times = result["timings"]
+    compiled = (f" and {times['compile_wall_s']:.1f} s compiling kernels"
+                if times["compile_wall_s"] >= 0.05 else "")
+    print(f"{result['scene']['name']}: done in {times['integration_wall_s']:.2f} s of wall time "
+          f"integrating{compiled} (files and figures not counted) -> {outdir}")
     print(f"  integrated: {comp['state_dimension']} state variables, "
           f"{comp['tangent_vectors']} tangent vectors, {comp['rhs_evaluations']} rhs evaluations")
     d = result["drift"]

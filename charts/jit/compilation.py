@@ -15,7 +15,7 @@ import threading
 from contextlib import contextmanager
 
 __all__ = ["NOTE_SECONDS", "compile_timer", "announces_compilation", "announce", "timed_call",
-           "compiling_line", "compiled_for"]
+           "compiling_line", "compiled_for", "compiling_said", "COMPILING_AFTER"]
 
 #: compilations shorter than this pass without a word.
 NOTE_SECONDS = 1.0
@@ -50,24 +50,82 @@ def compiled_for(system) -> str:
     return f" for N = {n}" if isinstance(n, int) and not isinstance(n, bool) else ""
 
 
-def announce(name, seconds, n=None, where="") -> None:
-    """The one-line notice on stderr, when ``seconds`` of compiling (wall time, numba's
-    compile events) exceed `NOTE_SECONDS`; ``n``: N or the system the kernels were compiled
-    for (`compiled_for`)."""
+def _stderr(line) -> None:
+    print(line, file=sys.stderr, flush=True)
+
+
+def announce(name, seconds, n=None, where="", say=None) -> None:
+    """The one-line notice on stderr (or ``say(line)``, e.g. a progress bar's ``write``),
+    when ``seconds`` of compiling (wall time, numba's compile events) exceed `NOTE_SECONDS`;
+    ``n``: N or the system the kernels were compiled for (`compiled_for`)."""
     if seconds > NOTE_SECONDS:
-        print(f"charts: {name} compiled its kernels{compiled_for(n)}{where} in {seconds:.1f} s "
-              "(once: they are cached on disk for the next calls and processes; "
-              "`charts warmup` compiles them all after an install)",
-              file=sys.stderr, flush=True)
+        (say or _stderr)(f"charts: {name} compiled its kernels{compiled_for(n)}{where} in "
+                         f"{seconds:.1f} s of wall time (once: they are cached on disk for the "
+                         "next calls and processes; `charts warmup` compiles them all after an "
+                         "install)")
+
+
+def _first_compile(line, say):
+    """A numba event listener that says ``line`` at the first compile event after it was made
+    or re-armed (``rearm()``), and not again until then; ``spent``: the seconds of compiling
+    so far (outermost events, as `compile_timer` counts them, but readable while the block
+    runs)."""
+    from numba.core.event import TimingListener
+
+    class FirstCompile(TimingListener):
+        armed = True
+
+        def on_start(self, event):
+            if self.armed:
+                self.armed = False
+                say(line)
+            super().on_start(event)
+
+        def rearm(self):
+            self.armed = True
+
+        @property
+        def spent(self):
+            return self.duration if self.done else 0.0
+
+    return FirstCompile()
 
 
 @contextmanager
-def compiling_line(name, where="", after=5.0):
+def compiling_said(name, n=None, say=None):
+    """While the block runs: the moment numba starts compiling in it (a kernel that is not
+    in the on-disk cache; loading one is no compile event), one line "charts: NAME is
+    compiling its kernels for N = … …" on stderr (or ``say(line)``); nothing when every
+    kernel comes from the cache.  Yields the listener: its ``spent`` is the compiling so far
+    (s), its ``rearm()`` lets a later compilation in the block say it again (after the
+    notice of the one before)."""
+    from numba.core.event import install_listener
+
+    listener = _first_compile(f"charts: {name} is compiling its kernels{compiled_for(n)} (once: "
+                              "numba caches them on disk; kernels already there are only "
+                              "loaded) …", say or _stderr)
+    with install_listener("numba:compile", listener):
+        yield listener
+
+
+#: How long a pool's compiling (`compiling_line`) runs silent before its line: shorter blocks
+#: are kernels loaded from the cache; 0 says it at once.
+COMPILING_AFTER = 5.0
+
+
+@contextmanager
+def compiling_line(name, where="", after=None):
     """While the block runs (a pool's workers compiling, silent otherwise): one line on
-    stderr once it has taken ``after`` seconds, saying what it is doing."""
-    timer = threading.Timer(after, lambda: print(
-        f"charts: {name} is compiling its kernels{where} (once: numba caches them on disk; "
-        "kernels already there are only loaded) …", file=sys.stderr, flush=True))
+    stderr once it has taken ``after`` seconds (default `COMPILING_AFTER`; 0: at once, before
+    the block), saying what it is doing."""
+    after = COMPILING_AFTER if after is None else after
+    line = (f"charts: {name} is compiling its kernels{where} (once: numba caches them on disk; "
+            "kernels already there are only loaded) …")
+    if after <= 0:
+        _stderr(line)
+        yield
+        return
+    timer = threading.Timer(after, lambda: print(line, file=sys.stderr, flush=True))
     timer.daemon = True
     timer.start()
     try:

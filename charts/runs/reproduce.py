@@ -160,9 +160,11 @@ def _lyapunov_members(results, n):
     return dict(out, history_t=parts[0]["history_t"])
 
 
-def _run_all(cfg, workers, quiet, pieces=None):
+def _run_all(cfg, workers, quiet, pieces=None, timings=None):
     """Every task's result; with ``pieces`` (a folder), each finished task is kept there
-    (:func:`save_piece`) and a task already kept with the same arguments is not run again."""
+    (:func:`save_piece`) and a task already kept with the same arguments is not run again;
+    ``timings`` (a dict), if given, receives ``compile_wall_s``: the wall time of the
+    workers' compiling before the tasks (0 when every task was kept)."""
     tasks = _tasks(cfg)
     results = {}
     if pieces is not None:
@@ -176,8 +178,9 @@ def _run_all(cfg, workers, quiet, pieces=None):
     from tqdm.auto import tqdm
     pool = worker_pool(workers, initializer=quiet_worker)
     try:
-        if len(results) < len(tasks):
-            _compile_first(pool, workers, quiet)
+        compile_wall = _compile_first(pool, workers, quiet) if len(results) < len(tasks) else 0.0
+        if timings is not None:
+            timings["compile_wall_s"] = compile_wall
         futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items() if key not in results}
         with tqdm(total=len(tasks), initial=len(results), desc="reproduce", disable=quiet) as bar:
             for fut in as_completed(futs):
@@ -210,7 +213,10 @@ def _stop(pool):
 def _compile_first(pool, workers, quiet):
     """The kernels of every task, each compiled once by one worker (`charts warmup`'s
     stages) before the tasks start, instead of by every worker at once on an empty cache;
-    with the cache filled, the workers load them here (what the tasks would do anyway)."""
+    with the cache filled, the workers load them here (what the tasks would do anyway).
+    Returns the wall time it took (s).  The notice gives that wall time and, beside it, each
+    worker's compiling wall time summed over the workers (longer than the wall time when
+    the workers compile at once; not CPU time)."""
     from contextlib import nullcontext
 
     from ..jit.compilation import NOTE_SECONDS, compiling_line
@@ -222,9 +228,10 @@ def _compile_first(pool, workers, quiet):
                                                  pool=pool))
     wall = time.perf_counter() - start
     if not quiet and spent > NOTE_SECONDS:
-        print(f"charts: reproduce compiled its kernels{where} in {wall:.1f} s "
-              f"({spent:.1f} s of compiling summed over the workers; once: they are cached on "
-              "disk for the next runs)", file=sys.stderr, flush=True)
+        print(f"charts: reproduce compiled its kernels{where} in {wall:.1f} s of wall time "
+              f"({spent:.1f} s: each worker's compiling wall time, summed; once: they are "
+              "cached on disk for the next runs)", file=sys.stderr, flush=True)
+    return wall
 
 
 PIECES = "pieces"
@@ -283,7 +290,8 @@ def main(argv=None):
 
 def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
     t0 = time.time()
-    results = _run_all(cfg, workers, quiet, pieces)
+    timings = {}
+    results = _run_all(cfg, workers, quiet, pieces, timings)
     from . import paper_figures
     from ..analyses.hyperbolicity import angle_statistics
     from ..analyses.spectra import Waveform
@@ -317,6 +325,7 @@ def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
     elapsed = time.time() - t0
     atomic_text(out / "table.md", _fmt_table(rows) + "\n")
     summary = dict(preset=preset, config=cfg, elapsed_s=elapsed, workers=workers,
+                   compile_wall_s=timings["compile_wall_s"],
                    lyapunov=rows,
                    curvature={n: {k: v for k, v in c.items() if not isinstance(v, np.ndarray)}
                               | dict(fraction_positive=(c["Kb"] > 0).mean(0).tolist(),

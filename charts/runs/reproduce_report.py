@@ -205,13 +205,27 @@ def _sections(results, table):
     return L
 
 
+def _compile_share(results) -> str:
+    """What part of the wall time was the workers' compiling (results.json's
+    ``compile_wall_s``, the wall time of the compiling before the tasks; files written
+    before it was recorded have none: nothing is said)."""
+    spent = results.get("compile_wall_s")
+    if spent is None:
+        return ""
+    if spent < 0.5:
+        return " (the kernels loaded from numba's cache, none compiled)"
+    return (f" ({spent:.0f} s of it compiling the kernels, once: a run on the filled cache "
+            "does without)")
+
+
 def report_text(results, table, clv_lines, command="", host=""):
     """report.md from ``results`` (``results.json`` as read back), ``table`` (table.md's
     text) and ``clv_lines`` (``charts.runs.reproduce_clv.report_lines``)."""
     rows = claims(results)
     dt = results["run"]["lyapunov"]["dt"]
     L = [f"# Reproduction of Kuznetsov, rotators with Σcos θ = 0 — preset `{results['preset']}`",
-         "", f"Command: `{command}`; wall time {results['elapsed_s']:.0f} s on "
+         "", f"Command: `{command}`; wall time {results['elapsed_s']:.0f} s"
+         f"{_compile_share(results)} on "
          f"{results['workers']} worker processes{host}.  Unit speed, equal masses, RK4 "
          f"dt = {dt:g}.  Every number below is read from results.json.", ""]
     L += _claims_section(rows) + _run_section(results)

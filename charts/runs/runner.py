@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..jit.compilation import NOTE_SECONDS, compile_timer
+from ..jit.compilation import NOTE_SECONDS, announce, compile_timer, compiling_said
 from ..analyses.arguments import flag
 from ..analyses.lyapunov import end_transient
 from ..geometry.checks import callback, instance
@@ -116,16 +116,22 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         if force:
             clear_run_outputs(outdir, lock)
         bar = run.progress_bar(quiet)
+        say = None if quiet else (lambda line: bar.write(line, file=sys.stderr))
         status, failure = "complete", None
         try:
-            with compile_timer(run.st.add_compile_time):
-                run.run_chunks(run.engine(), bar, on_chunk)
+            with compile_timer(run.st.add_compile_time), \
+                    compiling_said(run.compile_label(), run.st.system, say or _silent) as first:
+                run.run_chunks(run.engine(), bar, on_chunk,
+                               lambda: run.note_compile_time(say, first))
         except (KeyboardInterrupt, RunError) as exc:
             status, failure = run.stop(exc)
         finally:
             bar.close()
-        run.note_compile_time(quiet)
         return run.finish(status, failure)
+
+
+def _silent(line) -> None:
+    """Where a quiet run's notices go."""
 
 
 class _QuietBar:
@@ -191,6 +197,8 @@ class SceneRun:
             st.load_arrays(a)
             progress = progress_of(st, self.ends, transient, self.unit)
             st.resumed_from = {key: progress[key] for key in ("t_done", "chunks_done")}
+        #: the compiling already announced (`note_compile_time`)
+        self.compile_noted = 0.0
 
     def engine(self):
         """The engine of the main pass (``charts.runs.engines``)."""
@@ -237,9 +245,9 @@ class SceneRun:
         arr["scene_hash"] = np.array(self.digest)
         atomic_write(self.ck, npz_bytes(arr))
 
-    def run_chunks(self, engine, bar, on_chunk=None) -> None:
+    def run_chunks(self, engine, bar, on_chunk=None, after=None) -> None:
         """The chunks from ``st.chunk_index`` on, a checkpoint after each (``engine`` runs the
-        main pass; None if it is done)."""
+        main pass; None if it is done); ``after()`` after each chunk (the compile notice)."""
         st = self.st
         for idx in range(st.chunk_index, self.n_units):
             t_wall = time.perf_counter()
@@ -252,6 +260,8 @@ class SceneRun:
                 (_angles_pass if name == "angles" else _clv_pass)(st)
                 advanced = getattr(self.plan, name)["steps"] * self.scene.integrator["dt"]
             self.checkpoint(idx, time.perf_counter() - t_wall)
+            if after is not None:
+                after()
             bar.update(advanced)
             if on_chunk is not None:
                 on_chunk(idx, self.n_units)
@@ -271,12 +281,25 @@ class SceneRun:
         self.st.n_main = self.n_main
         return status, failure
 
-    def note_compile_time(self, quiet: bool) -> None:
-        st = self.st
-        if st.compile_s > NOTE_SECONDS and not quiet:
-            print(f"{self.scene.name}: compiled the kernels for N = {st.system.n} in "
-                  f"{st.compile_s:.1f} s (once: they are cached on disk for the next runs)",
-                  file=sys.stderr)
+    def compile_label(self) -> str:
+        """The run's name in its compile notices: the scene and its variant (formulation,
+        method), as `integrate`'s notices name theirs."""
+        variant = [str(self.scene.integrator[k]) for k in ("formulation", "method")
+                   if self.scene.integrator.get(k)]
+        return f"{self.scene.name} ({', '.join(variant)})" if variant else self.scene.name
+
+    def note_compile_time(self, say, first) -> None:
+        """After a chunk: the compile notice (``say``; None: quiet) for the compiling since
+        the last notice, when it exceeds `NOTE_SECONDS`; ``first``: the listener of
+        `compiling_said`, whose ``spent`` counts numba's compile events (the wall time spent
+        compiling, the rest of the chunk not counted), re-armed after the notice, so that a
+        later chunk's compiling says so too."""
+        spent = first.spent - self.compile_noted
+        if spent > NOTE_SECONDS:
+            self.compile_noted = first.spent
+            first.rearm()
+            if say is not None:
+                announce(self.compile_label(), spent, self.st.system, say=say)
 
     def finish(self, status: str, failure=None) -> dict:
         """The result (every output file written); raises KeyboardInterrupt (interrupted) or

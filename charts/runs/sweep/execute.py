@@ -181,9 +181,11 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
             where = scheduler or f"a local cluster of {counted(nw, 'worker')}"
             print(f"{sweep.name}: {counted(total, 'point')} ({n_done} finished before, "
                   f"{len(todo)} to compute) on {where}", flush=True)
-        bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
         # identical scenes are computed once; the seeds of a point together, in lanes
-        for block in lane_blocks(groups, max(nw, 1), device):
+        blocks = lane_blocks(groups, max(nw, 1), device)
+        _compile_first(client, blocks, device, quiet, sweep.name, nw)
+        bar = tqdm(total=total, initial=n_done, unit="pt", desc=sweep.name, disable=quiet)
+        for block in blocks:
             # a point computed alone keeps its checkpoints in points/<id> until its row is
             # written, so that a resumed sweep continues a long point where it stopped
             keep = [str(outdir / POINTS / g[0].point_id) for g in block] if len(block) == 1 \
@@ -223,6 +225,50 @@ def _compute(sweep, todo, total, n_done, columns, outdir, info, scheduler, worke
             cluster.close()
 
 
+def _compile_first(client, blocks, device, quiet, name, nw):
+    """The kernels of the points compiled before them, each kind by one worker: a tiny
+    version (``charts.runs.sweep.worker.tiny_version``) of the first block of each kind (N,
+    integrator, effects, lanes), instead of every worker compiling the same kernels on its
+    first point at once; with the cache filled, the workers load them here (what the points
+    would do anyway).  A line on stderr while it takes long (`compiling_line`), a notice
+    with its wall time after (like ``charts reproduce``'s).  Workers on other machines than
+    the primed ones compile on their first points."""
+    from contextlib import nullcontext
+
+    from ...jit.compilation import NOTE_SECONDS, compiling_line
+    from .worker import prime_points, tiny_version
+
+    kinds = {}
+    for block in blocks:
+        raws = [tiny_version(group[0].raw) for group in block]
+        if None in raws:
+            continue
+        lanes = len(block) >= MIN_LANES
+        first = raws[0]
+        key = json.dumps([first["system"].get("n"), first.get("integrator"), first.get("effects"),
+                          len(block) if lanes else 0, first["system"].get("kind")],
+                         sort_keys=True, default=str)
+        kinds.setdefault(key, (raws, lanes))
+    if not kinds:
+        return
+    where = f" in {counted(nw, 'Dask worker')}"
+    start = time.perf_counter()
+    try:
+        with nullcontext() if quiet else compiling_line(f"sweep {name}",
+                                                        where + ", before the points"):
+            futures = [client.submit(prime_points, raws, device, lanes, pure=False,
+                                     key=f"charts-sweep-prime-{uuid.uuid4().hex[:8]}")
+                       for raws, lanes in kinds.values()]
+            spent = client.gather(futures)
+    except Exception:           # a worker lost: the points compile (and report) on their own
+        return
+    wall = time.perf_counter() - start
+    if not quiet and max(spent) > NOTE_SECONDS:
+        print(f"charts: sweep {name} compiled its kernels{where} in {wall:.1f} s of wall time "
+              f"({sum(spent):.1f} s: each worker's compiling wall time, summed; once: they are "
+              "cached on disk for the next runs)", file=sys.stderr, flush=True)
+
+
 def _add_rows(group, out, columns, app, info, bar, on_point, n_done, total):
     """The rows of ``group`` (points of one scene) from its outcome ``out``; the log's
     record of a point that continued the checkpoint of an interrupted sweep says from where
@@ -235,6 +281,7 @@ def _add_rows(group, out, columns, app, info, bar, on_point, n_done, total):
         app.add(point_row(p, out, columns),
                 {"run_id": info["run_id"], "index": p.index, "point_id": p.point_id,
                  "status": out["status"], "wall_s": out["wall_s"],
+                 "compile_s": out.get("compile_s"),
                  "worker": out["worker"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
                  **({"resumed_from": out["resumed_from"]} if out.get("resumed_from") else {}),
                  **({"notice": out["notice"]} if out.get("notice") else {}),

@@ -21,7 +21,11 @@ from ..scene import parse_scene
 from ..seed_lanes import lane_angles, lane_flows, run_seed_lanes, seed_family
 from .statistics import result_statistics
 
-__all__ = ["evaluate_point", "evaluate_points", "seeds_pay"]
+__all__ = ["evaluate_point", "evaluate_points", "seeds_pay", "tiny_version", "prime_points"]
+
+#: The simulated time of a point's tiny version (`tiny_version`): enough for one chunk of
+#: every effect, a few hundred steps at the usual dt.
+PRIME_T = 1.0
 
 
 def evaluate_point(raw: dict, keep=None) -> dict:
@@ -135,6 +139,28 @@ def _evaluate_points(raws: list, keep=None, device="cpu", lanes=None) -> list:
         return [_point_outcome(o, d, share) for o, d in zip(outcomes, dirs)]
 
 
+def tiny_version(raw: dict):
+    """The point ``raw`` (a scene's dict) run for `PRIME_T` without transient: the same
+    kernels (N, integrator, effects), compiled by a run of a second or less; None where
+    that is not a valid scene (then nothing is primed for it)."""
+    tiny = dict(raw, run=dict(raw.get("run", {}), t_final=PRIME_T, t_transient=0.0))
+    tiny["run"].pop("checkpoint_every", None)
+    try:
+        parse_scene(tiny, source=raw.get("name", "<point>"))
+    except Exception:                   # any rule of a scene the tiny run breaks
+        return None
+    return tiny
+
+
+def prime_points(raws: list, device="cpu", lanes=None) -> float:
+    """Run the tiny versions ``raws`` (`tiny_version`) as `evaluate_points` would run the
+    points (on a Dask worker, before the points): the seconds numba spent compiling in
+    them (its compile events: wall time; 0 when every kernel came from the cache)."""
+    from ...jit.compilation import timed_call
+
+    return timed_call(evaluate_points, raws, None, device, lanes)[1]
+
+
 def seeds_pay(scene, lanes, device="cpu", runs=None) -> bool:
     """Whether ``lanes`` seeds of ``scene`` (one `seed_family`; ``runs`` of them in all that
     share one compilation: default ``lanes``) run their main passes together: on a GPU
@@ -179,4 +205,5 @@ def _point_outcome(outcome, folder: Path, wall_s: float) -> dict:
     return {"status": status, "error": error, "stats": stats,
             "t_final": progress.get("t_done"), "resumed_from": progress.get("resumed_from"),
             "wall_s": round(wall_s, 3),
+            "compile_s": round(result.get("timings", {}).get("compile_wall_s", 0.0), 3),
             "worker": f"{socket.gethostname()}:{os.getpid()}"}

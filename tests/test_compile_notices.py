@@ -1,0 +1,115 @@
+"""The compile notices a reader sees (charts.jit.compilation): a line the moment a scene
+starts compiling and its notice (the variant, the wall time spent compiling) as soon as
+the chunk that compiled ends, above the progress bar; a sweep's line before its workers
+compile and its notice before the first point's row."""
+from __future__ import annotations
+
+import numba
+
+from charts.jit import compilation
+
+
+def test_the_first_compile_event_says_so_once_until_rearmed():
+    """`compiling_said`: one line at the first compile event in the block, none for the
+    next until re-armed, none outside the block."""
+    said = []
+    with compilation.compiling_said("toy", 3, said.append) as first:
+        numba.njit(lambda x: x + 11)(1)          # fresh functions: numba compiles each
+        numba.njit(lambda x: x + 12)(1)
+        assert said == ["charts: toy is compiling its kernels for N = 3 (once: numba caches "
+                        "them on disk; kernels already there are only loaded) …"]
+        first.rearm()
+        numba.njit(lambda x: x + 13)(1)
+        assert len(said) == 2
+    numba.njit(lambda x: x + 14)(1)
+    assert len(said) == 2
+
+
+def test_a_scene_says_it_compiles_then_names_its_variant_and_wall_time(tmp_path, monkeypatch,
+                                                                      capsys):
+    """A scene whose first chunk compiles: the line when compiling starts, then, before the
+    next chunk (not after the bar), the notice naming the scene and its variant with the wall
+    time spent compiling; a quiet run says neither."""
+    from charts.runs import runner
+    from charts.runs.scene import parse_scene
+
+    monkeypatch.setattr(compilation, "NOTE_SECONDS", 0.0)
+    monkeypatch.setattr(runner, "NOTE_SECONDS", 0.0)
+    fresh = iter(range(1000, 2000))
+    real = runner.SceneRun.end_main_chunk
+
+    def compiling(self, idx):                 # the first chunk compiles a fresh function
+        if idx == 0:
+            k = next(fresh)
+            numba.njit(lambda x: x + k)(1)
+        return real(self, idx)
+
+    monkeypatch.setattr(runner.SceneRun, "end_main_chunk", compiling)
+    scene = parse_scene({"name": "tiny", "system": {"n": 3},
+                         "integrator": {"formulation": "ambient", "method": "rk4", "dt": 0.01},
+                         "run": {"t_final": 2.0, "t_transient": 0.0, "checkpoint_every": 1.0},
+                         "effects": {"lyapunov": {"n_batches": 2}}})
+    seen = []
+    capsys.readouterr()
+    runner.run_scene(scene, tmp_path / "loud",
+                     on_chunk=lambda i, n: seen.append(capsys.readouterr().err))
+    notes = [line.strip("\r") for line in seen[0].splitlines() if "charts: " in line]
+    notes = [line[line.index("charts: "):] for line in notes]
+    assert notes[0] == ("charts: tiny (ambient, rk4) is compiling its kernels for N = 3 (once: "
+                        "numba caches them on disk; kernels already there are only loaded) …")
+    assert notes[1].startswith("charts: tiny (ambient, rk4) compiled its kernels for N = 3 in ")
+    assert " s of wall time (once: " in notes[1] and len(notes) == 2, notes
+    assert not any("charts: " in err for err in seen[1:] + [capsys.readouterr().err])
+    runner.run_scene(scene, tmp_path / "quiet", quiet=True)
+    assert capsys.readouterr().err == ""
+
+
+#: two short points of one kind (N = 3, exponents): one tiny run compiles their kernels
+TWO = """name = "two"
+[scene.system]
+n = 3
+[scene.integrator]
+dt = 0.01
+[scene.run]
+t_final = 4.0
+t_transient = 0.0
+[scene.effects.lyapunov]
+n_batches = 2
+[sweep]
+seeds = [1]
+[sweep.parameters]
+m = [0.5, 2.0]
+[sweep.masses]
+p = [1, "m", 1]
+"""
+
+
+def test_a_sweep_on_an_empty_cache_compiles_before_its_points_and_says_so(tmp_path,
+                                                                         monkeypatch, capsys):
+    """`charts sweep` with 2 Dask workers on an empty numba cache: the line that it compiles
+    and the notice with the wall time come before the first point's row (the stream is read
+    when that row is written), and the points then compile nothing (their compile_s in
+    log.jsonl: numba's compile events in the point's run)."""
+    import json
+
+    from charts.runs.sweep import LOG, load_sweep, run_sweep
+
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "numba"))   # the workers' cache
+    monkeypatch.setattr(compilation, "COMPILING_AFTER", 0.0)          # the line at once
+    monkeypatch.setattr(compilation, "NOTE_SECONDS", 0.0)             # any compiling noted
+    seen = []
+    capsys.readouterr()
+    (tmp_path / "two.toml").write_text(TWO)
+    run_sweep(load_sweep(tmp_path / "two.toml"), tmp_path / "out", workers=2, plots=False,
+              on_point=lambda done, total: seen.append(capsys.readouterr().err))
+    notes = [line for line in seen[0].splitlines() if line.startswith("charts: ")]
+    assert notes[0] == ("charts: sweep two is compiling its kernels in 2 Dask workers, before "
+                        "the points (once: numba caches them on disk; kernels already there "
+                        "are only loaded) …"), notes
+    assert notes[1].startswith("charts: sweep two compiled its kernels in 2 Dask workers in ")
+    assert " s of wall time (" in notes[1] and "each worker's compiling wall time, summed" \
+        in notes[1] and len(notes) == 2, notes
+    assert len(seen) == 2 and "charts: " not in seen[1]
+    log = [json.loads(line) for line in (tmp_path / "out" / LOG).read_text().splitlines()]
+    assert len(log) == 2 and all(r["status"] == "complete" and r["compile_s"] == 0.0
+                                 for r in log), log
