@@ -6,6 +6,8 @@ a state of it, or the flow met a singular point (or left the finite numbers); Va
 another bad argument; each message names the argument."""
 from __future__ import annotations
 
+import numpy as np
+
 from ..geometry.checks import integer, shown
 from ..mechanism.errors import MechanismError
 from ..mechanism.model import Mechanism
@@ -44,11 +46,17 @@ def unstable_of(mech, n_unstable) -> int:
 
 def mechanism_state(mech, q0, v0, names=("q0", "v0")):
     """(q0, v0) as arrays, q0 on F = 0 (|F| ≤ `STATE_TOL`, J of full rank) and v0 tangent
-    there; `MechanismError` naming the argument otherwise."""
+    there with a positive speed √(v0ᵀ M v0) (the flow's time and its exponents scale with it; at
+    rest there is no flow direction); `MechanismError` naming the argument otherwise."""
     qn, vn = names
     q0 = mech._point(q0, qn)
     try:
         q0 = mech.check_point(q0, tol=STATE_TOL)
     except MechanismError as exc:
         raise MechanismError(f"{qn}: {exc}") from None
-    return q0, mech.check_tangent(q0, v0, vn)
+    v0 = mech.check_tangent(q0, v0, vn)
+    energy = float(v0 @ mech.mass_matrix(q0) @ v0)
+    if not (energy > 0 and np.isfinite(energy)):
+        raise MechanismError(f"{vn} must be a moving state: its speed² {vn}ᵀ M {vn} = "
+                             f"{energy:.3g} (a state at rest has no geodesic to follow)")
+    return q0, v0

@@ -17,6 +17,7 @@ entropy of an ergodic flow as λ₁.  All exponents are proportional to the spee
 """
 from __future__ import annotations
 
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -28,10 +29,14 @@ from ..mechanism.model import Mechanism
 from ..mechanism.errors import MechanismError
 from ..mechanism.tangent_flow import INNER_PRODUCTS, MechanismTangentFlow
 from .arguments import Documented, positive_int, positive_time, seed_of, steps_of
+from . import transients
 from .lyapunov import exponents_from_marks
+from .mechanism_arguments import mechanism_state
 from .statistics import batch_ends
+from .transients import PILOT_TIMES, auto_duration, transient_rule
 
-__all__ = ["MechanismLyapunov", "lyapunov_spectrum"]
+__all__ = ["MechanismLyapunov", "lyapunov_spectrum", "mechanism_rule", "resolve_transient",
+           "auto_transient", "settings_before_pilot"]
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -129,9 +134,12 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
     inner : {"theta", "full"}
         Eq (18)'s inner product: the kinetic metric on the position parts δq (the paper's
         θ-only product) or on δq and δv.
-    t_transient : float
+    t_transient : float or "auto"
         Time discarded first, so that the vectors align (default 50, the rotors' default at
-        N = 3: 25 e-foldings at λ₁ ≈ 0.5 and unit speed).
+        N = 3: 25 e-foldings at λ₁ ≈ 0.5 and unit speed).  "auto": `auto_transient` (a
+        pilot run with these settings); the rule and the duration are recorded in ``params``
+        (``transient_rule``, ``t_transient``).  The rotors' "scaled" is refused
+        (`mechanism_rule`).
     n_batches : int
         Blocks of the batch-means standard error (≥ 2).
     reorth_every : float
@@ -157,16 +165,18 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
     if not isinstance(mech, Mechanism):
         raise MechanismError(f"mech must be a charts.mechanism.Mechanism, got "
                              f"{type(mech).__name__}")
+    rule = mechanism_rule(t_transient, mech)
     dt = positive_time("dt", dt)
     inner = option("inner", inner, INNER_PRODUCTS)
     d = mech.dim
     kmax = d if inner == "theta" else 2 * d
     k = max(d - 1, 1) if n_exponents is None else positive_int("n_exponents", n_exponents)
     if k > kmax:
+        hint = f"; use inner='full' for up to {2 * d}" if inner == "theta" else ""
         raise ValueError(f"n_exponents={k} is out of range 1..{kmax} for a {d}-dimensional "
-                         f"manifold with inner={inner!r}; use inner='full' for up to {2 * d}")
+                         f"manifold with inner={inner!r}{hint}")
     total = steps_of("t_final", t_final, dt)
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    transient = 0 if rule else steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_batches = positive_int("n_batches", n_batches, 2)
     reorth = steps_of("reorth_every", reorth_every, dt, divides=total)
     if total % reorth:
@@ -176,8 +186,12 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
                          f"least reorth_every={reorth_every:g}; increase t_final")
     project = 0 if project_every is None else steps_of("project_every", project_every, dt)
     seed = seed_of(seed)
-    q0 = mech._point(q0, "q0")
-    v0 = mech._point(v0, "v0")
+    q0, v0 = mechanism_state(mech, q0, v0)
+    if rule:                  # every other setting and the state checked: the pilot runs
+        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
+                                              n_exponents=n_exponents, inner=inner,
+                                              project_every=project_every, seed=seed)
+        transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
 
     flow = MechanismTangentFlow(mech, q0, v0, k, dt=dt, reorth=reorth, project=project,
                                 inner=inner, seed=seed)
@@ -198,4 +212,72 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
                   reorth_every=reorth * dt, project_every=project * dt or None, inner=inner,
                   vectors_seed=seed, state_seed="given", speed=float(np.sqrt(2 * E0)),
                   coordinates=[c.name for c in mech.q], q0=q0.tolist(), v0=v0.tolist())
+    if rule:
+        params["transient_rule"] = rule
     return MechanismLyapunov(exponents, stderr, batches, float(energy_error), params)
+
+
+#: Set while `settings_before_pilot` runs an analysis: its pilot is not run but reported.
+_CHECKING = ContextVar("charts_mechanism_transient_check", default=False)
+
+
+class _PilotReached(Exception):
+    """An analysis run by `settings_before_pilot` checked every setting and reached its
+    pilot, whose settings this carries."""
+
+    def __init__(self, pilot):
+        super().__init__("pilot reached")
+        self.pilot = pilot
+
+
+def mechanism_rule(t_transient, mech):
+    """The rule ``t_transient`` names on ``mech`` ("auto"), None for a duration; ValueError
+    for another string (the nearest rule suggested) and for "scaled": that rule is the
+    rotors', 5 N² / speed from their measured λ_{N−2} ≈ 3 / N²
+    (``charts.analyses.transients``), and a mechanism has no such N nor measurement."""
+    rule = transient_rule(t_transient)
+    if rule == "scaled":
+        raise ValueError(f"t_transient='scaled' is the rotors' rule (5 N^2 / speed, from their "
+                         f"measured smallest positive exponent 3 / N^2) and is not defined for "
+                         f"the mechanism {mech.name}: give t_transient='auto' (a pilot run) or "
+                         "a duration")
+    return rule
+
+
+def auto_transient(mech, q0, v0, *, dt=0.01, n_exponents=None, inner="theta",
+                   project_every=Documented(1.0), seed=0) -> Documented:
+    """The transient of ``t_transient="auto"`` on ``mech`` from (q0, v0): the rotors' rule
+    (``charts.analyses.transients.auto_duration``: `AUTO_EFOLDINGS` over the smallest
+    positive exponent, floored at 1 % of the largest, within `AUTO_TRANSIENT_RANGE`) on a
+    pilot `lyapunov_spectrum` of ``PILOT_TIMES[1]`` after ``PILOT_TIMES[0]`` (the nearest
+    whole numbers of steps) with the run's settings."""
+    pilot = lyapunov_spectrum(mech, q0, v0, Documented(PILOT_TIMES[1]), dt=dt,
+                              n_exponents=n_exponents, inner=inner,
+                              t_transient=Documented(PILOT_TIMES[0]), n_batches=2,
+                              project_every=project_every, seed=seed)
+    return auto_duration(pilot.exponents)
+
+
+def resolve_transient(t_transient, mech, q0, v0, **pilot):
+    """(duration, rule text or None) of ``t_transient`` on ``mech`` from (q0, v0)
+    (``charts.analyses.transients.resolve_transient`` with `auto_transient` as the pilot of
+    "auto"; "scaled" refused, `mechanism_rule`).  Check the run's other settings first: the
+    pilot runs here."""
+    if mechanism_rule(t_transient, mech) and _CHECKING.get():
+        raise _PilotReached(pilot)
+    return transients.resolve_transient(t_transient, mech, q0, v0, auto_transient, **pilot)
+
+
+def settings_before_pilot(analysis, mech, q0, v0, t_final, **kwargs) -> dict:
+    """The pilot settings of ``analysis(mech, q0, v0, t_final, t_transient="auto",
+    **kwargs)`` (a mechanism analysis that resolves its transient by `resolve_transient`),
+    every other setting and the state checked by the analysis itself, without running it nor
+    its pilot: an ensemble checks its members' settings so, then runs one pilot for all."""
+    token = _CHECKING.set(True)
+    try:
+        analysis(mech, q0, v0, t_final, **{**kwargs, "t_transient": "auto"})
+    except _PilotReached as reached:
+        return reached.pilot
+    finally:
+        _CHECKING.reset(token)
+    raise RuntimeError(f"{analysis.__name__} ran without reaching its pilot")

@@ -59,6 +59,16 @@ def _generic_arguments(target, args, kw):
     return args, kw
 
 
+def _known_system(system):
+    """TypeError naming ``system`` where it is neither a ``charts.RotorSystem`` nor another
+    ``charts.Mechanism`` (the rotors' own check would name only the first)."""
+    from ..geometry.system import RotorSystem
+    if not isinstance(system, RotorSystem):
+        from ..geometry.checks import shown
+        raise TypeError(f"system must be a charts.RotorSystem or another charts.Mechanism, "
+                        f"got {shown(system)}")
+
+
 def mechanism_route(module, name):
     """Decorator of a rotors' public analysis: a call whose system (first argument or
     ``system=``) is a `generic_mechanism` goes to ``charts.analyses.<module>.<name>``
@@ -69,6 +79,7 @@ def mechanism_route(module, name):
         def call(*args, **kw):
             system = args[0] if args else kw.get("system")
             if not generic_mechanism(system):
+                _known_system(system)
                 return fn(*args, **kw)
             target = getattr(importlib.import_module(f"{__package__}.{module}"), name)
             args, kw = _generic_arguments(target, args, kw)

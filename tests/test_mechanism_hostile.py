@@ -1,0 +1,46 @@
+"""Hostile input at the public analyses on a Mechanism: each bad argument is refused by a
+one-line error naming it, before any flow runs (never a NaN-filled result or an error from
+deep inside)."""
+import numpy as np
+import pytest
+
+import charts
+from charts.mechanism import MechanismError
+
+
+@pytest.fixture(scope="module")
+def linkage_state():
+    mech = charts.triple_linkage(0.1)
+    q, v = mech.random_state(seed=1)
+    return mech, q, v
+
+
+@pytest.mark.parametrize("name", ["lyapunov_spectrum", "hyperbolicity_angles",
+                                  "curvature_along_trajectory", "covariant_lyapunov_vectors"])
+def test_a_state_at_rest_is_refused_naming_v0(linkage_state, name):
+    # v0 = 0 is on the manifold and tangent, but has no flow direction: before this check the
+    # angles and CLVs came back NaN-filled and the exponents raised ZeroDivisionError
+    mech, q, v = linkage_state
+    with pytest.raises(MechanismError, match=r"v0 must be a moving state"):
+        getattr(charts, name)(mech, q, np.zeros_like(v), 2.0)
+
+
+def test_lyapunov_refuses_an_off_manifold_start_naming_q0(linkage_state):
+    mech, q, v = linkage_state
+    with pytest.raises(MechanismError, match=r"^q0: .*off the constraint"):
+        charts.lyapunov_spectrum(mech, q + 0.1, v, 2.0)
+
+
+def test_too_many_exponents_with_the_full_product_gives_no_circular_hint(linkage_state):
+    mech, q, v = linkage_state
+    with pytest.raises(ValueError, match=r"out of range 1\.\.4 .*inner='full'$"):
+        charts.lyapunov_spectrum(mech, q, v, 1.0, n_exponents=5, inner="full")
+    with pytest.raises(ValueError, match=r"use inner='full' for up to 4"):
+        charts.lyapunov_spectrum(mech, q, v, 1.0, n_exponents=3)
+
+
+@pytest.mark.parametrize("name", ["lyapunov_spectrum", "lyapunov_ensemble"])
+def test_a_system_that_is_no_mechanism_is_named_with_both_kinds(name):
+    with pytest.raises(TypeError, match=r"system must be a charts.RotorSystem or another "
+                                        r"charts.Mechanism, got 'm'"):
+        getattr(charts, name)("m", 2, 1.0)
