@@ -23,7 +23,7 @@ from functools import partial
 import numpy as np
 
 from ..jit.compilation import announces_compilation
-from ..geometry.checks import option, shown
+from ..geometry.checks import option
 from ..geometry.energy_shares import SHARE_BINS
 from ..geometry.projection import project_tangent
 from ..solvers.tangent import TangentFlow
@@ -257,16 +257,7 @@ def auto_transient(system, theta0, u0, *, dt=0.01, n_exponents=None, inner="thet
     pilot = lyapunov_spectrum(system, theta0, u0, Documented(PILOT_TIMES[1]), dt=dt,
                               n_exponents=n_exponents, inner=inner, space=space,
                               t_transient=Documented(PILOT_TIMES[0]), n_batches=2, seed=seed)
-    lam = pilot.exponents
-    low, high = AUTO_TRANSIENT_RANGE
-    if np.isnan(lam).any():
-        raise ValueError(f"t_transient='auto': the pilot run gave a NaN exponent ({shown(lam)}); "
-                         "give t_transient as a duration")
-    positive = lam[lam > 0]
-    if positive.size == 0:
-        return Documented(high)
-    rate = max(positive.min(), positive.max() / 100.0)
-    return Documented(min(high, max(low, AUTO_EFOLDINGS / rate)))
+    return transients.auto_duration(pilot.exponents)
 
 
 def end_transient(flow) -> None:

@@ -42,6 +42,7 @@ from .angle_tally import SMALL_ANGLE
 from .arguments import Documented, positive_time, project_steps, seed_of, steps_of
 from .hyperbolicity import angle_statistics
 from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
+from .mechanism_lyapunov import mechanism_rule, resolve_transient
 from .singular_values import sin_to_angle
 
 __all__ = ["MechanismAngles", "mechanism_angles", "angle_grid", "sin_angle", "root_metric"]
@@ -179,9 +180,12 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
     n_unstable : int, optional
         m, the dimension of E_u (default d − 1, the number of positive exponents of a
         d-dimensional configuration manifold; at most d − 1).
-    t_transient : float
+    t_transient : float or "auto"
         Convergence time of each pass (>= 0, a multiple of ``sample_every``; default 100,
-        the nearest such multiple at other settings).
+        the nearest such multiple at other settings).  "auto": the pilot of
+        ``charts.analyses.mechanism_lyapunov.auto_transient`` (this dt, project_every and
+        seed), on the grid of ``sample_every`` and recorded in ``params``
+        (``transient_rule``); "scaled" is refused.
     sample_every : float
         Time between sample points (default 0.1, the nearest whole number of steps at other
         dt that divides t_final and a written t_transient).
@@ -200,12 +204,18 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
         As ``charts.analyses.mechanism_arguments`` says, naming the argument.
     """
     mechanism_of(mech)
+    rule = mechanism_rule(t_transient, mech)
     dt = positive_time("dt", dt)
     m = unstable_of(mech, n_unstable)
-    total, transient, sample = angle_grid(dt, t_final, t_transient, sample_every)
+    total, transient, sample = angle_grid(dt, t_final, Documented(0.0) if rule else
+                                          t_transient, sample_every)
     project = project_steps(project_every, dt)
     seed = seed_of(seed)
     q0, v0 = mechanism_state(mech, q0, v0)
+    if rule:                  # every other setting and the state checked: the pilot runs
+        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
+                                              project_every=project_every, seed=seed)
+        total, transient, sample = angle_grid(dt, t_final, t_transient, sample_every)
     S, Sb = total // sample, transient // sample
     reorth = reorth_steps(dt, sample)
     n = mech.n
@@ -240,5 +250,7 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
                   n_unstable=m, t_final=total * dt, t_transient=transient * dt,
                   sample_every=sample * dt, project_every=project * dt or None, speed=speed,
                   vectors_seed=seed, state_seed="given", q0=q0.tolist(), v0=v0.tolist())
+    if rule:
+        params["transient_rule"] = rule
     t = (transient + np.arange(S) * sample) * dt
     return MechanismAngles(t, sin_to_angle(sines), fexp, bexp, params)

@@ -33,6 +33,7 @@ from .arguments import (Documented, flag, positive_time, project_steps,
 from .covariant import CovariantResult, backward_coefficients, clv_samples, ginelli_start
 from .mechanism_angles import root_metric
 from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
+from .mechanism_lyapunov import mechanism_rule, resolve_transient
 
 __all__ = ["mechanism_clvs", "gram_schmidt_factor"]
 
@@ -71,8 +72,11 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
         the nearest whole number of steps at other dt (README, "Conventions").
     n_unstable : int, optional
         m, the dimension of E_u (default d − 1, at most d − 1).
-    t_transient : float
-        Convergence time of the forward vectors and of the backward iteration.
+    t_transient : float or "auto"
+        Convergence time of the forward vectors and of the backward iteration.  "auto": the
+        pilot of ``charts.analyses.mechanism_lyapunov.auto_transient`` (this dt,
+        project_every and seed), recorded in ``params`` (``transient_rule``); "scaled" is
+        refused.
     sample_every : float
         Time between samples (re-orthonormalisations).
     project_every : float or None
@@ -92,6 +96,7 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
         As ``charts.analyses.mechanism_arguments`` says, naming the argument.
     """
     mechanism_of(mech)
+    rule = mechanism_rule(t_transient, mech)
     if option("variant", variant, ("restricted", "full")) == "full":
         raise ValueError("variant='full' does not exist for a mechanism: its tangent vectors "
                          "stay in the tangent space of TC (use 'restricted')")
@@ -100,17 +105,27 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
     d, n = mech.dim, mech.n
     D = 2 * d
     m = unstable_of(mech, n_unstable)
-    n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    n_tr = 0 if rule else steps_of("t_transient", t_transient, dt, allow_zero=True)
     n_win = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=n_win)
     S = samples_of(n_win, sample, t_final, sample_every)
     project = project_steps(project_every, dt)
     seed = seed_of(seed)
     q0, v0 = mechanism_state(mech, q0, v0)
-    total = S + max(1, -(-n_tr // sample))          # stored samples, as the rotors' route
-    check_memory(8 * total * (2 * D * 2 * n + D * D + 2 * n),
-                 f"the factors of {total} samples (t_final={t_final:g}, t_transient="
-                 f"{t_transient:g})", "shorten t_final or t_transient, or raise sample_every")
+
+    def stored(n_tr):
+        """Stored samples (as the rotors' route), their memory checked."""
+        total = S + max(1, -(-n_tr // sample))
+        check_memory(8 * total * (2 * D * 2 * n + D * D + 2 * n),
+                     f"the factors of {total} samples (t_final={t_final:g}, t_transient="
+                     f"{n_tr * dt:g})", "shorten t_final or t_transient, or raise sample_every")
+        return total
+    total = stored(n_tr)
+    if rule:                  # every other setting and the state checked: the pilot runs
+        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
+                                              project_every=project_every, seed=seed)
+        n_tr = steps_of("t_transient", t_transient, dt, allow_zero=True)
+        total = stored(n_tr)
 
     flow = MechanismTangentFlow(mech, q0, v0, D, dt=dt, reorth=n_tr + total * sample + 1,
                                 project=project, inner="full", seed=seed)
@@ -151,5 +166,7 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
                   project_every=project * dt or None, vectors_seed=seed, state_seed="given",
                   stored_samples=total, n_unstable=m, keep_vectors=keep_vectors,
                   q0=q0.tolist(), v0=v0.tolist())
+    if rule:
+        params["transient_rule"] = rule
     return CovariantResult(t, "restricted", phi, phi_v, -lost[1:S + 1] / tau, gs[1:S + 1],
                            states[:S], vectors, params)

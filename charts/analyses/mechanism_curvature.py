@@ -40,6 +40,7 @@ from .arguments import (Documented, flag, positive_time, project_steps, samples_
                         steps_of)
 from .curvature import CurvatureResult
 from .mechanism_arguments import mechanism_of, mechanism_state
+from .mechanism_lyapunov import mechanism_rule, resolve_transient
 
 __all__ = ["mechanism_curvature", "jacobi_frame", "jacobi_curvature", "riemann_curvature"]
 
@@ -123,9 +124,11 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
     sample_every : float
         Time between samples (default 0.1, the nearest whole number of steps at other dt
         that divides t_final: README, "Conventions").
-    t_transient : float
+    t_transient : float or "auto"
         Time for the Lyapunov vectors to converge before sampling (default 50, the nearest
-        whole number of steps at other dt).
+        whole number of steps at other dt).  "auto": the pilot of
+        ``charts.analyses.mechanism_lyapunov.auto_transient`` (this dt, project_every and
+        seed), recorded in ``params`` (``transient_rule``); "scaled" is refused.
     exact : bool
         Also evaluate route (b).
     project_every : float or None
@@ -145,15 +148,20 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
         As ``charts.analyses.mechanism_arguments`` says, naming the argument.
     """
     mechanism_of(mech)
+    rule = mechanism_rule(t_transient, mech)
     dt = positive_time("dt", dt)
     total = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=total)
     S = samples_of(total, sample, t_final, sample_every)
-    transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
+    transient = 0 if rule else steps_of("t_transient", t_transient, dt, allow_zero=True)
     exact = flag("exact", exact)
     project = project_steps(project_every, dt)
     seed = seed_of(seed)
     q0, v0 = mechanism_state(mech, q0, v0)
+    if rule:                  # every other setting and the state checked: the pilot runs
+        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
+                                              project_every=project_every, seed=seed)
+        transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     d, n = mech.dim, mech.n
     k = d - 1
     flow = MechanismTangentFlow(mech, q0, v0, k, dt=dt, project=project, inner="theta",
@@ -182,4 +190,6 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
                   speed=float(np.sqrt(2 * mech.energy(q0, v0))), t_final=float(t[-1]),
                   vectors_seed=seed, state_seed="given", exact=exact, q0=q0.tolist(),
                   v0=v0.tolist())
+    if rule:
+        params["transient_rule"] = rule
     return CurvatureResult(t, Ys[:, :n], Ys[:, n:], Ps, Ka, Kb, params)

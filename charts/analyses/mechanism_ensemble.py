@@ -35,13 +35,31 @@ from .tally_run import tally_on_cpu
 from .mechanism_angles import angle_grid, mechanism_angles
 from .mechanism_arguments import mechanism_of, unstable_of
 from .mechanism_covariant import mechanism_clvs
-from .mechanism_lyapunov import lyapunov_spectrum
+from .mechanism_lyapunov import lyapunov_spectrum, resolve_transient, settings_before_pilot
 
 __all__ = ["mechanism_ensemble", "lyapunov_ensemble", "hyperbolicity_ensemble",
-           "hyperbolicity_tally", "covariant_ensemble", "member_settings", "step_of"]
+           "hyperbolicity_tally", "covariant_ensemble", "member_settings", "step_of",
+           "ensemble_transient"]
 
 #: The arguments of a member function the ensemble sets itself (the others: ``kwargs``).
 OWN = ("q0", "v0", "t_final", "seed")
+#: The members whose ``t_transient`` may name a rule ("auto"; their `resolve_transient`).
+RULED = (lyapunov_spectrum, mechanism_angles, mechanism_clvs)
+
+
+def ensemble_transient(member, mech, t_final, speed, seed, kwargs):
+    """(kwargs, rule text or None): where ``kwargs["t_transient"]`` names a rule and
+    ``member`` is one of `RULED`, one duration for every member, as the rotors' ensembles:
+    the first member's settings and state (``mech.random_state(seed=seed, speed=speed)``)
+    checked by the member itself (``settings_before_pilot``), then its pilot run
+    (``charts.analyses.mechanism_lyapunov.resolve_transient``); ``kwargs`` unchanged
+    otherwise."""
+    if member not in RULED or not isinstance(kwargs.get("t_transient"), str):
+        return kwargs, None
+    q0, v0 = mech.random_state(seed=seed, speed=speed)
+    pilot = settings_before_pilot(member, mech, q0, v0, t_final, seed=seed, **kwargs)
+    duration, text = resolve_transient(kwargs["t_transient"], mech, q0, v0, **pilot)
+    return {**kwargs, "t_transient": duration}, text
 
 
 def member_settings(member, kwargs) -> dict:
@@ -76,10 +94,16 @@ def mechanism_ensemble(member, mech, n_trajectories, t_final, *, speed=1.0, seed
     check_memory(n_trajectories * int(member_bytes),
                  f"the results of {n_trajectories} members over t_final={float(t_final):g}",
                  "run fewer members, shorten t_final, or sample less often (sample_every)")
-    return run_ensemble(member, mech, n_trajectories, t_final, speed=speed, seed=seed,
-                        workers=workers, progress=progress, client=client,
-                        desc=desc or f"{member.__name__} {mech.name} ensemble", prime=prime,
-                        notice=(f"{member.__name__} of {mech.name}", None), **kwargs)
+    kwargs, rule = ensemble_transient(member, mech, t_final, speed, seed, kwargs)
+    res = run_ensemble(member, mech, n_trajectories, t_final, speed=speed, seed=seed,
+                       workers=workers, progress=progress, client=client,
+                       desc=desc or f"{member.__name__} {mech.name} ensemble", prime=prime,
+                       notice=(f"{member.__name__} of {mech.name}", None), **kwargs)
+    if rule is not None:
+        for m in res.members:
+            m.params["transient_rule"] = rule
+        res.params["transient_rule"] = rule
+    return res
 
 
 def step_of(member, kwargs, speed) -> float:
@@ -166,6 +190,7 @@ def hyperbolicity_tally(mech, n_trajectories, t_final, *, speed=1.0, seed=0, wor
     default = inspect.signature(mechanism_angles).parameters
     get = lambda key: kwargs.get(key, default[key].default)       # noqa: E731
     dt = step_of(mechanism_angles, kwargs, speed)
+    kwargs, rule = ensemble_transient(mechanism_angles, mech, t_final, speed, seed, kwargs)
     total, transient, sample = angle_grid(dt, t_final, get("t_transient"), get("sample_every"))
     project = project_steps(get("project_every"), dt)
     params = dict(mechanism=mech.name, parameters=mech.parameter_values, dt=dt,
@@ -173,6 +198,8 @@ def hyperbolicity_tally(mech, n_trajectories, t_final, *, speed=1.0, seed=0, wor
                   t_transient=transient * dt, sample_every=sample * dt,
                   project_every=project * dt or None, speed=float(speed), device="cpu",
                   members_seed=seed)
+    if rule is not None:
+        params["transient_rule"] = rule
     rep = progress_reporter(progress, n_trajectories * t_final, f"angles {mech.name} tally (CPU)")
     try:
         tally = tally_on_cpu(mech, _prime(kwargs, sample_every=None), n_trajectories, t_final,

@@ -46,11 +46,12 @@ import difflib
 
 import numpy as np
 
+from ..geometry.checks import shown
 from .arguments import Documented
 
 __all__ = ["TRANSIENT_RULES", "transient_rule", "scaled_transient", "SCALED_PER_N2",
            "SCALED_RULE", "AUTO_EFOLDINGS", "AUTO_TRANSIENT_RANGE", "PILOT_TIMES", "AUTO_RULE",
-           "resolve_transient", "kinetic_speed"]
+           "resolve_transient", "kinetic_speed", "auto_duration"]
 
 #: The words a ``t_transient`` may be instead of a duration.
 TRANSIENT_RULES = ("scaled", "auto")
@@ -102,6 +103,23 @@ def kinetic_speed(system, u0) -> float:
     """|u0| = √(Σ mᵢ u0ᵢ²), the speed the exponents scale with."""
     u = np.asarray(u0, dtype=float)
     return float(np.sqrt(np.sum(np.asarray(system.masses, dtype=float) * u * u)))
+
+
+def auto_duration(exponents) -> Documented:
+    """The transient "auto" gives after a pilot whose exponents are ``exponents``:
+    `AUTO_EFOLDINGS` over the smallest positive one (floored at 1 % of the largest), within
+    `AUTO_TRANSIENT_RANGE` (the upper bound where none is positive), as a `Documented`
+    duration (the nearest whole number of steps); ValueError for a NaN exponent."""
+    lam = np.asarray(exponents, dtype=float)
+    low, high = AUTO_TRANSIENT_RANGE
+    if np.isnan(lam).any():
+        raise ValueError(f"t_transient='auto': the pilot run gave a NaN exponent ({shown(lam)}); "
+                         "give t_transient as a duration")
+    positive = lam[lam > 0]
+    if positive.size == 0:
+        return Documented(high)
+    rate = max(positive.min(), positive.max() / 100.0)
+    return Documented(min(high, max(low, AUTO_EFOLDINGS / rate)))
 
 
 def resolve_transient(t_transient, system, theta0, u0, auto, **pilot):
