@@ -7,7 +7,8 @@ partition of unity and the reductions are the shared ones of
 (θ_a, θ_b) of periodic coordinates, each a square [−π, π)² with the periodic trapezoidal rule
 (``torus_grid``).  Above a node lie the points of C with those two angles, one per *sheet*,
 given by the mechanism's ``sheets`` function (closed forms for ``rotors`` and
-``triple_linkage``; a node may have none).  With T an M-orthonormal frame of the tangent plane
+``triple_linkage``; for a mechanism of one's own found by Newton's method from a grid of seeds,
+``charts.mechanism.sheets``; a node may have none).  With T an M-orthonormal frame of the tangent plane
 (n, 2) and ρ_c = |det T[c]| for each angle chart c (the Jacobian of the projection of the
 tangent plane onto chart c; ρ_c = 0 where chart c ends), the area element of chart c is
 dA = dθ_a dθ_b / ρ_c and the partition of unity ψ_c = ρ_cᵖ / Σ ρᵖ (``partition_of_unity``),
@@ -35,6 +36,7 @@ from ..geometry.surface_quadrature import (SurfaceIntegrals, integrals_from_node
 from ..geometry.checks import integer, option
 from .atlas import chart_scores
 from .errors import MechanismError
+from .sheets import newton_sheets
 
 __all__ = ["surface_integrals", "surface_nodes", "angle_charts"]
 
@@ -57,10 +59,8 @@ def _check(mech, sheets):
         raise MechanismError(f"surface integrals are over a 2-dimensional configuration space; "
                              f"{mech.name} has dimension {mech.dim}")
     sheets = sheets if sheets is not None else getattr(mech, "sheets", None)
-    if sheets is None:
-        raise MechanismError(f"{mech.name} has no sheets function: pass sheets=f, "
-                             "f(mech, chart, ta, tb) -> list of (S, n) arrays of the points of "
-                             "the surface with those two angles (NaN rows where there is none)")
+    if sheets is None:                      # a mechanism of one's own: found by Newton
+        sheets = newton_sheets
     charts_ = angle_charts(mech)
     if not charts_:
         raise MechanismError(f"{mech.name} has fewer than two periodic coordinates: no angle "
@@ -140,5 +140,8 @@ def surface_integrals(mech, n_grid=64, route="chart", euler_characteristic=None,
         chi, source = int(round(total / (2.0 * np.pi))), "nearest integer to ∫K dA / 2π"
     else:
         chi, source = integer("euler_characteristic", euler_characteristic, -(1 << 20)), "given"
-    params = dict(mech.parameter_values, mechanism=mech.name, euler_characteristic_from=source)
+    found = sheets if sheets is not None else getattr(mech, "sheets", None)
+    params = dict(mech.parameter_values, mechanism=mech.name, euler_characteristic_from=source,
+                  sheets_from="closed form" if found is not None else
+                  "Newton from a grid of seeds (charts.mechanism.sheets)")
     return integrals_from_nodes(K, dA, chi, n_grid, route, params)
