@@ -44,3 +44,26 @@ def test_a_system_that_is_no_mechanism_is_named_with_both_kinds(name):
     with pytest.raises(TypeError, match=r"system must be a charts.RotorSystem or another "
                                         r"charts.Mechanism, got 'm'"):
         getattr(charts, name)("m", 2, 1.0)
+
+
+def circle(radius=1.0):
+    """A 1-dimensional mechanism (a point on a circle): the factory of the scene test below."""
+    import sympy as sp
+    from charts.mechanism import Mechanism
+    x, y = sp.symbols("x y")
+    return Mechanism([x, y], [x ** 2 + y ** 2 - radius ** 2], masses=[1, 1], name="circle")
+
+
+def test_a_one_dimensional_mechanism_is_refused_by_the_analysis_and_the_scene():
+    # the exponents came back as one positive number (the linear growth along the flow over
+    # t_final, not an exponent), and a scene printed an empty list: both now refuse it, as
+    # the other analyses and the ensembles do
+    from charts.runs.scene import SceneError, parse_scene
+    mech = circle()
+    q, v = mech.random_state(seed=2)
+    with pytest.raises(MechanismError, match=r"^mech: circle has a 1-dimensional"):
+        charts.lyapunov_spectrum(mech, q, v, 2.0)
+    with pytest.raises(SceneError, match=r"\[mechanism\] name = 'test_mechanism_hostile:circle'"
+                                         r": circle has a 1-dimensional configuration space"):
+        parse_scene({"mechanism": {"name": "test_mechanism_hostile:circle"},
+                     "run": {"t_final": 1.0}, "effects": {"lyapunov": {}}})

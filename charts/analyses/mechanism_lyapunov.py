@@ -25,13 +25,11 @@ import numpy as np
 from ..geometry.checks import option
 from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
 from ..io.result_words import RATE, exponent_words
-from ..mechanism.model import Mechanism
-from ..mechanism.errors import MechanismError
 from ..mechanism.tangent_flow import INNER_PRODUCTS, MechanismTangentFlow
 from .arguments import Documented, positive_int, positive_time, seed_of, steps_of
 from . import transients
 from .lyapunov import exponents_from_marks
-from .mechanism_arguments import mechanism_state
+from .mechanism_arguments import mechanism_of, mechanism_state
 from .statistics import batch_ends
 from .transients import PILOT_TIMES, auto_duration, transient_rule
 
@@ -162,15 +160,13 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
     ValueError
         Another bad argument (named in the message).
     """
-    if not isinstance(mech, Mechanism):
-        raise MechanismError(f"mech must be a charts.mechanism.Mechanism, got "
-                             f"{type(mech).__name__}")
+    mech = mechanism_of(mech)
     rule = mechanism_rule(t_transient, mech)
     dt = positive_time("dt", dt)
     inner = option("inner", inner, INNER_PRODUCTS)
     d = mech.dim
     kmax = d if inner == "theta" else 2 * d
-    k = max(d - 1, 1) if n_exponents is None else positive_int("n_exponents", n_exponents)
+    k = d - 1 if n_exponents is None else positive_int("n_exponents", n_exponents)
     if k > kmax:
         hint = f"; use inner='full' for up to {2 * d}" if inner == "theta" else ""
         raise ValueError(f"n_exponents={k} is out of range 1..{kmax} for a {d}-dimensional "

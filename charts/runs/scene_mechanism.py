@@ -226,6 +226,11 @@ def mechanism_system(source, data, system, raw_sys, problems) -> None:
         problems.messages.append(f"{where(source, _SECTION, 'name')} = {shown(name)}: the factory "
                                  f"returned {type(mech).__name__}, not a charts.Mechanism")
         return
+    if mech.dim < 2:
+        problems.messages.append(f"{where(source, _SECTION, 'name')} = {shown(name)}: "
+                                 f"{mech.name} has a {mech.dim}-dimensional configuration space; "
+                                 "a scene's analyses need 2 or more dimensions")
+        return
     system.update(coordinates=[s.name for s in mech.q], dimension=int(mech.dim))
 
 
