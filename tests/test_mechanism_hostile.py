@@ -67,3 +67,17 @@ def test_a_one_dimensional_mechanism_is_refused_by_the_analysis_and_the_scene():
                                          r": circle has a 1-dimensional configuration space"):
         parse_scene({"mechanism": {"name": "test_mechanism_hostile:circle"},
                      "run": {"t_final": 1.0}, "effects": {"lyapunov": {}}})
+
+
+def test_a_sweep_setting_a_parameter_twice_is_refused():
+    # r and "mechanism.r" both: the rows were labelled with r's value while the scenes ran
+    # at the dotted axis's, a silent wrong table
+    from charts.runs.sweep.spec import SweepError, parse_sweep
+    data = {"scene": {"mechanism": {"name": "triple_linkage", "r": 0.2},
+                      "run": {"t_final": 2.0}, "effects": {"lyapunov": {"n_batches": 2}}},
+            "sweep": {"mode": "grid", "seeds": 1,
+                      "parameters": {"r": [0.1], "mechanism.r": [0.2]}}}
+    with pytest.raises(SweepError, match=r"r and \"mechanism.r\" both set the mechanism's r"):
+        parse_sweep(data)
+    del data["sweep"]["parameters"]["mechanism.r"]
+    assert parse_sweep(data).axes == {"r": [0.1]}

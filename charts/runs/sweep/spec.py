@@ -126,6 +126,9 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     if patterns["weights"] and "system.weights" in axes:
         raise SweepError(f"{source}: [sweep.weights] and the axis \"system.weights\" both set the "
                          "weights; keep one")
+    for key in sorted(k for k in axes if "." not in k and f"mechanism.{k}" in axes):
+        raise SweepError(f"{source}: [sweep.parameters] {key} and \"mechanism.{key}\" both set "
+                         f"the mechanism's {key}; keep one")
     for name, vals in axes.items():
         _check_axis(f"{source}: [sweep.parameters] {name}", name, vals, mode)
     for v in axes.get("speed", []) if isinstance(axes.get("speed"), list) else []:
