@@ -59,3 +59,18 @@ def test_newton_sheets_are_on_the_surface_and_empty_where_it_is():
     assert np.max(np.abs(mech._eval("F", q))) < 1e-12
     with pytest.raises(charts.MechanismError, match="dimension 3"):
         newton_sheets(rotors(4), (0, 1), ta, tb)
+
+
+def test_the_public_name_takes_a_users_surface():
+    """``charts.surface_integrals`` hands a 2-dimensional Mechanism to the mechanism's
+    quadrature (the same bits), keeps the rotors' route for a RotorSystem, and refuses what is
+    neither."""
+    mech = arm()
+    a = charts.surface_integrals(mech, 16)
+    b = surface_integrals(mech, 16)
+    assert a.area == b.area and a.total_curvature == b.total_curvature
+    assert "sheets_from" not in charts.surface_integrals(charts.RotorSystem(3), 16).params
+    with pytest.raises(TypeError, match="charts.Mechanism"):
+        charts.surface_integrals("arm", 16)
+    with pytest.raises(charts.MechanismError, match="sheets must be a function"):
+        surface_integrals(mech, 16, sheets=3)

@@ -420,6 +420,9 @@ ANALYSES = {
         takes=PROGRESS)
        for name in ("lyapunov_ensemble", "hyperbolicity_ensemble", "hyperbolicity_tally",
                     "covariant_ensemble")},
+    "mechanism_surface.mechanism_surface_integrals": Entry(
+        _analyses("mechanism_surface", "mechanism_surface_integrals"),
+        {"mech": Fresh(lambda: charts.triple_linkage(0.2)), "n_grid": 8}),
     "linkage_angles.linkage_angles": Entry(_analyses("linkage_angles", "linkage_angles"),
                                            {**LINKAGE, "t_final": 0.5, "t_transient": 0.5}),
 }

@@ -45,6 +45,7 @@ from ..geometry.surface_quadrature import (POU_POWER, SurfaceIntegrals, integral
 from ..geometry.topology import euler_characteristic
 from .exact_curvature import exact_curvatures
 from .arguments import rotor_system
+from .mechanism_route import mechanism_route
 
 __all__ = ["SurfaceIntegrals", "surface_integrals", "surface_plan", "surface_nodes",
            "tangent_frames", "POU_POWER"]
@@ -129,12 +130,14 @@ def surface_plan(system, n_grid=256, route="chart"):
     return n_grid, route
 
 
+@mechanism_route("mechanism_surface", "mechanism_surface_integrals")
 def surface_integrals(system, n_grid=256, route="chart") -> SurfaceIntegrals:
     """Area, total curvature, χ and the entropy bracket of the surface of ``system`` (N = 3,
     any masses, weights and smooth level), by the quadrature of `surface_nodes` with the
     curvature from ``route`` (``"chart"``: the generated Riemann tensor; ``"gauss"``: the
     Gauss equation, ``charts.analyses.exact_curvature``).  Every argument is checked before
-    any work (`surface_plan`)."""
+    any work (`surface_plan`).  Another ``charts.Mechanism`` of dimension 2 goes to
+    ``charts.mechanism.surface.surface_integrals`` (χ read from ∫K dA / 2π there)."""
     rotor_system(system)
     n_grid, route = surface_plan(system, n_grid, route)
     chi = euler_characteristic(system.weights, system.level)

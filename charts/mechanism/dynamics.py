@@ -93,8 +93,8 @@ class AmbientDynamics:
         u = self._point(u, name)
         r = self.jacobian(q) @ u
         if np.max(np.abs(r)) > tol * max(1.0, np.max(np.abs(u))):
-            raise MechanismError(f"{name} is not tangent: |J {name}| = {np.max(np.abs(r)):.3e}; "
-                                 "use project_velocity")
+            raise MechanismError(f"{name} is not tangent at q: |J(q) {name}| = "
+                                 f"{np.max(np.abs(r)):.3e}; use project_velocity")
         return u
 
     def _kkt(self, q, J=None, sign=-1.0):

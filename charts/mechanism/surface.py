@@ -36,6 +36,7 @@ from ..geometry.surface_quadrature import (SurfaceIntegrals, integrals_from_node
 from ..geometry.checks import integer, option
 from .atlas import chart_scores
 from .errors import MechanismError
+from .model import Mechanism
 from .sheets import newton_sheets
 
 __all__ = ["surface_integrals", "surface_nodes", "angle_charts"]
@@ -55,9 +56,14 @@ def angle_charts(mech):
 
 
 def _check(mech, sheets):
+    if not isinstance(mech, Mechanism):
+        raise MechanismError(f"mech must be a charts.Mechanism, got {type(mech).__name__}")
     if mech.dim != 2:
         raise MechanismError(f"surface integrals are over a 2-dimensional configuration space; "
                              f"{mech.name} has dimension {mech.dim}")
+    if sheets is not None and not callable(sheets):
+        raise MechanismError(f"sheets must be a function f(mech, chart, ta, tb) -> list of "
+                             f"(S, n) arrays, got {type(sheets).__name__}")
     sheets = sheets if sheets is not None else getattr(mech, "sheets", None)
     if sheets is None:                      # a mechanism of one's own: found by Newton
         sheets = newton_sheets
