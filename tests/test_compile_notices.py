@@ -64,26 +64,6 @@ def test_a_scene_says_it_compiles_then_names_its_variant_and_wall_time(tmp_path,
     assert capsys.readouterr().err == ""
 
 
-#: two short points of one kind (N = 3, exponents): one tiny run compiles their kernels
-TWO = """name = "two"
-[scene.system]
-n = 3
-[scene.integrator]
-dt = 0.01
-[scene.run]
-t_final = 4.0
-t_transient = 0.0
-[scene.effects.lyapunov]
-n_batches = 2
-[sweep]
-seeds = [1]
-[sweep.parameters]
-m = [0.5, 2.0]
-[sweep.masses]
-p = [1, "m", 1]
-"""
-
-
 def test_a_sweep_on_an_empty_cache_compiles_before_its_points_and_says_so(tmp_path,
                                                                          monkeypatch, capsys):
     """`charts sweep` with 2 Dask workers on an empty numba cache: the line that it compiles
@@ -93,6 +73,7 @@ def test_a_sweep_on_an_empty_cache_compiles_before_its_points_and_says_so(tmp_pa
     import json
 
     from charts.runs.sweep import LOG, load_sweep, run_sweep
+    from test_checkpoints import TWO         # two short points of one kind (N = 3, exponents)
 
     monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "numba"))   # the workers' cache
     monkeypatch.setattr(compilation, "COMPILING_AFTER", 0.0)          # the line at once
@@ -113,3 +94,25 @@ def test_a_sweep_on_an_empty_cache_compiles_before_its_points_and_says_so(tmp_pa
     log = [json.loads(line) for line in (tmp_path / "out" / LOG).read_text().splitlines()]
     assert len(log) == 2 and all(r["status"] == "complete" and r["compile_s"] == 0.0
                                  for r in log), log
+
+
+def test_reproduce_says_what_its_compile_seconds_are(monkeypatch, capsys):
+    """``charts reproduce``'s notice: the wall time of its compiling, and beside it the
+    workers' compiling wall times summed, said to be that (not CPU time), in one line; the
+    wall time is returned (report.md's compiling share)."""
+    from charts.runs import reproduce, warmup
+
+    rows = [dict(analysis="lyapunov", n=3, compile=2.5, cpu=2.0),
+            dict(analysis="angles", n=3, compile=1.5, cpu=1.0)]
+    monkeypatch.setattr(warmup, "warmup", lambda *a, **k: rows)
+    monkeypatch.setattr(compilation, "COMPILING_AFTER", 0.0)
+    wall = reproduce._compile_first(None, 2, quiet=False)
+    err = capsys.readouterr().err.splitlines()
+    assert err[0].startswith("charts: reproduce is compiling its kernels in its 2 worker "
+                             "processes, before the tasks (once: ")
+    assert err[1] == (f"charts: reproduce compiled its kernels in its 2 worker processes in "
+                      f"{wall:.1f} s of wall time (4.0 s: each worker's compiling wall time, "
+                      "summed; once: they are cached on disk for the next runs)")
+    assert len(err) == 2 and wall >= 0.0
+    reproduce._compile_first(None, 2, quiet=True)
+    assert capsys.readouterr().err == ""
