@@ -81,3 +81,15 @@ def test_a_sweep_setting_a_parameter_twice_is_refused():
         parse_sweep(data)
     del data["sweep"]["parameters"]["mechanism.r"]
     assert parse_sweep(data).axes == {"r": [0.1]}
+
+
+def test_the_verdicts_refusal_of_a_linkage_that_does_not_assemble_states_the_condition():
+    # the message said "it needs at least r + l >= R" also where r + l >= R held (l = 5); the
+    # condition it now states is checked both ways: l = 1.099 (strict triangle inequalities,
+    # the joint at the centre) assembles, l = 5 and l = 0.85 (l + r < R) do not
+    from charts.runs.verdict_linkage import linkage_plan
+    linkage_plan(0.1, l=1.099)
+    for l in (5.0, 0.85):
+        with pytest.raises(MechanismError, match=r"never where l \+ r < R; always where l, r, R "
+                                                 r"satisfy the strict triangle inequalities"):
+            linkage_plan(0.1, l=l)

@@ -40,7 +40,8 @@ def linkage_plan(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0):
             raise MechanismError(
                 f"the triple linkage does not assemble at {where}: no configuration above a "
                 f"{PLAN_GRID}^2 grid of each pair of disc angles (the three rods must reach "
-                "one joint: it needs at least r + l >= R)") from None
+                "one joint: never where l + r < R; always where l, r, R satisfy the strict "
+                "triangle inequalities, with the joint at the centre)") from None
         K = curvatures(mech, q, "chart")
     if not (np.all(np.isfinite(dA)) and np.all(np.isfinite(K))):
         raise MechanismError(
