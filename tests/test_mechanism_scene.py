@@ -182,7 +182,7 @@ def test_users_factory_runs_as_a_scene(tmp_path):
      ["n_exponents = 3 is not allowed with inner_product = 'theta': expected 1..2 (use "
       "inner_product = 'full' for up to 4)"]),
     ({"name": "triple_linkage", "r": 0.3}, {"run": {"t_final": 1.0, "t_transient": "scaled"}},
-     ["t_transient = 'scaled' is not allowed"]),
+     ["t_transient = 'scaled'", "'scaled' is the rotors' rule", "'auto'"]),
     ({"name": "rotors", "n": 4}, {"system": {"n": 4}},
      ["[system] n is not allowed beside [mechanism] n"]),
     ({"name": "linkage", "eps": 0.1, "rhoo": 0.2}, {}, ["unknown key 'rhoo' in [mechanism] — "

@@ -470,7 +470,10 @@ INTERNAL = {
     "mechanism_arguments": {"mechanism_of", "mechanism_state", "unstable_of"},
     "mechanism_curvature": {"jacobi_frame", "jacobi_curvature", "riemann_curvature"},
     "mechanism_route": {"generic_mechanism", "mechanism_route"},
-    "mechanism_ensemble": {"mechanism_ensemble", "member_settings", "step_of"},
+    "mechanism_ensemble": {"mechanism_ensemble", "member_settings", "step_of",
+                           "ensemble_transient"},
+    "mechanism_lyapunov": {"mechanism_rule", "resolve_transient", "auto_transient",
+                           "settings_before_pilot"},
     "mechanism_covariant": {"gram_schmidt_factor"},
     "mechanism_angles": {"sin_angle", "root_metric", "angle_grid"},
     "lyapunov": {"resolve_transient", "lyapunov_settings", "lyapunov_flow", "lyapunov_schedule", "lyapunov_result",
@@ -489,7 +492,8 @@ INTERNAL = {
     "surface_integrals": {"surface_plan", "surface_nodes", "tangent_frames"},
     "tangency": {"oriented_volume", "closest_passage"},
     "adjoint_pass": {"backward_kernel"},
-    "transients": {"transient_rule", "scaled_transient", "resolve_transient", "kinetic_speed"},
+    "transients": {"transient_rule", "scaled_transient", "resolve_transient", "kinetic_speed",
+                   "auto_duration"},
     "worker_pool": {"worker_pool", "pool_workers", "workers_of"},
 }
 

@@ -265,13 +265,14 @@ def resolve_transient(t_transient, mech, q0, v0, **pilot):
 
 
 def settings_before_pilot(analysis, mech, q0, v0, t_final, **kwargs) -> dict:
-    """The pilot settings of ``analysis(mech, q0, v0, t_final, t_transient="auto",
-    **kwargs)`` (a mechanism analysis that resolves its transient by `resolve_transient`),
-    every other setting and the state checked by the analysis itself, without running it nor
-    its pilot: an ensemble checks its members' settings so, then runs one pilot for all."""
+    """The pilot settings of ``analysis(mech, q0, v0, t_final, **kwargs)`` (a mechanism
+    analysis that resolves its transient by `resolve_transient`; ``kwargs["t_transient"]`` a
+    rule), every other setting and the state checked by the analysis itself, without running
+    it nor its pilot: an ensemble checks its members' settings so, then runs one pilot for
+    all."""
     token = _CHECKING.set(True)
     try:
-        analysis(mech, q0, v0, t_final, **{**kwargs, "t_transient": "auto"})
+        analysis(mech, q0, v0, t_final, **kwargs)
     except _PilotReached as reached:
         return reached.pilot
     finally:

@@ -178,7 +178,7 @@ def _parse_scene(data, source, default_name) -> Scene:
         # atol: None = integrate's default, rtol·min(1, speed)
 
     _transients(system.get("kind", "rotors"), run, "t_transient" in raw_run, effects)
-    if linkage or mechanical:
+    if linkage:
         refuse_linkage_rules(source, run, effects)
     if method == "rk4":
         _follow_dt(system.get("kind", "rotors"), run, integ, effects, integ["dt"])
@@ -192,7 +192,7 @@ def _parse_scene(data, source, default_name) -> Scene:
     sdt = run["sample_dt"]
     n_samples = multiple_of(source, "run", "t_final", run["t_final"], sdt, "[run] sample_dt")
     # the transients a rule names, once t_final and the steps are known good ("auto" pilots)
-    rule = scene_transients(source, linkage or mechanical, system, initial, integ, run, effects)
+    rule = scene_transients(source, linkage, system, initial, integ, run, effects)
     if run["t_transient"] > 0:
         multiple_of(source, "run", "t_transient", run["t_transient"], sdt, "[run] sample_dt")
     if run["checkpoint_every"] is None:

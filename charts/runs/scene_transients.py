@@ -1,7 +1,9 @@
 """A scene's transients named by a rule (``t_transient = "scaled"`` or ``"auto"``, in [run],
 [effects.angles] or [effects.clv]; ``charts.analyses.transients``), turned into durations
 when the scene is read, so that every pass, checkpoint and sweep worker sees a number: the
-same duration the API call with that rule would use."""
+same duration the API call with that rule would use.  A mechanism's scene (``[mechanism]``,
+the generic route) takes "auto", its pilot the mechanism's own
+(``charts.analyses.mechanism_lyapunov.resolve_transient``, which refuses "scaled")."""
 from __future__ import annotations
 
 from functools import lru_cache
@@ -45,21 +47,33 @@ def scene_transients(source, linkage, system, initial, integ, run, effects):
         refuse_linkage_rules(source, run, effects)
     dt = integ.get("dt") or 0.01
     ly = effects.get("lyapunov", {})
-    masses = system.get("masses")
-    weights = system.get("weights")
-    key = (system["n"], tuple(masses) if masses else None, tuple(weights) if weights else None,
-           float(system.get("level", 0.0)), float(system["speed"]), initial.get("seed"),
-           tuple(initial["theta"]) if initial.get("theta") is not None else None,
-           tuple(initial["u"]) if initial.get("u") is not None else None, float(dt),
-           ly.get("n_exponents"), ly.get("inner_product", "theta"))
+    mechanical = system.get("kind") == "mechanism"
+    if mechanical:
+        import json
+        project = dt if integ.get("project") else (integ.get("project_every") or None)
+        key = (json.dumps([system["mechanism"], system["parameters"]], sort_keys=True),
+               float(system["speed"]), initial.get("seed"), float(dt), ly.get("n_exponents"),
+               ly.get("inner_product", "theta"), project)
+    else:
+        masses = system.get("masses")
+        weights = system.get("weights")
+        key = (system["n"], tuple(masses) if masses else None,
+               tuple(weights) if weights else None, float(system.get("level", 0.0)),
+               float(system["speed"]), initial.get("seed"),
+               tuple(initial["theta"]) if initial.get("theta") is not None else None,
+               tuple(initial["u"]) if initial.get("u") is not None else None, float(dt),
+               ly.get("n_exponents"), ly.get("inner_product", "theta"))
     texts = []
     for sect, table in named:
         try:
-            duration, text = _resolved(table["t_transient"], key)
+            duration, text = (_mechanism_resolved if mechanical else _resolved)(
+                table["t_transient"], key)
         except ValueError as exc:
             raise SceneError(f"{where(source, sect, 't_transient')} = "
                              f"{shown(table['t_transient'])}: {exc}") from None
         grid = run["sample_dt"] if sect == "run" else dt
+        if mechanical and sect == "effects.angles":       # mechanism_angles's grid
+            grid = table["sample_every"]
         table["t_transient"] = max(1, round(float(duration) / grid)) * grid
         if text not in texts:
             texts.append(text)
@@ -83,3 +97,20 @@ def _resolved(rule, key):
         theta, u = system.random_state(seed=seed, speed=speed)
     return resolve_transient(rule, system, theta, u, dt=dt, n_exponents=k, inner=inner,
                              space="restricted", seed=seed or 0)
+
+
+@lru_cache(maxsize=64)
+def _mechanism_resolved(rule, key):
+    """(duration, rule text) of ``rule`` for a mechanism's scene whose mechanism, state and
+    pilot settings ``key`` holds (cached as `_resolved`): the pilot of
+    ``lyapunov_spectrum(mech, q, v, ..., t_transient=rule)`` from the scene's seeded state."""
+    import json
+
+    from ..analyses.mechanism_lyapunov import resolve_transient
+    from .scene_mechanism import mechanism_of
+    instance, speed, seed, dt, k, inner, project = key
+    name, parameters = json.loads(instance)
+    mech = mechanism_of({"mechanism": name, "parameters": parameters})
+    q, v = mech.random_state(seed=seed, speed=speed)
+    return resolve_transient(rule, mech, q, v, dt=dt, n_exponents=k, inner=inner,
+                             project_every=project, seed=seed or 0)
