@@ -58,10 +58,11 @@ def test_the_default_leaves_the_smallest_exponent_unbiased():
 
 
 def test_the_scaled_rule():
-    """5 N² / speed within (50, 5000): N = 3 keeps the old 50 (one positive exponent), the
-    times scale as 1/speed, and lyapunov_spectrum's default is the rule."""
+    """5 N² / speed, at least 50 and without an upper bound (15 e-foldings of the measured
+    λ_{N−2} up to N = 64): N = 3 keeps the old 50 (one positive exponent), the times scale as
+    1/speed, and lyapunov_spectrum's default is the rule."""
     assert [scaled_transient(n, 1.0) for n in (3, 4, 5, 8, 32, 64)] == [50, 80, 125, 320,
-                                                                       5000, 5000]
+                                                                       5120, 20480]
     assert scaled_transient(5, 2.0) == 62.5 and isinstance(scaled_transient(5, 1.0), Documented)
     th, u = SYSTEM.random_state(seed=3, speed=0.5)
     r = charts.lyapunov_spectrum(SYSTEM, th, u, 1.0, n_batches=2)

@@ -479,7 +479,7 @@ def curvature_along_trajectory(system, theta0, u0, t_final, *, dt=0.01,
         number of steps at other dt that divides t_final: README, "Conventions").
     t_transient : float, "scaled" or "auto"
         Time for the Lyapunov vectors to converge before sampling: "scaled" (default), 5 N² /
-        speed within (50, 5000), "auto" from a pilot run, as `lyapunov_spectrum`'s
+        speed, at least 50, "auto" from a pilot run, as `lyapunov_spectrum`'s
         (``charts.analyses.transients``); a duration the nearest whole number of steps.
     exact : bool
         Also evaluate route (b) at the same points and frames.

@@ -3,8 +3,8 @@ duration, and the duration each gives.
 
 * ``"scaled"`` (the default of `lyapunov_spectrum`, `lyapunov_ensemble` and
   `curvature_along_trajectory`, whose frames are the Lyapunov vectors): `SCALED_PER_N2`
-  · N² / speed time units, within `AUTO_TRANSIENT_RANGE`; no pilot, its cost grows with the N
-  that needs it.
+  · N² / speed time units, at least `SCALED_MIN`, with no upper bound; no pilot, its cost
+  grows with the N that needs it.
 * ``"auto"``: `AUTO_EFOLDINGS` over the smallest positive exponent of a pilot run
   (`charts.analyses.lyapunov.auto_transient`), for systems far from the measured ones
   (masses, weights, levels).
@@ -17,9 +17,9 @@ Measured at unit speed, λ_{N−2} ≈ 3 / N²: 0.1212 at N = 5 (3.03 / N²), 0.
 (2.91 / N²), 0.0215 at N = 12 (3.10 / N²), 1/280 at N = 32 (3.66 / N²); 15 e-foldings of
 3 / N² is 5 N².
 The rule gives 50 at N = 3 (the old default: N = 3 runs are unchanged), 80 at N = 4, 125 at
-N = 5, 320 at N = 8, 720 at N = 12, 5000 from N = 32.  Measured (errors across the members,
-seeds 1, 2, …; ``python scripts/transient_bias.py --n N --t-final T --members M --transients
-...``; 2026-12-04, the 2-core VM), the smallest exponent against a long reference (T =
+N = 5, 320 at N = 8, 720 at N = 12, 5120 at N = 32, 11520 at N = 48, 20480 at N = 64.
+Measured (errors across the members, seeds 1, 2, …; ``python scripts/transient_bias.py --n N
+--t-final T --members M --transients ...``; 2026-12-04, the 2-core VM), the smallest exponent against a long reference (T =
 2000; 64 members, 32 at N = 12, after 100, 500, 1500):
 
 ====  =====  =======  ===============  ==================  ==================  ===========
@@ -34,11 +34,14 @@ N     T      members  transient        λ_{N−2}             reference         
 ====  =====  =======  ===============  ==================  ==================  ===========
 
 (σ: the combined standard error.)  Exponents scale with the speed, so the times scale as
-1/speed.  From N = 32 the upper bound holds it at 5000 (enough at N = 32, where 15/λ_{N−2}
-≈ 4200; beyond, the smallest exponent of a short run needs ``"auto"`` or a long T, over
-which its 1/T bias falls below its error).  Its cost is
-the transient alone, no pilot: at N = 5 and T = 50 the run integrates 175 time units where
-the old default integrated 100.
+1/speed.  There is no upper bound: up to N = 64 the measured λ_{N−2} (docs/large-n.md: 3.66/N²
+at N = 32, 4.4/N² at N = 48, 4.1/N² at N = 64) makes 5 N² at least 15 e-foldings, where an
+upper bound of 5000 (this rule until 2026-12-05) left 8000 and 15000 needed at N = 48 and 64,
+so a short run's smallest exponent came out biased.  Its cost is the transient alone, no
+pilot, and grows as N² like the alignment it waits for: at N = 5 and T = 50 the run integrates
+175 time units where the old default integrated 100; at N = 64 the transient is 20480 (a
+written ``t_transient`` or ``n_exponents`` small with a duration of one's own is cheaper where
+only the leading exponents matter).
 """
 from __future__ import annotations
 
@@ -50,7 +53,8 @@ from ..geometry.checks import shown
 from .arguments import Documented
 
 __all__ = ["TRANSIENT_RULES", "transient_rule", "scaled_transient", "SCALED_PER_N2",
-           "SCALED_RULE", "AUTO_EFOLDINGS", "AUTO_TRANSIENT_RANGE", "PILOT_TIMES", "AUTO_RULE",
+           "SCALED_MIN", "SCALED_RULE", "AUTO_EFOLDINGS", "AUTO_TRANSIENT_RANGE", "PILOT_TIMES",
+           "AUTO_RULE",
            "resolve_transient", "kinetic_speed", "auto_duration"]
 
 #: The words a ``t_transient`` may be instead of a duration.
@@ -63,7 +67,7 @@ TRANSIENT_RULES = ("scaled", "auto")
 AUTO_EFOLDINGS = 15.0
 #: The pilot of the rule: (transient, averaging time), both in time units.
 PILOT_TIMES = (50.0, 200.0)
-#: Bounds of both rules' transients (time units); the exponent "auto" divides is floored at
+#: Bounds of "auto"'s transients (time units); the exponent "auto" divides is floored at
 #: 1 % of the largest, so that a pilot's near-zero estimate does not ask for an endless one.
 AUTO_TRANSIENT_RANGE = (50.0, 5000.0)
 AUTO_RULE = (f"auto: {AUTO_EFOLDINGS:g} / (smallest positive exponent of a pilot of "
@@ -71,7 +75,9 @@ AUTO_RULE = (f"auto: {AUTO_EFOLDINGS:g} / (smallest positive exponent of a pilot
 #: ``t_transient="scaled"``: time units per N² at unit speed, `AUTO_EFOLDINGS` e-foldings of
 #: the measured λ_{N−2} ≈ 3 / N² (module docstring).
 SCALED_PER_N2 = AUTO_EFOLDINGS / 3.0
-SCALED_RULE = (f"scaled: {SCALED_PER_N2:g} N^2 / speed, within {AUTO_TRANSIENT_RANGE}")
+#: The shortest transient of ``"scaled"`` (N = 3's: 25 e-foldings of λ₁ ≈ 0.5 at unit speed).
+SCALED_MIN = AUTO_TRANSIENT_RANGE[0]
+SCALED_RULE = f"scaled: {SCALED_PER_N2:g} N^2 / speed, at least {SCALED_MIN:g}"
 
 
 def transient_rule(t_transient):
@@ -89,14 +95,13 @@ def transient_rule(t_transient):
 
 def scaled_transient(n: int, speed: float) -> Documented:
     """The transient of ``t_transient="scaled"`` for N rotors at kinetic speed ``speed``:
-    `SCALED_PER_N2` · N² / speed within `AUTO_TRANSIENT_RANGE`, as a `Documented` duration
-    (the nearest whole number of steps at any dt)."""
-    low, high = AUTO_TRANSIENT_RANGE
+    `SCALED_PER_N2` · N² / speed, at least `SCALED_MIN`, as a `Documented` duration (the
+    nearest whole number of steps at any dt)."""
     speed = float(speed)
     if not (np.isfinite(speed) and speed > 0):
         raise ValueError(f"t_transient='scaled' needs a positive speed, got {speed!r}; give "
                          "t_transient as a duration")
-    return Documented(min(high, max(low, SCALED_PER_N2 * n * n / speed)))
+    return Documented(max(SCALED_MIN, SCALED_PER_N2 * n * n / speed))
 
 
 def kinetic_speed(system, u0) -> float:

@@ -118,7 +118,7 @@ def add_parser(sub) -> None:
                    "of --n")
     g.add_argument("--t-transient", type=transient_arg, default=100.0, metavar="T",
                    help="transient of both passes (default 100), or a rule of each system: "
-                   "'scaled' (5 N^2 time units within 50..5000) or 'auto' (from a pilot run "
+                   "'scaled' (5 N^2 time units, at least 50) or 'auto' (from a pilot run "
                    "of the first member)")
     g.add_argument("--workers", type=positive_count, default=None, metavar="W",
                    help="processes on the CPU (default: one per core)")

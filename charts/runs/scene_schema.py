@@ -182,7 +182,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
                        required=True),
         "t_transient": Key("duration", None, "Time integrated first and discarded (also "
                            "settles the Lyapunov vectors), or a rule of the rotors: \"scaled\" "
-                           "(5 N^2 / speed within 50..5000) or \"auto\" (from a pilot run of "
+                           "(5 N^2 / speed, at least 50) or \"auto\" (from a pilot run of "
                            "the scene's state), resolved when the scene is read. Default: the "
                            "API's default of the call the main pass mirrors: "
                            "lyapunov_spectrum's (\"scaled\") with lyapunov, else "
