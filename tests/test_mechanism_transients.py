@@ -43,6 +43,13 @@ def test_auto_is_15_e_foldings_of_the_pilot_within_the_range(speed, clamped):
     assert "transient_rule" not in written.params
 
 
+def test_the_rule_is_saved_with_the_result(tmp_path):
+    q, v = MECH.random_state(seed=3)
+    auto = lyapunov_spectrum(MECH, q, v, 1.0, t_transient="auto", n_batches=2)
+    back = charts.load(auto.save(tmp_path / "auto.nc"))
+    assert back.params == auto.params and back.params["transient_rule"].startswith("auto")
+
+
 def test_every_analysis_takes_auto_and_records_it():
     """The curvature, the angle test and the CLVs (through the public names) take "auto",
     their pilot the spectrum's with their dt and seed; each equals the call with the
