@@ -140,10 +140,11 @@ def _evaluate_points(raws: list, keep=None, device="cpu", lanes=None) -> list:
 
 
 def tiny_version(raw: dict):
-    """The point ``raw`` (a scene's dict) run for `PRIME_T` without transient: the same
-    kernels (N, integrator, effects), compiled by a run of a second or less; None where
-    that is not a valid scene (then nothing is primed for it)."""
-    tiny = dict(raw, run=dict(raw.get("run", {}), t_final=PRIME_T, t_transient=0.0))
+    """The point ``raw`` (a scene's dict) run for `PRIME_T` after a transient of half that
+    (a run with a transient calls kernels one without does not): the same kernels (N,
+    integrator, effects), compiled by a run of a second or less; None where that is not a
+    valid scene (then nothing is primed for it)."""
+    tiny = dict(raw, run=dict(raw.get("run", {}), t_final=PRIME_T, t_transient=PRIME_T / 2))
     tiny["run"].pop("checkpoint_every", None)
     try:
         parse_scene(tiny, source=raw.get("name", "<point>"))
