@@ -93,3 +93,25 @@ def test_the_verdicts_refusal_of_a_linkage_that_does_not_assemble_states_the_con
         with pytest.raises(MechanismError, match=r"never where l \+ r < R; always where l, r, R "
                                                  r"satisfy the strict triangle inequalities"):
             linkage_plan(0.1, l=l)
+
+
+@pytest.mark.parametrize("dt", [-1.0, 0.0, float("nan"), "0.01"])
+def test_the_cross_check_integrators_refuse_a_bad_step_naming_dt(linkage_state, dt):
+    # integrate_chart took dt <= 0 as one step per sample (a silent h = t_final / samples), and
+    # a NaN failed in np.ceil
+    from charts.mechanism import integrate_ambient, integrate_chart
+    mech, q, v = linkage_state
+    with pytest.raises(MechanismError, match=r"^dt must be"):
+        integrate_chart(mech, q, v, 1.0, samples=2, dt=dt)
+    with pytest.raises(MechanismError, match=r"^dt must be"):
+        integrate_ambient(mech, q, v, 1.0, samples=2, method="rk4", dt=dt)
+
+
+def test_lift_refuses_chart_coordinates_of_the_wrong_length(linkage_state):
+    # three numbers for a 2-coordinate chart: numpy's broadcast error from inside lift
+    mech, q, _ = linkage_state
+    with pytest.raises(MechanismError, match=r"s must have shape \(2,\), got \(3,\): s is the "
+                                             r"chart's coordinates \('theta1', 'theta2'\)"):
+        mech.lift([0.1, 0.2, 0.3], (0, 1), q)
+    p = mech.lift(q[[0, 1]], (0, 1), q)            # the right length lifts back to q itself
+    np.testing.assert_allclose(p, q, atol=1e-10)  # q is on F = 0 to ~1e-15; Newton's tol 1e-13

@@ -75,7 +75,12 @@ class Atlas:
         Newton from ``near`` (the implicit function theorem's local branch)."""
         ind = self._chart_index(chart)
         dep = [i for i in range(self.n) if i not in ind]
-        q = self._point(near).copy()
+        try:
+            s = finite_array("s", s, shape=(len(ind),))
+        except ValueError as exc:
+            raise MechanismError(f"{exc}: s is the chart's coordinates "
+                                 f"{self.chart_names(ind)}") from None
+        q = self._point(near, "near").copy()
         q[list(ind)] = s
         for _ in range(int(iterations)):
             F = self.constraint(q)

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from ..geometry.checks import number
 from ..solvers.rk import RK4_NODES, rk4_combine, rk4_point
 from .model import MechanismError
 
@@ -21,6 +22,18 @@ def _times(t_final, samples):
     if int(samples) < 1:
         raise MechanismError(f"samples must be >= 1, got {samples}")
     return np.linspace(0.0, t_final, int(samples) + 1)
+
+
+def _positive(name, x) -> float:
+    """``x`` as a finite float > 0; MechanismError naming ``name`` otherwise (a step dt ≤ 0
+    was taken as one step per sample, and NaN failed deep inside)."""
+    try:
+        x = number(name, x)
+    except ValueError as exc:
+        raise MechanismError(str(exc)) from None
+    if not x > 0:
+        raise MechanismError(f"{name} must be positive, got {x!r}")
+    return x
 
 
 def _rk4(f, y, h):
@@ -46,6 +59,10 @@ def integrate_ambient(mech, q0, v0, t_final, *, samples=100, method="dop853", dt
     q0 = mech.check_point(q0)
     v0 = mech.check_tangent(q0, v0, "v0")
     t = _times(t_final, samples)
+    if method == "rk4":
+        dt = _positive("dt", dt)
+    elif method == "dop853":
+        rtol, atol = _positive("rtol", rtol), _positive("atol", atol)
     n = mech.n
     Y = np.empty((t.size, 2 * n))
     Y[0] = np.concatenate([q0, v0])
@@ -79,6 +96,7 @@ def integrate_chart(mech, q0, v0, t_final, *, samples=100, dt=0.01):
     q = mech.check_point(q0).copy()
     v = mech.check_tangent(q, v0, "v0").copy()
     t = _times(t_final, samples)
+    dt = _positive("dt", dt)
     d = mech.dim
     Q = np.empty((t.size, mech.n))
     V = np.empty((t.size, mech.n))
