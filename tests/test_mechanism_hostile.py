@@ -115,3 +115,19 @@ def test_lift_refuses_chart_coordinates_of_the_wrong_length(linkage_state):
         mech.lift([0.1, 0.2, 0.3], (0, 1), q)
     p = mech.lift(q[[0, 1]], (0, 1), q)            # the right length lifts back to q itself
     np.testing.assert_allclose(p, q, atol=1e-10)  # q is on F = 0 to ~1e-15; Newton's tol 1e-13
+
+
+def test_random_state_says_why_a_negative_metric_has_no_state():
+    # a sphere with M = -I: the points exist, the velocities have no positive energy; the
+    # message said only "no random point found"
+    import sympy as sp
+    from charts.mechanism import Mechanism
+    x, y, z = sp.symbols("x y z")
+    box = {c: (-2, 2) for c in "xyz"}
+    neg = Mechanism([x, y, z], [x ** 2 + y ** 2 + z ** 2 - 1], -sp.eye(3), name="neg", bounds=box)
+    with pytest.raises(MechanismError, match=r"200 points had a tangent velocity of kinetic "
+                                             r"energy vᵀMv <= 0 \(the metric must be positive"):
+        neg.random_state(seed=0)
+    pos = Mechanism([x, y, z], [x ** 2 + y ** 2 + z ** 2 - 1], sp.eye(3), name="pos", bounds=box)
+    q, v = pos.random_state(seed=0, speed=2.0)
+    assert np.isclose(v @ v, 4.0, rtol=1e-12)        # M = I: vᵀMv = speed², to rounding

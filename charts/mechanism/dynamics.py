@@ -224,6 +224,7 @@ class AmbientDynamics:
         rng = np.random.default_rng(seed)
         lo = np.array([-np.pi if p else self.bounds[s.name][0] for s, p in zip(self.q, self._periodic_mask)])
         hi = np.array([np.pi if p else self.bounds[s.name][1] for s, p in zip(self.q, self._periodic_mask)])
+        at_rest = 0                 # points found whose velocity had no positive energy
         for _ in range(int(attempts)):
             try:
                 q = self.project_point(rng.uniform(lo, hi))
@@ -235,7 +236,10 @@ class AmbientDynamics:
                 if e > 1e-12:
                     q = self.wrap_angles(q)
                     return q, v * (speed / np.sqrt(e))
+                at_rest += 1
             except (MechanismError, np.linalg.LinAlgError):
                 continue
-        raise MechanismError(f"{self.name}: no random point found in {attempts} attempts")
+        why = (f": {at_rest} points had a tangent velocity of kinetic energy vᵀMv <= 0 (the "
+               "metric must be positive definite on ker J)") if at_rest else ""
+        raise MechanismError(f"{self.name}: no random point found in {attempts} attempts{why}")
 
