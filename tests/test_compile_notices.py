@@ -27,9 +27,9 @@ def test_the_first_compile_event_says_so_once_until_rearmed():
 
 def test_a_scene_says_it_compiles_then_names_its_variant_and_wall_time(tmp_path, monkeypatch,
                                                                       capsys):
-    """A scene whose first chunk compiles: the line when compiling starts, then, before the
-    next chunk (not after the bar), the notice naming the scene and its variant with the wall
-    time spent compiling; a quiet run says neither."""
+    """A scene whose first chunk compiles: the line when compiling starts, then, once a
+    chunk has compiled nothing (not after the bar), one notice naming the scene and its
+    variant with the wall time spent compiling; a quiet run says neither."""
     from charts.runs import runner
     from charts.runs.scene import parse_scene
 
@@ -53,13 +53,14 @@ def test_a_scene_says_it_compiles_then_names_its_variant_and_wall_time(tmp_path,
     capsys.readouterr()
     runner.run_scene(scene, tmp_path / "loud",
                      on_chunk=lambda i, n: seen.append(capsys.readouterr().err))
-    notes = [line.strip("\r") for line in seen[0].splitlines() if "charts: " in line]
-    notes = [line[line.index("charts: "):] for line in notes]
-    assert notes[0] == ("charts: tiny (ambient, rk4) is compiling its kernels for N = 3 (once: "
-                        "numba caches them on disk; kernels already there are only loaded) …")
-    assert notes[1].startswith("charts: tiny (ambient, rk4) compiled its kernels for N = 3 in ")
-    assert " s of wall time (once: " in notes[1] and len(notes) == 2, notes
-    assert not any("charts: " in err for err in seen[1:] + [capsys.readouterr().err])
+    notes = [[line[line.index("charts: "):] for line in err.splitlines() if "charts: " in line]
+             for err in seen]
+    assert notes[0] == ["charts: tiny (ambient, rk4) is compiling its kernels for N = 3 (once: "
+                        "numba caches them on disk; kernels already there are only loaded) …"]
+    assert len(notes) == 2 and len(notes[1]) == 1, notes
+    assert notes[1][0].startswith("charts: tiny (ambient, rk4) compiled its kernels for N = 3 "
+                                  "in ") and " s of wall time (once: " in notes[1][0]
+    assert "charts: " not in capsys.readouterr().err
     runner.run_scene(scene, tmp_path / "quiet", quiet=True)
     assert capsys.readouterr().err == ""
 

@@ -121,8 +121,11 @@ def run_scene(scene: Scene, outdir, *, resume: bool = False, quiet: bool = False
         try:
             with compile_timer(run.st.add_compile_time), \
                     compiling_said(run.compile_label(), run.st.system, say or _silent) as first:
-                run.run_chunks(run.engine(), bar, on_chunk,
-                               lambda: run.note_compile_time(say, first))
+                try:
+                    run.run_chunks(run.engine(), bar, on_chunk,
+                                   lambda: run.note_compile_time(say, first))
+                finally:
+                    run.note_compile_time(say, first, last=True)
         except (KeyboardInterrupt, RunError) as exc:
             status, failure = run.stop(exc)
         finally:
@@ -197,8 +200,8 @@ class SceneRun:
             st.load_arrays(a)
             progress = progress_of(st, self.ends, transient, self.unit)
             st.resumed_from = {key: progress[key] for key in ("t_done", "chunks_done")}
-        #: the compiling already announced (`note_compile_time`)
-        self.compile_noted = 0.0
+        #: the compiling already announced, and already seen (`note_compile_time`)
+        self.compile_noted = self.compile_seen = 0.0
 
     def engine(self):
         """The engine of the main pass (``charts.runs.engines``)."""
@@ -288,18 +291,22 @@ class SceneRun:
                    if self.scene.integrator.get(k)]
         return f"{self.scene.name} ({', '.join(variant)})" if variant else self.scene.name
 
-    def note_compile_time(self, say, first) -> None:
-        """After a chunk: the compile notice (``say``; None: quiet) for the compiling since
-        the last notice, when it exceeds `NOTE_SECONDS`; ``first``: the listener of
-        `compiling_said`, whose ``spent`` counts numba's compile events (the wall time spent
-        compiling, the rest of the chunk not counted), re-armed after the notice, so that a
-        later chunk's compiling says so too."""
+    def note_compile_time(self, say, first, last=False) -> None:
+        """After a chunk: once a chunk has compiled nothing (or after the ``last``), the
+        compile notice (``say``; None: quiet) for the compiling of the chunks before it since
+        the last notice, one notice for consecutive chunks that compiled, when it exceeds
+        `NOTE_SECONDS`; ``first``: the listener of `compiling_said`, whose ``spent`` counts
+        numba's compile events (the wall time spent compiling, the rest of the chunks not
+        counted), re-armed after the notice, so that a later chunk's compiling says so too."""
+        if first.spent > self.compile_seen and not last:      # this chunk compiled: wait
+            self.compile_seen = first.spent
+            return
         spent = first.spent - self.compile_noted
         if spent > NOTE_SECONDS:
-            self.compile_noted = first.spent
             first.rearm()
             if say is not None:
                 announce(self.compile_label(), spent, self.st.system, say=say)
+        self.compile_noted = self.compile_seen = first.spent
 
     def finish(self, status: str, failure=None) -> dict:
         """The result (every output file written); raises KeyboardInterrupt (interrupted) or
