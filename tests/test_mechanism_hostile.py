@@ -131,3 +131,12 @@ def test_random_state_says_why_a_negative_metric_has_no_state():
     pos = Mechanism([x, y, z], [x ** 2 + y ** 2 + z ** 2 - 1], sp.eye(3), name="pos", bounds=box)
     q, v = pos.random_state(seed=0, speed=2.0)
     assert np.isclose(v @ v, 4.0, rtol=1e-12)        # M = I: vᵀMv = speed², to rounding
+
+
+def test_verdict_refuses_a_rim_radius_given_twice():
+    # 0.1,0.10 ran the same case twice (minutes of work, a repeated row)
+    import argparse
+    from charts.cli.verdict import radii_arg
+    with pytest.raises(argparse.ArgumentTypeError, match=r"the rim radius 0.10 is given twice"):
+        radii_arg("0.1,0.2,0.10")
+    assert radii_arg("0.1,0.2") == [0.1, 0.2]

@@ -34,6 +34,9 @@ def radii_arg(text: str) -> list:
         if not (np.isfinite(r) and r > 0):
             raise argparse.ArgumentTypeError(f"a rim radius must be a finite number r > 0 "
                                              f"(r -> 0 is the rotors': --n 3), got {item.strip()}")
+        if r in out:
+            raise argparse.ArgumentTypeError(f"the rim radius {item.strip()} is given twice "
+                                             "(each r is a full case: list it once)")
         out.append(r)
     return out
 
