@@ -140,3 +140,23 @@ def test_verdict_refuses_a_rim_radius_given_twice():
     with pytest.raises(argparse.ArgumentTypeError, match=r"the rim radius 0.10 is given twice"):
         radii_arg("0.1,0.2,0.10")
     assert radii_arg("0.1,0.2") == [0.1, 0.2]
+
+
+def test_second_fundamental_form_checks_its_point_and_vectors_and_is_the_spheres():
+    # it took a point off the manifold and a normal vector as u without a word, and returned
+    # a vector; on the unit sphere (M = I) h(u, w) is ±⟨u, w⟩ q, an independent closed form
+    import sympy as sp
+    from charts.mechanism import Mechanism
+    x, y, z = sp.symbols("x y z")
+    sphere = Mechanism([x, y, z], [x ** 2 + y ** 2 + z ** 2 - 1], sp.eye(3), name="sphere",
+                       bounds={c: (-2, 2) for c in "xyz"})
+    q, v = sphere.random_state(seed=0)
+    w = np.cross(q, v)                                   # tangent, orthogonal to v
+    with pytest.raises(MechanismError, match=r"off the constraint"):
+        sphere.second_fundamental_form(3 * q, v, v)
+    with pytest.raises(MechanismError, match=r"^u is not tangent"):
+        sphere.second_fundamental_form(q, q, v)
+    h = sphere.second_fundamental_form(q, v, v)
+    assert abs(abs(h @ q) - v @ v) < 1e-12            # |h(v, v)| = |v|², along the normal q
+    assert np.linalg.norm(h - (h @ q) * q) < 1e-12      # (rounding of unit-size vectors)
+    assert np.linalg.norm(sphere.second_fundamental_form(q, v, w)) < 1e-12   # ⟨v, w⟩ = 0

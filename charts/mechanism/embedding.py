@@ -50,9 +50,11 @@ class EmbeddingGeometry:
     def second_fundamental_form(self, q, u, w):
         """h(u, w) of the embedding of the manifold in (Rⁿ, M), M constant: the normal part of
         L z, where M = LᵀL and z is any solution of J z = −∂²F(u, w) (a second-order lift);
-        a vector of Rⁿ (the image space of L), no chart involved."""
-        q = self._point(q)
-        return self._normal_part(q, self._isometry(q), self._point(u, "u"), self._point(w, "w"))
+        a vector of Rⁿ (the image space of L), no chart involved.  q must be on the manifold
+        and u, w tangent there (`MechanismError` naming them otherwise)."""
+        q = self.check_point(q)
+        u, w = self.check_tangent(q, u, "u"), self.check_tangent(q, w, "w")
+        return self._normal_part(q, self._isometry(q), u, w)
 
     def _gauss(self, q, L, u, w):
         """The Gauss equation at a batch: K of the planes (u, w), shape (...)."""
