@@ -160,3 +160,12 @@ def test_second_fundamental_form_checks_its_point_and_vectors_and_is_the_spheres
     assert abs(abs(h @ q) - v @ v) < 1e-12            # |h(v, v)| = |v|², along the normal q
     assert np.linalg.norm(h - (h @ q) * q) < 1e-12      # (rounding of unit-size vectors)
     assert np.linalg.norm(sphere.second_fundamental_form(q, v, w)) < 1e-12   # ⟨v, w⟩ = 0
+
+
+@pytest.mark.parametrize("order", [0, 4, 1.5, "x"])
+def test_embedding_jets_refuses_an_order_other_than_1_2_3(linkage_state, order):
+    # any order but 1 and 2 returned all three jets (RotorSystem's twin refused them already)
+    mech, q, _ = linkage_state
+    with pytest.raises(MechanismError, match=r"^order must be an integer in 1\.\.3"):
+        mech.embedding_jets(q, (0, 1), order)
+    assert len(mech.embedding_jets(q, (0, 1), 2)) == 2

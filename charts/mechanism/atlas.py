@@ -94,7 +94,11 @@ class Atlas:
     def embedding_jets(self, q, chart, order=3):
         """(Φ, Q2, Q3): ∂q/∂s (n, d), ∂²q/∂s² (n, d, d), ∂³q/∂s³ (n, d, d, d) of the chart's
         parametrisation q(s) at q, by differentiating F(q(s)) = 0 (implicit function theorem);
-        the first ``order`` of them."""
+        the first ``order`` (1, 2 or 3) of them."""
+        try:
+            order = integer("order", order, 1, 3)
+        except ValueError as exc:
+            raise MechanismError(str(exc)) from None
         return self._embedding_jets(self._point(q), self._chart_index(chart), order)
 
     def _embedding_jets(self, q, ind, order=3):
