@@ -100,20 +100,20 @@ def test_a_sweep_on_an_empty_cache_compiles_before_its_points_and_says_so(tmp_pa
 def test_reproduce_says_what_its_compile_seconds_are(monkeypatch, capsys):
     """``charts reproduce``'s notice: the wall time of its compiling, and beside it the
     workers' compiling wall times summed, said to be that (not CPU time), in one line; the
-    wall time is returned (report.md's compiling share)."""
+    wall time and the sum are returned (report.md's compiling share)."""
     from charts.runs import reproduce, warmup
 
     rows = [dict(analysis="lyapunov", n=3, compile=2.5, cpu=2.0),
             dict(analysis="angles", n=3, compile=1.5, cpu=1.0)]
     monkeypatch.setattr(warmup, "warmup", lambda *a, **k: rows)
     monkeypatch.setattr(compilation, "COMPILING_AFTER", 0.0)
-    wall = reproduce._compile_first(None, 2, quiet=False)
+    wall, summed = reproduce._compile_first(None, 2, quiet=False)
     err = capsys.readouterr().err.splitlines()
     assert err[0].startswith("charts: reproduce is compiling its kernels in its 2 worker "
                              "processes, before the tasks (once: ")
     assert err[1] == (f"charts: reproduce compiled its kernels in its 2 worker processes in "
                       f"{wall:.1f} s of wall time (4.0 s: each worker's compiling wall time, "
                       "summed; once: they are cached on disk for the next runs)")
-    assert len(err) == 2 and wall >= 0.0
+    assert len(err) == 2 and wall >= 0.0 and summed == 4.0
     reproduce._compile_first(None, 2, quiet=True)
     assert capsys.readouterr().err == ""

@@ -164,7 +164,9 @@ def _run_all(cfg, workers, quiet, pieces=None, timings=None):
     """Every task's result; with ``pieces`` (a folder), each finished task is kept there
     (:func:`save_piece`) and a task already kept with the same arguments is not run again;
     ``timings`` (a dict), if given, receives ``compile_wall_s``: the wall time of the
-    workers' compiling before the tasks (0 when every task was kept)."""
+    workers' compiling (or loading) before the tasks, and ``compile_summed_s``: each worker's
+    compiling wall time, summed (numba's compile events: 0 when every kernel was loaded
+    from the cache; both 0 when every task was kept)."""
     tasks = _tasks(cfg)
     results = {}
     if pieces is not None:
@@ -178,9 +180,10 @@ def _run_all(cfg, workers, quiet, pieces=None, timings=None):
     from tqdm.auto import tqdm
     pool = worker_pool(workers, initializer=quiet_worker)
     try:
-        compile_wall = _compile_first(pool, workers, quiet) if len(results) < len(tasks) else 0.0
+        compiled = _compile_first(pool, workers, quiet) if len(results) < len(tasks) \
+            else (0.0, 0.0)
         if timings is not None:
-            timings["compile_wall_s"] = compile_wall
+            timings.update(compile_wall_s=compiled[0], compile_summed_s=compiled[1])
         futs = {pool.submit(f, *a): key for key, (f, a) in tasks.items() if key not in results}
         with tqdm(total=len(tasks), initial=len(results), desc="reproduce", disable=quiet) as bar:
             for fut in as_completed(futs):
@@ -214,7 +217,7 @@ def _compile_first(pool, workers, quiet):
     """The kernels of every task, each compiled once by one worker (`charts warmup`'s
     stages) before the tasks start, instead of by every worker at once on an empty cache;
     with the cache filled, the workers load them here (what the tasks would do anyway).
-    Returns the wall time it took (s).  The notice gives that wall time and, beside it, each
+    Returns (the wall time it took, each worker's compiling wall time summed) in s.  The notice gives that wall time and, beside it, each
     worker's compiling wall time summed over the workers (longer than the wall time when
     the workers compile at once; not CPU time)."""
     from contextlib import nullcontext
@@ -231,7 +234,7 @@ def _compile_first(pool, workers, quiet):
         print(f"charts: reproduce compiled its kernels{where} in {wall:.1f} s of wall time "
               f"({spent:.1f} s: each worker's compiling wall time, summed; once: they are "
               "cached on disk for the next runs)", file=sys.stderr, flush=True)
-    return wall
+    return wall, spent
 
 
 PIECES = "pieces"
@@ -325,7 +328,7 @@ def _reproduce(out, pieces, preset, cfg, workers, quiet) -> int:
     elapsed = time.time() - t0
     atomic_text(out / "table.md", _fmt_table(rows) + "\n")
     summary = dict(preset=preset, config=cfg, elapsed_s=elapsed, workers=workers,
-                   compile_wall_s=timings["compile_wall_s"],
+                   **timings,
                    lyapunov=rows,
                    curvature={n: {k: v for k, v in c.items() if not isinstance(v, np.ndarray)}
                               | dict(fraction_positive=(c["Kb"] > 0).mean(0).tolist(),

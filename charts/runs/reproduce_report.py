@@ -207,12 +207,13 @@ def _sections(results, table):
 
 def _compile_share(results) -> str:
     """What part of the wall time was the workers' compiling (results.json's
-    ``compile_wall_s``, the wall time of the compiling before the tasks; files written
-    before it was recorded have none: nothing is said)."""
+    ``compile_wall_s``, the wall time of the compiling before the tasks, where
+    ``compile_summed_s``, the workers' compile events, says that something was compiled;
+    files written before they were recorded have none: nothing is said)."""
     spent = results.get("compile_wall_s")
     if spent is None:
         return ""
-    if spent < 0.5:
+    if results.get("compile_summed_s", spent) < 0.5:
         return " (the kernels loaded from numba's cache, none compiled)"
     return (f" ({spent:.0f} s of it compiling the kernels, once: a run on the filled cache "
             "does without)")
