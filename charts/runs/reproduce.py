@@ -217,9 +217,9 @@ def _compile_first(pool, workers, quiet):
     """The kernels of every task, each compiled once by one worker (`charts warmup`'s
     stages) before the tasks start, instead of by every worker at once on an empty cache;
     with the cache filled, the workers load them here (what the tasks would do anyway).
-    Returns (the wall time it took, each worker's compiling wall time summed) in s.  The notice gives that wall time and, beside it, each
-    worker's compiling wall time summed over the workers (longer than the wall time when
-    the workers compile at once; not CPU time)."""
+    Returns (the wall time it took, each worker's compiling wall time summed), in s; the
+    notice gives both (the sum is longer than the wall time when the workers compile at
+    once; it is not CPU time)."""
     from contextlib import nullcontext
 
     from ..jit.compilation import NOTE_SECONDS, compiling_line
