@@ -169,3 +169,16 @@ def test_embedding_jets_refuses_an_order_other_than_1_2_3(linkage_state, order):
     with pytest.raises(MechanismError, match=r"^order must be an integer in 1\.\.3"):
         mech.embedding_jets(q, (0, 1), order)
     assert len(mech.embedding_jets(q, (0, 1), 2)) == 2
+
+
+def test_a_factory_that_fails_with_a_type_error_is_named_as_failing():
+    # math.cos called with no arguments: the scene said "[mechanism] is not allowed: ...",
+    # naming no key; a value the factory refuses is still named by its key
+    from charts.runs.scene import SceneError, parse_scene
+    base = {"run": {"t_final": 1.0}, "effects": {"lyapunov": {}}}
+    with pytest.raises(SceneError, match=r"\[mechanism\] name = 'math:cos': the factory failed "
+                                         r"\(TypeError: "):
+        parse_scene(dict(base, mechanism={"name": "math:cos"}))
+    with pytest.raises(SceneError, match=r"\[mechanism\] r = -0.3 is not allowed: r must be "
+                                         r"positive"):
+        parse_scene(dict(base, mechanism={"name": "triple_linkage", "r": -0.3}))

@@ -214,9 +214,12 @@ def mechanism_system(source, data, system, raw_sys, problems) -> None:
         mech = mechanism_of(system)
     except (ValueError, TypeError) as exc:
         key = next((k for k in kwargs if str(exc).startswith(k)), None)
-        loc = where(source, _SECTION, key) if key else f"{source}: [mechanism]"
-        val = f" = {shown(kwargs[key])}" if key else ""
-        problems.messages.append(f"{loc}{val} is not allowed: {exc}")
+        if key is None:           # not a value it refused: the factory's own failure, below
+            problems.messages.append(f"{where(source, _SECTION, 'name')} = {shown(name)}: the "
+                                     f"factory failed ({type(exc).__name__}: {exc})")
+            return
+        problems.messages.append(f"{where(source, _SECTION, key)} = {shown(kwargs[key])} is "
+                                 f"not allowed: {exc}")
         return
     except Exception as exc:      # noqa: BLE001 - a user's factory may raise anything
         problems.messages.append(f"{where(source, _SECTION, 'name')} = {shown(name)}: the "
