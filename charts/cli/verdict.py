@@ -58,9 +58,12 @@ def add_parser(sub) -> None:
         "certificate', 'theorem', 'statistics', 'no proof') and why (in the JSON: verdict, "
         "evidence, reason). Default: N = 3, 4, 5 of the paper. --triple-linkage: the triple "
         "linkage at each rim radius r (its surface integrals and lambda1; no theorem is "
-        "certified at a finite r). See docs/hyperbolicity.md.")
+        "certified at a finite r). --mechanism: any 2-dimensional mechanism, a user's own "
+        "among them, the same measurements (only chi > 0 decides). See "
+        "docs/hyperbolicity.md and docs/mechanisms.md.")
     p.add_argument("--n", type=int, nargs="+", default=None, metavar="N",
-                   help="rotor counts (default 3 4 5, none with --triple-linkage)")
+                   help="rotor counts (default 3 4 5, none with --triple-linkage or "
+                   "--mechanism)")
     p.add_argument("--masses", type=float, nargs="+", metavar="M",
                    help="masses (one N only; default all 1)")
     p.add_argument("--weights", type=float, nargs="+", metavar="A",
@@ -69,14 +72,14 @@ def add_parser(sub) -> None:
     p.add_argument("--level", type=float, default=0.0, help="level of the constraint (default 0)")
     p.add_argument("--grid", type=positive_count, default=None, metavar="G",
                    help="quadrature points per chart axis (default 256; 96 for the triple "
-                   "linkage)")
+                   "linkage and --mechanism)")
     p.add_argument("--t-final", type=float, default=3000.0, metavar="T",
                    help="length of each exponent's run (default 3000)")
     p.add_argument("--seeds", type=int, nargs="+", default=[1, 2], metavar="S",
                    help="seeds of the exponent's runs (default 1 2)")
     p.add_argument("--json", type=Path, metavar="FILE", help="also write the reports as JSON")
     t = p.add_argument_group(
-        "the triple linkage", "--triple-linkage R1,R2,... reports the triple linkage "
+        "the triple linkage and other 2-dimensional mechanisms", "--triple-linkage R1,R2,... reports the triple linkage "
         "(charts.triple_linkage, R = 1, unit inertias) at each rim radius r: chi read from "
         "Gauss-Bonnet by both curvature routes, the area, K's range and the share of area "
         "with K > 0 at the nodes, lambda1 at unit speed (--t-final, --seeds) against Katok's "
@@ -86,6 +89,15 @@ def add_parser(sub) -> None:
                    const=list(DEFAULT_RADII),
                    help="rim radii r > 0 (default, without a list: "
                    + ",".join(f"{r:g}" for r in DEFAULT_RADII) + ")")
+    t.add_argument("--mechanism", nargs="+", metavar=("SPEC", "KEY=VALUE"),
+                   help="a 2-dimensional mechanism named as a scene's [mechanism] table names "
+                   "it: an instance (triple_linkage, rotors, linkage) or your "
+                   "package.module:factory, then its keyword parameters as KEY=VALUE (TOML "
+                   "values, e.g. --mechanism triple_linkage r=0.2), or a TOML file with a "
+                   "[mechanism] table; the same measurements as --triple-linkage, "
+                   "its chi read from Gauss-Bonnet (Newton's sheets for a mechanism of your "
+                   "own): 'not hyperbolic' where chi > 0, 'open' otherwise, never "
+                   "'hyperbolic' (no certificate of K's sign exists for a general mechanism)")
     t.add_argument("--angles", type=float, default=None, metavar="T",
                    help="also the restricted-angle test (section 4) over a window T from each "
                    "seed's state: the smallest angle and the share below 0.05 rad, statistics "
@@ -135,29 +147,33 @@ def add_parser(sub) -> None:
 
 def cmd_verdict(args) -> int:
     """Print the reports (the rotors' of ``--n``, then the triple linkage's of
-    ``--triple-linkage`` and their table), each ending in its verdict line
-    (`charts.runs.verdict.case_verdict`: verdict, evidence, reason, also in the JSON); 0 when
-    every check holds
-    (`charts.runs.verdict.verdict_passed`), 1 otherwise, 2 for bad input."""
+    ``--triple-linkage`` and their table, then the mechanism's of ``--mechanism``), each
+    ending in its verdict line (`charts.runs.verdict.case_verdict`: verdict, evidence,
+    reason, also in the JSON); 0 when every check holds (`charts.runs.verdict.verdict_passed`),
+    1 otherwise, 2 for bad input."""
     from ..geometry.system import RotorSystem
     from ..runs.verdict import format_verdict, surface_verdict, torus_verdict, verdict_passed
 
     linkage = getattr(args, "triple_linkage", None)
+    mechanism = getattr(args, "mechanism", None)
     if args.n is None:
-        args.n = [] if linkage else [3, 4, 5]
+        args.n = [] if linkage or mechanism else [3, 4, 5]
     if args.masses or args.weights or args.level != 0.0:
         if len(args.n) != 1:
             raise ValueError("--masses, --weights and --level describe one system of rotors: "
                              "give one --n")
-    if not linkage and (args.rod_length != 1.0 or args.joint_mass or args.rod_mass
-                        or args.angles is not None):
-        raise ValueError("--rod-length, --joint-mass, --rod-mass and --angles are the triple "
+    if not linkage and (args.rod_length != 1.0 or args.joint_mass or args.rod_mass):
+        raise ValueError("--rod-length, --joint-mass and --rod-mass are the triple "
                          "linkage's: give --triple-linkage")
+    if not (linkage or mechanism) and args.angles is not None:
+        raise ValueError("--angles runs on a surface's flow: give --triple-linkage or "
+                         "--mechanism")
     _check_outputs(args)
     if args.statistics:
-        if linkage:
+        if linkage or mechanism:
             raise ValueError("--statistics runs the angle test of the rotors; leave out "
-                             "--triple-linkage (its angle test is not run by charts verdict)")
+                             "--triple-linkage and --mechanism (--angles runs their angle "
+                             "test)")
         return _statistics_interruptible(args)
     grid = args.grid
     with warnings.catch_warnings():
@@ -168,6 +184,7 @@ def cmd_verdict(args) -> int:
     _plan_certificates(args, systems)
     if linkage:
         _plan_linkage(args, 96 if grid is None else grid)
+    mech = _plan_mechanism(args, 96 if grid is None else grid) if mechanism else None
     reports = []
     for n, system in zip(args.n, systems):
         if n == 3:
@@ -179,6 +196,8 @@ def cmd_verdict(args) -> int:
         reports.append(rep)
     if linkage:
         reports += _linkage_reports(args, 96 if grid is None else grid)
+    if mechanism:
+        reports.append(_mechanism_report(args, mech, 96 if grid is None else grid))
     if args.json is not None:
         atomic_text(args.json, json.dumps(reports, indent=1))
     return 0 if all(verdict_passed(r) for r in reports) else 1
@@ -226,15 +245,9 @@ def _plan_linkage(args, grid) -> None:
     first report starts (`charts.runs.verdict_linkage.linkage_plan`: the linkage's parameters, that it
     assembles and is regular; ``--grid``, ``--t-final``, ``--seeds``); ValueError naming the
     flag and the r."""
-    from ..analyses.arguments import steps_of
-    from ..geometry.checks import integer
     from ..runs.verdict_linkage import linkage_plan
-    integer("--grid", grid, 8, 1 << 12)
-    steps_of("--t-final", args.t_final, 0.01)            # the exponent's RK4 step
-    if args.angles is not None:
-        steps_of("--angles", args.angles, 0.01)
-    for seed in args.seeds:
-        integer("--seeds", seed, 0)
+    from ..runs.verdict_mechanism import check_settings
+    check_settings(grid, args.t_final, args.seeds, args.angles, _FLAGS)
     for name, value in (("--rod-length", args.rod_length), ("--joint-mass", args.joint_mass),
                         ("--rod-mass", args.rod_mass)):
         if not np.isfinite(value) or value < 0 or (name == "--rod-length" and value == 0):
@@ -245,6 +258,40 @@ def _plan_linkage(args, grid) -> None:
             linkage_plan(r, **_linkage_settings(args))
         except ValueError as exc:
             raise ValueError(f"--triple-linkage {r:g}: {exc}") from None
+
+
+#: The flags of `charts.runs.verdict_mechanism.check_settings`'s four settings.
+_FLAGS = ("--grid", "--t-final", "--seeds", "--angles")
+
+
+def _plan_mechanism(args, grid):
+    """``--mechanism`` resolved (`charts.runs.verdict_mechanism.resolve_mechanism`: the scene's
+    resolution of a [mechanism] table) and checked before the first report starts
+    (`surface_plan`: dimension 2, angle charts, a regular surface; ``--grid``, ``--t-final``,
+    ``--seeds``, ``--angles``); ValueError naming --mechanism or the flag."""
+    from ..runs.verdict_mechanism import check_settings, resolve_mechanism, surface_plan
+    check_settings(grid, args.t_final, args.seeds, args.angles, _FLAGS)
+    spec, *settings = args.mechanism
+    mech = resolve_mechanism(spec, settings)
+    try:
+        return surface_plan(mech)
+    except ValueError as exc:
+        raise ValueError(f"--mechanism {spec}: {exc}") from None
+
+
+def _mechanism_report(args, mech, grid) -> dict:
+    """``--mechanism``: `mechanism_verdict` of the mechanism, printed when done (progress on
+    stderr before each step)."""
+    from ..runs.verdict import format_verdict
+    from ..runs.verdict_mechanism import mechanism_verdict
+
+    def progress(line):
+        print(f"charts: mechanism {mech.name}: {line}", file=sys.stderr, flush=True)
+    rep = mechanism_verdict(mech, n_grid=grid, t_final=args.t_final, seeds=args.seeds,
+                            angles_window=args.angles, progress=progress,
+                            spec=" ".join(args.mechanism))
+    print(format_verdict(rep) + "\n", flush=True)
+    return rep
 
 
 def _linkage_reports(args, grid) -> list:

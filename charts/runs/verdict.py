@@ -6,7 +6,8 @@ property, with the monodromy of its closed geodesic.  Where neither applies, the
 of the angle test at scale (``charts.runs.verdict_statistics``, ``charts verdict
 --statistics``).  For the triple linkage (``charts.runs.verdict_linkage``, ``charts verdict
 --triple-linkage``) the surface integrals and λ₁ at each r, where no theorem is certified at
-a given r.  This module holds the reports of the rotors' exact verdicts and the rule that
+a given r; for any 2-dimensional mechanism (``charts.runs.verdict_mechanism``, ``charts
+verdict --mechanism``) the same measurements, where only χ > 0 decides.  This module holds the reports of the rotors' exact verdicts and the rule that
 turns any report into its verdict.  Each
 report carries its verdict (`case_verdict`: "hyperbolic (Anosov)", "not hyperbolic" or
 "open", the class of its evidence and one sentence why), derived from the certificates'
@@ -213,6 +214,12 @@ def _is_linkage(rep: dict) -> bool:
     return isinstance(rep.get("system"), dict) and rep["system"].get("kind") == "triple_linkage"
 
 
+def _is_mechanism(rep: dict) -> bool:
+    """A `mechanism_verdict` report (``charts.runs.verdict_mechanism``): a 2-dimensional
+    mechanism of one's own, or an instance given by ``--mechanism``."""
+    return isinstance(rep.get("system"), dict) and rep["system"].get("kind") == "mechanism"
+
+
 def _chi_settled(rep: dict) -> bool:
     """Every route reads the same χ, each ∫K dA / 2π within `CHI_TOLERANCE` of it."""
     routes = rep["routes"].values()
@@ -221,36 +228,34 @@ def _chi_settled(rep: dict) -> bool:
         for r in routes)
 
 
-def _linkage_case(rep: dict) -> tuple:
-    """(verdict, evidence, reason) of a `linkage_verdict` report: from χ as the quadrature
-    reads it (Gauss–Bonnet; measured, not certified) and the curvature at the nodes (floating
-    point); no theorem is certified at a finite r, so χ < 0 gives "open" at best."""
-    s, routes = rep["system"], rep["routes"]
+def _measured_case(rep: dict, at: str, morse: str, no_sign: str, known: str,
+                   flat: str) -> tuple:
+    """(verdict, evidence, reason) of a surface whose χ the quadrature reads (Gauss–Bonnet;
+    measured, not certified) and whose curvature is known at the nodes only (floating
+    point): the triple linkage's and a generic 2-dimensional mechanism's.  ``at`` names the
+    surface, ``morse`` ends the sentence on χ, ``no_sign`` says why K ≤ 0 at the nodes
+    proves nothing, ``known`` is what is known beyond the nodes, ``flat`` the clause for
+    χ = 0 (None: the exponents' evidence, as for χ < 0)."""
+    routes = rep["routes"]
     names = " and ".join(routes)
     totals = ", ".join(f"{r['total_curvature'] / (2 * np.pi):.6f} ({route})"
                        for route, r in routes.items())
     if not _chi_settled(rep):
         return ("open", "no proof",
-                f"the quadrature does not settle chi at r = {s['r']:g}, l = {s['l']:g}: int K "
+                f"the quadrature does not settle chi at {at}: int K "
                 f"dA / 2 pi = {totals} on {rep['n_grid']}^2 nodes per chart, not within "
                 f"{CHI_TOLERANCE:g} of one integer (a finer --grid, or a singular surface), so "
                 "no theorem can be applied")
     chi = next(iter(routes.values()))["euler_characteristic"]
     off = max(abs(r["total_curvature"] / (2 * np.pi) - chi) for r in routes.values())
-    lim = rep["limit"]
-    morse = ("" if lim["euler_characteristic"] is None else
-             f"; the limit r -> 0, sum cos theta = {lim['level']:g}, has chi = "
-             f"{lim['euler_characteristic']} by the Morse count")
     measured = (f"chi = {chi} read from Gauss-Bonnet (int K dA / 2 pi within {off:.1g} of it "
                 f"by the {names} route{'s' if len(routes) > 1 else ''}; measured, not "
                 f"certified{morse})")
     if chi > 0:
         return ("not hyperbolic", "theorem",
                 f"{measured}, so some component is a sphere, and " + _HOPF)
-    if chi == 0:
-        return ("open", "no proof",
-                f"{measured}, which does not fix the components (a torus, or a sphere with a "
-                "surface of genus 2), and no certificate of K is run on the linkage")
+    if chi == 0 and flat is not None:
+        return ("open", "no proof", f"{measured}, {flat}")
     c = routes["chart"]
     kmax = max(r["max_curvature"] for r in routes.values())
     if kmax > 0:
@@ -260,24 +265,54 @@ def _linkage_case(rep: dict) -> tuple:
                 "Anosov's theorem (K < 0) nor Eberlein's condition (K <= 0) applies, and a "
                 "surface with some positive curvature can still be Anosov")
     else:
-        curv = ("K <= 0 at every node, but nodes prove no sign (near the limit's 8 zeros K > 0 "
-                "on regions of order r^2 that a grid can miss: docs/triple-linkage.md), so no "
-                "curvature theorem applies")
+        curv = f"K <= 0 at every node, but nodes prove no sign ({no_sign}), so no " \
+            "curvature theorem applies"
     evidence, exponents = _exponent_evidence(rep)
-    return ("open", evidence, f"{measured}; {curv}; {_HUNT_MACKAY}; {exponents}")
+    return ("open", evidence, f"{measured}; {curv}; {known}; {exponents}")
+
+
+def _linkage_case(rep: dict) -> tuple:
+    """(verdict, evidence, reason) of a `linkage_verdict` report by `_measured_case`, with
+    the limit's Morse count and Hunt–MacKay's theorem: no theorem is certified at a finite
+    r, so χ < 0 gives "open" at best."""
+    s, lim = rep["system"], rep["limit"]
+    morse = ("" if lim["euler_characteristic"] is None else
+             f"; the limit r -> 0, sum cos theta = {lim['level']:g}, has chi = "
+             f"{lim['euler_characteristic']} by the Morse count")
+    return _measured_case(
+        rep, f"r = {s['r']:g}, l = {s['l']:g}", morse,
+        "near the limit's 8 zeros K > 0 on regions of order r^2 that a grid can miss: "
+        "docs/triple-linkage.md", _HUNT_MACKAY,
+        "which does not fix the components (a torus, or a sphere with a surface of genus 2), "
+        "and no certificate of K is run on the linkage")
+
+
+def _mechanism_case(rep: dict) -> tuple:
+    """(verdict, evidence, reason) of a `mechanism_verdict` report by `_measured_case`: χ > 0
+    is "not hyperbolic" (Hopf), anything else "open" — no certificate of K's sign exists
+    for a general mechanism, so never "hyperbolic"."""
+    return _measured_case(
+        rep, rep["system"]["name"], "",
+        "a region of positive curvature smaller than a cell can lie between them",
+        "no certificate of the sign of K exists for a general mechanism (the rotors' interval "
+        "certificate is theirs), so no curvature theorem can prove the Anosov property here",
+        None)
 
 
 def case_verdict(rep: dict) -> dict:
     """The verdict of one report of ``charts verdict`` (`surface_verdict`, `torus_verdict`,
-    `linkage_verdict` or `tally_report`) as ``dict(verdict, evidence, reason)``: ``verdict``
-    one of `VERDICTS`, ``evidence`` one of `EVIDENCE`, ``reason`` one sentence.  Derived from
-    what the report holds — the curvature certificate's outcome and χ (N = 3), the flat-torus
-    proof (N ≥ 4), the measured χ and curvature of the triple linkage; a certificate that is
+    `linkage_verdict`, `mechanism_verdict` or `tally_report`) as ``dict(verdict, evidence,
+    reason)``: ``verdict`` one of `VERDICTS`, ``evidence`` one of `EVIDENCE`, ``reason`` one
+    sentence.  Derived from what the report holds — the curvature certificate's outcome and χ
+    (N = 3), the flat-torus proof (N ≥ 4), the measured χ and curvature of the triple linkage
+    or of a 2-dimensional mechanism; a certificate that is
     undecided or fails gives "open", and sampled statistics alone give "open"."""
     if "torus" in rep:
         verdict, evidence, reason = _torus_case(rep)
     elif _is_linkage(rep):
         verdict, evidence, reason = _linkage_case(rep)
+    elif _is_mechanism(rep):
+        verdict, evidence, reason = _mechanism_case(rep)
     elif "certificate" in rep:
         verdict, evidence, reason = _surface_case(rep)
     else:
@@ -294,12 +329,12 @@ def verdict_line(rep: dict) -> str:
 def verdict_passed(rep: dict) -> bool:
     """Every check of a report holds: Gauss–Bonnet to 1e-6 relative, no exponent outside
     the bracket by over 3 standard errors, a curvature certificate that decided (N = 3); a
-    torus proof with every step true (N ≥ 4); for the triple linkage, χ read alike by every
-    route within `CHI_TOLERANCE` and no exponent above Katok's bound by over 3 standard
-    errors."""
+    torus proof with every step true (N ≥ 4); for the triple linkage and a mechanism, χ read
+    alike by every route within `CHI_TOLERANCE` and no exponent above Katok's bound by over 3
+    standard errors."""
     if "torus" in rep:
         return all(s["holds"] for s in rep["torus"]["proof"])
-    if _is_linkage(rep):
+    if _is_linkage(rep) or _is_mechanism(rep):
         return _chi_settled(rep) and all(e["consistent"] for e in rep["exponents"])
     chi = rep["routes"]["chart"]["euler_characteristic"]
     scale = 2 * np.pi * max(abs(chi), 1)
@@ -358,11 +393,14 @@ def _exponent_lines(rep: dict) -> list:
 
 
 def format_verdict(rep: dict) -> str:
-    """A report of `surface_verdict`, `torus_verdict` or `linkage_verdict` as text."""
+    """A report of `surface_verdict`, `torus_verdict`, `linkage_verdict` or
+    `mechanism_verdict` as text."""
     if "torus" in rep:
         return _format_torus(rep)
     if _is_linkage(rep):
         return _format_linkage(rep)
+    if _is_mechanism(rep):
+        return _format_mechanism(rep)
     s = rep["system"]
     c = rep["routes"]["chart"]
     lines = [f"N = 3 surface: masses {s['masses']}, weights {s['weights']}, level {s['level']:g}",
@@ -401,15 +439,31 @@ def _linkage_head(s: dict) -> str:
 
 
 def _format_linkage(rep: dict) -> str:
-    c, lim = rep["routes"]["chart"], rep["limit"]
+    lim = rep["limit"]
     morse = "a critical level" if lim["euler_characteristic"] is None else \
         f"chi = {lim['euler_characteristic']} by the Morse count"
-    lines = [_linkage_head(rep["system"]),
-             f"limit r -> 0: the rotor surface sum cos theta = {lim['level']:g} ({morse}; "
-             f"its verdict: {lim['command']})",
-             f"Euler characteristic (nearest integer to int K dA / 2 pi; measured, not "
-             f"certified): {c['euler_characteristic']}",
-             f"area A = {c['area']:.10f} (n_grid = {rep['n_grid']})"]
+    return _format_measured(rep, [
+        _linkage_head(rep["system"]),
+        f"limit r -> 0: the rotor surface sum cos theta = {lim['level']:g} ({morse}; "
+        f"its verdict: {lim['command']})"])
+
+
+def _format_mechanism(rep: dict) -> str:
+    s = rep["system"]
+    params = ", ".join(f"{k} = {v:g}" for k, v in s["parameters"].items())
+    return _format_measured(rep, [f"mechanism {s['name']}: q = ({', '.join(s['coordinates'])}), "
+                                  f"dimension {s['dimension']}"
+                                  + (f"; parameters {params}" if params else "")])
+
+
+def _format_measured(rep: dict, head: list) -> str:
+    """A report whose χ the quadrature reads (the triple linkage's, a mechanism's) as text,
+    after its ``head`` lines."""
+    c = rep["routes"]["chart"]
+    lines = head + [
+        f"Euler characteristic (nearest integer to int K dA / 2 pi; measured, not "
+        f"certified): {c['euler_characteristic']}",
+        f"area A = {c['area']:.10f} (n_grid = {rep['n_grid']})"]
     lines += _gauss_bonnet_lines(rep)
     for route, r in rep["routes"].items():
         lines.append(f"K at the nodes ({route} route) in [{r['min_curvature']:.4g}, "

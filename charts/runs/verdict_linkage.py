@@ -2,76 +2,55 @@
 docs/triple-linkage.md): the configuration surface's integrals by the chart and Gauss routes,
 χ read from Gauss–Bonnet, the limit r → 0 (the rotor surface Σ cos θ = 3δ), λ₁ and optionally
 the restricted angles, judged by `charts.runs.verdict.case_verdict` (no theorem is certified at
-a given r)."""
+a given r): the verdict of a 2-dimensional mechanism (``charts.runs.verdict_mechanism``) with
+the limit and Hunt–MacKay's theorem."""
 from __future__ import annotations
 
 import time
-import warnings
 
 import numpy as np
 
-from .verdict import case_verdict, exponent_report
+from .verdict import case_verdict
+from .verdict_mechanism import PLAN_GRID, measure_surface, surface_plan
 
 __all__ = ["linkage_plan", "linkage_verdict", "format_linkage_table", "PLAN_GRID"]
-
-
-#: Nodes per axis of each angle chart in `linkage_plan`'s check that the linkage assembles.
-PLAN_GRID = 16
 
 
 def linkage_plan(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0):
     """The triple linkage (R = 1, inertia 1) of rim radius ``r``, rod length ``l``, masses of
     the joint and of each rod, checked before any long work: its parameters
-    (``charts.mechanism.triple_linkage``), that it assembles (points of its configuration
-    surface above a `PLAN_GRID`² grid of each angle chart) and that the surface is regular
-    there (finite area elements and curvatures: r = R = l is not, two hinges meet at the
-    centre); MechanismError (a ValueError) naming what fails otherwise."""
+    (``charts.mechanism.triple_linkage``), that it assembles and that its surface is regular
+    (`charts.runs.verdict_mechanism.surface_plan`: points above a `PLAN_GRID`² grid of each
+    angle chart, finite area elements and curvatures there; r = R = l is not regular, two
+    hinges meet at the centre); MechanismError (a ValueError) naming what fails otherwise."""
     from ..mechanism import MechanismError, triple_linkage
-    from ..mechanism.surface import curvatures, surface_nodes
     mech = triple_linkage(r, l=l, joint_mass=joint_mass, rod_mass=rod_mass)
     where = f"r = {mech.parameter_values['r']:g}, l = {mech.parameter_values['l']:g}, R = 1"
-    with warnings.catch_warnings(), np.errstate(all="ignore"):
-        warnings.simplefilter("ignore")       # NaN at singular nodes: refused below
-        try:
-            q, dA = surface_nodes(mech, PLAN_GRID)
-        except MechanismError as exc:
-            if "no point of the surface" not in str(exc):
-                raise
-            raise MechanismError(
-                f"the triple linkage does not assemble at {where}: no configuration above a "
-                f"{PLAN_GRID}^2 grid of each pair of disc angles (the three rods must reach "
-                "one joint: never where l + r < R; always where l, r, R satisfy the strict "
-                "triangle inequalities, with the joint at the centre)") from None
-        K = curvatures(mech, q, "chart")
-    if not (np.all(np.isfinite(dA)) and np.all(np.isfinite(K))):
+    try:
+        return surface_plan(mech, "the triple linkage", f" at {where}")
+    except MechanismError as exc:
+        if "no point of the surface" not in str(exc):
+            raise
         raise MechanismError(
-            f"the triple linkage is singular at {where}: area elements or curvatures are not "
-            f"finite at points above the {PLAN_GRID}^2 grid (the constraints lose rank there, "
-            "or the kinetic metric degenerates: with a massless joint, the joint moving while "
-            "the discs stand still), so it is not a closed smooth Riemannian surface and no "
-            "verdict applies")
-    return mech
+            f"the triple linkage does not assemble at {where}: no configuration above a "
+            f"{PLAN_GRID}^2 grid of each pair of disc angles (the three rods must reach "
+            "one joint: never where l + r < R; always where l, r, R satisfy the strict "
+            "triangle inequalities, with the joint at the centre)") from None
 
 
 def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_final=3000.0,
                     seeds=(1, 2), angles_window=None, progress=None) -> dict:
     """Every piece of the triple linkage's verdict at rim radius ``r`` (`linkage_plan`'s
     linkage) as one JSON-ready dict, with the keys of `surface_verdict`'s and without a
-    certificate: the surface integrals on ``n_grid``² nodes per angle chart
-    (``charts.mechanism.surface``) by the chart and, for a constant metric, the Gauss route,
-    with χ read as the integer nearest ∫K dA / 2π and the smallest K at the nodes; the
-    limit r → 0 (the rotor surface Σ cos θ = 3δ, δ = (l − R)/r, its χ by the Morse count);
-    λ₁ at unit speed over ``t_final`` from each seed's random state
-    (``charts.analyses.mechanism_lyapunov``) against the entropy bracket; with
-    ``angles_window``, the restricted-angle test of section 4 over that window from each
-    seed's state (``charts.analyses.mechanism_angles``: the smallest angle, the share below
-    0.05 rad, the samples).  ``progress``: a callable given a line before each step."""
-    from dataclasses import replace
-
-    from ..analyses.mechanism_lyapunov import lyapunov_spectrum as mechanism_lyapunov
-    from ..geometry.surface_quadrature import integrals_from_nodes
+    certificate: a 2-dimensional mechanism's measurements
+    (`charts.runs.verdict_mechanism.measure_surface`: the surface integrals on ``n_grid``²
+    nodes per angle chart by the chart and, for a constant metric, the Gauss route, χ read
+    as the integer nearest ∫K dA / 2π, the smallest K at the nodes; λ₁ at unit speed over
+    ``t_final`` from each seed's random state against the entropy bracket; with
+    ``angles_window``, the restricted-angle test from each seed's state) and the limit
+    r → 0 (the rotor surface Σ cos θ = 3δ, δ = (l − R)/r, its χ by the Morse count).
+    ``progress``: a callable given a line before each step."""
     from ..geometry.topology import euler_characteristic
-    from ..mechanism.surface import curvatures, surface_nodes
     say = progress or (lambda line: None)
     t0 = time.perf_counter()
     mech = linkage_plan(r, l=l, joint_mass=joint_mass, rod_mass=rod_mass)
@@ -79,17 +58,8 @@ def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_fina
     system = dict(kind="triple_linkage", name=mech.name, r=p["r"], l=p["l"], R=p["R"],
                   inertia=p["I"], joint_mass=p["m"], rod_mass=p["mu"],
                   delta=(p["l"] - p["R"]) / p["r"])
-    route_names = ("chart", "gauss") if mech.constant_metric else ("chart",)
-    say(f"surface integrals on {n_grid}^2 nodes per angle chart (the "
-        f"{' and '.join(route_names)} route{'s' if len(route_names) > 1 else ''})")
-    q, dA = surface_nodes(mech, n_grid)
-    routes = {}
-    for route in route_names:
-        K = curvatures(mech, q, route)
-        s = integrals_from_nodes(K, dA, 0, n_grid, route, dict(p, mechanism=mech.name))
-        s = replace(s, euler_characteristic=int(round(s.total_curvature / (2 * np.pi))))
-        routes[route] = dict(s.to_dict(), min_curvature=float(K.min()),
-                             euler_characteristic_from="nearest integer to int K dA / 2 pi")
+    measured = measure_surface(mech, n_grid=n_grid, t_final=t_final, seeds=seeds,
+                               angles_window=angles_window, say=say)
     level = 3.0 * system["delta"]
     try:
         limit_chi = euler_characteristic((1.0, 1.0, 1.0), level)
@@ -97,24 +67,8 @@ def linkage_verdict(r, *, l=1.0, joint_mass=0.0, rod_mass=0.0, n_grid=96, t_fina
         limit_chi = None
     limit = dict(level=level, euler_characteristic=limit_chi,
                  command=f"charts verdict --n 3 --level {level:g}")
-    bracket = routes["chart"]["entropy_bracket"]
-    exponents = []
-    for seed in seeds:
-        say(f"lambda1 at unit speed, seed {seed}, T = {t_final:g}")
-        exponents.append(exponent_report(mechanism_lyapunov(mech, *mech.random_state(seed), t_final,
-                                                      seed=seed), seed, t_final, bracket))
-    rep = dict(system=system, n_grid=int(n_grid), routes=routes, bracket=bracket, limit=limit,
-               exponents=exponents)
-    if angles_window is not None:
-        from ..analyses.mechanism_angles import mechanism_angles
-        rep["angles"] = []
-        for seed in seeds:
-            say(f"restricted angles, seed {seed}, T = {angles_window:g}")
-            a = mechanism_angles(mech, *mech.random_state(seed), angles_window, seed=seed)
-            st = a.statistics()
-            rep["angles"].append(dict(seed=int(seed), t_final=float(angles_window),
-                                      **{k: st[k] for k in ("min", "median", "frac_small",
-                                                            "small", "n")}))
+    rep = dict(system=system, n_grid=int(n_grid), routes=measured.pop("routes"),
+               bracket=measured.pop("bracket"), limit=limit, **measured)
     rep["seconds"] = time.perf_counter() - t0
     return dict(rep, **case_verdict(rep))
 
