@@ -182,3 +182,18 @@ def test_a_factory_that_fails_with_a_type_error_is_named_as_failing():
     with pytest.raises(SceneError, match=r"\[mechanism\] r = -0.3 is not allowed: r must be "
                                          r"positive"):
         parse_scene(dict(base, mechanism={"name": "triple_linkage", "r": -0.3}))
+
+
+def test_a_sweep_axis_over_a_factory_default_points_to_the_dotted_key():
+    # joint_mass is triple_linkage's parameter, but the base table does not write it: the
+    # message listed the ways to use an axis without the one that works here
+    from charts.runs.sweep.spec import SweepError, parse_sweep
+    data = {"scene": {"mechanism": {"name": "triple_linkage", "r": 0.2},
+                      "run": {"t_final": 2.0}, "effects": {"lyapunov": {"n_batches": 2}}},
+            "sweep": {"mode": "grid", "seeds": 1, "parameters": {"joint_mass": [0.0, 0.1]}}}
+    with pytest.raises(SweepError, match=r"joint_mass is not used: .*\(for a parameter of the "
+                                         r"factory that \[scene.mechanism\] does not write: "
+                                         r"\"mechanism.joint_mass\"\)$"):
+        parse_sweep(data)
+    data["sweep"]["parameters"] = {"mechanism.joint_mass": [0.0, 0.1]}
+    assert parse_sweep(data).axes == {"mechanism.joint_mass": [0.0, 0.1]}

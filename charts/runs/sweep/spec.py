@@ -144,10 +144,13 @@ def parse_sweep(data: dict, *, source="<sweep>", default_name="sweep") -> Sweep:
     _plan_points(source, mode, seeds, n_points, patterns, axes)
     unused = symbols - used
     if unused:
+        mech = isinstance(base, dict) and isinstance(base.get("mechanism"), dict)
+        hint = (f" (for a parameter of the factory that [scene.mechanism] does not write: "
+                f"\"mechanism.{min(unused)}\")") if mech else ""
         raise SweepError(f"{source}: [sweep.parameters] {', '.join(sorted(unused))} is not used: "
                          "reference it in a [sweep.masses] or [sweep.weights] pattern, or use n, "
                          "speed, level, a parameter of the [scene.mechanism] table or a dotted "
-                         "scene key such as \"run.t_final\" or \"mechanism.r\"")
+                         f"scene key such as \"run.t_final\" or \"mechanism.r\"{hint}")
     return Sweep(name=data.get("name", default_name), description=data.get("description", ""),
                  base=base, mode=mode, seeds=tuple(seeds), axes=dict(axes),
                  masses=dict(patterns["masses"]), weights=dict(patterns["weights"]),
