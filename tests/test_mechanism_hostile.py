@@ -197,3 +197,21 @@ def test_a_sweep_axis_over_a_factory_default_points_to_the_dotted_key():
         parse_sweep(data)
     data["sweep"]["parameters"] = {"mechanism.joint_mass": [0.0, 0.1]}
     assert parse_sweep(data).axes == {"mechanism.joint_mass": [0.0, 0.1]}
+
+
+def test_a_model_with_a_kink_or_an_undefined_function_is_refused_when_made():
+    # |x| failed in the generated code (NameError: DiracDelta), f(x) in SymPy's printer: both
+    # deep inside derive(); now the constructor names the expression and the function
+    import sympy as sp
+    from charts.mechanism import Mechanism
+    x, y, z = sp.symbols("x y z")
+    rest = y ** 2 + z ** 2 - 1
+    with pytest.raises(MechanismError, match=r"constraints\[0\] = .*uses \['Abs\(x\)'\], which "
+                                             r"is not smooth"):
+        Mechanism([x, y, z], [sp.Abs(x) + rest], sp.eye(3))
+    with pytest.raises(MechanismError, match=r"undefined function\(s\) \['f\(x\)'\]"):
+        Mechanism([x, y, z], [sp.Function("f")(x) + rest], sp.eye(3))
+    with pytest.raises(MechanismError, match=r"metric entry = Max\(1, x\) uses"):
+        Mechanism([x, y, z], [x ** 2 + rest], sp.diag(sp.Max(1, x), 1, 1))
+    smooth = Mechanism([x, y, z], [sp.sqrt(1 + x ** 2) + rest], sp.eye(3))   # smooth: accepted
+    assert smooth.dim == 2

@@ -23,6 +23,7 @@ from abc import ABCMeta
 
 import numpy as np
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from .atlas import Atlas
 from .dynamics import RANK_TOL, AmbientDynamics
@@ -34,6 +35,11 @@ from .geometry import ChartGeometry
 from .symbolic import SymbolicJets
 
 __all__ = ["Mechanism", "MechanismError", "RANK_TOL"]
+
+#: Functions that are not smooth everywhere: refused in F and M, whose jets differentiate them
+#: (SymPy's derivatives of these are DiracDelta and sign, which the generated code cannot use).
+_NOT_SMOOTH = (sp.Abs, sp.sign, sp.Piecewise, sp.Heaviside, sp.DiracDelta, sp.Max, sp.Min,
+               sp.floor, sp.ceiling)
 
 
 def _symbol(name, what):
@@ -216,6 +222,16 @@ class Mechanism(SymbolicJets, AmbientDynamics,
         e = e.xreplace(subs)
         if e.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
             raise MechanismError(f"{what} = {e} is not finite")
+        undefined = e.atoms(AppliedUndef)
+        if undefined:
+            raise MechanismError(f"{what} = {e} contains the undefined function(s) "
+                                 f"{sorted(map(str, undefined))}: write them out (the jets "
+                                 "differentiate F three times and M twice)")
+        rough = e.atoms(*_NOT_SMOOTH)
+        if rough:
+            raise MechanismError(f"{what} = {e} uses {sorted(map(str, rough))}, which is not "
+                                 "smooth: F and M must be smooth (differentiated three and two "
+                                 "times)")
         return e
 
     def __repr__(self):
