@@ -276,7 +276,7 @@ def _plan_mechanism(args, grid):
     try:
         return surface_plan(mech)
     except ValueError as exc:
-        raise ValueError(f"--mechanism {spec}: {exc}") from None
+        raise ValueError(f"--mechanism {' '.join(args.mechanism)}: {exc}") from None
 
 
 def _mechanism_report(args, mech, grid) -> dict:
