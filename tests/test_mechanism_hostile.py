@@ -215,3 +215,11 @@ def test_a_model_with_a_kink_or_an_undefined_function_is_refused_when_made():
         Mechanism([x, y, z], [x ** 2 + rest], sp.diag(sp.Max(1, x), 1, 1))
     smooth = Mechanism([x, y, z], [sp.sqrt(1 + x ** 2) + rest], sp.eye(3))   # smooth: accepted
     assert smooth.dim == 2
+
+
+def test_n_unstable_out_of_range_on_a_surface_reads_one_dimension(linkage_state):
+    mech, q, v = linkage_state
+    with pytest.raises(ValueError, match=r"^n_unstable must be an integer in 1\.\.1, got 2 \(E_u "
+                                         r"of a 2-dimensional configuration space has at most 1 "
+                                         r"dimension\)$"):
+        charts.hyperbolicity_angles(mech, q, v, 2.0, n_unstable=2)

@@ -41,7 +41,7 @@ def unstable_of(mech, n_unstable) -> int:
         return integer("n_unstable", n_unstable, 1, d - 1)
     except ValueError as exc:
         raise ValueError(f"{exc} (E_u of a {d}-dimensional configuration space has at most "
-                         f"{d - 1} dimensions)") from None
+                         f"{d - 1} dimension{'s' if d > 2 else ''})") from None
 
 
 def mechanism_state(mech, q0, v0, names=("q0", "v0")):
