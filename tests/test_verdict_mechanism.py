@@ -1,5 +1,5 @@
-"""``charts verdict --mechanism``: the verdict of a 2-dimensional mechanism of one's own from its
-measured χ (Gauss–Bonnet on Newton's sheets), curvature and λ₁ — "not hyperbolic" where χ > 0,
+"""``charts verdict --mechanism``: the verdict of a 2-dimensional mechanism of one's own from
+its measured χ (Gauss–Bonnet on Newton's sheets), curvature and λ₁ — "not hyperbolic" where χ > 0,
 "open" otherwise, never "hyperbolic" — on the console and in the JSON; a mechanism that does
 not resolve, or is not a regular surface, refused before any work."""
 import json
@@ -131,8 +131,8 @@ def no_work(monkeypatch):
 
 @pytest.mark.parametrize("argv, message", [
     (["verdict_mechanism_factory:pendulum"], "1-dimensional configuration space"),
-    (["rotors", "n=4"], "--mechanism rotors n=4: rotors(n=4) has a 3-dimensional configuration "
-                        "space"),
+    (["rotors", "n=4"],
+     "--mechanism rotors n=4: rotors(n=4) has a 3-dimensional configuration space"),
     (["scene_mechanism_factory:sphere"], "fewer than two periodic coordinates"),
     (["no_such_module_here:f"], "the module 'no_such_module_here' cannot be imported"),
     (["verdict_mechanism_factory:nothing"], "has no 'nothing'"),

@@ -79,7 +79,8 @@ def add_parser(sub) -> None:
                    help="seeds of the exponent's runs (default 1 2)")
     p.add_argument("--json", type=Path, metavar="FILE", help="also write the reports as JSON")
     t = p.add_argument_group(
-        "the triple linkage and other 2-dimensional mechanisms", "--triple-linkage R1,R2,... reports the triple linkage "
+        "the triple linkage and other 2-dimensional mechanisms",
+        "--triple-linkage R1,R2,... reports the triple linkage "
         "(charts.triple_linkage, R = 1, unit inertias) at each rim radius r: chi read from "
         "Gauss-Bonnet by both curvature routes, the area, K's range and the share of area "
         "with K > 0 at the nodes, lambda1 at unit speed (--t-final, --seeds) against Katok's "
