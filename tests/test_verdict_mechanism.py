@@ -171,3 +171,7 @@ def test_the_api_refuses_a_mechanism_that_is_not_a_surface():
         verdict_mechanism.mechanism_verdict(sphere(), n_grid=4)
     with pytest.raises(ValueError, match="seeds must be"):
         verdict_mechanism.mechanism_verdict(sphere(), seeds=1)
+    with pytest.raises(ValueError, match="progress must be a callable"):
+        verdict_mechanism.mechanism_verdict(sphere(), progress=1)
+    with pytest.raises(ValueError, match="t_final must be"):
+        verdict_mechanism.mechanism_verdict(sphere(), t_final=float("nan"))

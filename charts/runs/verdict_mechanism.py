@@ -177,6 +177,9 @@ def mechanism_verdict(mech, *, n_grid=96, t_final=3000.0, seeds=(1, 2), angles_w
     `measure_surface`'s entries, then ``seconds`` and `case_verdict`'s verdict, evidence and
     reason.  ``progress``: a callable given a line before each step."""
     check_settings(n_grid, t_final, seeds, angles_window)
+    if progress is not None and not callable(progress):
+        raise ValueError(f"progress must be a callable given a line, or None, got "
+                         f"{type(progress).__name__}")
     say = progress or (lambda line: None)
     t0 = time.perf_counter()
     surface_plan(mech)
