@@ -174,11 +174,13 @@ def lyapunov_spectrum(system, theta0, u0, t_final, *, dt=0.01, n_exponents=None,
         Time discarded first so that the vectors align with the Lyapunov vectors.
         "scaled" (default): 5 N² / speed time units, at least 50, 15 e-foldings of the
         measured smallest positive exponent ≈ 3 speed / N² (50 at N = 3, 125 at N = 5, 320 at
-        N = 8, 20480 at N = 64; `charts.analyses.transients` gives the measurements: a fixed 50 biased the
-        smallest exponent of short runs by −11 % at N = 5 and −22 % at N = 8).  "auto":
-        `AUTO_EFOLDINGS` e-foldings of the smallest positive exponent from a pilot run
+        N = 8, 20480 at N = 64; `charts.analyses.transients` gives the measurements: a fixed
+        50 biased the smallest exponent of short runs by −11 % at N = 5 and −22 % at N = 8).
+        "auto": `AUTO_EFOLDINGS` e-foldings of the smallest positive exponent from a pilot run
         (`auto_transient`).  The rule and the duration are recorded in ``params``
-        (``transient_rule``, ``t_transient``).
+        (``transient_rule``, ``t_transient``).  Another Mechanism (the generic route,
+        ``charts.analyses.mechanism_lyapunov``): default 50, "auto" or a duration; "scaled"
+        is the rotors' measured law and is refused there.
     n_batches : int
         Number of blocks for the batch-means standard error.
     reorth_every : float

@@ -366,7 +366,7 @@ def _format_torus(rep: dict) -> str:
                          f"{m['jordan_residual']:.1e}; transverse exponents "
                          + ", ".join(f"{x:+.4f}" for x in m["transverse_exponents"]))
     lines.append(verdict_line(rep))
-    lines.append(f"({rep['seconds']:.1f} s)")
+    lines.append(f"({rep['seconds']:.1f} s of wall time)")
     return "\n".join(lines)
 
 
@@ -428,7 +428,7 @@ def format_verdict(rep: dict) -> str:
     if cert["open_boxes"] and cert["verdict"] == "undecided":
         lines.append(f"  {cert['open_boxes']} boxes left open")
     lines.append(verdict_line(rep))
-    lines.append(f"({rep['seconds']:.1f} s)")
+    lines.append(f"({rep['seconds']:.1f} s of wall time)")
     return "\n".join(lines)
 
 
@@ -475,5 +475,5 @@ def _format_measured(rep: dict, head: list) -> str:
                      f"{a['min']:.4g} rad, median {a['median']:.4g}, "
                      f"{100 * a['frac_small']:.3g} % below {a['small']:g} rad, {a['n']} samples")
     lines.append(verdict_line(rep))
-    lines.append(f"({rep['seconds']:.1f} s)")
+    lines.append(f"({rep['seconds']:.1f} s of wall time)")
     return "\n".join(lines)
