@@ -190,7 +190,16 @@ def others(steps: int) -> None:
 PARTS = r"""
 from numba import njit
 from charts.mechanism.kernels import (apply_tangent_matrix, kkt_matrix, lu_in_place,
-                                      lu_solve_columns, motion_rhs, tangent_motion_matrix)
+                                      lu_solve_columns, motion_rhs, schur_factor,
+                                      schur_solve_columns, tangent_motion_matrix)
+
+@njit
+def solve(sc, B, first, last):
+    K, piv, Minv, J, W, S, spiv, u, schur = sc
+    if schur:
+        schur_solve_columns(Minv, J, W, S, spiv, B, first, last, u)
+    else:
+        lu_solve_columns(K, piv, B, first, last)
 
 @njit
 def jets_part(jets, q, p, jt, N):
@@ -200,37 +209,45 @@ def jets_part(jets, q, p, jt, N):
         jets(q, p, F, J, F2, F3, M, dM, d2M)
 
 @njit
-def kkt_part(jt, K, piv, B, v, N):
+def kkt_part(jt, sc, B, v, N):
     F, J, F2, F3, M, dM, d2M = jt
+    K, piv, Minv, J, W, S, spiv, u, schur = sc
     for i in range(N):
-        kkt_matrix(M, J, -1.0, K)
-        lu_in_place(K, piv)
+        if schur:
+            schur_factor(Minv, J, W, S, spiv)
+        else:
+            kkt_matrix(M, J, -1.0, K)
+            lu_in_place(K, piv)
 
 @njit
-def motion_part(jt, K, piv, B, v, N):
+def motion_part(jt, sc, B, v, N):
     F, J, F2, F3, M, dM, d2M = jt
     for i in range(N):
-        motion_rhs(dM, F2, v, B[:, 0])
-        lu_solve_columns(K, piv, B, 0, 1)
+        motion_rhs(dM, F2, v, B[:, 0], True)
+        solve(sc, B, 0, 1)
 
 @njit
-def matrix_part(jt, K, piv, B, v, N):
+def matrix_part(jt, sc, B, v, N):
     F, J, F2, F3, M, dM, d2M = jt
-    T = np.zeros((K.shape[0], 2 * v.shape[0]))
+    T = np.zeros((B.shape[0], 2 * v.shape[0]))
     for i in range(N):
         tangent_motion_matrix(dM, d2M, F2, F3, v, B[:, 0], T, True)
 
 @njit
-def vector_part(jt, K, piv, B, v, N):
-    T = np.ones((K.shape[0], 2 * v.shape[0]))
+def vector_part(jt, sc, B, v, N):
+    F, J, F2, F3, M, dM, d2M = jt
+    T = np.zeros((B.shape[0], 2 * v.shape[0]))
+    tangent_motion_matrix(dM, d2M, F2, F3, v, B[:, 0], T, True)
     for i in range(N):
         apply_tangent_matrix(T, v, v, B[:, 1])
-        lu_solve_columns(K, piv, B, 1, 2)
+        solve(sc, B, 1, 2)
 """
 
 
 def parts(mech, q0, v0, count=1_000_000) -> None:
-    """ns per call of each piece of a stage (``PARTS``), on rotors(3) at its random state."""
+    """ns per call of each piece of a stage (``PARTS``), on rotors(3) at its random state, by
+    the route the flow takes (its constant definite M: the Schur complement; the linearisation
+    at x = 0, its structural zeros as in the flow)."""
     import time
 
     import numpy as np
@@ -239,16 +256,20 @@ def parts(mech, q0, v0, count=1_000_000) -> None:
 
     ns = {"np": np}
     exec(PARTS, ns)
+    from charts.mechanism.tangent_flow import MechanismTangentFlow
+
+    flow = MechanismTangentFlow(mech, q0, v0, 2, dt=0.01, reorth=10, project=100)
+    K, piv, B, T, flat, schur, Minv, W, S, spiv, u = flow._work[:11]
     jets = mech.compiled_jets()
-    jt = tuple(np.zeros(mech._eval(k, q0).shape) for k in JET_ORDER)
+    jt = flow._jt
     jets(q0.copy(), mech.param_values, *jt)
-    m = mech.n + mech.k
-    K, piv, B = np.zeros((m, m)), np.zeros(m, dtype=np.int64), np.zeros((m, 3))
+    sc = (K, piv, Minv, jt[1], W, S, spiv, u, schur)
     calls = {"the jets (generated)": ("jets_part", (jets, q0.copy(), mech.param_values, jt)),
-             "KKT matrix + LU": ("kkt_part", (jt, K, piv, B, v0)),
-             "motion rhs + solve": ("motion_part", (jt, K, piv, B, v0)),
-             "linearisation matrix": ("matrix_part", (jt, K, piv, B, v0)),
-             "per vector: apply + solve": ("vector_part", (jt, K, piv, B, v0))}
+             ("Schur complement + LU" if schur else "KKT matrix + LU"):
+                 ("kkt_part", (jt, sc, B, v0)),
+             "motion rhs + solve": ("motion_part", (jt, sc, B, v0)),
+             "linearisation matrix": ("matrix_part", (jt, sc, B, v0)),
+             "per vector: apply + solve": ("vector_part", (jt, sc, B, v0))}
     print("  one RK4 stage of the generic route, by piece (4 stages a step; ns per call, CPU):")
     for label, (name, args) in calls.items():
         fn = ns[name]

@@ -10,18 +10,27 @@ The equations of motion are the saddle-point (KKT) system of ``dynamics``,
 and their linearisation along a phase-space tangent vector (δq, δv) (eq (17)'s analogue) is
 the same system differentiated, K δ(q̈, λ) = δb − δK (q̈, λ).  Index order as in ``symbolic``:
 J[a, i], F2[a, i, j], F3[a, i, j, l], dM[i, j, l] = ∂_l M_ij, d2M[i, j, l, m] = ∂_l∂_m M_ij.
+
+Where M is constant and definite the KKT system is solved through its Schur complement
+J M⁻¹ Jᵀ (`schur_factor`, `schur_solve_columns`; M⁻¹ computed once by the caller).  The hot
+loops skip the jets' exact zeros (the rotors' ∂²F and ∂³F are diagonal): a zero term adds
+nothing, so the bits are the same with fewer dependent operations.  The kernels allocate
+nothing and are compiled without reference counting (``NO_REFCOUNT``), as the flow's driver
+(all but `tangent_motion_rhs`, which allocates its matrix).
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..jit import njit
+from ..solvers.rk import NO_REFCOUNT
 
 __all__ = ["kkt_matrix", "motion_rhs", "tangent_motion_matrix", "apply_tangent_matrix",
-           "tangent_motion_rhs", "lu_in_place", "lu_solve_columns"]
+           "tangent_motion_rhs", "lu_in_place", "lu_solve_columns", "schur_factor",
+           "schur_solve_columns"]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
 def kkt_matrix(M, J, sign, K):
     """K = [[M, sign·Jᵀ], [J, 0]], shape (n + k, n + k), written in place: ``sign`` −1 for the
     equations of motion, +1 for the M-orthogonal projections of ``dynamics``."""
@@ -39,27 +48,30 @@ def kkt_matrix(M, J, sign, K):
             K[n + c, n + e] = 0.0
 
 
-@njit(cache=True)
-def motion_rhs(dM, F2, v, b):
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
+def motion_rhs(dM, F2, v, b, flat=False):
     """b = (−C(q, v), −∂²F(v, v)), shape (n + k,), in place: the right-hand side of the KKT
-    system for (q̈, λ) (module docstring)."""
+    system for (q̈, λ) (module docstring).  ``flat``: M is constant, C = 0 not summed (its
+    terms are zeros: no bit changes)."""
     n = v.shape[0]
     k = F2.shape[0]
     for i in range(n):
         s = 0.0
-        for j in range(n):
-            for m in range(n):
-                s += (dM[i, m, j] - 0.5 * dM[j, m, i]) * v[j] * v[m]
+        if not flat:
+            for j in range(n):
+                for m in range(n):
+                    s += (dM[i, m, j] - 0.5 * dM[j, m, i]) * v[j] * v[m]
         b[i] = -s
     for c in range(k):
         s = 0.0
         for i in range(n):
             for j in range(n):
-                s += F2[c, i, j] * v[i] * v[j]
+                if F2[c, i, j] != 0.0:
+                    s += F2[c, i, j] * v[i] * v[j]
         b[n + c] = -s
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
 def tangent_motion_matrix(dM, d2M, F2, F3, v, x, T, flat):
     """T, shape (n + k, 2n), in place: the linearisation of the KKT system at (q, v) with its
     solution x = (q̈, λ) as a matrix, δb − δK x = T (δq, δv), so that K δx = T (δq, δv) gives
@@ -78,7 +90,8 @@ def tangent_motion_matrix(dM, d2M, F2, F3, v, x, T, flat):
         for l in range(n):
             s = 0.0
             for c in range(k):
-                s += F2[c, i, l] * x[n + c]
+                if F2[c, i, l] != 0.0:
+                    s += F2[c, i, l] * x[n + c]
             if not flat:
                 for j in range(n):
                     s -= dM[i, j, l] * x[j]
@@ -95,25 +108,29 @@ def tangent_motion_matrix(dM, d2M, F2, F3, v, x, T, flat):
         for l in range(n):
             s = 0.0
             for i in range(n):
-                s -= F2[c, i, l] * x[i]
+                if F2[c, i, l] != 0.0:
+                    s -= F2[c, i, l] * x[i]
                 for j in range(n):
-                    s -= F3[c, i, j, l] * v[i] * v[j]
+                    if F3[c, i, j, l] != 0.0:
+                        s -= F3[c, i, j, l] * v[i] * v[j]
             T[n + c, l] = s
         for j in range(n):
             s = 0.0
             for i in range(n):
-                s -= 2.0 * F2[c, i, j] * v[i]
+                if F2[c, i, j] != 0.0:
+                    s -= 2.0 * F2[c, i, j] * v[i]
             T[n + c, n + j] = s
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
 def apply_tangent_matrix(T, dq, dv, r):
     """r = T (δq, δv), shape (n + k,), in place (`tangent_motion_matrix`)."""
     n = dq.shape[0]
     for i in range(T.shape[0]):
         s = 0.0
         for l in range(n):
-            s += T[i, l] * dq[l] + T[i, n + l] * dv[l]
+            if T[i, l] != 0.0 or T[i, n + l] != 0.0:
+                s += T[i, l] * dq[l] + T[i, n + l] * dv[l]
         r[i] = s
 
 
@@ -127,7 +144,7 @@ def tangent_motion_rhs(dM, d2M, F2, F3, v, x, dq, dv, r):
     apply_tangent_matrix(T, dq, dv, r)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
 def lu_in_place(A, piv):
     """A = P·L·U in place by Gaussian elimination with partial pivoting (L unit lower, below
     the diagonal; U on and above it); ``piv[c]`` the row exchanged with row c at step c.
@@ -162,7 +179,7 @@ def lu_in_place(A, piv):
     return small / large
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
 def lu_solve_columns(A, piv, B, first, last):
     """Columns ``first`` … ``last − 1`` of B, shape (m, r), overwritten by the solutions of
     A x = B[:, col], with A's factors from `lu_in_place` (its pivots non-zero)."""
@@ -184,3 +201,57 @@ def lu_solve_columns(A, piv, B, first, last):
             for j in range(i + 1, m):
                 s -= A[i, j] * B[j, col]
             B[i, col] = s / A[i, i]
+
+
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
+def schur_factor(Minv, J, W, S, spiv):
+    """W = M⁻¹Jᵀ, shape (n, k), and S = J W, shape (k, k), factored in place (`lu_in_place`,
+    pivots in ``spiv``): the Schur complement of the KKT matrix [[M, −Jᵀ], [J, 0]] where M is
+    invertible (``Minv`` = M⁻¹, a constant metric's, computed once).  Returns `lu_in_place`'s
+    pivot ratio (0.0: J rank-deficient, or not finite)."""
+    n = Minv.shape[0]
+    k = J.shape[0]
+    for i in range(n):
+        for c in range(k):
+            s = 0.0
+            for j in range(n):
+                s += Minv[i, j] * J[c, j]
+            W[i, c] = s
+    for a in range(k):
+        for c in range(k):
+            s = 0.0
+            for i in range(n):
+                s += J[a, i] * W[i, c]
+            S[a, c] = s
+    return lu_in_place(S, spiv)
+
+
+@njit(cache=True, error_model="numpy", **NO_REFCOUNT)
+def schur_solve_columns(Minv, J, W, S, spiv, B, first, last, u):
+    """Columns ``first`` … ``last − 1`` of B = (b_q, b_c), shape (n + k, r), overwritten by
+    the solutions (q̈, λ) of [[M, −Jᵀ], [J, 0]] (q̈, λ) = (b_q, b_c) through the Schur
+    complement (`schur_factor`'s W and factored S): u = M⁻¹ b_q, S λ = b_c − J u,
+    q̈ = u + W λ.  ``u``, shape (n,), is work space."""
+    n = Minv.shape[0]
+    k = J.shape[0]
+    for col in range(first, last):
+        for i in range(n):
+            s = 0.0
+            for j in range(n):
+                if Minv[i, j] != 0.0:
+                    s += Minv[i, j] * B[j, col]
+            u[i] = s
+        for c in range(k):
+            s = B[n + c, col]
+            for i in range(n):
+                s -= J[c, i] * u[i]
+            B[n + c, col] = s
+        for i in range(n):
+            B[i, col] = u[i]
+    lu_solve_columns(S, spiv, B[n:], first, last)
+    for col in range(first, last):
+        for i in range(n):
+            s = B[i, col]
+            for c in range(k):
+                s += W[i, c] * B[n + c, col]
+            B[i, col] = s
