@@ -164,7 +164,8 @@ def speed(steps: int, repeat: int) -> None:
 
 def others(steps: int) -> None:
     """µs per step of the generic route on the triple linkage (r = 0.1: n = 5, k = 3) and on
-    rotors(3) with all four vectors, as docs/mechanisms.md's table (median of 3)."""
+    rotors(3): the state alone, one vector and all 2d, as docs/mechanisms.md's table (median
+    of 3)."""
     import time
 
     from charts.mechanism import rotors, triple_linkage
@@ -174,7 +175,7 @@ def others(steps: int) -> None:
     for label, mech in (("rotors(3)", rotors(3)), ("triple_linkage(0.1)", triple_linkage(0.1))):
         q0, v0 = mech.random_state(seed=1)
         row = []
-        for k, inner in ((1, "theta"), (2 * mech.dim, "full")):
+        for k, inner in ((0, "theta"), (1, "theta"), (2 * mech.dim, "full")):
             times = []
             for _ in range(4):
                 flow = MechanismTangentFlow(mech, q0, v0, k, dt=0.01, reorth=10, project=100,
@@ -192,8 +193,11 @@ from numba import njit
 from charts.mechanism.kernels import (apply_tangent_matrix, kkt_matrix, lu_in_place,
                                       lu_solve_columns, motion_rhs, schur_factor,
                                       schur_solve_columns, tangent_motion_matrix)
+from charts.solvers.rk import NO_REFCOUNT
 
-@njit
+fast = dict(error_model="numpy", **NO_REFCOUNT)          # as the flow's driver
+
+@njit(**fast)
 def solve(sc, B, first, last):
     K, piv, Minv, J, W, S, spiv, u, schur = sc
     if schur:
@@ -201,15 +205,15 @@ def solve(sc, B, first, last):
     else:
         lu_solve_columns(K, piv, B, first, last)
 
-@njit
+@njit(**fast)
 def jets_part(jets, q, p, jt, N):
     F, J, F2, F3, M, dM, d2M = jt
     for i in range(N):
         q[0] += 1e-15
         jets(q, p, F, J, F2, F3, M, dM, d2M)
 
-@njit
-def kkt_part(jt, sc, B, v, N):
+@njit(**fast)
+def kkt_part(jt, sc, B, T, v, N):
     F, J, F2, F3, M, dM, d2M = jt
     K, piv, Minv, J, W, S, spiv, u, schur = sc
     for i in range(N):
@@ -219,25 +223,21 @@ def kkt_part(jt, sc, B, v, N):
             kkt_matrix(M, J, -1.0, K)
             lu_in_place(K, piv)
 
-@njit
-def motion_part(jt, sc, B, v, N):
+@njit(**fast)
+def motion_part(jt, sc, B, T, v, N):
     F, J, F2, F3, M, dM, d2M = jt
     for i in range(N):
         motion_rhs(dM, F2, v, B[:, 0], True)
         solve(sc, B, 0, 1)
 
-@njit
-def matrix_part(jt, sc, B, v, N):
+@njit(**fast)
+def matrix_part(jt, sc, B, T, v, N):
     F, J, F2, F3, M, dM, d2M = jt
-    T = np.zeros((B.shape[0], 2 * v.shape[0]))
     for i in range(N):
         tangent_motion_matrix(dM, d2M, F2, F3, v, B[:, 0], T, True)
 
-@njit
-def vector_part(jt, sc, B, v, N):
-    F, J, F2, F3, M, dM, d2M = jt
-    T = np.zeros((B.shape[0], 2 * v.shape[0]))
-    tangent_motion_matrix(dM, d2M, F2, F3, v, B[:, 0], T, True)
+@njit(**fast)
+def vector_part(jt, sc, B, T, v, N):
     for i in range(N):
         apply_tangent_matrix(T, v, v, B[:, 1])
         solve(sc, B, 1, 2)
@@ -247,12 +247,11 @@ def vector_part(jt, sc, B, v, N):
 def parts(mech, q0, v0, count=1_000_000) -> None:
     """ns per call of each piece of a stage (``PARTS``), on rotors(3) at its random state, by
     the route the flow takes (its constant definite M: the Schur complement; the linearisation
-    at x = 0, its structural zeros as in the flow)."""
+    at the state's solution, its structural zeros as in the flow; compiled as the flow's
+    driver, without reference counting)."""
     import time
 
     import numpy as np
-
-    from charts.mechanism.symbolic import JET_ORDER
 
     ns = {"np": np}
     exec(PARTS, ns)
@@ -266,10 +265,10 @@ def parts(mech, q0, v0, count=1_000_000) -> None:
     sc = (K, piv, Minv, jt[1], W, S, spiv, u, schur)
     calls = {"the jets (generated)": ("jets_part", (jets, q0.copy(), mech.param_values, jt)),
              ("Schur complement + LU" if schur else "KKT matrix + LU"):
-                 ("kkt_part", (jt, sc, B, v0)),
-             "motion rhs + solve": ("motion_part", (jt, sc, B, v0)),
-             "linearisation matrix": ("matrix_part", (jt, sc, B, v0)),
-             "per vector: apply + solve": ("vector_part", (jt, sc, B, v0))}
+                 ("kkt_part", (jt, sc, B, T, v0)),
+             "motion rhs + solve": ("motion_part", (jt, sc, B, T, v0)),
+             "linearisation matrix": ("matrix_part", (jt, sc, B, T, v0)),
+             "per vector: apply + solve": ("vector_part", (jt, sc, B, T, v0))}
     print("  one RK4 stage of the generic route, by piece (4 stages a step; ns per call, CPU):")
     for label, (name, args) in calls.items():
         fn = ns[name]
