@@ -109,8 +109,6 @@ def build(cold_numba: bool) -> None:
 def speed(steps: int, repeat: int) -> None:
     import time
 
-    import numpy as np
-
     import charts
     from charts.mechanism import rotors
     from charts.mechanism.tangent_flow import MechanismTangentFlow
