@@ -175,8 +175,9 @@ class AmbientDynamics:
                 break
         F = self.constraint(q) if np.all(np.isfinite(q)) else np.array([np.inf])
         if not np.max(np.abs(F)) <= 1e3 * tol:
-            raise MechanismError(f"{self.name}: Newton projection did not converge "
-                                 f"(|F| = {np.max(np.abs(F)):.3e})")
+            raise MechanismError(f"{self.name}: cannot project q onto F = 0: Newton did not "
+                                 f"converge from it (|F| = {np.max(np.abs(F)):.3e}); start "
+                                 "nearer the manifold")
         self.check_rank(q)
         return q
 
