@@ -16,7 +16,7 @@ from charts.mechanism.surface import surface_integrals
 from test_mechanism_ensembles import arm
 
 
-@pytest.mark.parametrize("mech, n_grid", [(rotors(3), 24), (charts.triple_linkage(0.2), 12)],
+@pytest.mark.parametrize("mech, n_grid", [(rotors(3), 24), (charts.triple_linkage(0.2), 8)],
                          ids=["rotors3", "triple_linkage"])
 def test_newton_sheets_give_the_closed_forms_integrals(mech, n_grid):
     """The same area and ∫K dA as the closed-form sheets to rounding: 1e-10 relative (a missed
