@@ -173,7 +173,7 @@ def test_auto_in_a_sweep():
 def test_the_cli_option_takes_a_rule():
     import argparse
 
-    from charts.cli.verdict import _transient_of
+    from charts.cli.verdict_statistics import transient_of as _transient_of
     from charts.runs.cli_parser import transient_arg
     assert transient_arg("auto") == "auto" and transient_arg("12.5") == 12.5
     with pytest.raises(argparse.ArgumentTypeError, match="did you mean 'scaled'"):

@@ -87,7 +87,7 @@ def test_a_family_is_its_distinct_systems_of_rotors():
 def test_a_saved_run_is_reused_only_for_the_same_question(tmp_path, capsys):
     """A folder's tally or report answers a later call only with the same members, window
     and transient; other systems' reports stay in statistics.json; names keep every digit."""
-    from charts.cli.verdict import _slug
+    from charts.cli.verdict_statistics import slug_of as _slug
     from charts.geometry.system import RotorSystem
     pytest.importorskip("xarray")
     base = ["verdict", "--statistics", "--n", "3", "--device", "cpu", "--out", str(tmp_path)]
