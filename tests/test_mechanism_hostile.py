@@ -223,3 +223,24 @@ def test_n_unstable_out_of_range_on_a_surface_reads_one_dimension(linkage_state)
                                          r"of a 2-dimensional configuration space has at most 1 "
                                          r"dimension\)$"):
         charts.hyperbolicity_angles(mech, q, v, 2.0, n_unstable=2)
+
+
+def test_a_mechanism_projects_a_tangent_by_the_rotors_name():
+    """``project_tangent`` (the rotors' name) is the M-orthogonal projection onto ker J, the
+    same numbers as ``project_velocity``, and agrees with ``RotorSystem.project_tangent`` on
+    the generic rotors of unequal masses (1e-12: two solves of the same projection)."""
+    import charts
+    from charts.mechanism.instances import rotors
+    m = charts.triple_linkage(0.2)
+    q, _ = m.random_state(seed=3)
+    u = np.arange(1.0, 6.0)
+    w = m.project_tangent(q, u)
+    assert np.array_equal(w, m.project_velocity(q, u))
+    assert np.max(np.abs(m.jacobian(q) @ w)) < 1e-12
+    generic, rotor = rotors(3, masses=[1.0, 2.0, 3.0]), charts.RotorSystem(3, masses=[1.0, 2.0, 3.0])
+    theta, _ = rotor.random_state(seed=2)
+    x = np.array([0.3, -1.0, 0.7])
+    assert np.allclose(generic.project_tangent(theta, x), rotor.project_tangent(theta, x),
+                       rtol=0, atol=1e-12)
+    with pytest.raises(charts.MechanismError, match="u"):
+        m.project_tangent(q, np.ones(4))

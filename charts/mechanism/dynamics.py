@@ -190,6 +190,11 @@ class AmbientDynamics:
         sol = np.linalg.solve(K, np.concatenate([M @ v, np.zeros(self.k)]))
         return sol[:self.n]
 
+    def project_tangent(self, q, u):
+        """The M-orthogonal projection of the ambient vector u onto the tangent space at q, by
+        the name ``RotorSystem.project_tangent`` has: `project_velocity`."""
+        return self.project_velocity(q, self._point(u, "u"))
+
     def project_phase_tangent(self, q, v, dq, dv):
         """The projection of a phase-space tangent vector (δq, δv) at (q, v) onto the tangent
         space of TC = {F = 0, J v = 0}: the linearised constraints J δq = 0 and
