@@ -625,7 +625,21 @@ def _valid(entry, param, value) -> bool:
     default = sig[param].default if param in sig else inspect.Parameter.empty
     if value is None:
         return default is None
+    if param == "dt" and _whole_steps(entry, value):
+        return True
     return isinstance(default, bool) and isinstance(value, int) and value in (0, 1)
+
+
+def _whole_steps(entry, dt) -> bool:
+    """A step ``dt`` in (0, 1] that divides the entry's t_final into a whole number of steps
+    (as the library's grid check reads it): a valid run, only long (4.3e-10 is 1.2e9 steps of
+    a t_final of 0.5), not a hostile value — as a t_final of 10⁴ is left out of `HOSTILE`."""
+    t_final = entry.base.get("t_final")
+    if isinstance(dt, bool) or not isinstance(dt, (float, np.floating)) \
+            or not isinstance(t_final, (int, float)) or not 0.0 < dt <= 1.0:
+        return False
+    k = round(t_final / dt)
+    return 0 < k <= 2.0 ** 40 and abs(k * dt - t_final) <= 1e-9 * t_final
 
 
 def cases(name):
