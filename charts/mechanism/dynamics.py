@@ -92,9 +92,11 @@ class AmbientDynamics:
         q = self._point(q)
         u = self._point(u, name)
         r = self.jacobian(q) @ u
-        if np.max(np.abs(r)) > tol * max(1.0, np.max(np.abs(u))):
+        bound = tol * max(1.0, np.max(np.abs(u)))
+        if np.max(np.abs(r)) > bound:
             raise MechanismError(f"{name} is not tangent at q: |J(q) {name}| = "
-                                 f"{np.max(np.abs(r)):.3e}; use project_velocity")
+                                 f"{np.max(np.abs(r)):.3e} > tol·max(1, |{name}|) = {bound:.3e} "
+                                 f"(tol = {tol:g}); use project_velocity")
         return u
 
     def _kkt(self, q, J=None, sign=-1.0):
