@@ -39,10 +39,10 @@ from ..io.result_words import RATE, smallest_words
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.tangent import reorth_steps
 from .angle_tally import SMALL_ANGLE
-from .arguments import Documented, positive_time, project_steps, seed_of, steps_of
+from .arguments import Documented, steps_of
 from .hyperbolicity import angle_statistics
-from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
-from .mechanism_lyapunov import mechanism_rule, resolve_transient
+from .mechanism_arguments import unstable_of
+from .mechanism_lyapunov import closing_checks, opening_checks
 from .singular_values import sin_to_angle
 
 __all__ = ["MechanismAngles", "mechanism_angles", "angle_grid", "sin_angle", "root_metric"]
@@ -201,20 +201,16 @@ def mechanism_angles(mech, q0, v0, t_final, *, dt=0.01, n_unstable=None,
     Raises
     ------
     MechanismError, ValueError
-        As ``charts.analyses.mechanism_arguments`` says, naming the argument.
+        Naming the argument: ``opening_checks``, ``unstable_of``, ``mechanism_state``
+        (``charts.analyses.mechanism_arguments``) and the time grid's checks.
     """
-    mechanism_of(mech)
-    rule = mechanism_rule(t_transient, mech)
-    dt = positive_time("dt", dt)
+    rule, dt = opening_checks(mech, t_transient, dt)
     m = unstable_of(mech, n_unstable)
     total, transient, sample = angle_grid(dt, t_final, Documented(0.0) if rule else
                                           t_transient, sample_every)
-    project = project_steps(project_every, dt)
-    seed = seed_of(seed)
-    q0, v0 = mechanism_state(mech, q0, v0)
-    if rule:                  # every other setting and the state checked: the pilot runs
-        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
-                                              project_every=project_every, seed=seed)
+    project, seed, q0, v0, t_transient, rule = closing_checks(
+        mech, q0, v0, rule, t_transient, dt, project_every, seed)
+    if rule:
         total, transient, sample = angle_grid(dt, t_final, t_transient, sample_every)
     S, Sb = total // sample, transient // sample
     reorth = reorth_steps(dt, sample)

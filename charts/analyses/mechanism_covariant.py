@@ -28,12 +28,12 @@ import numpy as np
 from ..geometry.checks import option
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.tangent import check_memory
-from .arguments import (Documented, flag, positive_time, project_steps,
+from .arguments import (Documented, flag, project_steps,
                         samples_of, seed_of, steps_of)
 from .covariant import CovariantResult, backward_coefficients, clv_samples, ginelli_start
 from .mechanism_angles import root_metric
-from .mechanism_arguments import mechanism_of, mechanism_state, unstable_of
-from .mechanism_lyapunov import mechanism_rule, resolve_transient
+from .mechanism_arguments import mechanism_state, unstable_of
+from .mechanism_lyapunov import opening_checks, resolve_transient
 
 __all__ = ["mechanism_clvs", "gram_schmidt_factor"]
 
@@ -60,9 +60,8 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
 
     Parameters
     ----------
-    mech : charts.Mechanism
-    q0, v0 : ndarray, shape (n,)
-        A point on F = 0 and a tangent velocity there (``mech.random_state``).
+    mech, q0, v0
+        The mechanism and its state, as ``mechanism_angles`` takes them.
     t_final : float
         Length of the analysed window (a multiple of ``sample_every``).
     variant : {"restricted"}
@@ -93,15 +92,14 @@ def mechanism_clvs(mech, q0, v0, t_final, *, variant="restricted", dt=0.01, n_un
     Raises
     ------
     MechanismError, ValueError
-        As ``charts.analyses.mechanism_arguments`` says, naming the argument.
+        Naming the argument: ``opening_checks``, the variant, ``unstable_of``,
+        ``mechanism_state`` and the time grid's checks.
     """
-    mechanism_of(mech)
-    rule = mechanism_rule(t_transient, mech)
+    rule, dt = opening_checks(mech, t_transient, dt)
     if option("variant", variant, ("restricted", "full")) == "full":
         raise ValueError("variant='full' does not exist for a mechanism: its tangent vectors "
                          "stay in the tangent space of TC (use 'restricted')")
     keep_vectors = flag("keep_vectors", keep_vectors)
-    dt = positive_time("dt", dt)
     d, n = mech.dim, mech.n
     D = 2 * d
     m = unstable_of(mech, n_unstable)

@@ -36,11 +36,10 @@ from scipy.integrate import solve_ivp
 from ..mechanism.errors import MechanismError
 from ..mechanism.tangent_flow import MechanismTangentFlow
 from ..solvers.tangent import reorth_steps
-from .arguments import (Documented, flag, positive_time, project_steps, samples_of, seed_of,
+from .arguments import (Documented, flag, samples_of,
                         steps_of)
 from .curvature import CurvatureResult
-from .mechanism_arguments import mechanism_of, mechanism_state
-from .mechanism_lyapunov import mechanism_rule, resolve_transient
+from .mechanism_lyapunov import closing_checks, opening_checks
 
 __all__ = ["mechanism_curvature", "jacobi_frame", "jacobi_curvature", "riemann_curvature"]
 
@@ -114,9 +113,8 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
 
     Parameters
     ----------
-    mech : charts.Mechanism
-    q0, v0 : ndarray, shape (n,)
-        A point on F = 0 and a tangent velocity there (``mech.random_state``).
+    mech, q0, v0 : charts.Mechanism, ndarray (n,), ndarray (n,)
+        The mechanism and the state, as ``mechanism_angles`` takes them.
     t_final : float
         Sampled time after the transient (a multiple of ``sample_every``).
     dt : float
@@ -145,22 +143,17 @@ def mechanism_curvature(mech, q0, v0, t_final, *, dt=0.01, sample_every=Document
     Raises
     ------
     MechanismError, ValueError
-        As ``charts.analyses.mechanism_arguments`` says, naming the argument.
+        Naming the argument (``opening_checks``, ``mechanism_state``, the sampling grid).
     """
-    mechanism_of(mech)
-    rule = mechanism_rule(t_transient, mech)
-    dt = positive_time("dt", dt)
+    rule, dt = opening_checks(mech, t_transient, dt)
     total = steps_of("t_final", t_final, dt)
     sample = steps_of("sample_every", sample_every, dt, divides=total)
     S = samples_of(total, sample, t_final, sample_every)
     transient = 0 if rule else steps_of("t_transient", t_transient, dt, allow_zero=True)
     exact = flag("exact", exact)
-    project = project_steps(project_every, dt)
-    seed = seed_of(seed)
-    q0, v0 = mechanism_state(mech, q0, v0)
-    if rule:                  # every other setting and the state checked: the pilot runs
-        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
-                                              project_every=project_every, seed=seed)
+    project, seed, q0, v0, t_transient, rule = closing_checks(
+        mech, q0, v0, rule, t_transient, dt, project_every, seed)
+    if rule:
         transient = steps_of("t_transient", t_transient, dt, allow_zero=True)
     d, n = mech.dim, mech.n
     k = d - 1

@@ -26,7 +26,7 @@ from ..geometry.checks import option
 from ..io.archive import Archivable, attributes, dataset, exponent_coordinate
 from ..io.result_words import RATE, exponent_words
 from ..mechanism.tangent_flow import INNER_PRODUCTS, MechanismTangentFlow
-from .arguments import Documented, positive_int, positive_time, seed_of, steps_of
+from .arguments import Documented, positive_int, positive_time, project_steps, seed_of, steps_of
 from . import transients
 from .lyapunov import exponents_from_marks
 from .mechanism_arguments import mechanism_of, mechanism_state
@@ -160,9 +160,7 @@ def lyapunov_spectrum(mech, q0, v0, t_final, *, dt=0.01, n_exponents=None, inner
     ValueError
         Another bad argument (named in the message).
     """
-    mech = mechanism_of(mech)
-    rule = mechanism_rule(t_transient, mech)
-    dt = positive_time("dt", dt)
+    rule, dt = opening_checks(mech, t_transient, dt)
     inner = option("inner", inner, INNER_PRODUCTS)
     d = mech.dim
     kmax = d if inner == "theta" else 2 * d
@@ -238,6 +236,29 @@ def mechanism_rule(t_transient, mech):
                          f"the mechanism {mech.name}: give t_transient='auto' (a pilot run) or "
                          "a duration")
     return rule
+
+
+def opening_checks(mech, t_transient, dt):
+    """(rule, dt): the first checks of every analysis on a mechanism (angles, curvature,
+    CLVs) -- ``mech`` a Mechanism of dimension 2 or more (`mechanism_of`), the rule its
+    ``t_transient`` names (`mechanism_rule`: "auto", or None for a duration) and the checked
+    step ``dt``."""
+    mechanism_of(mech)
+    return mechanism_rule(t_transient, mech), positive_time("dt", dt)
+
+
+def closing_checks(mech, q0, v0, rule, t_transient, dt, project_every, seed):
+    """(project steps, seed, q0, v0, t_transient, rule): the last checks of an analysis on a
+    mechanism (the projection cadence, the seed, the state: ``mechanism_state``) and then,
+    for the rule "auto", its pilot (`resolve_transient`: t_transient the duration, rule the
+    recorded rule); a duration and None pass unchanged."""
+    project = project_steps(project_every, dt)
+    seed = seed_of(seed)
+    q0, v0 = mechanism_state(mech, q0, v0)
+    if rule:                  # every other setting and the state checked: the pilot runs
+        t_transient, rule = resolve_transient(t_transient, mech, q0, v0, dt=dt,
+                                              project_every=project_every, seed=seed)
+    return project, seed, q0, v0, t_transient, rule
 
 
 def auto_transient(mech, q0, v0, *, dt=0.01, n_exponents=None, inner="theta",
